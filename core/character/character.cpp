@@ -1,0 +1,89 @@
+#include "core/character/character.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace mq {
+
+size_t Character::vertexCount() const {
+  size_t n = 0;
+  for (const Mesh& m : meshes) n += m.vertexCount();
+  return n;
+}
+
+size_t Character::triangleCount() const {
+  size_t n = 0;
+  for (const Mesh& m : meshes) n += m.triangleCount();
+  return n;
+}
+
+int Character::maxInfluences() const {
+  int k = 0;
+  for (const Mesh& m : meshes) k = std::max(k, m.skin.maxInfluences());
+  return k;
+}
+
+int Character::findClip(const std::string& nameOrIndex) const {
+  for (size_t i = 0; i < clips.size(); ++i)
+    if (clips[i].name == nameOrIndex) return static_cast<int>(i);
+  char* end = nullptr;
+  const long index = std::strtol(nameOrIndex.c_str(), &end, 10);
+  if (!nameOrIndex.empty() && end && *end == '\0' && index >= 0 && index < static_cast<long>(clips.size()))
+    return static_cast<int>(index);
+  return -1;
+}
+
+void Character::validate() const {
+  const int bones = skeleton.boneCount();
+  for (const Mesh& m : meshes) {
+    const size_t n = m.vertexCount();
+    const std::string where = "mesh '" + m.name + "': ";
+    if (m.positions.size() != 3 * n) throw std::runtime_error(where + "position array is not a multiple of 3");
+    if (!m.normals.empty() && m.normals.size() != 3 * n) throw std::runtime_error(where + "normal count differs from vertex count");
+    for (uint32_t i : m.triangles)
+      if (i >= n) throw std::runtime_error(where + "triangle index " + std::to_string(i) + " out of range");
+    for (float p : m.positions)
+      if (!std::isfinite(p)) throw std::runtime_error(where + "non-finite vertex position");
+    for (const MorphTarget& t : m.morphTargets)
+      if (t.positionDeltas.size() != 3 * n) throw std::runtime_error(where + "morph target size differs from vertex count");
+    const SkinBinding& s = m.skin;
+    if (s.empty()) continue;
+    const size_t k = s.influencesPerVertex;
+    if (s.joints.size() != n * k || s.weights.size() != n * k)
+      throw std::runtime_error(where + "skin weights do not cover every vertex");
+    if (s.inverseBind.size() != s.jointBones.size())
+      throw std::runtime_error(where + "inverse bind matrix count differs from joint count");
+    for (int b : s.jointBones)
+      if (b < 0 || b >= bones) throw std::runtime_error(where + "skin joint refers to a missing bone");
+    for (uint16_t j : s.joints)
+      if (j >= s.jointBones.size()) throw std::runtime_error(where + "vertex joint index out of range");
+  }
+  for (const Clip& c : clips) {
+    try {
+      c.validate();
+    } catch (const std::exception& e) {
+      throw std::runtime_error("clip '" + c.name + "': " + e.what());
+    }
+  }
+}
+
+Pose samplePose(const Character& character, int clipIndex, float time, const PoseEdits* edits) {
+  Pose pose = character.skeleton.restPose();
+  if (clipIndex >= 0 && clipIndex < static_cast<int>(character.clips.size()))
+    character.clips[clipIndex].applyToPose(time, pose);
+  if (edits)
+    for (const auto& [bone, rotation] : edits->rotations)
+      if (bone >= 0 && bone < static_cast<int>(pose.size()))
+        pose[bone].rotation = glm::normalize(pose[bone].rotation * rotation);
+  return pose;
+}
+
+std::vector<std::vector<float>> sampleMorphWeights(const Character& character, int clipIndex, float time) {
+  std::vector<std::vector<float>> weights;
+  for (const Mesh& m : character.meshes) weights.push_back(m.morphWeights);
+  if (clipIndex >= 0 && clipIndex < static_cast<int>(character.clips.size()))
+    character.clips[clipIndex].applyToMorphWeights(time, weights);
+  return weights;
+}
+
+}  // namespace mq

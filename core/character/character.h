@@ -1,0 +1,43 @@
+#pragma once
+// A character: meshes bound to a skeleton, and animation clips that move it.
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/animation/clip.h"
+#include "core/mesh/mesh.h"
+#include "core/skeleton/skeleton.h"
+
+namespace mq {
+
+struct Character {
+  std::string name;
+  std::string sourcePath;  // file it came from, or "default"
+  Skeleton skeleton;
+  std::vector<Mesh> meshes;
+  std::vector<Clip> clips;
+
+  size_t vertexCount() const;
+  size_t triangleCount() const;
+  int maxInfluences() const;
+  // Finds a clip by name, or by index when `nameOrIndex` is a number; -1 if absent.
+  int findClip(const std::string& nameOrIndex) const;
+  // Checks indices, sizes and finiteness; throws std::runtime_error saying what is wrong.
+  void validate() const;
+};
+
+// User pose edits layered over the clip: a local rotation per bone applied
+// after the clip's rotation (local = T * R_clip * R_edit * S).
+struct PoseEdits {
+  std::map<int, glm::quat> rotations;
+  bool empty() const { return rotations.empty(); }
+};
+
+// The local pose of `character` at time t of clip `clipIndex` (-1: rest pose),
+// with edits applied.
+Pose samplePose(const Character& character, int clipIndex, float time, const PoseEdits* edits = nullptr);
+// Morph weights per mesh at time t (defaults when the clip does not animate them).
+std::vector<std::vector<float>> sampleMorphWeights(const Character& character, int clipIndex, float time);
+
+}  // namespace mq

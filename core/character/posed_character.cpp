@@ -1,0 +1,85 @@
+#include "core/character/posed_character.h"
+
+#include <cmath>
+
+#include "core/skinning/skin_deformer.h"
+#include "core/util/thread_pool.h"
+
+namespace mq {
+namespace {
+
+bool anyNonZero(const std::vector<float>& w) {
+  for (float x : w)
+    if (x != 0.0f) return true;
+  return false;
+}
+
+// rest + sum_k w_k * delta_k, for positions and normals.
+void applyMorphTargets(const Mesh& mesh, const std::vector<float>& weights, std::vector<float>& positions,
+                       std::vector<float>& normals) {
+  positions = mesh.positions;
+  normals = mesh.normals;
+  for (size_t t = 0; t < mesh.morphTargets.size() && t < weights.size(); ++t) {
+    const float w = weights[t];
+    if (w == 0.0f) continue;
+    const MorphTarget& target = mesh.morphTargets[t];
+    for (size_t i = 0; i < positions.size(); ++i) positions[i] += w * target.positionDeltas[i];
+    if (target.normalDeltas.size() == normals.size())
+      for (size_t i = 0; i < normals.size(); ++i) normals[i] += w * target.normalDeltas[i];
+  }
+}
+
+void transformRigid(const glm::mat4& m, const float* positions, const float* normals, size_t count,
+                    float* outPositions, float* outNormals) {
+  const glm::mat3 r(m);
+  for (size_t v = 0; v < count; ++v) {
+    const glm::vec3 p = glm::vec3(m * glm::vec4(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2], 1.0f));
+    for (int d = 0; d < 3; ++d) outPositions[3 * v + d] = p[d];
+    if (!normals) continue;
+    glm::vec3 n = r * glm::vec3(normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]);
+    const float len = glm::length(n);
+    if (len > 0.0f) n /= len;
+    for (int d = 0; d < 3; ++d) outNormals[3 * v + d] = n[d];
+  }
+}
+
+}  // namespace
+
+void PosedCharacter::evaluate(const Character& character, const Pose& pose,
+                              const std::vector<std::vector<float>>& morphWeights, ThreadPool* pool) {
+  character.skeleton.worldTransforms(pose, worldFromBone_);
+  meshes_.resize(character.meshes.size());
+  for (size_t i = 0; i < character.meshes.size(); ++i) {
+    const Mesh& mesh = character.meshes[i];
+    PosedMesh& out = meshes_[i];
+    const size_t n = mesh.vertexCount();
+    out.positions.resize(3 * n);
+    out.normals.resize(mesh.normals.size());
+
+    const std::vector<float>& weights = i < morphWeights.size() ? morphWeights[i] : mesh.morphWeights;
+    const float* positions = mesh.positions.data();
+    const float* normals = mesh.normals.empty() ? nullptr : mesh.normals.data();
+    if (!mesh.morphTargets.empty() && anyNonZero(weights)) {
+      applyMorphTargets(mesh, weights, morphedPositions_, morphedNormals_);
+      positions = morphedPositions_.data();
+      normals = morphedNormals_.empty() ? nullptr : morphedNormals_.data();
+    }
+    float* outNormals = normals ? out.normals.data() : nullptr;
+    if (!mesh.skin.empty()) {
+      buildSkinPalette(mesh.skin, worldFromBone_, palette_);
+      skinVertices(mesh.skin, palette_, positions, normals, n, out.positions.data(), outNormals, pool);
+    } else {
+      const glm::mat4 worldFromMesh =
+          (mesh.attachBone >= 0 ? worldFromBone_[mesh.attachBone] : glm::mat4(1.0f)) * mesh.boneFromMesh;
+      transformRigid(worldFromMesh, positions, normals, n, out.positions.data(), outNormals);
+    }
+  }
+}
+
+void PosedCharacter::evaluate(const Character& character, int clipIndex, float time, const PoseEdits* edits,
+                              ThreadPool* pool) {
+  evaluate(character, samplePose(character, clipIndex, time, edits),
+           sampleMorphWeights(character, clipIndex, time), pool);
+}
+
+}  // namespace mq

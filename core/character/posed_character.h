@@ -1,0 +1,39 @@
+#pragma once
+// The deformed (posed) meshes of a character: morph targets, then skinning,
+// into world space. Buffers are kept between frames so evaluation allocates
+// nothing after the first call.
+
+#include <vector>
+
+#include "core/character/character.h"
+
+namespace mq {
+
+class ThreadPool;
+
+struct PosedMesh {
+  std::vector<float> positions;  // world space, 3 per vertex
+  std::vector<float> normals;
+};
+
+class PosedCharacter {
+ public:
+  // Poses `character` with local bone transforms `pose` and per-mesh morph
+  // weights (empty: the meshes' defaults).
+  void evaluate(const Character& character, const Pose& pose,
+                const std::vector<std::vector<float>>& morphWeights, ThreadPool* pool);
+  // Convenience: clip + time + edits.
+  void evaluate(const Character& character, int clipIndex, float time, const PoseEdits* edits,
+                ThreadPool* pool);
+
+  const std::vector<PosedMesh>& meshes() const { return meshes_; }
+  const std::vector<glm::mat4>& worldFromBone() const { return worldFromBone_; }
+
+ private:
+  std::vector<PosedMesh> meshes_;
+  std::vector<glm::mat4> worldFromBone_;
+  std::vector<float> palette_;
+  std::vector<float> morphedPositions_, morphedNormals_;
+};
+
+}  // namespace mq

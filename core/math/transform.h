@@ -1,0 +1,31 @@
+#pragma once
+// Small fixed-size math on GLM: translation/rotation/scale transforms and
+// quaternion helpers. Quaternions are unit; files store them (x, y, z, w).
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+namespace mq {
+
+// A local transform split into its parts, as glTF nodes and animation
+// channels store it: matrix = T * R * S.
+struct Trs {
+  glm::vec3 translation{0.0f};
+  glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};  // glm::quat(w, x, y, z)
+  glm::vec3 scale{1.0f};
+
+  glm::mat4 matrix() const;
+  static Trs fromMatrix(const glm::mat4& m);  // assumes no shear
+};
+
+// Shortest-path spherical interpolation; the result is normalised.
+glm::quat slerpShortest(glm::quat a, glm::quat b, float t);
+
+// Rotation from Euler angles in degrees, applied X then Y then Z
+// (intrinsic Z * Y * X), the order the properties panel shows.
+glm::quat quatFromEulerDegrees(const glm::vec3& degrees);
+glm::vec3 eulerDegreesFromQuat(const glm::quat& q);
+
+bool isFinite(const glm::mat4& m);
+
+}  // namespace mq

@@ -1,0 +1,70 @@
+#include "core/util/thread_pool.h"
+
+#include <algorithm>
+
+namespace mq {
+
+ThreadPool::ThreadPool(unsigned threads) {
+  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  for (unsigned i = 1; i < threads; ++i) workers_.emplace_back([this, i] { workerLoop(i); });
+}
+
+ThreadPool::~ThreadPool() {
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+  }
+  wake_.notify_all();
+  for (std::thread& t : workers_) t.join();
+}
+
+ThreadPool& ThreadPool::shared() {
+  static ThreadPool pool;
+  return pool;
+}
+
+void ThreadPool::workerLoop(unsigned index) {
+  unsigned seen = 0;
+  for (;;) {
+    std::unique_lock lock(mutex_);
+    wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
+    if (stopping_) return;
+    seen = generation_;
+    const auto chunk = chunks_[index];
+    const auto* body = body_;
+    lock.unlock();
+    if (chunk.first < chunk.second) (*body)(chunk.first, chunk.second);
+    lock.lock();
+    if (--pending_ == 0) done_.notify_one();
+  }
+}
+
+void ThreadPool::parallelFor(size_t begin, size_t end, size_t minChunk,
+                             const std::function<void(size_t, size_t)>& body) {
+  if (end <= begin) return;
+  const size_t n = end - begin;
+  const unsigned threads = threadCount();
+  if (threads == 1 || n < 2 * std::max<size_t>(minChunk, 1)) {
+    body(begin, end);
+    return;
+  }
+  const size_t chunk = (n + threads - 1) / threads;
+  std::lock_guard submitLock(submit_);
+  std::unique_lock lock(mutex_);
+  chunks_.assign(threads, {0, 0});
+  for (unsigned i = 0; i < threads; ++i) {
+    const size_t b = std::min(end, begin + i * chunk);
+    chunks_[i] = {b, std::min(end, b + chunk)};
+  }
+  body_ = &body;
+  pending_ = threads - 1;
+  ++generation_;
+  lock.unlock();
+  wake_.notify_all();
+  body(chunks_[0].first, chunks_[0].second);
+  lock.lock();
+  done_.wait(lock, [&] { return pending_ == 0; });
+  body_ = nullptr;
+}
+
+}  // namespace mq

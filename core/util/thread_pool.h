@@ -1,0 +1,47 @@
+#pragma once
+// A fixed pool of worker threads for data-parallel loops. parallelFor splits
+// [begin, end) into contiguous chunks, one per worker, so a loop's result does
+// not depend on scheduling (deterministic for a given thread count).
+
+#include <condition_variable>
+#include <cstddef>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace mq {
+
+class ThreadPool {
+ public:
+  // threads == 0: one per hardware thread.
+  explicit ThreadPool(unsigned threads = 0);
+  ~ThreadPool();
+  ThreadPool(const ThreadPool&) = delete;
+  ThreadPool& operator=(const ThreadPool&) = delete;
+
+  unsigned threadCount() const { return static_cast<unsigned>(workers_.size()) + 1; }
+
+  // Calls body(chunkBegin, chunkEnd) over [begin, end); ranges smaller than
+  // minChunk run on the calling thread alone.
+  void parallelFor(size_t begin, size_t end, size_t minChunk,
+                   const std::function<void(size_t, size_t)>& body);
+
+  // The process-wide pool.
+  static ThreadPool& shared();
+
+ private:
+  void workerLoop(unsigned index);
+
+  std::vector<std::thread> workers_;
+  std::mutex submit_;  // one parallelFor at a time; never nest them
+  std::mutex mutex_;
+  std::condition_variable wake_, done_;
+  const std::function<void(size_t, size_t)>* body_ = nullptr;
+  std::vector<std::pair<size_t, size_t>> chunks_;
+  unsigned generation_ = 0;
+  unsigned pending_ = 0;
+  bool stopping_ = false;
+};
+
+}  // namespace mq
