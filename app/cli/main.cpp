@@ -1,1 +1,99 @@
-int main() { return 0; }
+// mannequin-cli: the editor's work without a window.
+#include <algorithm>
+#include <cstdlib>
+#include <iostream>
+
+#include "app/cli/command.h"
+#include "core/util/error.h"
+
+namespace mq::cli {
+
+std::vector<Command>& commands() {
+  static std::vector<Command> all;
+  return all;
+}
+
+Args::Args(const std::vector<std::string>& args) {
+  // Flags that take no value; everything else starting with -- takes one.
+  static const std::vector<std::string> flags = {"--json", "--help", "--skeleton", "--no-hair",
+                                                 "--no-cloth", "--self-collisions"};
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a.rfind("--", 0) == 0 && a.size() > 2) {
+      const auto eq = a.find('=');
+      if (eq != std::string::npos)
+        options_.emplace_back(a.substr(0, eq), a.substr(eq + 1));
+      else if (std::find(flags.begin(), flags.end(), a) != flags.end() || i + 1 >= args.size())
+        options_.emplace_back(a, "");
+      else
+        options_.emplace_back(a, args[++i]);
+    } else {
+      positional_.push_back(a);
+    }
+  }
+}
+
+std::string Args::option(const std::string& name, const std::string& fallback) const {
+  for (const auto& [k, v] : options_)
+    if (k == name) {
+      if (v.empty()) throw Error("option " + name + " needs a value");
+      return v;
+    }
+  return fallback;
+}
+
+bool Args::has(const std::string& name) const {
+  return std::any_of(options_.begin(), options_.end(), [&](const auto& o) { return o.first == name; });
+}
+
+double Args::number(const std::string& name, double fallback) const {
+  const std::string v = option(name);
+  if (v.empty()) return fallback;
+  char* end = nullptr;
+  const double d = std::strtod(v.c_str(), &end);
+  if (!end || *end != '\0') throw Error("option " + name + " expects a number, got '" + v + "'");
+  return d;
+}
+
+void Args::allowOnly(const std::vector<std::string>& known) const {
+  for (const auto& [k, v] : options_)
+    if (std::find(known.begin(), known.end(), k) == known.end()) throw Error("unknown option " + k);
+}
+
+}  // namespace mq::cli
+
+namespace {
+
+void printUsage(std::ostream& out) {
+  out << "usage: mannequin-cli <command> [arguments]\n\n"
+         "FILE is a character file (glTF, GLB, FBX, DAE, BVH), a scene document, or the word\n"
+         "'default' for the built-in mannequin.\n\ncommands:\n";
+  auto all = mq::cli::commands();
+  std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
+  for (const auto& c : all) out << "  " << c.name << " " << c.usage << "\n      " << c.summary << "\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    printUsage(std::cout);
+    return args.empty() ? 2 : 0;
+  }
+  for (const auto& c : mq::cli::commands()) {
+    if (c.name != args[0]) continue;
+    try {
+      return c.run(std::vector<std::string>(args.begin() + 1, args.end()));
+    } catch (const mq::Error& e) {
+      std::cerr << "mannequin-cli " << c.name << ": error: " << e.what() << "\n";
+      return 1;
+    } catch (const std::exception& e) {
+      std::cerr << "mannequin-cli " << c.name << ": internal error: " << e.what() << "\n";
+      return 3;
+    }
+  }
+  std::cerr << "mannequin-cli: unknown command '" << args[0] << "'\n";
+  printUsage(std::cerr);
+  return 2;
+}

@@ -1,0 +1,42 @@
+#pragma once
+// mannequin-cli subcommands register themselves here; each lives in its own
+// cmd_<name>.cpp and is linked into the executable.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace mq::cli {
+
+struct Command {
+  std::string name;
+  std::string usage;    // one line: arguments
+  std::string summary;  // one line: what it does
+  // Returns the process exit code; throws mq::Error for user errors.
+  std::function<int(const std::vector<std::string>& args)> run;
+};
+
+std::vector<Command>& commands();
+
+struct Registration {
+  explicit Registration(Command c) { commands().push_back(std::move(c)); }
+};
+
+// Small argument helpers shared by the commands.
+class Args {
+ public:
+  explicit Args(const std::vector<std::string>& args);
+  // Value of --name, or fallback when absent; throws mq::Error if the flag has no value.
+  std::string option(const std::string& name, const std::string& fallback = "") const;
+  bool has(const std::string& name) const;  // --name present (flag or option)
+  double number(const std::string& name, double fallback) const;
+  const std::vector<std::string>& positional() const { return positional_; }
+  // Throws mq::Error when an option not in `known` was given.
+  void allowOnly(const std::vector<std::string>& known) const;
+
+ private:
+  std::vector<std::string> positional_;
+  std::vector<std::pair<std::string, std::string>> options_;  // "--x" -> value ("" for flags)
+};
+
+}  // namespace mq::cli

@@ -1,0 +1,25 @@
+#pragma once
+// Hair strands as flat arrays: strand s has pointsPerStrand points starting at
+// points[3 * s * pointsPerStrand], root first. Every strand has the same point
+// count so loops over strands vectorise and split across threads.
+
+#include <cstdint>
+#include <vector>
+
+namespace mq {
+
+struct Strands {
+  int pointsPerStrand = 0;
+  std::vector<float> points;       // strands * pointsPerStrand * 3, world or head space
+  std::vector<float> rootNormals;  // 3 per strand: scalp normal at the root
+  std::vector<float> rootUvs;      // 2 per strand: scalp parameterisation, may be empty
+  std::vector<int32_t> guideOf;    // per strand: its nearest guide (-1 for guides), may be empty
+
+  size_t strandCount() const {
+    return pointsPerStrand > 0 ? points.size() / (3 * size_t(pointsPerStrand)) : 0;
+  }
+  float* strand(size_t s) { return points.data() + 3 * s * pointsPerStrand; }
+  const float* strand(size_t s) const { return points.data() + 3 * s * pointsPerStrand; }
+};
+
+}  // namespace mq
