@@ -1,0 +1,67 @@
+#pragma once
+// The scene document: a versioned JSON file (extension .mqscene; .json is
+// accepted too) that records what a user made: the character (the built-in
+// mannequin, a file, or none), a motion, pose edits, the current clip and
+// time, view settings, and the hair, garment, cloth and collider sections
+// that their own modules parse.
+//
+//   { "format": "mannequin-scene", "version": 1,
+//     "character": "default" | "relative/or/absolute/path.glb" | null,
+//     "motion": {"file": "walk.bvh", "map": "names.txt"},        (optional)
+//     "animation": {"clip": "walk", "time": 0.5},
+//     "pose": {"upperarm_l": [x, y, z, w], ...},   local rotation edits
+//     "view": {"skeleton": false, "camera": {"position": [..], "focus": [..]}},
+//     "hair": {...}, "garments": [...], "cloth": {...}, "colliders": [...] }
+
+#include <map>
+#include <string>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <nlohmann/json.hpp>
+
+#include "core/character/character.h"
+
+namespace mq {
+
+struct ViewSettings {
+  bool showSkeleton = false;
+  bool hasCamera = false;
+  glm::vec3 cameraPosition{0.0f};
+  glm::vec3 cameraFocus{0.0f};
+};
+
+struct SceneDocument {
+  static constexpr int kFormatVersion = 1;
+
+  std::string character = "default";  // "default", a file path, or "" for none
+  std::string motionFile;             // BVH applied to the character, optional
+  std::string motionMapFile;          // bone-name map for the BVH, optional
+  std::string clip;                   // clip name or index; "" = the first clip
+  float time = 0.0f;
+  std::map<std::string, glm::quat> poseRotations;  // bone name -> local rotation edit
+  ViewSettings view;
+  // Sections owned by other modules (null when absent).
+  nlohmann::json hair;
+  nlohmann::json garments;
+  nlohmann::json cloth;
+  nlohmann::json colliders;
+
+  bool hasCharacter() const { return !character.empty(); }
+};
+
+// True when `path` names a scene document (by extension).
+bool isSceneDocumentPath(const std::string& path);
+
+// Parses a document; throws FileError naming the file and the problem
+// (not JSON, not a scene document, written by a newer version, bad values).
+SceneDocument loadSceneDocument(const std::string& path);
+SceneDocument parseSceneDocument(const std::string& text, const std::string& pathForErrors);
+nlohmann::json toJson(const SceneDocument& document);
+// Writes atomically (temporary file, then rename).
+void saveSceneDocument(const SceneDocument& document, const std::string& path);
+
+// Resolves a path stored in a document relative to the document's folder.
+std::string resolveDocumentPath(const std::string& documentPath, const std::string& stored);
+
+}  // namespace mq

@@ -1,0 +1,72 @@
+// BM_SkinDeform/<vertices>: linear blend skinning of positions and normals,
+// 4 influences per vertex, 64 bones, on the shared thread pool.
+#include <benchmark/benchmark.h>
+
+#include <random>
+
+#include <glm/gtc/quaternion.hpp>
+
+#include "core/skinning/skin_deformer.h"
+#include "core/util/thread_pool.h"
+
+namespace {
+
+struct SkinWorkload {
+  mq::SkinBinding skin;
+  std::vector<float> positions, normals, outPositions, outNormals, palette;
+};
+
+SkinWorkload makeWorkload(size_t vertices, int bones) {
+  SkinWorkload w;
+  std::mt19937 rng(12111);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  std::uniform_int_distribution<int> bone(0, bones - 1);
+  w.skin.influencesPerVertex = 4;
+  w.skin.joints.resize(4 * vertices);
+  w.skin.weights.resize(4 * vertices);
+  w.positions.resize(3 * vertices);
+  w.normals.resize(3 * vertices);
+  for (size_t v = 0; v < vertices; ++v) {
+    float sum = 0;
+    for (int i = 0; i < 4; ++i) {
+      w.skin.joints[4 * v + i] = static_cast<uint16_t>(bone(rng));
+      sum += w.skin.weights[4 * v + i] = 0.1f + std::abs(unit(rng));
+    }
+    for (int i = 0; i < 4; ++i) w.skin.weights[4 * v + i] /= sum;
+    glm::vec3 n(unit(rng), unit(rng), unit(rng));
+    n = glm::normalize(n + glm::vec3(0, 0, 2));
+    for (int d = 0; d < 3; ++d) {
+      w.positions[3 * v + d] = unit(rng);
+      w.normals[3 * v + d] = n[d];
+    }
+  }
+  std::vector<glm::mat4> worldFromBone(bones);
+  for (int b = 0; b < bones; ++b) {
+    w.skin.jointBones.push_back(b);
+    w.skin.inverseBind.push_back(glm::mat4(1.0f));
+    const glm::quat q = glm::normalize(glm::quat(1.0f, unit(rng), unit(rng), unit(rng)));
+    worldFromBone[b] = glm::mat4_cast(q);
+    worldFromBone[b][3] = glm::vec4(unit(rng), unit(rng), unit(rng), 1.0f);
+  }
+  mq::buildSkinPalette(w.skin, worldFromBone, w.palette);
+  w.outPositions.resize(w.positions.size());
+  w.outNormals.resize(w.normals.size());
+  return w;
+}
+
+void BM_SkinDeform(benchmark::State& state) {
+  const size_t vertices = static_cast<size_t>(state.range(0));
+  SkinWorkload w = makeWorkload(vertices, 64);
+  mq::ThreadPool& pool = mq::ThreadPool::shared();
+  for (auto _ : state) {
+    mq::skinVertices(w.skin, w.palette, w.positions.data(), w.normals.data(), vertices, w.outPositions.data(),
+                     w.outNormals.data(), &pool);
+    benchmark::DoNotOptimize(w.outPositions.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations()) * static_cast<int64_t>(vertices));
+  state.counters["threads"] = pool.threadCount();
+}
+BENCHMARK(BM_SkinDeform)->Arg(10000)->Arg(100000)->Arg(1000000)->UseRealTime()->Unit(benchmark::kMillisecond);
+
+}  // namespace
