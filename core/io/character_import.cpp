@@ -1,0 +1,16 @@
+#include "core/io/character_import.h"
+
+#include "core/io/file_bytes.h"
+#include "core/io/gltf_reader.h"
+#include "core/util/error.h"
+
+namespace mq {
+
+Character importCharacter(const std::string& path) {
+  const std::string ext = fileExtension(path);
+  (void)readFileBytes(path);  // a missing or unreadable file fails here, whatever its type
+  if (ext == "gltf" || ext == "glb") return readGltfCharacter(path);
+  throw FileError(path, "unsupported file type '." + ext + "' (expected .gltf, .glb, .fbx, .dae or .bvh)");
+}
+
+}  // namespace mq
