@@ -1,5 +1,7 @@
 #include "core/io/character_import.h"
 
+#include "core/io/assimp_import.h"
+#include "core/io/bvh_import.h"
 #include "core/io/file_bytes.h"
 #include "core/io/gltf_reader.h"
 #include "core/util/error.h"
@@ -10,6 +12,8 @@ Character importCharacter(const std::string& path) {
   const std::string ext = fileExtension(path);
   (void)readFileBytes(path);  // a missing or unreadable file fails here, whatever its type
   if (ext == "gltf" || ext == "glb") return readGltfCharacter(path);
+  if (ext == "fbx" || ext == "dae") return importWithAssimp(path);
+  if (ext == "bvh") return loadBvhCharacter(path);
   throw FileError(path, "unsupported file type '." + ext + "' (expected .gltf, .glb, .fbx, .dae or .bvh)");
 }
 

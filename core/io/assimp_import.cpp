@@ -1,0 +1,270 @@
+#include "core/io/assimp_import.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include <assimp/Importer.hpp>
+#include <assimp/config.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include "core/io/file_bytes.h"
+#include "core/util/error.h"
+
+namespace mq {
+namespace {
+
+glm::mat4 toGlm(const aiMatrix4x4& a) {
+  glm::mat4 m;
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) m[c][r] = a[r][c];  // Assimp is row-major
+  return m;
+}
+
+// Collada's float arrays may carry whitespace around their numbers, which is
+// valid XML but Assimp 5.2.5 refuses ("Cannot parse string ... as a real
+// number"). Trims the whitespace around every text node that holds data.
+std::string trimTextNodes(const std::string& xml) {
+  std::string out;
+  out.reserve(xml.size());
+  size_t i = 0;
+  while (i < xml.size()) {
+    const size_t close = xml.find('>', i);
+    if (close == std::string::npos) break;
+    out.append(xml, i, close + 1 - i);
+    const size_t open = xml.find('<', close + 1);
+    const size_t end = open == std::string::npos ? xml.size() : open;
+    const std::string_view text(xml.data() + close + 1, end - close - 1);
+    const size_t first = text.find_first_not_of(" \t\r\n");
+    if (first == std::string_view::npos)
+      out.append(text);
+    else
+      out.append(text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1));
+    i = end;
+  }
+  out.append(xml, i, std::string::npos);
+  return out;
+}
+
+const aiScene* readScene(Assimp::Importer& importer, const std::string& path) {
+  importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, false);  // no $AssimpFbx$ helper nodes
+  const unsigned flags = aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_ValidateDataStructure;
+  const aiScene* scene = nullptr;
+  if (fileExtension(path) == "dae") {
+    const std::string text = trimTextNodes(loadFileText(path));
+    scene = importer.ReadFileFromMemory(text.data(), text.size(), flags, "dae");
+  } else {
+    (void)readFileBytes(path);  // clear message for missing files
+    scene = importer.ReadFile(path, flags);
+  }
+  if (!scene || !scene->mRootNode) {
+    std::string why = importer.GetErrorString();
+    if (why.empty()) why = "unreadable";
+    throw FileError(path, "cannot import: " + why);
+  }
+  return scene;
+}
+
+struct NodeTable {
+  std::vector<const aiNode*> nodes;  // preorder: parents before children
+  std::vector<int> parent;
+  std::vector<glm::mat4> local, worldRest;
+  std::map<std::string, int> byName;
+  std::vector<int> boneOfNode;
+
+  void collect(const aiNode* node, int parentIndex) {
+    const int index = static_cast<int>(nodes.size());
+    nodes.push_back(node);
+    parent.push_back(parentIndex);
+    local.push_back(toGlm(node->mTransformation));
+    worldRest.push_back(parentIndex < 0 ? local.back() : worldRest[parentIndex] * local.back());
+    byName.emplace(node->mName.C_Str(), index);
+    for (unsigned c = 0; c < node->mNumChildren; ++c) collect(node->mChildren[c], index);
+  }
+  int find(const aiString& name) const {
+    auto it = byName.find(name.C_Str());
+    return it == byName.end() ? -1 : it->second;
+  }
+};
+
+// Nearest bone strictly above `node`, and the product of the non-bone
+// transforms passed on the way (outermost first).
+int nearestBoneAbove(const NodeTable& t, int node, glm::mat4& offset) {
+  offset = glm::mat4(1.0f);
+  for (int n = t.parent[node]; n >= 0; n = t.parent[n]) {
+    if (t.boneOfNode[n] >= 0) return t.boneOfNode[n];
+    offset = t.local[n] * offset;
+  }
+  return -1;
+}
+
+Skeleton buildSkeleton(const aiScene* scene, NodeTable& t, const std::string& path) {
+  std::set<int> boneNodes;
+  auto mark = [&](const aiString& name, const char* what) {
+    const int n = t.find(name);
+    if (n < 0) throw FileError(path, std::string(what) + " '" + name.C_Str() + "' has no node");
+    boneNodes.insert(n);
+  };
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m)
+    for (unsigned b = 0; b < scene->mMeshes[m]->mNumBones; ++b) mark(scene->mMeshes[m]->mBones[b]->mName, "bone");
+  for (unsigned a = 0; a < scene->mNumAnimations; ++a)
+    for (unsigned c = 0; c < scene->mAnimations[a]->mNumChannels; ++c)
+      mark(scene->mAnimations[a]->mChannels[c]->mNodeName, "animated node");
+
+  Skeleton skeleton;
+  t.boneOfNode.assign(t.nodes.size(), -1);
+  for (int n = 0; n < static_cast<int>(t.nodes.size()); ++n) {
+    if (!boneNodes.count(n)) continue;
+    Bone bone;
+    bone.name = t.nodes[n]->mName.C_Str();
+    bone.rest = Trs::fromMatrix(t.local[n]);
+    bone.parent = nearestBoneAbove(t, n, bone.parentFromOffset);
+    t.boneOfNode[n] = skeleton.addBone(std::move(bone));
+  }
+  return skeleton;
+}
+
+// meshFromBone at bind time: Assimp's offset when it agrees with the rest
+// pose of the nodes, otherwise the one the rest pose implies (issue 4620).
+glm::mat4 inverseBindOf(const aiBone* bone, const NodeTable& t, int boneNode, int meshNode, bool& usedNodes) {
+  const glm::mat4 fromNodes = glm::inverse(t.worldRest[boneNode]) * t.worldRest[meshNode];
+  const glm::mat4 fromAssimp = toGlm(bone->mOffsetMatrix);
+  float difference = 0.0f, scale = 1.0f;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) {
+      difference = std::max(difference, std::abs(fromNodes[c][r] - fromAssimp[c][r]));
+      scale = std::max(scale, std::abs(fromNodes[c][r]));
+    }
+  if (difference <= 1e-4f * scale) return fromAssimp;
+  usedNodes = true;
+  return fromNodes;
+}
+
+void bindSkin(const aiMesh* am, const NodeTable& t, int meshNode, Mesh& mesh, bool& usedNodes) {
+  const size_t n = am->mNumVertices;
+  std::vector<std::vector<std::pair<int, float>>> influences(n);
+  SkinBinding& skin = mesh.skin;
+  for (unsigned b = 0; b < am->mNumBones; ++b) {
+    const aiBone* bone = am->mBones[b];
+    const int node = t.find(bone->mName);
+    skin.jointBones.push_back(t.boneOfNode[node]);
+    skin.inverseBind.push_back(inverseBindOf(bone, t, node, meshNode, usedNodes));
+    for (unsigned w = 0; w < bone->mNumWeights; ++w) {
+      const aiVertexWeight& vw = bone->mWeights[w];
+      if (vw.mVertexId < n && vw.mWeight > 0.0f) influences[vw.mVertexId].push_back({static_cast<int>(b), vw.mWeight});
+    }
+  }
+  size_t k = 1;
+  for (const auto& list : influences) k = std::max(k, list.size());
+  skin.influencesPerVertex = static_cast<int>(k);
+  skin.joints.assign(n * k, 0);
+  skin.weights.assign(n * k, 0.0f);
+  for (size_t v = 0; v < n; ++v)
+    for (size_t i = 0; i < influences[v].size(); ++i) {
+      skin.joints[v * k + i] = static_cast<uint16_t>(influences[v][i].first);
+      skin.weights[v * k + i] = influences[v][i].second;
+    }
+  skin.normalise();
+}
+
+Mesh convertMesh(const aiMesh* am, const NodeTable& t, int node, bool& usedNodes) {
+  Mesh mesh;
+  mesh.name = am->mName.length > 0 ? am->mName.C_Str() : t.nodes[node]->mName.C_Str();
+  const size_t n = am->mNumVertices;
+  mesh.positions.resize(3 * n);
+  for (size_t v = 0; v < n; ++v)
+    for (int d = 0; d < 3; ++d) mesh.positions[3 * v + d] = am->mVertices[v][d];
+  for (unsigned f = 0; f < am->mNumFaces; ++f)
+    if (am->mFaces[f].mNumIndices == 3)
+      for (int i = 0; i < 3; ++i) mesh.triangles.push_back(am->mFaces[f].mIndices[i]);
+  if (am->HasNormals()) {
+    mesh.normals.resize(3 * n);
+    for (size_t v = 0; v < n; ++v)
+      for (int d = 0; d < 3; ++d) mesh.normals[3 * v + d] = am->mNormals[v][d];
+  } else {
+    computeVertexNormals(mesh.positions, mesh.triangles, mesh.normals);
+  }
+  if (am->HasTextureCoords(0)) {
+    mesh.uvs.resize(2 * n);
+    for (size_t v = 0; v < n; ++v) {
+      mesh.uvs[2 * v] = am->mTextureCoords[0][v].x;
+      mesh.uvs[2 * v + 1] = am->mTextureCoords[0][v].y;
+    }
+  }
+  if (am->HasBones()) {
+    bindSkin(am, t, node, mesh, usedNodes);
+  } else if (t.boneOfNode[node] >= 0) {
+    mesh.attachBone = t.boneOfNode[node];
+  } else {
+    mesh.attachBone = nearestBoneAbove(t, node, mesh.boneFromMesh);
+    mesh.boneFromMesh = mesh.boneFromMesh * t.local[node];
+  }
+  return mesh;
+}
+
+template <typename Key, typename Write>
+Track keyTrack(const Key* keys, unsigned count, double ticksPerSecond, int components, Write write) {
+  Track track;
+  track.components = components;
+  track.isRotation = components == 4;
+  for (unsigned k = 0; k < count; ++k) {
+    const float time = static_cast<float>(keys[k].mTime / ticksPerSecond);
+    if (!track.times.empty() && time <= track.times.back()) continue;  // drop repeated keys
+    track.times.push_back(time);
+    write(keys[k].mValue, track.values);
+  }
+  return track;
+}
+
+Clip convertAnimation(const aiAnimation* anim, const NodeTable& t, int index) {
+  Clip clip;
+  clip.name = anim->mName.length > 0 ? anim->mName.C_Str() : "clip" + std::to_string(index);
+  const double tps = anim->mTicksPerSecond > 0.0 ? anim->mTicksPerSecond : 25.0;
+  auto vec3 = [](const aiVector3D& v, std::vector<float>& out) { out.insert(out.end(), {v.x, v.y, v.z}); };
+  auto quat = [](const aiQuaternion& q, std::vector<float>& out) { out.insert(out.end(), {q.x, q.y, q.z, q.w}); };
+  for (unsigned c = 0; c < anim->mNumChannels; ++c) {
+    const aiNodeAnim* ch = anim->mChannels[c];
+    BoneChannel bc;
+    bc.bone = t.boneOfNode[t.find(ch->mNodeName)];
+    bc.translation = keyTrack(ch->mPositionKeys, ch->mNumPositionKeys, tps, 3, vec3);
+    bc.rotation = keyTrack(ch->mRotationKeys, ch->mNumRotationKeys, tps, 4, quat);
+    bc.scale = keyTrack(ch->mScalingKeys, ch->mNumScalingKeys, tps, 3, vec3);
+    clip.boneChannels.push_back(std::move(bc));
+  }
+  return clip;
+}
+
+}  // namespace
+
+Character importWithAssimp(const std::string& path) {
+  Assimp::Importer importer;
+  const aiScene* scene = readScene(importer, path);
+  Character character;
+  character.name = std::filesystem::path(path).stem().string();
+  character.sourcePath = path;
+  NodeTable table;
+  table.collect(scene->mRootNode, -1);
+  character.skeleton = buildSkeleton(scene, table, path);
+
+  bool usedNodes = false;
+  for (size_t n = 0; n < table.nodes.size(); ++n) {
+    const aiNode* node = table.nodes[n];
+    for (unsigned m = 0; m < node->mNumMeshes; ++m) {
+      if (node->mMeshes[m] >= scene->mNumMeshes) throw FileError(path, "node refers to a missing mesh");
+      character.meshes.push_back(convertMesh(scene->mMeshes[node->mMeshes[m]], table, static_cast<int>(n), usedNodes));
+    }
+  }
+  for (unsigned a = 0; a < scene->mNumAnimations; ++a)
+    character.clips.push_back(convertAnimation(scene->mAnimations[a], table, static_cast<int>(a)));
+  try {
+    character.validate();
+  } catch (const std::runtime_error& e) {
+    throw FileError(path, e.what());
+  }
+  return character;
+}
+
+}  // namespace mq
