@@ -1,0 +1,77 @@
+#include "sim/hair/child_follow.h"
+
+#include <algorithm>
+
+#include "core/util/thread_pool.h"
+#include "sim/hair/hair_colliders.h"
+#include "sim/hair/hair_simulator.h"
+
+namespace mq {
+
+namespace {
+
+glm::vec3 load(const float* a, size_t i) { return {a[3 * i], a[3 * i + 1], a[3 * i + 2]}; }
+
+// A point at parameter t in [0, 1] along a strand of n points (linear).
+glm::vec3 alongStrand(const float* strand, int n, float t, int& index, float& blend) {
+  const float x = t * float(n - 1);
+  index = std::min(n - 2, int(x));
+  blend = x - float(index);
+  return glm::mix(load(strand, index), load(strand, index + 1), blend);
+}
+
+}  // namespace
+
+void followGuides(const Strands& restChildren, const Strands& restGuides, const std::vector<float>& guidePositions,
+                  const std::vector<glm::quat>& guideFrames, std::vector<float>& childPositions,
+                  const PosedHairColliders* body) {
+  childPositions.resize(restChildren.points.size());
+  const size_t children = restChildren.strandCount();
+  const int nc = restChildren.pointsPerStrand, ng = restGuides.pointsPerStrand;
+  const size_t guides = restGuides.strandCount();
+  if (children == 0) return;
+  const bool sameCount = nc == ng;
+  ThreadPool::shared().parallelFor(0, children, 256, [&](size_t begin, size_t end) {
+    for (size_t c = begin; c < end; ++c) {
+      const float* rest = restChildren.strand(c);
+      float* out = childPositions.data() + 3 * c * nc;
+      const int g = c < restChildren.guideOf.size() ? restChildren.guideOf[c] : -1;
+      if (g < 0 || size_t(g) >= guides || ng < 2) {
+        std::copy(rest, rest + 3 * nc, out);
+        continue;
+      }
+      const float* guideRest = restGuides.strand(g);
+      const float* guideNow = guidePositions.data() + 3 * size_t(g) * ng;
+      const glm::quat* frames = guideFrames.data() + size_t(g) * ng;
+      for (int i = 0; i < nc; ++i) {
+        glm::vec3 anchorRest, anchorNow;
+        glm::quat frame;
+        if (sameCount) {
+          anchorRest = load(guideRest, i);
+          anchorNow = load(guideNow, i);
+          frame = frames[i];
+        } else {
+          const float t = nc > 1 ? float(i) / float(nc - 1) : 0.0f;
+          int index;
+          float blend;
+          anchorRest = alongStrand(guideRest, ng, t, index, blend);
+          anchorNow = alongStrand(guideNow, ng, t, index, blend);
+          frame = blend < 0.5f ? frames[index] : frames[index + 1];
+        }
+        glm::vec3 p = anchorNow + frame * (load(rest, i) - anchorRest);
+        glm::vec3 normal;
+        if (body && i > 0) body->pushOut(p, normal);
+        out[3 * i] = p.x;
+        out[3 * i + 1] = p.y;
+        out[3 * i + 2] = p.z;
+      }
+    }
+  });
+}
+
+void followGuides(const Strands& restChildren, const HairSimulator& guides, std::vector<float>& childPositions,
+                  const PosedHairColliders* body) {
+  followGuides(restChildren, guides.rest(), guides.positions(), guides.frames(), childPositions, body);
+}
+
+}  // namespace mq

@@ -1,0 +1,109 @@
+#include "sim/hair/hair_bake.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+#include "core/character/character.h"
+#include "core/hair/body_proxy.h"
+#include "core/hair/scalp.h"
+#include "core/util/error.h"
+
+namespace mq {
+
+namespace {
+
+int findHeadBone(const Skeleton& skeleton) {
+  int fallback = -1;
+  for (int b = 0; b < skeleton.boneCount(); ++b) {
+    std::string name = skeleton.bone(b).name;
+    for (char& c : name) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (name == "head") return b;
+    if (fallback < 0 && name.find("head") != std::string::npos && name.find("end") == std::string::npos &&
+        name.find("top") == std::string::npos)
+      fallback = b;
+  }
+  return fallback;
+}
+
+}  // namespace
+
+HairRig HairRig::fromProxy(const Character& character, const BodyProxy& restProxy) {
+  HairRig rig;
+  rig.headBone = findHeadBone(character.skeleton);
+  if (rig.headBone >= 0)
+    rig.restWorldFromHead = character.skeleton.worldTransforms(character.skeleton.restPose())[rig.headBone];
+  rig.body = HairColliders::attachToSkeleton(restProxy, character.skeleton, rig.headBone);
+  return rig;
+}
+
+HairRig HairRig::fromCharacter(const Character& character) {
+  const int head = findHeadBone(character.skeleton);
+  if (head < 0) return HairRig{};
+  std::vector<glm::vec3> scalpPoints;
+  try {
+    const ScalpSurface scalp = extractScalp(character, ScalpRegion{});
+    for (size_t v = 0; v < scalp.positions.size() / 3; ++v) scalpPoints.push_back(scalp.position(v));
+  } catch (const Error&) {
+    // No tagged scalp: fit the head to its vertices alone.
+  }
+  try {
+    return fromProxy(character, fitBodyProxy(character, character.skeleton.bone(head).name, scalpPoints));
+  } catch (const Error&) {
+    return fromProxy(character, BodyProxy{});  // the head drives no vertex: no colliders
+  }
+}
+
+glm::mat4 HairRig::posedFromRest(const std::vector<glm::mat4>& worldFromBone) const {
+  if (headBone < 0 || headBone >= int(worldFromBone.size())) return glm::mat4(1.0f);
+  return worldFromBone[headBone] * glm::inverse(restWorldFromHead);
+}
+
+const std::vector<float>* HairBake::frameAt(float t) const {
+  if (frames.empty()) return nullptr;
+  const int i = int(std::lround((t - startTime) * fps));
+  return &frames[std::clamp(i, 0, frameCount() - 1)];
+}
+
+HairBake bakeHair(const Character& character, int clipIndex, const Strands& restGuides,
+                  const HairSimParams& params, const HairBakeSettings& settings,
+                  const HairBakeCallbacks& callbacks) {
+  HairBake bake;
+  bake.fps = settings.fps > 0.0f ? settings.fps : 60.0f;
+  bake.pointsPerStrand = restGuides.pointsPerStrand;
+  const bool hasClip = clipIndex >= 0 && clipIndex < int(character.clips.size());
+  const float start = hasClip ? character.clips[clipIndex].startTime() : 0.0f;
+  const float duration = hasClip ? std::max(0.0f, character.clips[clipIndex].duration()) : 1.0f;
+  bake.startTime = start;
+  const int frameCount = int(std::floor(duration * bake.fps + 1e-3f)) + 1;
+  const float dt = 1.0f / bake.fps;
+
+  const HairRig rig = HairRig::fromCharacter(character);
+  HairSimulator simulator(params);
+  simulator.setRest(restGuides);
+  std::vector<glm::mat4> worldFromBone;
+  auto poseAt = [&](float t) {
+    character.skeleton.worldTransforms(samplePose(character, hasClip ? clipIndex : -1, t), worldFromBone);
+  };
+  auto stepAt = [&](float t) {
+    poseAt(t);
+    const PosedHairColliders body = rig.body.posed(worldFromBone, params.collisionMargin);
+    simulator.step(dt, rig.posedFromRest(worldFromBone), &body);
+  };
+
+  const int settleSteps = int(std::ceil(std::max(0.0f, settings.settleSeconds) * bake.fps));
+  for (int i = 0; i < settleSteps; ++i) stepAt(start);
+  bake.frames.reserve(frameCount);
+  for (int f = 0; f < frameCount; ++f) {
+    if (callbacks.cancelled && callbacks.cancelled()) {
+      bake.cancelled = true;
+      break;
+    }
+    if (f > 0 || settleSteps == 0) stepAt(start + float(f) * dt);
+    bake.frames.push_back(simulator.positions());
+    if (callbacks.progress) callbacks.progress(f + 1, frameCount);
+  }
+  return bake;
+}
+
+}  // namespace mq

@@ -1,0 +1,66 @@
+#pragma once
+// Hair on a character: the rig that drives the simulator from a skeleton pose
+// (scalp motion from the head bone, posed body proxies), and baking the
+// guides' motion over a clip.
+
+#include <functional>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/hair/strands.h"
+#include "sim/hair/hair_colliders.h"
+#include "sim/hair/hair_simulator.h"
+
+namespace mq {
+
+struct Character;
+
+// What moves hair on a character: the bone the scalp rides on (its rest
+// world transform maps rest-space strands to bone space) and the colliders.
+struct HairRig {
+  int headBone = -1;                // -1: the scalp does not move
+  glm::mat4 restWorldFromHead{1.0f};
+  HairColliders body;
+
+  // Head bone found by name ("head", case-insensitive); colliders from the
+  // hair module's body proxy fitted to the character (with its tagged scalp
+  // when it has one); no colliders when the character has no head.
+  static HairRig fromCharacter(const Character& character);
+  // The same with a body proxy already fitted (e.g. the groom's).
+  static HairRig fromProxy(const Character& character, const BodyProxy& restProxy);
+  // Maps rest space to the posed world: worldFromHead * restHeadFromWorld.
+  glm::mat4 posedFromRest(const std::vector<glm::mat4>& worldFromBone) const;
+};
+
+struct HairBakeCallbacks {
+  std::function<void(int done, int total)> progress;  // after each frame
+  std::function<bool()> cancelled;                    // polled before each frame
+};
+
+// Guide positions at each frame of a clip, from its start to its end.
+struct HairBake {
+  float fps = 60.0f;
+  float startTime = 0.0f;
+  int pointsPerStrand = 0;
+  std::vector<std::vector<float>> frames;  // each laid out like Strands::points
+  bool cancelled = false;
+
+  int frameCount() const { return int(frames.size()); }
+  // The frame nearest to clip time t (clamped); null when empty.
+  const std::vector<float>* frameAt(float t) const;
+};
+
+struct HairBakeSettings {
+  float fps = 60.0f;
+  float settleSeconds = 0.5f;  // steps at the first frame's pose before recording
+};
+
+// Simulates restGuides (in the character's bind pose, world space) through
+// clip clipIndex (-1: the rest pose for one second). Deterministic. Stops
+// early, with cancelled set and the frames done so far, when asked to.
+HairBake bakeHair(const Character& character, int clipIndex, const Strands& restGuides,
+                  const HairSimParams& params, const HairBakeSettings& settings = {},
+                  const HairBakeCallbacks& callbacks = {});
+
+}  // namespace mq
