@@ -1,6 +1,7 @@
 #include "sim/hair/child_follow.h"
 
 #include <algorithm>
+#include <type_traits>
 
 #include "core/util/thread_pool.h"
 #include "sim/hair/hair_colliders.h"
@@ -22,16 +23,19 @@ glm::vec3 alongStrand(const float* strand, int n, float t, int& index, float& bl
 
 }  // namespace
 
-void followGuides(const Strands& restChildren, const Strands& restGuides, const std::vector<float>& guidePositions,
-                  const std::vector<glm::quat>& guideFrames, std::vector<float>& childPositions,
-                  const PosedHairColliders* body) {
-  childPositions.resize(restChildren.points.size());
+namespace {
+
+// Children [firstChild, strandCount) of restChildren into childPositions
+// (laid out like restChildren.points).
+void followFrom(const Strands& restChildren, size_t firstChild, const Strands& restGuides,
+                const std::vector<float>& guidePositions, const std::vector<glm::quat>& guideFrames,
+                std::vector<float>& childPositions, const PosedHairColliders* body) {
   const size_t children = restChildren.strandCount();
   const int nc = restChildren.pointsPerStrand, ng = restGuides.pointsPerStrand;
   const size_t guides = restGuides.strandCount();
-  if (children == 0) return;
+  if (children <= firstChild) return;
   const bool sameCount = nc == ng;
-  ThreadPool::shared().parallelFor(0, children, 256, [&](size_t begin, size_t end) {
+  ThreadPool::shared().parallelFor(firstChild, children, 256, [&](size_t begin, size_t end) {
     for (size_t c = begin; c < end; ++c) {
       const float* rest = restChildren.strand(c);
       float* out = childPositions.data() + 3 * c * nc;
@@ -67,6 +71,38 @@ void followGuides(const Strands& restChildren, const Strands& restGuides, const 
       }
     }
   });
+}
+
+}  // namespace
+
+void followGuides(const Strands& restChildren, const Strands& restGuides, const std::vector<float>& guidePositions,
+                  const std::vector<glm::quat>& guideFrames, std::vector<float>& childPositions,
+                  const PosedHairColliders* body) {
+  childPositions.resize(restChildren.points.size());
+  followFrom(restChildren, 0, restGuides, guidePositions, guideFrames, childPositions, body);
+}
+
+Strands leadingStrands(const Strands& all, size_t guideCount) {
+  Strands out;
+  out.pointsPerStrand = all.pointsPerStrand;
+  guideCount = std::min(guideCount, all.strandCount());
+  auto head = [&](const auto& v, size_t perStrand) {
+    using V = std::decay_t<decltype(v)>;
+    return v.size() >= guideCount * perStrand ? V(v.begin(), v.begin() + guideCount * perStrand) : V();
+  };
+  out.points = head(all.points, 3 * size_t(all.pointsPerStrand));
+  out.rootNormals = head(all.rootNormals, 3);
+  out.rootUvs = head(all.rootUvs, 2);
+  out.guideOf = head(all.guideOf, 1);
+  return out;
+}
+
+void poseGroomedStrands(const Strands& all, const HairSimulator& guides, std::vector<float>& positions,
+                        const PosedHairColliders* body) {
+  positions.resize(all.points.size());
+  const size_t guideFloats = std::min(guides.positions().size(), positions.size());
+  std::copy(guides.positions().begin(), guides.positions().begin() + guideFloats, positions.begin());
+  followFrom(all, guides.strandCount(), guides.rest(), guides.positions(), guides.frames(), positions, body);
 }
 
 void followGuides(const Strands& restChildren, const HairSimulator& guides, std::vector<float>& childPositions,

@@ -30,4 +30,14 @@ void followGuides(const Strands& restChildren, const Strands& restGuides, const 
 void followGuides(const Strands& restChildren, const HairSimulator& guides, std::vector<float>& childPositions,
                   const PosedHairColliders* body = nullptr);
 
+// A groom's strands in one array, guides first (HairGroom::strands(): the
+// children's guideOf index the guides), with the simulator holding those
+// guides: writes every strand's current points into `positions` (resized
+// like all.points): the guides as simulated, the children following them.
+// The first guideCount strands of `all` (the guides of a groom).
+Strands leadingStrands(const Strands& all, size_t guideCount);
+
+void poseGroomedStrands(const Strands& all, const HairSimulator& guides, std::vector<float>& positions,
+                        const PosedHairColliders* body = nullptr);
+
 }  // namespace mq

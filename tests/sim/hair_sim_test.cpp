@@ -225,6 +225,33 @@ TEST(HairSim, ChildrenFollowTheirGuides) {
   EXPECT_GT(guideMotion, 0.01f);  // the guides really moved away from the rigid rest shape
 }
 
+TEST(HairSim, GroomedStrandsPoseGuidesFirstThenChildren) {
+  // One array as the groom lays it out: guides first, then children.
+  Strands all = strandsOnSphere(6, 12, 0.1f, 0.15f, 9);
+  all.guideOf.assign(6, -1);
+  for (int c = 0; c < 12; ++c) {
+    const int g = c % 6;
+    for (int i = 0; i < 12; ++i) {
+      const glm::vec3 p = pointOf(all.points, g * 12 + i) + glm::vec3(0.0f, 0.0f, 0.004f);
+      all.points.insert(all.points.end(), {p.x, p.y, p.z});
+    }
+    all.guideOf.push_back(g);
+  }
+  HairSimulator sim;
+  sim.setRest(leadingStrands(all, 6));
+  ASSERT_EQ(sim.strandCount(), 6u);
+  for (int step = 0; step < 30; ++step) sim.step(kDt, glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, 0.1f)));
+  std::vector<float> now;
+  poseGroomedStrands(all, sim, now);
+  ASSERT_EQ(now.size(), all.points.size());
+  for (size_t k = 0; k < 6 * 12; ++k) EXPECT_EQ(pointOf(now, k), pointOf(sim.positions(), k));
+  for (int c = 0; c < 12; ++c)
+    for (int i = 0; i < 12; ++i) {
+      const glm::vec3 child = pointOf(now, (6 + c) * 12 + i), guide = pointOf(sim.positions(), (c % 6) * 12 + i);
+      EXPECT_NEAR(glm::length(child - guide), 0.004f, 1e-5f);
+    }
+}
+
 // A skinned character: a sphere weighted to "head" above a cylinder weighted
 // to "neck"; the colliders built from the fitted body proxy match them and
 // follow their bones.
