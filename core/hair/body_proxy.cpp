@@ -1,0 +1,307 @@
+#include "core/hair/body_proxy.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Dense>
+
+#include "core/character/posed_character.h"
+#include "core/hair/scalp.h"
+#include "core/util/error.h"
+
+namespace mq {
+
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+
+// Point of the ellipsoid's own frame, divided by the (grown) radii: inside when |q| < 1.
+glm::vec3 scaledLocal(const Ellipsoid& e, const glm::vec3& p, float margin) {
+  return (glm::transpose(e.axes) * (p - e.center)) / (e.radii + glm::vec3(margin));
+}
+
+glm::vec3 closestOnSegment(const Capsule& c, const glm::vec3& p) {
+  const glm::vec3 ab = c.b - c.a;
+  const float len2 = glm::dot(ab, ab);
+  const float t = len2 > 0.0f ? std::clamp(glm::dot(p - c.a, ab) / len2, 0.0f, 1.0f) : 0.0f;
+  return c.a + t * ab;
+}
+
+bool insideEllipsoid(const Ellipsoid& e, const glm::vec3& p, float margin) {
+  const glm::vec3 q = scaledLocal(e, p, margin);
+  return glm::dot(q, q) < 1.0f;
+}
+
+bool insideCapsule(const Capsule& c, const glm::vec3& p, float margin) {
+  const glm::vec3 d = p - closestOnSegment(c, p);
+  const float r = c.radius + margin;
+  return glm::dot(d, d) < r * r;
+}
+
+float ellipsoidArea(const glm::vec3& r) {
+  const float p = 1.6075f;  // Knud Thomsen's approximation, within 1.1%
+  const float ab = std::pow(r.x * r.y, p), ac = std::pow(r.x * r.z, p), bc = std::pow(r.y * r.z, p);
+  return 4.0f * kPi * std::pow((ab + ac + bc) / 3.0f, 1.0f / p);
+}
+
+float capsuleArea(const Capsule& c) {
+  return 2.0f * kPi * c.radius * glm::length(c.b - c.a) + 4.0f * kPi * c.radius * c.radius;
+}
+
+glm::vec3 fibonacciDirection(int i, int n) {
+  const float golden = kPi * (3.0f - std::sqrt(5.0f));
+  const float y = 1.0f - 2.0f * (float(i) + 0.5f) / float(n);
+  const float r = std::sqrt(std::max(0.0f, 1.0f - y * y));
+  return {r * std::cos(golden * float(i)), y, r * std::sin(golden * float(i))};
+}
+
+// Orthonormal basis with `axis` as its third column.
+glm::mat3 frameAround(const glm::vec3& axis) {
+  const glm::vec3 w = glm::normalize(axis);
+  const glm::vec3 helper = std::abs(w.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+  const glm::vec3 u = glm::normalize(glm::cross(helper, w));
+  return glm::mat3(u, glm::cross(w, u), w);
+}
+
+void addEllipsoidPanels(const Ellipsoid& e, int n, SurfacePanels& out) {
+  const float volumeFactor = e.radii.x * e.radii.y * e.radii.z;
+  for (int i = 0; i < n; ++i) {
+    const glm::vec3 u = fibonacciDirection(i, n);
+    const glm::vec3 gradient = u / e.radii;  // normal direction in the local frame
+    out.centers.push_back(e.center + e.axes * (e.radii * u));
+    out.normals.push_back(glm::normalize(e.axes * gradient));
+    // Area element of the map u -> radii * u: det * |radii^-1 n| * dOmega.
+    out.areas.push_back(4.0f * kPi / float(n) * volumeFactor * glm::length(gradient));
+  }
+}
+
+void addCapsulePanels(const Capsule& c, float spacing, SurfacePanels& out) {
+  const float length = glm::length(c.b - c.a);
+  const glm::mat3 frame = frameAround(length > 0.0f ? c.b - c.a : glm::vec3(0, 1, 0));
+  const int rings = std::max(1, int(std::round(length / spacing)));
+  const int segments = std::max(6, int(std::round(2.0f * kPi * c.radius / spacing)));
+  const float ringArea = 2.0f * kPi * c.radius * length / float(rings * segments);
+  for (int r = 0; r < rings; ++r)
+    for (int s = 0; s < segments; ++s) {
+      const float angle = 2.0f * kPi * (float(s) + 0.5f * float(r & 1)) / float(segments);
+      const glm::vec3 n = frame * glm::vec3(std::cos(angle), std::sin(angle), 0.0f);
+      out.centers.push_back(glm::mix(c.a, c.b, (float(r) + 0.5f) / float(rings)) + c.radius * n);
+      out.normals.push_back(n);
+      out.areas.push_back(ringArea);
+    }
+  const int capPanels = std::max(8, int(std::round(4.0f * kPi * c.radius * c.radius / (spacing * spacing))));
+  for (int i = 0; i < capPanels; ++i) {
+    const glm::vec3 n = frame * fibonacciDirection(i, capPanels);
+    const bool atB = glm::dot(n, frame[2]) > 0.0f;
+    out.centers.push_back((atB ? c.b : c.a) + c.radius * n);
+    out.normals.push_back(n);
+    out.areas.push_back(4.0f * kPi * c.radius * c.radius / float(capPanels));
+  }
+}
+
+}  // namespace
+
+bool BodyProxy::contains(const glm::vec3& p, float margin) const {
+  for (const Ellipsoid& e : ellipsoids)
+    if (insideEllipsoid(e, p, margin)) return true;
+  for (const Capsule& c : capsules)
+    if (insideCapsule(c, p, margin)) return true;
+  return false;
+}
+
+bool BodyProxy::pushOut(glm::vec3& p, float margin) const {
+  bool moved = false;
+  // A push out of one shape can land inside another: a few rounds settle it.
+  for (int round = 0; round < 4; ++round) {
+    bool movedThisRound = false;
+    for (const Ellipsoid& e : ellipsoids) {
+      glm::vec3 q = scaledLocal(e, p, margin);
+      const float len2 = glm::dot(q, q);
+      if (len2 >= 1.0f) continue;
+      q = len2 > 1e-12f ? q / std::sqrt(len2) : glm::vec3(0, 1, 0);
+      p = e.center + e.axes * (q * (e.radii + glm::vec3(margin)) * 1.0001f);
+      movedThisRound = true;
+    }
+    for (const Capsule& c : capsules) {
+      const glm::vec3 base = closestOnSegment(c, p);
+      glm::vec3 d = p - base;
+      const float r = c.radius + margin;
+      const float len2 = glm::dot(d, d);
+      if (len2 >= r * r) continue;
+      d = len2 > 1e-12f ? d / std::sqrt(len2) : frameAround(c.b - c.a)[0];
+      p = base + d * (r * 1.0001f);
+      movedThisRound = true;
+    }
+    moved |= movedThisRound;
+    if (!movedThisRound) break;
+  }
+  return moved;
+}
+
+SurfacePanels BodyProxy::makePanels(int targetCount) const {
+  SurfacePanels all;
+  if (empty() || targetCount <= 0) return all;
+  // The head gets half the panels (the hair lives there), the rest share the other half by area.
+  float restArea = 0.0f;
+  for (size_t i = 1; i < ellipsoids.size(); ++i) restArea += ellipsoidArea(ellipsoids[i].radii);
+  for (const Capsule& c : capsules) restArea += capsuleArea(c);
+  const bool hasHead = !ellipsoids.empty();
+  const int headPanels = !hasHead ? 0 : restArea > 0.0f ? targetCount / 2 : targetCount;
+  if (hasHead) addEllipsoidPanels(ellipsoids[0], std::max(12, headPanels), all);
+  const float spacing = std::sqrt(restArea / float(std::max(1, targetCount - headPanels)));
+  for (size_t i = 1; i < ellipsoids.size(); ++i)
+    addEllipsoidPanels(ellipsoids[i], std::max(12, int(std::round(ellipsoidArea(ellipsoids[i].radii) / (spacing * spacing)))), all);
+  for (const Capsule& c : capsules) addCapsulePanels(c, spacing, all);
+
+  // Keep the panels on the union's boundary.
+  SurfacePanels boundary;
+  for (size_t i = 0; i < all.size(); ++i) {
+    if (contains(all.centers[i], -0.1f * std::sqrt(all.areas[i]))) continue;
+    boundary.centers.push_back(all.centers[i]);
+    boundary.normals.push_back(all.normals[i]);
+    boundary.areas.push_back(all.areas[i]);
+  }
+  return boundary;
+}
+
+BodyProxy sphereProxy(const glm::vec3& center, float radius) {
+  BodyProxy proxy;
+  proxy.ellipsoids.push_back({center, glm::mat3(1.0f), glm::vec3(radius)});
+  return proxy;
+}
+
+namespace {
+
+// For every vertex of every mesh: world rest position and the bone that
+// drives it most (-1 when none).
+struct DrivenVertices {
+  std::vector<glm::vec3> positions;
+  std::vector<int> bones;
+};
+
+DrivenVertices drivenVertices(const Character& character, std::vector<glm::mat4>& worldFromBone) {
+  PosedCharacter posed;
+  posed.evaluate(character, -1, 0.0f, nullptr, nullptr);
+  worldFromBone = posed.worldFromBone();
+  DrivenVertices out;
+  for (size_t m = 0; m < character.meshes.size(); ++m) {
+    const Mesh& mesh = character.meshes[m];
+    const std::vector<float>& world = posed.meshes()[m].positions;
+    for (size_t v = 0; v < mesh.vertexCount(); ++v) {
+      out.positions.emplace_back(world[3 * v], world[3 * v + 1], world[3 * v + 2]);
+      out.bones.push_back(dominantBone(mesh, v));
+    }
+  }
+  return out;
+}
+
+bool isDescendantOrSelf(const Skeleton& skeleton, int bone, int ancestor) {
+  for (int b = bone; b >= 0; b = skeleton.bone(b).parent)
+    if (b == ancestor) return true;
+  return false;
+}
+
+glm::vec3 origin(const glm::mat4& m) { return glm::vec3(m[3]); }
+
+glm::mat3 orthonormalRotation(const glm::mat4& m) {
+  glm::vec3 x = glm::normalize(glm::vec3(m[0]));
+  glm::vec3 y = glm::vec3(m[1]);
+  y = glm::normalize(y - glm::dot(y, x) * x);
+  return glm::mat3(x, y, glm::cross(x, y));
+}
+
+// Least-squares axis-aligned quadric A x^2 + B y^2 + C z^2 + D x + E y + F z = 1
+// in `frame`; falls back to the bounding box when the fit is not an ellipsoid.
+Ellipsoid fitEllipsoid(const std::vector<glm::vec3>& points, const glm::mat3& frame, const glm::vec3& pivot) {
+  glm::vec3 lo(1e30f), hi(-1e30f);
+  Eigen::MatrixXd rows(points.size(), 6);
+  Eigen::VectorXd ones = Eigen::VectorXd::Ones(points.size());
+  for (size_t i = 0; i < points.size(); ++i) {
+    const glm::vec3 q = glm::transpose(frame) * (points[i] - pivot);
+    lo = glm::min(lo, q);
+    hi = glm::max(hi, q);
+    rows.row(i) << q.x * q.x, q.y * q.y, q.z * q.z, q.x, q.y, q.z;
+  }
+  Ellipsoid box{pivot + frame * (0.5f * (lo + hi)), frame, glm::max(0.5f * (hi - lo), glm::vec3(1e-3f))};
+  const Eigen::VectorXd k = rows.colPivHouseholderQr().solve(ones);
+  if (!(k[0] > 0 && k[1] > 0 && k[2] > 0)) return box;
+  const glm::dvec3 c(-k[3] / (2 * k[0]), -k[4] / (2 * k[1]), -k[5] / (2 * k[2]));
+  const double g = 1.0 + k[0] * c.x * c.x + k[1] * c.y * c.y + k[2] * c.z * c.z;
+  if (!(g > 0)) return box;
+  const glm::vec3 radii(std::sqrt(g / k[0]), std::sqrt(g / k[1]), std::sqrt(g / k[2]));
+  const glm::vec3 extent = hi - lo;
+  if (glm::any(glm::greaterThan(radii, extent))) return box;  // a wild fit to a small patch
+  return {pivot + frame * glm::vec3(c), frame, radii};
+}
+
+// Capsule from bone `b` to `tipBone`, its radius the median distance of the
+// vertices `b` drives; none when it drives fewer than 8.
+bool boneCapsule(const DrivenVertices& verts, int b, const glm::vec3& start, const glm::vec3& end, Capsule& out) {
+  Capsule c{start, end, 0.0f};
+  std::vector<float> distances;
+  for (size_t v = 0; v < verts.positions.size(); ++v)
+    if (verts.bones[v] == b) distances.push_back(glm::length(verts.positions[v] - closestOnSegment(c, verts.positions[v])));
+  if (distances.size() < 8) return false;
+  std::nth_element(distances.begin(), distances.begin() + distances.size() / 2, distances.end());
+  c.radius = 0.95f * distances[distances.size() / 2];
+  if (c.radius <= 1e-3f) return false;
+  out = c;
+  return true;
+}
+
+void addBodyCapsules(const Character& character, int head, const DrivenVertices& verts,
+                     const std::vector<glm::mat4>& worldFromBone, BodyProxy& proxy) {
+  const Skeleton& skeleton = character.skeleton;
+  auto addFromTo = [&](int bone, int tip) {
+    Capsule c;
+    if (boneCapsule(verts, bone, origin(worldFromBone[bone]), origin(worldFromBone[tip]), c)) proxy.capsules.push_back(c);
+  };
+  const int neck = skeleton.bone(head).parent;
+  if (neck < 0) return;
+  addFromTo(neck, head);
+  const int chest = skeleton.bone(neck).parent;
+  if (chest < 0) return;
+  addFromTo(chest, neck);
+  // Shoulders: the chest's other children (clavicles) and their chains down to the elbows.
+  for (int side : skeleton.children(chest)) {
+    if (side == neck) continue;
+    int bone = side;
+    for (int depth = 0; depth < 2; ++depth) {
+      const std::vector<int> next = skeleton.children(bone);
+      if (next.empty()) break;
+      addFromTo(bone, next[0]);
+      bone = next[0];
+    }
+  }
+  const int spine = skeleton.bone(chest).parent;
+  if (spine >= 0) addFromTo(spine, chest);
+}
+
+}  // namespace
+
+BodyProxy fitBodyProxy(const Character& character, const std::string& headBone,
+                       const std::vector<glm::vec3>& scalpPoints) {
+  const int head = character.skeleton.findBone(headBone);
+  if (head < 0) throw Error("character '" + character.name + "' has no bone named '" + headBone + "'");
+  std::vector<glm::mat4> worldFromBone;
+  const DrivenVertices verts = drivenVertices(character, worldFromBone);
+  std::vector<glm::vec3> headPoints;
+  for (size_t v = 0; v < verts.positions.size(); ++v)
+    if (verts.bones[v] >= 0 && isDescendantOrSelf(character.skeleton, verts.bones[v], head))
+      headPoints.push_back(verts.positions[v]);
+  if (headPoints.size() < 10)
+    throw Error("bone '" + headBone + "' of character '" + character.name + "' drives too few vertices for a head");
+
+  Ellipsoid e = fitEllipsoid(headPoints, orthonormalRotation(worldFromBone[head]), origin(worldFromBone[head]));
+  // Shrink so that the roots sit on or outside the proxy (at most by 15%).
+  float smallest = 1.0f;
+  for (const glm::vec3& p : scalpPoints) smallest = std::min(smallest, glm::length(scaledLocal(e, p, 0.0f)));
+  e.radii *= std::max(smallest * 0.995f, 0.85f);
+
+  BodyProxy proxy;
+  proxy.ellipsoids.push_back(e);
+  addBodyCapsules(character, head, verts, worldFromBone, proxy);
+  return proxy;
+}
+
+}  // namespace mq

@@ -1,0 +1,63 @@
+#pragma once
+// A coarse stand-in for the head and upper body that hair flows around and
+// must never enter: an ellipsoid for the head and capsules for the neck,
+// chest and shoulders. Cheap inside tests and push-out, and the surface the
+// flow's source panels are spread over.
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/character/character.h"
+
+namespace mq {
+
+struct Ellipsoid {
+  glm::vec3 center{0.0f};
+  glm::mat3 axes{1.0f};  // columns: the ellipsoid's orthonormal frame in world space
+  glm::vec3 radii{0.1f};
+};
+
+struct Capsule {
+  glm::vec3 a{0.0f}, b{0.0f};
+  float radius = 0.05f;
+};
+
+// Flat source panels over a closed surface: centre, outward normal, area.
+struct SurfacePanels {
+  std::vector<glm::vec3> centers, normals;
+  std::vector<float> areas;
+  size_t size() const { return centers.size(); }
+};
+
+class BodyProxy {
+ public:
+  std::vector<Ellipsoid> ellipsoids;  // the first one is the head
+  std::vector<Capsule> capsules;
+
+  bool empty() const { return ellipsoids.empty() && capsules.empty(); }
+  glm::vec3 headCenter() const { return ellipsoids.empty() ? glm::vec3(0.0f) : ellipsoids[0].center; }
+
+  // True when p is inside some shape grown by `margin` (negative: shrunk).
+  bool contains(const glm::vec3& p, float margin = 0.0f) const;
+  // Moves p out of every shape it is inside, to `margin` beyond the surface.
+  // Returns true when p moved.
+  bool pushOut(glm::vec3& p, float margin) const;
+  // About `targetCount` panels over the union's surface (panels inside
+  // another shape are dropped: they are not on the boundary).
+  SurfacePanels makePanels(int targetCount) const;
+};
+
+// A sphere head (tests and characters without a head bone).
+BodyProxy sphereProxy(const glm::vec3& center, float radius);
+
+// Fits the proxy to a character in its rest pose: an ellipsoid in the head
+// bone's frame fitted (least squares) to the vertices the head bone drives,
+// shrunk so that the scalp vertices (`scalpPoints`, world space, may be
+// empty) lie on or outside it; capsules around the neck, chest, clavicles
+// and upper arms (bones found by walking from the head bone). Throws
+// mq::Error when the head bone does not exist or drives no vertex.
+BodyProxy fitBodyProxy(const Character& character, const std::string& headBone,
+                       const std::vector<glm::vec3>& scalpPoints);
+
+}  // namespace mq

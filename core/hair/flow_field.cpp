@@ -1,0 +1,179 @@
+#include "core/hair/flow_field.h"
+
+#include <cmath>
+
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
+
+namespace mq {
+
+namespace {
+
+constexpr float kInvFourPi = 0.0795774715f;
+constexpr float kCoreFraction = 0.3f;  // panel core radius / sqrt(area)
+
+inline glm::vec3 sourceVelocity(const PointSource& s, const glm::vec3& x) {
+  const glm::vec3 d = x - s.position;
+  const float r2 = s.radius * s.radius;
+  const float q = glm::dot(d, d) + r2;
+  return d * (s.strength * r2 / (q * std::sqrt(q)));
+}
+
+inline glm::vec3 vortexVelocity(const Vortex& v, const glm::vec3& x) {
+  const glm::vec3 d = x - v.position;
+  const float r2 = v.radius * v.radius;
+  const float falloff = std::exp(0.5f - glm::dot(d, d) / (2.0f * r2));
+  return glm::cross(v.axis, d) * (v.strength / v.radius * falloff);
+}
+
+}  // namespace
+
+void FlowField::setObstacle(const SurfacePanels& panels, const std::vector<uint8_t>& scalpPanel) {
+  panels_ = panels;
+  scalpPanel_ = scalpPanel;
+  scalpPanel_.resize(panels.size(), 0);
+  const int n = int(panels.size());
+  Eigen::MatrixXf a(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      if (i == j) {
+        a(i, j) = 0.5f;
+        continue;
+      }
+      const glm::vec3 d = panels.centers[i] - panels.centers[j];
+      const float q = glm::dot(d, d) + kCoreFraction * kCoreFraction * panels.areas[j];
+      a(i, j) = panels.areas[j] * kInvFourPi * glm::dot(d, panels.normals[i]) / (q * std::sqrt(q));
+    }
+  lu_ = Eigen::PartialPivLU<Eigen::MatrixXf>(a);
+  const size_t padded = (panels.size() + 3) & ~size_t(3);
+  px_.assign(padded, 0.0f);
+  py_.assign(padded, 0.0f);
+  pz_.assign(padded, 0.0f);
+  weight_.assign(padded, 0.0f);
+  core2_.assign(padded, 1.0f);
+  for (size_t j = 0; j < panels.size(); ++j) {
+    px_[j] = panels.centers[j].x;
+    py_[j] = panels.centers[j].y;
+    pz_[j] = panels.centers[j].z;
+    core2_[j] = kCoreFraction * kCoreFraction * panels.areas[j];
+  }
+  solveStrengths();
+}
+
+void FlowField::setPrimitives(const FlowPrimitives& primitives, const glm::vec3& headOrigin, float scalpOutflow) {
+  streams_.clear();
+  uniform_ = glm::vec3(0.0f);
+  for (UniformStream s : primitives.streams) {
+    const float len = glm::length(s.direction);
+    if (len <= 0.0f) continue;
+    s.direction /= len;
+    uniform_ += s.direction * s.strength;
+    streams_.push_back(s);
+  }
+  sources_ = primitives.sources;
+  for (PointSource& s : sources_) {
+    s.position += headOrigin;
+    s.radius = std::max(s.radius, 1e-4f);
+  }
+  vortices_.clear();
+  for (Vortex v : primitives.vortices) {
+    const float len = glm::length(v.axis);
+    if (len <= 0.0f) continue;
+    v.axis /= len;
+    v.position += headOrigin;
+    v.radius = std::max(v.radius, 1e-4f);
+    vortices_.push_back(v);
+  }
+  scalpOutflow_ = scalpOutflow;
+  solveStrengths();
+}
+
+void FlowField::setNoise(uint32_t seed, float amplitude, float wavelength) {
+  perlin_ = PerlinNoise(seed);
+  noiseAmplitude_ = amplitude;
+  noiseFrequency_ = wavelength > 0.0f ? 1.0f / wavelength : 1.0f;
+}
+
+void FlowField::solveStrengths() {
+  const int n = int(panels_.size());
+  sigma_.assign(n, 0.0f);
+  target_.assign(n, 0.0f);
+  if (n == 0) return;
+  Eigen::VectorXf rhs(n);
+  for (int i = 0; i < n; ++i) {
+    target_[i] = scalpPanel_[i] ? scalpOutflow_ : 0.0f;
+    rhs[i] = target_[i] - glm::dot(primitiveVelocity(panels_.centers[i]), panels_.normals[i]);
+  }
+  const Eigen::VectorXf s = lu_.solve(rhs);
+  for (int j = 0; j < n; ++j) {
+    sigma_[j] = s[j];
+    weight_[j] = s[j] * panels_.areas[j] * kInvFourPi;
+  }
+}
+
+glm::vec3 FlowField::primitiveVelocity(const glm::vec3& x) const {
+  glm::vec3 v = uniform_;
+  for (const PointSource& s : sources_) v += sourceVelocity(s, x);
+  for (const Vortex& w : vortices_) v += vortexVelocity(w, x);
+  return v;
+}
+
+glm::vec3 FlowField::panelVelocity(const glm::vec3& x, int skip) const {
+  const size_t n = px_.size();
+  float vx = 0.0f, vy = 0.0f, vz = 0.0f;
+#if defined(__SSE2__)
+  // Four panels per iteration; 1/r^3 from rsqrt refined by one Newton step.
+  __m128 ax = _mm_setzero_ps(), ay = _mm_setzero_ps(), az = _mm_setzero_ps();
+  const __m128 qx = _mm_set1_ps(x.x), qy = _mm_set1_ps(x.y), qz = _mm_set1_ps(x.z);
+  const __m128 half = _mm_set1_ps(0.5f), three = _mm_set1_ps(3.0f);
+  for (size_t j = 0; j < n; j += 4) {
+    const __m128 dx = _mm_sub_ps(qx, _mm_loadu_ps(&px_[j]));
+    const __m128 dy = _mm_sub_ps(qy, _mm_loadu_ps(&py_[j]));
+    const __m128 dz = _mm_sub_ps(qz, _mm_loadu_ps(&pz_[j]));
+    const __m128 r2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)),
+                                 _mm_add_ps(_mm_mul_ps(dz, dz), _mm_loadu_ps(&core2_[j])));
+    __m128 inv = _mm_rsqrt_ps(r2);
+    inv = _mm_mul_ps(_mm_mul_ps(half, inv), _mm_sub_ps(three, _mm_mul_ps(r2, _mm_mul_ps(inv, inv))));
+    const __m128 s = _mm_mul_ps(_mm_loadu_ps(&weight_[j]), _mm_mul_ps(inv, _mm_mul_ps(inv, inv)));
+    ax = _mm_add_ps(ax, _mm_mul_ps(s, dx));
+    ay = _mm_add_ps(ay, _mm_mul_ps(s, dy));
+    az = _mm_add_ps(az, _mm_mul_ps(s, dz));
+  }
+  alignas(16) float lanes[4];
+  _mm_store_ps(lanes, ax);
+  vx = lanes[0] + lanes[1] + lanes[2] + lanes[3];
+  _mm_store_ps(lanes, ay);
+  vy = lanes[0] + lanes[1] + lanes[2] + lanes[3];
+  _mm_store_ps(lanes, az);
+  vz = lanes[0] + lanes[1] + lanes[2] + lanes[3];
+#else
+  for (size_t j = 0; j < n; ++j) {
+    const float dx = x.x - px_[j], dy = x.y - py_[j], dz = x.z - pz_[j];
+    const float r2 = dx * dx + dy * dy + dz * dz + core2_[j];
+    const float s = weight_[j] / (r2 * std::sqrt(r2));
+    vx += s * dx;
+    vy += s * dy;
+    vz += s * dz;
+  }
+#endif
+  glm::vec3 v(vx, vy, vz);
+  if (skip >= 0 && size_t(skip) < panels_.size()) {
+    const glm::vec3 d = x - panels_.centers[skip];
+    const float r2 = glm::dot(d, d) + core2_[skip];
+    v -= d * (weight_[skip] / (r2 * std::sqrt(r2)));
+  }
+  return v;
+}
+
+glm::vec3 FlowField::noise(const glm::vec3& x) const {
+  if (noiseAmplitude_ <= 0.0f) return glm::vec3(0.0f);
+  return noiseAmplitude_ * perlin_.noise3(x * noiseFrequency_);
+}
+
+float FlowField::panelNormalVelocity(int i) const {
+  const glm::vec3& c = panels_.centers[i];
+  return glm::dot(primitiveVelocity(c) + panelVelocity(c, i), panels_.normals[i]) + 0.5f * sigma_[i];
+}
+
+}  // namespace mq
