@@ -1,0 +1,164 @@
+#include "ui/document/editor_document.h"
+
+#include <QUndoStack>
+
+#include "core/util/thread_pool.h"
+
+namespace mq::ui {
+
+EditorDocument::EditorDocument(QObject* parent) : QObject(parent), undoStack_(new QUndoStack(this)) {
+  connect(undoStack_, &QUndoStack::cleanChanged, this, [this] { emit modifiedChanged(isModified()); });
+}
+
+EditorDocument::~EditorDocument() = default;
+
+void EditorDocument::replace(LoadedDocument loaded) {
+  undoStack_->clear();
+  character_ = std::move(loaded.character);
+  scene_ = std::move(loaded.scene);
+  documentPath_ = loaded.documentPath;
+  displayName_ = loaded.displayName;
+  edits_ = {};
+  for (const auto& [name, rotation] : scene_.poseRotations) {
+    const int bone = character_.skeleton.findBone(name);
+    if (bone >= 0) edits_.rotations[bone] = rotation;
+  }
+  clipIndex_ = scene_.clip.empty() ? (character_.clips.empty() ? -1 : 0) : character_.findClip(scene_.clip);
+  time_ = clipIndex_ >= 0 ? std::clamp(scene_.time, clipStart(), clipEnd()) : 0.0f;
+  selectedBone_ = -1;
+  selectedMesh_ = -1;
+  unsavedSectionChanges_ = false;
+  evaluatePose();
+  emit characterReplaced();
+  emit clipsChanged();
+  emit clipChanged(clipIndex_);
+  emit timeChanged(time_);
+  emit selectionChanged();
+  emit viewSettingsChanged();
+  emit poseChanged();
+  emit documentChanged();
+  emit modifiedChanged(false);
+}
+
+void EditorDocument::setDocumentPath(const QString& path) {
+  documentPath_ = path;
+  displayName_ = path.section('/', -1);
+}
+
+bool EditorDocument::isModified() const { return !undoStack_->isClean() || unsavedSectionChanges_; }
+
+void EditorDocument::markSaved() {
+  unsavedSectionChanges_ = false;
+  undoStack_->setClean();
+  emit modifiedChanged(false);
+}
+
+void EditorDocument::notifyChanged() {
+  unsavedSectionChanges_ = true;
+  emit documentChanged();
+  emit modifiedChanged(true);
+}
+
+// --- pose ---------------------------------------------------------------------
+
+std::optional<glm::quat> EditorDocument::boneRotation(int bone) const {
+  const auto it = edits_.rotations.find(bone);
+  if (it == edits_.rotations.end()) return std::nullopt;
+  return it->second;
+}
+
+void EditorDocument::setBoneRotation(int bone, std::optional<glm::quat> rotation) {
+  if (bone < 0 || bone >= character_.skeleton.boneCount()) return;
+  if (rotation) edits_.rotations[bone] = glm::normalize(*rotation);
+  else edits_.rotations.erase(bone);
+  evaluatePose();
+  emit poseChanged();
+  emit documentChanged();
+}
+
+void EditorDocument::setPoseEdits(const PoseEdits& edits) {
+  edits_ = edits;
+  evaluatePose();
+  emit poseChanged();
+  emit documentChanged();
+}
+
+void EditorDocument::evaluatePose() {
+  posed_.evaluate(character_, clipIndex_, time_, &edits_, &ThreadPool::shared());
+}
+
+// --- animation ------------------------------------------------------------------
+
+float EditorDocument::clipStart() const {
+  return clipIndex_ >= 0 ? character_.clips[clipIndex_].startTime() : 0.0f;
+}
+
+float EditorDocument::clipEnd() const {
+  return clipIndex_ >= 0 ? character_.clips[clipIndex_].endTime() : 0.0f;
+}
+
+void EditorDocument::setClip(int clipIndex) {
+  if (clipIndex < -1 || clipIndex >= static_cast<int>(character_.clips.size()) || clipIndex == clipIndex_) return;
+  clipIndex_ = clipIndex;
+  time_ = clipStart();
+  evaluatePose();
+  emit clipChanged(clipIndex_);
+  emit timeChanged(time_);
+  emit poseChanged();
+  emit documentChanged();
+}
+
+void EditorDocument::setTime(float seconds) {
+  seconds = clipIndex_ >= 0 ? std::clamp(seconds, clipStart(), clipEnd()) : 0.0f;
+  if (seconds == time_) return;
+  time_ = seconds;
+  evaluatePose();
+  emit timeChanged(time_);
+  emit poseChanged();
+  emit documentChanged();
+}
+
+void EditorDocument::addClip(Clip clip) {
+  character_.clips.push_back(std::move(clip));
+  emit clipsChanged();
+  clipIndex_ = -2;  // force setClip to apply and signal
+  setClip(static_cast<int>(character_.clips.size()) - 1);
+  unsavedSectionChanges_ = true;
+  emit modifiedChanged(true);
+}
+
+// --- selection and view -------------------------------------------------------------
+
+void EditorDocument::selectBone(int bone) {
+  if (bone >= character_.skeleton.boneCount()) bone = -1;
+  if (bone == selectedBone_ && selectedMesh_ < 0) return;
+  selectedBone_ = bone;
+  selectedMesh_ = -1;
+  emit selectionChanged();
+}
+
+void EditorDocument::selectMesh(int mesh) {
+  if (mesh >= static_cast<int>(character_.meshes.size())) mesh = -1;
+  if (mesh == selectedMesh_ && selectedBone_ < 0) return;
+  selectedMesh_ = mesh;
+  selectedBone_ = -1;
+  emit selectionChanged();
+}
+
+void EditorDocument::setSkeletonVisible(bool visible) {
+  if (scene_.view.showSkeleton == visible) return;
+  scene_.view.showSkeleton = visible;
+  emit viewSettingsChanged();
+}
+
+SceneDocument EditorDocument::sceneDocument() const {
+  SceneDocument out = scene_;
+  out.poseRotations.clear();
+  for (const auto& [bone, rotation] : edits_.rotations)
+    out.poseRotations[character_.skeleton.bone(bone).name] = rotation;
+  out.clip = clipIndex_ >= 0 ? character_.clips[clipIndex_].name : std::string();
+  out.time = time_;
+  return out;
+}
+
+}  // namespace mq::ui

@@ -1,0 +1,114 @@
+#pragma once
+// The document open in the editor: the loaded character, the scene document
+// it belongs to (pose edits, clip, time, view settings, the hair and garment
+// sections), the posed meshes at the current time, the selection and the undo
+// stack. Widgets observe its signals; every pose change goes through an undo
+// command (ui/document/pose_commands.h) which calls setBoneRotation.
+
+#include <optional>
+
+#include <QObject>
+#include <QString>
+
+#include "core/character/character.h"
+#include "core/character/posed_character.h"
+#include "core/scene/scene_document.h"
+
+class QUndoStack;
+
+namespace mq::ui {
+
+// What a file open produces, before it replaces the current document.
+struct LoadedDocument {
+  Character character;
+  SceneDocument scene;
+  QString documentPath;  // the scene file, empty for a character file or "default"
+  QString displayName;   // for the title bar
+};
+
+class EditorDocument : public QObject {
+  Q_OBJECT
+
+ public:
+  explicit EditorDocument(QObject* parent = nullptr);
+  ~EditorDocument() override;
+
+  // Replaces everything (character, edits, clip, time, selection); clears undo.
+  void replace(LoadedDocument loaded);
+
+  const Character& character() const { return character_; }
+  const PosedCharacter& posed() const { return posed_; }
+  const PoseEdits& poseEdits() const { return edits_; }
+  QUndoStack* undoStack() const { return undoStack_; }
+
+  // File identity
+  const QString& documentPath() const { return documentPath_; }
+  const QString& displayName() const { return displayName_; }
+  void setDocumentPath(const QString& path);
+  bool isModified() const;
+  void markSaved();
+
+  // Pose edits (local rotation after the clip's): nullopt removes the edit.
+  std::optional<glm::quat> boneRotation(int bone) const;
+  void setBoneRotation(int bone, std::optional<glm::quat> rotation);
+  void setPoseEdits(const PoseEdits& edits);
+
+  // Animation
+  int clipIndex() const { return clipIndex_; }  // -1: rest pose
+  float time() const { return time_; }
+  void setClip(int clipIndex);
+  void setTime(float seconds);
+  // Start and end of the current clip's time axis (0, 0 for the rest pose).
+  float clipStart() const;
+  float clipEnd() const;
+  // Adds a clip (e.g. an imported BVH motion) and makes it current.
+  void addClip(Clip clip);
+
+  // Selection
+  int selectedBone() const { return selectedBone_; }
+  int selectedMesh() const { return selectedMesh_; }
+  void selectBone(int bone);  // -1 clears
+  void selectMesh(int mesh);
+
+  // View settings stored in the document
+  const ViewSettings& viewSettings() const { return scene_.view; }
+  void setSkeletonVisible(bool visible);
+
+  // The scene document as it should be saved now (pose edits by bone name,
+  // clip, time and the sections other modules own).
+  SceneDocument sceneDocument() const;
+  // Sections owned by other modules (hair, garments, ...): read and replace.
+  SceneDocument& sceneSections() { return scene_; }
+  // Tools that change a section call this so the title shows the change.
+  void notifyChanged();
+
+ signals:
+  void characterReplaced();
+  void poseChanged();  // the posed meshes changed (edit, clip or time)
+  void timeChanged(float seconds);
+  void clipChanged(int clipIndex);
+  void clipsChanged();  // the list of clips changed
+  void selectionChanged();
+  void viewSettingsChanged();
+  // Any change at all (for tools that keep derived data, e.g. hair, cloth).
+  void documentChanged();
+  void modifiedChanged(bool modified);
+
+ private:
+  void evaluatePose();
+
+  Character character_;
+  SceneDocument scene_;
+  PoseEdits edits_;
+  PosedCharacter posed_;
+  QString documentPath_;
+  QString displayName_;
+  int clipIndex_ = -1;
+  float time_ = 0.0f;
+  int selectedBone_ = -1;
+  int selectedMesh_ = -1;
+  bool unsavedSectionChanges_ = false;  // changes outside the undo stack
+  QUndoStack* undoStack_ = nullptr;
+};
+
+}  // namespace mq::ui

@@ -1,0 +1,53 @@
+#pragma once
+// Undoable pose edits. Every change of a bone's rotation, typed or dragged,
+// is one of these on the document's QUndoStack. Consecutive steps of one
+// drag of one bone merge into a single command (same bone, same drag id).
+
+#include <optional>
+
+#include <QUndoCommand>
+
+#include "core/character/character.h"
+
+namespace mq::ui {
+
+class EditorDocument;
+
+class SetBoneRotationCommand : public QUndoCommand {
+ public:
+  // dragId 0: never merges; a gizmo drag passes the same non-zero id for all
+  // of its steps.
+  SetBoneRotationCommand(EditorDocument* document, int bone, std::optional<glm::quat> after, int dragId = 0);
+
+  void undo() override;
+  void redo() override;
+  int id() const override { return 0x6d71; }
+  bool mergeWith(const QUndoCommand* other) override;
+
+  int bone() const { return bone_; }
+
+  // A fresh id for a new drag.
+  static int nextDragId();
+
+ private:
+  EditorDocument* document_;
+  int bone_;
+  std::optional<glm::quat> before_;
+  std::optional<glm::quat> after_;
+  int dragId_;
+};
+
+// Replaces all pose edits at once (reset pose, paste pose).
+class SetPoseEditsCommand : public QUndoCommand {
+ public:
+  SetPoseEditsCommand(EditorDocument* document, PoseEdits after, const QString& text);
+  void undo() override;
+  void redo() override;
+
+ private:
+  EditorDocument* document_;
+  PoseEdits before_;
+  PoseEdits after_;
+};
+
+}  // namespace mq::ui

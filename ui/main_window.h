@@ -1,0 +1,147 @@
+#pragma once
+// The editor's main window: the 3D viewport in the centre, the scene tree on
+// the left, the properties of the selection on the right, the timeline at the
+// bottom, and a status bar with progress for long work. Files open on a
+// worker thread; a failed open reports the error and leaves the current
+// document untouched.
+//
+// Extension points for other tools (hair, garments): addToolDock() for their
+// panels, document() and its signals (documentChanged, poseChanged,
+// timeChanged), sceneView() to add actors, viewport()->requestRender().
+
+#include <functional>
+#include <memory>
+
+#include <QMainWindow>
+#include <QStringList>
+
+class QAction;
+class QDockWidget;
+class QLabel;
+class QMenu;
+class QProgressBar;
+class QToolBar;
+
+namespace mq::render {
+class SceneView;
+}
+
+namespace mq::ui {
+
+class EditorDocument;
+class PoseTool;
+class PropertiesPanel;
+class SceneTreePanel;
+class TimelinePanel;
+class VtkViewportWidget;
+struct LoadedDocument;
+
+class MainWindow : public QMainWindow {
+  Q_OBJECT
+
+ public:
+  explicit MainWindow(QWidget* parent = nullptr);
+  ~MainWindow() override;
+
+  EditorDocument* document() const { return document_; }
+  VtkViewportWidget* viewport() const { return viewport_; }
+  render::SceneView* sceneView() const { return scene_.get(); }
+  PoseTool* poseTool() const { return poseTool_; }
+  SceneTreePanel* sceneTree() const { return sceneTree_; }
+  PropertiesPanel* properties() const { return properties_; }
+  TimelinePanel* timeline() const { return timeline_; }
+
+  // Adds a tool's dock (tabbed with the properties on the right by default)
+  // and lists it in the View menu.
+  void addToolDock(QDockWidget* dock, Qt::DockWidgetArea area = Qt::RightDockWidgetArea);
+
+  // Opens "default", a character, a scene document, or a BVH motion (applied
+  // to the current character) on a worker thread; emits loadFinished.
+  void openFile(const QString& fileOrDefault);
+  bool isBusy() const { return busy_; }
+  // Same, on the calling thread (tests, scripts). False and `error` on failure.
+  bool openFileNow(const QString& fileOrDefault, QString* error = nullptr);
+  bool saveDocument(const QString& path, QString* error = nullptr);
+  bool exportPosedMesh(const QString& path, QString* error = nullptr);
+  void frameAll();
+  void setSkeletonVisible(bool visible);
+
+  // How errors and questions reach the user (message boxes by default;
+  // tests replace them).
+  std::function<void(const QString& title, const QString& message)> reportError;
+  std::function<bool()> confirmDiscardChanges;
+
+ signals:
+  void loadFinished(bool ok);
+  // Relayed from the document for tools that only know the window.
+  void documentChanged();
+  void timeChanged(float seconds);
+
+ protected:
+  void closeEvent(QCloseEvent* event) override;
+  void dragEnterEvent(QDragEnterEvent* event) override;
+  void dropEvent(QDropEvent* event) override;
+
+ private:
+  void createDocks();
+  void createActions();
+  void createMenus();
+  void createToolBar();
+  void createStatusBar();
+  void connectDocument();
+  void restoreLayout();
+
+  // File menu
+  void newDocument();
+  void openWithDialog();
+  bool save();
+  bool saveAs();
+  void exportWithDialog();
+  bool maybeDiscardChanges();
+  void adoptLoaded(LoadedDocument loaded, double seconds);
+  void addRecentFile(const QString& path);
+  void rebuildRecentMenu();
+  void setBusy(bool busy, const QString& message);
+
+  // Document -> scene sync
+  void onCharacterReplaced();
+  void onPoseChanged();
+  void onSelectionChanged();
+  void updateTitle();
+  void storeCamera();
+  void restoreCamera();
+
+  EditorDocument* document_;
+  std::unique_ptr<render::SceneView> scene_;
+  VtkViewportWidget* viewport_;
+  PoseTool* poseTool_ = nullptr;
+  SceneTreePanel* sceneTree_ = nullptr;
+  PropertiesPanel* properties_ = nullptr;
+  TimelinePanel* timeline_ = nullptr;
+  QDockWidget* treeDock_ = nullptr;
+  QDockWidget* propertiesDock_ = nullptr;
+  QDockWidget* timelineDock_ = nullptr;
+
+  QAction* newAction_ = nullptr;
+  QAction* openAction_ = nullptr;
+  QAction* saveAction_ = nullptr;
+  QAction* saveAsAction_ = nullptr;
+  QAction* exportAction_ = nullptr;
+  QAction* quitAction_ = nullptr;
+  QAction* undoAction_ = nullptr;
+  QAction* redoAction_ = nullptr;
+  QAction* frameAllAction_ = nullptr;
+  QAction* showSkeletonAction_ = nullptr;
+  QAction* playAction_ = nullptr;
+  QMenu* recentMenu_ = nullptr;
+  QMenu* viewMenu_ = nullptr;
+  QMenu* panelsMenu_ = nullptr;
+  QToolBar* toolBar_ = nullptr;
+
+  QProgressBar* progress_ = nullptr;
+  QLabel* selectionLabel_ = nullptr;
+  QLabel* statsLabel_ = nullptr;
+  bool busy_ = false;
+};
+
+}  // namespace mq::ui

@@ -1,0 +1,170 @@
+#include "ui/panels/properties_panel.h"
+
+#include <cmath>
+
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLocale>
+#include <QPushButton>
+#include <QStackedWidget>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+#include "core/math/transform.h"
+#include "ui/document/editor_document.h"
+#include "ui/document/pose_commands.h"
+
+namespace mq::ui {
+namespace {
+
+enum Page { EmptyPage = 0, BonePage, MeshPage };
+
+QString count(size_t n) { return QLocale().toString(static_cast<qulonglong>(n)); }
+
+}  // namespace
+
+PropertiesPanel::PropertiesPanel(EditorDocument* document, QWidget* parent)
+    : QWidget(parent), document_(document), pages_(new QStackedWidget(this)) {
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(6, 6, 6, 6);
+  layout->addWidget(pages_);
+  layout->addStretch(1);
+  pages_->addWidget(makeEmptyPage());
+  pages_->addWidget(makeBonePage());
+  pages_->addWidget(makeMeshPage());
+
+  connect(document_, &EditorDocument::selectionChanged, this, &PropertiesPanel::showSelection);
+  connect(document_, &EditorDocument::characterReplaced, this, &PropertiesPanel::showSelection);
+  connect(document_, &EditorDocument::poseChanged, this, &PropertiesPanel::showBoneAngles);
+  showSelection();
+}
+
+QWidget* PropertiesPanel::makeEmptyPage() {
+  auto* label = new QLabel(tr("Nothing selected.\n\nClick a bone in the viewport or the scene tree to pose it."));
+  label->setWordWrap(true);
+  label->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+  label->setEnabled(false);
+  return label;
+}
+
+QWidget* PropertiesPanel::makeBonePage() {
+  auto* page = new QWidget;
+  auto* layout = new QVBoxLayout(page);
+  layout->setContentsMargins(0, 0, 0, 0);
+
+  auto* info = new QGroupBox(tr("Bone"));
+  auto* form = new QFormLayout(info);
+  boneName_ = new QLabel;
+  boneName_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  boneParent_ = new QLabel;
+  form->addRow(tr("Name"), boneName_);
+  form->addRow(tr("Parent"), boneParent_);
+  layout->addWidget(info);
+
+  auto* rotation = new QGroupBox(tr("Pose rotation (degrees, XYZ)"));
+  auto* rotationForm = new QFormLayout(rotation);
+  const char* axisNames[3] = {"X", "Y", "Z"};
+  for (int axis = 0; axis < 3; ++axis) {
+    auto* box = new QDoubleSpinBox;
+    box->setObjectName(QString("angle%1").arg(axisNames[axis]));
+    box->setRange(-180.0, 180.0);
+    box->setDecimals(1);
+    box->setSingleStep(5.0);
+    box->setSuffix(QString::fromUtf8("°"));
+    box->setWrapping(true);
+    box->setKeyboardTracking(false);  // one edit per Enter, not per keystroke
+    box->setAccelerated(true);
+    connect(box, &QDoubleSpinBox::valueChanged, this, [this] { applyTypedAngles(); });
+    angles_[axis] = box;
+    rotationForm->addRow(axisNames[axis], box);
+  }
+  auto* buttons = new QHBoxLayout;
+  resetBone_ = new QPushButton(tr("Reset bone"));
+  resetAll_ = new QPushButton(tr("Reset pose"));
+  resetBone_->setToolTip(tr("Remove this bone's pose edit"));
+  resetAll_->setToolTip(tr("Remove the pose edits of every bone"));
+  connect(resetBone_, &QPushButton::clicked, this, &PropertiesPanel::resetBone);
+  connect(resetAll_, &QPushButton::clicked, this, &PropertiesPanel::resetAllBones);
+  buttons->addWidget(resetBone_);
+  buttons->addWidget(resetAll_);
+  rotationForm->addRow(buttons);
+  layout->addWidget(rotation);
+  return page;
+}
+
+QWidget* PropertiesPanel::makeMeshPage() {
+  auto* box = new QGroupBox(tr("Mesh"));
+  auto* form = new QFormLayout(box);
+  meshName_ = new QLabel;
+  meshVertices_ = new QLabel;
+  meshTriangles_ = new QLabel;
+  meshSkin_ = new QLabel;
+  meshMorphs_ = new QLabel;
+  form->addRow(tr("Name"), meshName_);
+  form->addRow(tr("Vertices"), meshVertices_);
+  form->addRow(tr("Triangles"), meshTriangles_);
+  form->addRow(tr("Skinning"), meshSkin_);
+  form->addRow(tr("Morph targets"), meshMorphs_);
+  return box;
+}
+
+void PropertiesPanel::showSelection() {
+  const Character& character = document_->character();
+  const int bone = document_->selectedBone();
+  const int mesh = document_->selectedMesh();
+  if (bone >= 0) {
+    const Bone& b = character.skeleton.bone(bone);
+    boneName_->setText(QString::fromStdString(b.name));
+    boneParent_->setText(b.parent >= 0 ? QString::fromStdString(character.skeleton.bone(b.parent).name)
+                                       : tr("(root)"));
+    showBoneAngles();
+    pages_->setCurrentIndex(BonePage);
+  } else if (mesh >= 0) {
+    const Mesh& m = character.meshes[mesh];
+    meshName_->setText(QString::fromStdString(m.name));
+    meshVertices_->setText(count(m.vertexCount()));
+    meshTriangles_->setText(count(m.triangleCount()));
+    meshSkin_->setText(m.skin.empty() ? tr("rigid") : tr("%1 joints, up to %2 per vertex")
+                                                          .arg(m.skin.jointBones.size())
+                                                          .arg(m.skin.maxInfluences()));
+    meshMorphs_->setText(QString::number(m.morphTargets.size()));
+    pages_->setCurrentIndex(MeshPage);
+  } else {
+    pages_->setCurrentIndex(EmptyPage);
+  }
+}
+
+void PropertiesPanel::showBoneAngles() {
+  const int bone = document_->selectedBone();
+  if (bone < 0) return;
+  const glm::vec3 degrees = eulerDegreesFromQuat(document_->boneRotation(bone).value_or(glm::quat(1, 0, 0, 0)));
+  syncing_ = true;
+  for (int axis = 0; axis < 3; ++axis)
+    if (std::abs(angles_[axis]->value() - degrees[axis]) > 0.05) angles_[axis]->setValue(degrees[axis]);
+  resetBone_->setEnabled(document_->boneRotation(bone).has_value());
+  resetAll_->setEnabled(!document_->poseEdits().empty());
+  syncing_ = false;
+}
+
+void PropertiesPanel::applyTypedAngles() {
+  const int bone = document_->selectedBone();
+  if (syncing_ || bone < 0) return;
+  const glm::vec3 degrees(angles_[0]->value(), angles_[1]->value(), angles_[2]->value());
+  document_->undoStack()->push(new SetBoneRotationCommand(document_, bone, quatFromEulerDegrees(degrees)));
+}
+
+void PropertiesPanel::resetBone() {
+  const int bone = document_->selectedBone();
+  if (bone < 0 || !document_->boneRotation(bone)) return;
+  document_->undoStack()->push(new SetBoneRotationCommand(document_, bone, std::nullopt));
+}
+
+void PropertiesPanel::resetAllBones() {
+  if (document_->poseEdits().empty()) return;
+  document_->undoStack()->push(new SetPoseEditsCommand(document_, PoseEdits{}, tr("Reset pose")));
+}
+
+}  // namespace mq::ui

@@ -1,0 +1,54 @@
+#pragma once
+// Properties of the selection: for a bone, its name and the pose edit as
+// Euler angles in degrees (X, then Y, then Z) with a reset button; for a mesh,
+// its vertex and triangle counts and skinning. Typed angles become undo
+// commands on the document.
+
+#include <array>
+
+#include <QWidget>
+
+class QDoubleSpinBox;
+class QLabel;
+class QPushButton;
+class QStackedWidget;
+
+namespace mq::ui {
+
+class EditorDocument;
+
+class PropertiesPanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit PropertiesPanel(EditorDocument* document, QWidget* parent = nullptr);
+
+  QDoubleSpinBox* angleBox(int axis) const { return angles_[axis]; }
+  QPushButton* resetButton() const { return resetBone_; }
+
+ private:
+  QWidget* makeEmptyPage();
+  QWidget* makeBonePage();
+  QWidget* makeMeshPage();
+  void showSelection();
+  void showBoneAngles();
+  void applyTypedAngles();
+  void resetBone();
+  void resetAllBones();
+
+  EditorDocument* document_;
+  QStackedWidget* pages_;
+  QLabel* boneName_ = nullptr;
+  QLabel* boneParent_ = nullptr;
+  std::array<QDoubleSpinBox*, 3> angles_{};
+  QPushButton* resetBone_ = nullptr;
+  QPushButton* resetAll_ = nullptr;
+  QLabel* meshName_ = nullptr;
+  QLabel* meshVertices_ = nullptr;
+  QLabel* meshTriangles_ = nullptr;
+  QLabel* meshSkin_ = nullptr;
+  QLabel* meshMorphs_ = nullptr;
+  bool syncing_ = false;
+};
+
+}  // namespace mq::ui
