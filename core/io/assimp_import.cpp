@@ -11,6 +11,7 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include "core/io/collada_clips.h"
 #include "core/io/file_bytes.h"
 #include "core/util/error.h"
 
@@ -49,13 +50,18 @@ std::string trimTextNodes(const std::string& xml) {
   return out;
 }
 
-const aiScene* readScene(Assimp::Importer& importer, const std::string& path) {
+// Collada text (whitespace-trimmed) is returned in `colladaText` for the clip reader.
+const aiScene* readScene(Assimp::Importer& importer, const std::string& path, std::string& colladaText) {
   importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, false);  // no $AssimpFbx$ helper nodes
-  const unsigned flags = aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_ValidateDataStructure;
+  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_USE_COLLADA_NAMES, true);  // "Bone", not "id-bone-3"
+  unsigned flags = aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_ValidateDataStructure;
   const aiScene* scene = nullptr;
   if (fileExtension(path) == "dae") {
-    const std::string text = trimTextNodes(loadFileText(path));
-    scene = importer.ReadFileFromMemory(text.data(), text.size(), flags, "dae");
+    // Assimp expands Collada's indexed vertices per face corner; welding
+    // identical corners restores the file's own vertices.
+    flags |= aiProcess_JoinIdenticalVertices;
+    colladaText = trimTextNodes(loadFileText(path));
+    scene = importer.ReadFileFromMemory(colladaText.data(), colladaText.size(), flags, "dae");
   } else {
     (void)readFileBytes(path);  // clear message for missing files
     scene = importer.ReadFile(path, flags);
@@ -101,18 +107,56 @@ int nearestBoneAbove(const NodeTable& t, int node, glm::mat4& offset) {
   return -1;
 }
 
-Skeleton buildSkeleton(const aiScene* scene, NodeTable& t, const std::string& path) {
+// An animation before bones are known: tracks keyed by node.
+struct NodeChannel {
+  int node = -1;
+  Track translation, rotation, scale;
+};
+struct RawClip {
+  std::string name;
+  std::vector<NodeChannel> channels;
+};
+
+// True when the track holds the node's rest value at every key: such a node
+// is not really animated (exporters key the armature object too) and stays
+// a fixed transform instead of becoming a bone.
+bool keepsRestValue(const Track& track, const float* rest) {
+  for (int k = 0; k < track.keyCount(); ++k) {
+    const float* v = &track.values[size_t(k) * track.components];
+    if (track.isRotation) {
+      const float dot = v[0] * rest[0] + v[1] * rest[1] + v[2] * rest[2] + v[3] * rest[3];
+      if (std::abs(dot) < 1.0f - 1e-6f) return false;
+    } else {
+      for (int c = 0; c < track.components; ++c)
+        if (std::abs(v[c] - rest[c]) > 1e-5f * (1.0f + std::abs(rest[c]))) return false;
+    }
+  }
+  return true;
+}
+
+bool movesNode(const NodeChannel& ch, const NodeTable& t) {
+  const Trs rest = Trs::fromMatrix(t.local[ch.node]);
+  const float q[4] = {rest.rotation.x, rest.rotation.y, rest.rotation.z, rest.rotation.w};
+  return !keepsRestValue(ch.translation, &rest.translation.x) || !keepsRestValue(ch.rotation, q) ||
+         !keepsRestValue(ch.scale, &rest.scale.x);
+}
+
+Skeleton buildSkeleton(const aiScene* scene, const std::vector<RawClip>& clips, const std::vector<std::string>& extraJoints,
+                       NodeTable& t, const std::string& path) {
   std::set<int> boneNodes;
-  auto mark = [&](const aiString& name, const char* what) {
-    const int n = t.find(name);
-    if (n < 0) throw FileError(path, std::string(what) + " '" + name.C_Str() + "' has no node");
-    boneNodes.insert(n);
-  };
   for (unsigned m = 0; m < scene->mNumMeshes; ++m)
-    for (unsigned b = 0; b < scene->mMeshes[m]->mNumBones; ++b) mark(scene->mMeshes[m]->mBones[b]->mName, "bone");
-  for (unsigned a = 0; a < scene->mNumAnimations; ++a)
-    for (unsigned c = 0; c < scene->mAnimations[a]->mNumChannels; ++c)
-      mark(scene->mAnimations[a]->mChannels[c]->mNodeName, "animated node");
+    for (unsigned b = 0; b < scene->mMeshes[m]->mNumBones; ++b) {
+      const aiString& name = scene->mMeshes[m]->mBones[b]->mName;
+      const int n = t.find(name);
+      if (n < 0) throw FileError(path, std::string("bone '") + name.C_Str() + "' has no node");
+      boneNodes.insert(n);
+    }
+  for (const RawClip& clip : clips)
+    for (const NodeChannel& ch : clip.channels)
+      if (movesNode(ch, t)) boneNodes.insert(ch.node);
+
+  for (const std::string& joint : extraJoints)  // joints without weights: Assimp drops their aiBone
+    if (const int n = t.find(aiString(joint)); n >= 0) boneNodes.insert(n);
 
   Skeleton skeleton;
   t.boneOfNode.assign(t.nodes.size(), -1);
@@ -127,23 +171,16 @@ Skeleton buildSkeleton(const aiScene* scene, NodeTable& t, const std::string& pa
   return skeleton;
 }
 
-// meshFromBone at bind time: Assimp's offset when it agrees with the rest
-// pose of the nodes, otherwise the one the rest pose implies (issue 4620).
-glm::mat4 inverseBindOf(const aiBone* bone, const NodeTable& t, int boneNode, int meshNode, bool& usedNodes) {
-  const glm::mat4 fromNodes = glm::inverse(t.worldRest[boneNode]) * t.worldRest[meshNode];
-  const glm::mat4 fromAssimp = toGlm(bone->mOffsetMatrix);
-  float difference = 0.0f, scale = 1.0f;
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) {
-      difference = std::max(difference, std::abs(fromNodes[c][r] - fromAssimp[c][r]));
-      scale = std::max(scale, std::abs(fromNodes[c][r]));
-    }
-  if (difference <= 1e-4f * scale) return fromAssimp;
-  usedNodes = true;
-  return fromNodes;
+// boneFromMesh at bind time. FBX: from the rest pose of the nodes, because
+// Assimp 5.2's FBX bone offsets are wrong for many files (assimp issue 4620:
+// it stores the cluster's Transform instead of TransformLink^-1 * Transform).
+// Other formats: Assimp's offset, which carries the file's own bind pose.
+glm::mat4 inverseBindOf(const aiBone* bone, const NodeTable& t, int boneNode, int meshNode, bool fromNodes) {
+  if (fromNodes) return glm::inverse(t.worldRest[boneNode]) * t.worldRest[meshNode];
+  return toGlm(bone->mOffsetMatrix);
 }
 
-void bindSkin(const aiMesh* am, const NodeTable& t, int meshNode, Mesh& mesh, bool& usedNodes) {
+void bindSkin(const aiMesh* am, const NodeTable& t, int meshNode, Mesh& mesh, bool bindFromNodes) {
   const size_t n = am->mNumVertices;
   std::vector<std::vector<std::pair<int, float>>> influences(n);
   SkinBinding& skin = mesh.skin;
@@ -151,7 +188,7 @@ void bindSkin(const aiMesh* am, const NodeTable& t, int meshNode, Mesh& mesh, bo
     const aiBone* bone = am->mBones[b];
     const int node = t.find(bone->mName);
     skin.jointBones.push_back(t.boneOfNode[node]);
-    skin.inverseBind.push_back(inverseBindOf(bone, t, node, meshNode, usedNodes));
+    skin.inverseBind.push_back(inverseBindOf(bone, t, node, meshNode, bindFromNodes));
     for (unsigned w = 0; w < bone->mNumWeights; ++w) {
       const aiVertexWeight& vw = bone->mWeights[w];
       if (vw.mVertexId < n && vw.mWeight > 0.0f) influences[vw.mVertexId].push_back({static_cast<int>(b), vw.mWeight});
@@ -170,7 +207,7 @@ void bindSkin(const aiMesh* am, const NodeTable& t, int meshNode, Mesh& mesh, bo
   skin.normalise();
 }
 
-Mesh convertMesh(const aiMesh* am, const NodeTable& t, int node, bool& usedNodes) {
+Mesh convertMesh(const aiMesh* am, const NodeTable& t, int node, bool bindFromNodes) {
   Mesh mesh;
   mesh.name = am->mName.length > 0 ? am->mName.C_Str() : t.nodes[node]->mName.C_Str();
   const size_t n = am->mNumVertices;
@@ -195,7 +232,7 @@ Mesh convertMesh(const aiMesh* am, const NodeTable& t, int node, bool& usedNodes
     }
   }
   if (am->HasBones()) {
-    bindSkin(am, t, node, mesh, usedNodes);
+    bindSkin(am, t, node, mesh, bindFromNodes);
   } else if (t.boneOfNode[node] >= 0) {
     mesh.attachBone = t.boneOfNode[node];
   } else {
@@ -219,20 +256,86 @@ Track keyTrack(const Key* keys, unsigned count, double ticksPerSecond, int compo
   return track;
 }
 
-Clip convertAnimation(const aiAnimation* anim, const NodeTable& t, int index) {
-  Clip clip;
+RawClip convertAnimation(const aiAnimation* anim, const NodeTable& t, int index, const std::string& path) {
+  RawClip clip;
   clip.name = anim->mName.length > 0 ? anim->mName.C_Str() : "clip" + std::to_string(index);
   const double tps = anim->mTicksPerSecond > 0.0 ? anim->mTicksPerSecond : 25.0;
   auto vec3 = [](const aiVector3D& v, std::vector<float>& out) { out.insert(out.end(), {v.x, v.y, v.z}); };
   auto quat = [](const aiQuaternion& q, std::vector<float>& out) { out.insert(out.end(), {q.x, q.y, q.z, q.w}); };
   for (unsigned c = 0; c < anim->mNumChannels; ++c) {
     const aiNodeAnim* ch = anim->mChannels[c];
-    BoneChannel bc;
-    bc.bone = t.boneOfNode[t.find(ch->mNodeName)];
-    bc.translation = keyTrack(ch->mPositionKeys, ch->mNumPositionKeys, tps, 3, vec3);
-    bc.rotation = keyTrack(ch->mRotationKeys, ch->mNumRotationKeys, tps, 4, quat);
-    bc.scale = keyTrack(ch->mScalingKeys, ch->mNumScalingKeys, tps, 3, vec3);
-    clip.boneChannels.push_back(std::move(bc));
+    NodeChannel nc;
+    nc.node = t.find(ch->mNodeName);
+    if (nc.node < 0) throw FileError(path, std::string("animated node '") + ch->mNodeName.C_Str() + "' does not exist");
+    nc.translation = keyTrack(ch->mPositionKeys, ch->mNumPositionKeys, tps, 3, vec3);
+    nc.rotation = keyTrack(ch->mRotationKeys, ch->mNumRotationKeys, tps, 4, quat);
+    nc.scale = keyTrack(ch->mScalingKeys, ch->mNumScalingKeys, tps, 3, vec3);
+    clip.channels.push_back(std::move(nc));
+  }
+  return clip;
+}
+
+Track emptyTrackLike(int components, bool rotation, bool step) {
+  Track t;
+  t.components = components;
+  t.isRotation = rotation;
+  t.interpolation = step ? Interpolation::Step : Interpolation::Linear;
+  return t;
+}
+
+// The track restricted to [start, end], with keys sampled at both ends.
+Track cropTrack(const Track& track, float start, float end) {
+  if (track.empty() || end <= start) return track;
+  Track out = track;
+  out.times.clear();
+  out.values.clear();
+  std::vector<float> v(track.components);
+  auto add = [&](float t) {
+    track.sample(t, v.data());
+    out.times.push_back(t);
+    out.values.insert(out.values.end(), v.begin(), v.end());
+  };
+  add(start);
+  for (float t : track.times)
+    if (t > start && t < end) add(t);
+  add(end);
+  return out;
+}
+
+RawClip convertColladaClip(const ColladaClip& clip, const NodeTable& t, const std::string& path) {
+  RawClip raw;
+  raw.name = clip.name;
+  for (const ColladaNodeTrack& track : clip.tracks) {
+    NodeChannel nc;
+    nc.node = t.find(aiString(track.nodeName));
+    if (nc.node < 0) nc.node = t.find(aiString(track.nodeId));
+    if (nc.node < 0) throw FileError(path, "clip '" + clip.name + "' animates unknown node '" + track.nodeId + "'");
+    nc.translation = emptyTrackLike(3, false, track.step);
+    nc.rotation = emptyTrackLike(4, true, track.step);
+    nc.scale = emptyTrackLike(3, false, track.step);
+    for (size_t k = 0; k < track.times.size(); ++k) {
+      const Trs trs = Trs::fromMatrix(track.matrices[k]);
+      for (Track* tr : {&nc.translation, &nc.rotation, &nc.scale}) tr->times.push_back(track.times[k]);
+      nc.translation.values.insert(nc.translation.values.end(), {trs.translation.x, trs.translation.y, trs.translation.z});
+      nc.rotation.values.insert(nc.rotation.values.end(), {trs.rotation.x, trs.rotation.y, trs.rotation.z, trs.rotation.w});
+      nc.scale.values.insert(nc.scale.values.end(), {trs.scale.x, trs.scale.y, trs.scale.z});
+    }
+    const float end = clip.end >= 0.0f ? clip.end : track.times.back();
+    nc.translation = cropTrack(nc.translation, clip.start, end);
+    nc.rotation = cropTrack(nc.rotation, clip.start, end);
+    nc.scale = cropTrack(nc.scale, clip.start, end);
+    raw.channels.push_back(std::move(nc));
+  }
+  return raw;
+}
+
+Clip resolveClip(const RawClip& raw, const NodeTable& t) {
+  Clip clip;
+  clip.name = raw.name;
+  for (const NodeChannel& nc : raw.channels) {
+    const int bone = t.boneOfNode[nc.node];
+    if (bone < 0) continue;  // keeps its rest value: folded into parentFromOffset
+    clip.boneChannels.push_back({bone, nc.translation, nc.rotation, nc.scale});
   }
   return clip;
 }
@@ -241,24 +344,31 @@ Clip convertAnimation(const aiAnimation* anim, const NodeTable& t, int index) {
 
 Character importWithAssimp(const std::string& path) {
   Assimp::Importer importer;
-  const aiScene* scene = readScene(importer, path);
+  std::string colladaText;
+  const aiScene* scene = readScene(importer, path, colladaText);
   Character character;
   character.name = std::filesystem::path(path).stem().string();
   character.sourcePath = path;
   NodeTable table;
   table.collect(scene->mRootNode, -1);
-  character.skeleton = buildSkeleton(scene, table, path);
 
-  bool usedNodes = false;
+  const ColladaExtras collada = readColladaExtras(colladaText, path);
+  std::vector<RawClip> clips;
+  for (const ColladaClip& c : collada.clips) clips.push_back(convertColladaClip(c, table, path));
+  if (clips.empty())
+    for (unsigned a = 0; a < scene->mNumAnimations; ++a)
+      clips.push_back(convertAnimation(scene->mAnimations[a], table, static_cast<int>(a), path));
+  character.skeleton = buildSkeleton(scene, clips, collada.jointNodes, table, path);
+
+  const bool bindFromNodes = fileExtension(path) == "fbx";
   for (size_t n = 0; n < table.nodes.size(); ++n) {
     const aiNode* node = table.nodes[n];
     for (unsigned m = 0; m < node->mNumMeshes; ++m) {
       if (node->mMeshes[m] >= scene->mNumMeshes) throw FileError(path, "node refers to a missing mesh");
-      character.meshes.push_back(convertMesh(scene->mMeshes[node->mMeshes[m]], table, static_cast<int>(n), usedNodes));
+      character.meshes.push_back(convertMesh(scene->mMeshes[node->mMeshes[m]], table, static_cast<int>(n), bindFromNodes));
     }
   }
-  for (unsigned a = 0; a < scene->mNumAnimations; ++a)
-    character.clips.push_back(convertAnimation(scene->mAnimations[a], table, static_cast<int>(a)));
+  for (const RawClip& raw : clips) character.clips.push_back(resolveClip(raw, table));
   try {
     character.validate();
   } catch (const std::runtime_error& e) {
