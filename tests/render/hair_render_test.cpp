@@ -1,0 +1,160 @@
+// The hair shader: strands combed over a sphere head, drawn with Kajiya-Kay shading, shifted highlights and self-shadowing.
+// Checks that hair shows, that it has highlights and shadowed inner strands,
+// that the self-shadow term darkens with depth, and compares a baseline.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include <vtkActor.h>
+#include <vtkNew.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkSphereSource.h>
+
+#include "render/hair_actor.h"
+#include "render/image_checks.h"
+#include "render/offscreen.h"
+#include "render/scene_view.h"
+
+namespace mq {
+namespace {
+
+constexpr int kWidth = 320, kHeight = 320;
+const glm::vec3 kHeadCenter(0.0f, 1.6f, 0.0f);
+constexpr float kHeadRadius = 0.1f;
+
+// A synthetic groom: roots on the top and back of a sphere; each strand
+// combs down over the sphere (gravity projected on the tangent plane, a
+// little further out per strand for volume) and falls straight below it.
+Strands combedStrands(int count, int points, float length) {
+  Strands strands;
+  strands.pointsPerStrand = points;
+  std::mt19937 rng(12111);
+  std::uniform_real_distribution<float> uniform(-1.0f, 1.0f);
+  const glm::vec3 down(0.0f, -1.0f, 0.0f);
+  while (int(strands.strandCount()) < count) {
+    glm::vec3 n(uniform(rng), uniform(rng), uniform(rng));
+    const float len = glm::length(n);
+    if (len > 1.0f || len < 0.1f) continue;
+    n /= len;
+    if (n.y < 0.1f && !(n.z < -0.3f && n.y > -0.5f)) continue;  // scalp: top and back
+    if (n.z > 0.45f && n.y < 0.8f) continue;                    // keep the face clear
+    const float lift = kHeadRadius * (0.02f + 0.12f * (0.5f + 0.5f * uniform(rng)));
+    const float segment = length * (0.9f + 0.1f * uniform(rng)) / float(points - 1);
+    const glm::vec3 wander = 0.15f * glm::vec3(uniform(rng), 0.0f, uniform(rng));
+    glm::vec3 p = kHeadCenter + n * (kHeadRadius * 1.01f);
+    for (int i = 0; i < points; ++i) {
+      strands.points.insert(strands.points.end(), {p.x, p.y, p.z});
+      const glm::vec3 out = glm::normalize(p - kHeadCenter);
+      const float radius = kHeadRadius + lift * std::min(1.0f, 3.0f * float(i) / float(points));
+      glm::vec3 along = down - glm::dot(down, out) * out;  // comb over the sphere
+      if (p.y < kHeadCenter.y - 0.02f || glm::length(along) < 0.2f) along = down + wander;
+      p += segment * glm::normalize(along);
+      const glm::vec3 d = p - kHeadCenter;
+      if (glm::length(d) < radius) p = kHeadCenter + glm::normalize(d) * radius;  // stay outside, with volume
+    }
+    strands.rootNormals.insert(strands.rootNormals.end(), {n.x, n.y, n.z});
+  }
+  return strands;
+}
+
+class HairRenderTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() { test::useSoftwareRendering(); }
+
+  void SetUp() override {
+    sphere->SetCenter(kHeadCenter.x, kHeadCenter.y, kHeadCenter.z);
+    sphere->SetRadius(kHeadRadius * 0.99);
+    sphere->SetThetaResolution(48);
+    sphere->SetPhiResolution(32);
+    sphereMapper->SetInputConnection(sphere->GetOutputPort());
+    head->SetMapper(sphereMapper);
+    head->GetProperty()->SetColor(0.85, 0.68, 0.58);
+    view.addProp(head);
+    view.setGridVisible(false);
+    view.setCamera(kHeadCenter + glm::vec3(0.55f, 0.25f, -0.75f), kHeadCenter + glm::vec3(0.0f, -0.08f, 0.0f));
+  }
+
+  render::SceneView view;
+  vtkNew<vtkSphereSource> sphere;
+  vtkNew<vtkPolyDataMapper> sphereMapper;
+  vtkNew<vtkActor> head;
+};
+
+double luminance(const uint8_t* p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
+
+TEST_F(HairRenderTest, DrapedHairHasHighlightsAndShadowedInnerStrands) {
+  const Strands strands = combedStrands(8000, 24, 0.3f);
+  render::OffscreenRenderer renderer(view, kWidth, kHeight);
+  const render::RgbImage bare = renderer.capture();
+  render::HairActor hair;
+  hair.setStrands(strands);
+  view.addProp(hair.actor());
+  const render::RgbImage image = renderer.capture();
+
+  const test::Foreground f = test::foregroundOf(image, bare);
+  EXPECT_GT(f.fraction, 0.10);  // the hair covers a good part of the picture
+  // Luminance over the hair pixels: dark shadowed strands and bright
+  // highlights both present (not a flat helmet).
+  std::vector<double> lum;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const uint8_t *a = image.at(x, y), *b = bare.at(x, y);
+      if (std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]) > 72) lum.push_back(luminance(a));
+    }
+  ASSERT_GT(lum.size(), 1000u);
+  std::sort(lum.begin(), lum.end());
+  const double dark = lum[lum.size() / 20], bright = lum[lum.size() * 99 / 100];
+  EXPECT_LT(dark, 40.0);
+  EXPECT_GT(bright, 2.5 * std::max(dark, 8.0));
+
+  // Without self-shadowing the hair is brighter on average.
+  render::HairShading unshadowed = hair.shading();
+  unshadowed.selfShadowing = false;
+  hair.setShading(unshadowed);
+  const render::RgbImage flat = renderer.capture();
+  double sumShadowed = 0.0, sumFlat = 0.0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      sumShadowed += luminance(image.at(x, y));
+      sumFlat += luminance(flat.at(x, y));
+    }
+  EXPECT_GT(sumFlat, sumShadowed * 1.03);
+
+  const std::string why = test::checkAgainstBaseline(image, "hair_draped_sphere");
+  EXPECT_TRUE(why.empty()) << why;
+}
+
+TEST(HairSelfShadow, DarkensWithDepthIntoTheHair) {
+  // A slab of parallel horizontal strands stacked along y, lit from above:
+  // the top layer is lit, each layer below gets less light.
+  Strands strands;
+  strands.pointsPerStrand = 16;
+  for (int layer = 0; layer < 10; ++layer)
+    for (int row = 0; row < 20; ++row)
+      for (int i = 0; i < 16; ++i)
+        strands.points.insert(strands.points.end(),
+                              {0.01f * float(i), -0.005f * float(layer), 0.002f * float(row)});
+  render::HairShading shading;
+  shading.minShadow = 0.0f;
+  shading.shadowPerStrand = 0.04f;  // weak, so the deepest layers do not all saturate near 0
+  const std::vector<float> shadow = render::HairActor::computeSelfShadow(strands, {0.0f, 1.0f, 0.0f}, shading);
+  auto layerMean = [&](int layer) {
+    double sum = 0.0;
+    for (int row = 0; row < 20; ++row)
+      for (int i = 2; i < 14; ++i) sum += shadow[(layer * 20 + row) * 16 + i];
+    return sum / (20 * 12);
+  };
+  EXPECT_GT(layerMean(0), 0.95);
+  for (int layer = 1; layer < 10; ++layer) EXPECT_LT(layerMean(layer), layerMean(layer - 1) - 0.02) << layer;
+  EXPECT_LT(layerMean(9), 0.5);
+  // Lit from below, the order reverses.
+  const std::vector<float> fromBelow = render::HairActor::computeSelfShadow(strands, {0.0f, -1.0f, 0.0f}, shading);
+  EXPECT_GT(fromBelow[(9 * 20 + 10) * 16 + 8], 0.95f);
+  EXPECT_LT(fromBelow[(0 * 20 + 10) * 16 + 8], 0.5f);
+}
+
+}  // namespace
+}  // namespace mq
