@@ -13,6 +13,10 @@
 #include <vtkProperty.h>
 #include <vtkSphereSource.h>
 
+#include "core/character/default_mannequin.h"
+#include "core/character/posed_character.h"
+#include "core/hair/character_groom.h"
+#include "core/hair/hairstyle.h"
 #include "render/hair_actor.h"
 #include "render/image_checks.h"
 #include "render/offscreen.h"
@@ -125,6 +129,42 @@ TEST_F(HairRenderTest, DrapedHairHasHighlightsAndShadowedInnerStrands) {
 
   const std::string why = test::checkAgainstBaseline(image, "hair_draped_sphere");
   EXPECT_TRUE(why.empty()) << why;
+}
+
+// The default hairstyle groomed on the default mannequin, seen from the
+// front three-quarter and from behind.
+TEST(HairRenderDefault, DefaultMannequinWithDefaultHairstyle) {
+  test::useSoftwareRendering();
+  const Character character = makeDefaultMannequin();
+  const std::unique_ptr<HairGroom> groom = makeCharacterGroom(character, ScalpRegion{});
+  const HairStyle style = builtinHairStyle(builtinHairStyleNames().front());
+  groom->grow(style, 20000);
+  ASSERT_EQ(groom->countPointsInside(), 0u);
+
+  render::SceneView view;
+  view.setCharacter(character);
+  PosedCharacter posed;
+  posed.evaluate(character, -1, 0.0f, nullptr, nullptr);
+  view.updatePose(posed);
+  const glm::vec3 head = groom->proxy().headCenter();
+  render::OffscreenRenderer renderer(view, kWidth, kHeight);
+  render::HairActor hair;
+  hair.setStrands(groom->strands());
+  hair.setColors(style.rootColor, style.tipColor);
+  view.addProp(hair.actor());
+  for (const auto& [name, offset] : {std::pair{"front", glm::vec3(0.45f, 0.15f, 1.0f)},
+                                     std::pair{"back", glm::vec3(-0.45f, 0.2f, -1.0f)}}) {
+    view.setCamera(head + offset, head + glm::vec3(0.0f, -0.15f, 0.0f));
+    hair.setVisible(false);
+    const render::RgbImage bare = renderer.capture();
+    render::writePng(bare, std::string("/tmp/bare_") + name + ".png");
+    hair.setVisible(true);
+    const render::RgbImage image = renderer.capture();
+    const test::Foreground f = test::foregroundOf(image, bare);
+    EXPECT_GT(f.fraction, 0.08) << name;
+    const std::string why = test::checkAgainstBaseline(image, std::string("hair_default_") + name);
+    EXPECT_TRUE(why.empty()) << why;
+  }
 }
 
 TEST(HairSelfShadow, DarkensWithDepthIntoTheHair) {
