@@ -1,0 +1,70 @@
+#pragma once
+// The cloth part of a scene document: the `cloth` section (garment, fabric,
+// solver settings, pins) and the primitive `colliders` section.
+//
+//   "cloth": {
+//     "garment": {"type": "sheet", "columns": 64, "rows": 64, "width": 1, "height": 1,
+//                 "center": [0, 0.8, 0], "orientation": "horizontal" | "vertical",
+//                 "tilt_degrees": 0},
+//     "fabric": "cotton" | {"preset": "cotton", "mass_per_area": 0.12, "stretch": 1e4,
+//                           "shear": 50, "bend": 1e-5, "damping": 0.02, "friction": 0.3,
+//                           "thickness": 5e-4},
+//     "mass_per_vertex": 0.3,                  optional, overrides the fabric's mass per area
+//     "integrator": "implicit_euler" | "symplectic_euler" | "verlet" | "rk4",
+//     "substeps": 0, "bending": "springs" | "cantilever",
+//     "gravity": [0, -9.81, 0], "wind": [0, 0, 0], "air_damping": 0.5,
+//     "stretch_limit": "position" | "velocity" | "off", "max_stretch": 1.1,
+//     "stretch_iterations": 100, "self_collisions": false, "thickness": 0.005,
+//     "self_thickness": 0.004, "friction": 0.3, "cg_max_iterations": 100, "cg_tolerance": 0.001,
+//     "pins": {"rows": [0], "vertices": [12, 13]},   sheet rows (0 = first row) and/or vertex indices
+//     "fps": 24 },
+//   "colliders": [ {"type": "sphere", "center": [0, 0, 0], "radius": 0.3},
+//                  {"type": "capsule", "a": [..], "b": [..], "radius": 0.1},
+//                  {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "friction": 0.5} ]
+//
+// A vertical sheet hangs in the XY plane from its top edge at center.y +
+// height/2, rows going down, tilted by tilt_degrees about the top edge toward -Z.
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "core/garment/fabric.h"
+#include "core/garment/sheet.h"
+#include "sim/cloth/cloth_settings.h"
+#include "sim/cloth/cloth_state.h"
+#include "sim/cloth/collision/primitive_collider.h"
+
+namespace mq::cloth {
+
+struct SheetGarmentSpec {
+  int columns = 32, rows = 32;
+  float width = 1.0f, height = 1.0f;
+  glm::vec3 center{0.0f, 1.0f, 0.0f};
+  bool vertical = false;
+  float tiltDegrees = 0.0f;
+};
+
+struct ClothSceneSpec {
+  SheetGarmentSpec sheet;
+  std::string fabricPreset = "cotton";  // the preset the fabric started from ("" = custom)
+  Fabric fabric;
+  float massPerVertex = 0.0f;           // > 0 overrides the fabric's mass per area
+  ClothSettings settings;
+  std::vector<int> pinnedRows;
+  std::vector<uint32_t> pinnedVertices;
+  std::vector<PrimitiveCollider> colliders;
+  float fps = 24.0f;
+};
+
+// Throws FileError(pathForErrors, "cloth.<key>: <problem>") for bad sections.
+ClothSceneSpec parseClothScene(const nlohmann::json& cloth, const nlohmann::json& colliders,
+                               const std::string& pathForErrors);
+void writeClothScene(const ClothSceneSpec& spec, nlohmann::json& cloth, nlohmann::json& colliders);
+
+// The sheet's mesh (with masses when massPerVertex > 0) and the vertices to pin.
+Sheet buildSheet(const SheetGarmentSpec& spec);
+ClothMesh buildClothMesh(const ClothSceneSpec& spec, std::vector<uint32_t>& pinned);
+
+}  // namespace mq::cloth

@@ -1,0 +1,261 @@
+#include "sim/cloth/cloth_simulator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "sim/cloth/collision/contact_response.h"
+#include "sim/cloth/collision/self_collision.h"
+#include "sim/cloth/constraints/stretch_limit.h"
+#include "sim/cloth/integrators/integrator.h"
+#include "sim/cloth/parallel.h"
+
+namespace mq::cloth {
+
+namespace {
+
+ClothState initialState(const ClothMesh& mesh, const ClothTopology& topology, const Fabric& fabric) {
+  ClothState s;
+  const size_t n = mesh.vertexCount();
+  s.x.resize(n);
+  s.v.assign(n, glm::vec3(0.0f));
+  s.mass.resize(n);
+  s.invMass.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    s.x[i] = vec3At(mesh.positions, i);
+    s.mass[i] = mesh.masses.empty() ? fabric.massPerArea * topology.vertexArea[i] : mesh.masses[i];
+    if (!(s.mass[i] > 0.0f) || !std::isfinite(s.mass[i])) throw Error("cloth vertex " + std::to_string(i) + " has no positive mass");
+    s.invMass[i] = 1.0f / s.mass[i];
+  }
+  return s;
+}
+
+void validateSettings(const ClothSettings& s) {
+  auto finite = [](glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+  if (!finite(s.gravity) || !finite(s.wind)) throw Error("cloth gravity and wind must be finite");
+  if (!std::isfinite(s.airDamping) || s.airDamping < 0.0f) throw Error("cloth air damping must be >= 0");
+  if (!std::isfinite(s.maxStretch) || s.maxStretch < 1.0f) throw Error("cloth max stretch must be >= 1");
+  if (!std::isfinite(s.collisionThickness) || s.collisionThickness < 0.0f || !std::isfinite(s.selfThickness) ||
+      s.selfThickness < 0.0f)
+    throw Error("cloth collision thickness must be >= 0");
+  if (s.substeps < 0 || s.cgMaxIterations < 1 || !(s.cgTolerance > 0.0f))
+    throw Error("cloth solver settings out of range (substeps >= 0, cg iterations >= 1, tolerance > 0)");
+}
+
+}  // namespace
+
+ClothSimulator::ClothSimulator(const ClothMesh& mesh, const Fabric& fabric, const ClothSettings& settings)
+    : ClothSimulator(mesh, buildClothTopology(mesh), fabric, settings) {}
+
+ClothSimulator::ClothSimulator(const ClothMesh& mesh, const ClothTopology& topology, const Fabric& fabric,
+                               const ClothSettings& settings)
+    : settings_(settings), fabric_(fabric), triangles_(mesh.triangles), topology_(topology) {
+  fabric_.validate();
+  validateSettings(settings_);
+  if (settings_.friction < 0.0f) settings_.friction = fabric_.friction;
+  for (const auto& [a, b] : mesh.seams)
+    if (a >= mesh.vertexCount() || b >= mesh.vertexCount()) throw Error("cloth seam vertex out of range");
+  forces_ = std::make_unique<ClothForces>(topology_, mesh, fabric_, settings_);
+  integrator_ = makeIntegrator(settings_);
+  if (settings_.selfCollisions) selfCollision_ = std::make_unique<SelfCollision>(triangles_, mesh.vertexCount());
+  state_ = initialState(mesh, topology_, fabric_);
+  freeInvMass_ = state_.invMass;
+  updateStats();
+}
+
+ClothSimulator::~ClothSimulator() = default;
+
+// Colliders, body and pins -------------------------------------------------
+
+void ClothSimulator::addCollider(const PrimitiveCollider& collider) { colliders_.push_back(collider); }
+
+void ClothSimulator::setBody(const std::vector<float>& positions, const std::vector<uint32_t>& triangles) {
+  body_.setMesh(positions, triangles, std::max(0.02f, 3.0f * settings_.collisionThickness));
+  pendingBody_.clear();
+}
+
+void ClothSimulator::updateBody(const std::vector<float>& posedPositions) {
+  if (body_.empty()) throw Error("updateBody() before setBody()");
+  if (posedPositions.size() != 3 * body_.positions().size()) throw Error("posed body has a different vertex count");
+  pendingBody_ = posedPositions;
+}
+
+ClothSimulator::Pin* ClothSimulator::findPin(uint32_t vertex) {
+  for (Pin& p : pins_)
+    if (p.vertex == vertex) return &p;
+  return nullptr;
+}
+
+void ClothSimulator::pinVertex(uint32_t vertex) { pinVertex(vertex, state_.x.at(vertex)); }
+
+void ClothSimulator::pinVertex(uint32_t vertex, glm::vec3 target) {
+  if (vertex >= state_.size()) throw Error("pinned vertex out of range");
+  if (Pin* p = findPin(vertex)) {
+    *p = {vertex, target};
+  } else {
+    pins_.push_back({vertex, target});
+  }
+  state_.invMass[vertex] = 0.0f;
+}
+
+void ClothSimulator::pinToBodyVertex(uint32_t vertex, uint32_t bodyVertex) {
+  if (bodyVertex >= body_.positions().size()) throw Error("pin body vertex out of range");
+  pinVertex(vertex);
+  Pin* p = findPin(vertex);
+  p->bodyVertex = bodyVertex;
+  p->offset = state_.x[vertex] - body_.positions()[bodyVertex];
+}
+
+void ClothSimulator::setPinTarget(uint32_t vertex, glm::vec3 target) {
+  if (Pin* p = findPin(vertex)) p->target = target;
+}
+
+void ClothSimulator::unpin(uint32_t vertex) {
+  pins_.erase(std::remove_if(pins_.begin(), pins_.end(), [&](const Pin& p) { return p.vertex == vertex; }), pins_.end());
+  if (vertex < state_.size()) state_.invMass[vertex] = freeInvMass_[vertex];
+}
+
+// Stepping ------------------------------------------------------------------
+
+int ClothSimulator::substepsFor(float dt) const {
+  if (settings_.substeps > 0) return settings_.substeps;
+  const float hMax = integrator_->stableStep(state_, *forces_);
+  if (!std::isfinite(hMax)) return 1;
+  return std::max(1, int(std::ceil(dt / hMax)));
+}
+
+void ClothSimulator::step(float dt) {
+  if (!(dt > 0.0f) || !std::isfinite(dt)) throw Error("cloth step needs a positive time step");
+  checkFinite("before the step");
+  if (!pendingBody_.empty()) {
+    body_.setTarget(pendingBody_, dt);
+    pendingBody_.clear();
+  } else if (!body_.empty()) {
+    body_.setTarget(body_.flatPositions(), dt);  // the body stands still
+  }
+  const int substeps = substepsFor(dt);
+  const float h = dt / float(substeps);
+  stats_.solverIterations = stats_.selfContacts = stats_.stretchPasses = 0;
+  for (int k = 0; k < substeps; ++k) substep(h, float(k + 1) / float(substeps));
+  stats_.substeps = substeps;
+  ++stats_.steps;
+  stats_.simulatedTime += dt;
+  updateStats();
+}
+
+void ClothSimulator::substep(float h, float bodyFraction) {
+  if (!body_.empty()) body_.moveTo(bodyFraction);
+  preparePins(h);
+  stepStart_ = state_.x;
+  stats_.solverIterations += integrator_->step(state_, h, *forces_).solverIterations;
+  const auto& springs = forces_->springs().springs();
+  const size_t structural = forces_->structuralCount();
+  if (settings_.stretchLimit == StretchLimitMode::PositionCorrection)
+    stats_.stretchPasses +=
+        limitStretchByPositions(state_, springs, structural, settings_.maxStretch, settings_.stretchIterations, h).passes;
+  else if (settings_.stretchLimit == StretchLimitMode::VelocityCorrection)
+    stats_.stretchPasses += limitStretchByVelocities(state_, stepStart_, springs, structural, settings_.maxStretch,
+                                                     settings_.stretchIterations, h)
+                                .passes;
+  if (selfCollision_) stats_.selfContacts += selfCollision_->resolve(state_, stepStart_, settings_.selfThickness, 4);
+  collideWithColliders(h);
+  placePins();
+  checkFinite("after a solver step");
+}
+
+void ClothSimulator::preparePins(float h) {
+  for (const Pin& p : pins_) {
+    const glm::vec3 target = p.bodyVertex >= 0 ? body_.positions()[p.bodyVertex] + p.offset : p.target;
+    state_.v[p.vertex] = (target - state_.x[p.vertex]) / h;
+    state_.invMass[p.vertex] = 0.0f;
+  }
+}
+
+void ClothSimulator::placePins() {
+  for (const Pin& p : pins_) state_.x[p.vertex] = p.bodyVertex >= 0 ? body_.positions()[p.bodyVertex] + p.offset : p.target;
+}
+
+void ClothSimulator::collideWithColliders(float h) {
+  const float thickness = settings_.collisionThickness;
+  forRange(state_.size(), [&](size_t b, size_t e) {
+    for (size_t i = b; i < e; ++i) {
+      if (state_.invMass[i] == 0.0f) continue;
+      for (const PrimitiveCollider& c : colliders_) {
+        glm::vec3 n;
+        const float d = c.signedDistance(state_.x[i], n);
+        if (d < thickness)
+          respondToContact(state_.x[i], state_.v[i], n, thickness - d, glm::vec3(0.0f),
+                           c.friction >= 0.0f ? c.friction : settings_.friction);
+      }
+      BodyContact contact;
+      if (!body_.empty() && body_.nearestContact(state_.x[i], contact) && contact.signedDistance < thickness)
+        respondToContact(state_.x[i], state_.v[i], contact.normal, thickness - contact.signedDistance,
+                         contact.velocity, settings_.friction);
+    }
+  });
+  (void)h;
+}
+
+void ClothSimulator::checkFinite(const char* where) const {
+  for (size_t i = 0; i < state_.size(); ++i) {
+    const glm::vec3 &x = state_.x[i], &v = state_.v[i];
+    if (!std::isfinite(x.x + x.y + x.z) || !std::isfinite(v.x + v.y + v.z))
+      throw ClothDiverged("cloth simulation diverged " + std::string(where) + " (step " +
+                          std::to_string(stats_.steps + 1) + "): vertex " + std::to_string(i) +
+                          " has a non-finite position or velocity; try the implicit integrator, more substeps or a softer fabric");
+  }
+}
+
+// Results -------------------------------------------------------------------
+
+std::vector<float> ClothSimulator::flatPositions() const {
+  std::vector<float> flat(3 * state_.size());
+  for (size_t i = 0; i < state_.size(); ++i) {
+    flat[3 * i] = state_.x[i].x;
+    flat[3 * i + 1] = state_.x[i].y;
+    flat[3 * i + 2] = state_.x[i].z;
+  }
+  return flat;
+}
+
+double ClothSimulator::kineticEnergy() const {
+  return deterministicSum(state_.size(), [&](size_t i) {
+    return 0.5 * double(state_.mass[i]) * double(glm::dot(state_.v[i], state_.v[i]));
+  });
+}
+
+double ClothSimulator::potentialEnergy() const { return forces_->potentialEnergy(state_); }
+
+float ClothSimulator::currentMaxStretch() const {
+  return maxStretchOf(state_.x, forces_->springs().springs(), forces_->structuralCount());
+}
+
+int ClothSimulator::countPenetrating() const {
+  int count = 0;
+  for (size_t i = 0; i < state_.size(); ++i) {
+    bool inside = false;
+    for (const PrimitiveCollider& c : colliders_) {
+      glm::vec3 n;
+      inside = inside || c.signedDistance(state_.x[i], n) < 0.0f;
+    }
+    BodyContact contact;
+    if (!inside && !body_.empty() && body_.nearestContact(state_.x[i], contact)) inside = contact.signedDistance < 0.0f;
+    count += inside ? 1 : 0;
+  }
+  return count;
+}
+
+void ClothSimulator::updateStats() {
+  stats_.maxStretch = currentMaxStretch();
+  stats_.maxStretchEver = std::max(stats_.maxStretchEver, stats_.maxStretch);
+  stats_.penetratingVertices = countPenetrating();
+  glm::vec3 lo(1e30f), hi(-1e30f);
+  for (const glm::vec3& x : state_.x) {
+    lo = glm::min(lo, x);
+    hi = glm::max(hi, x);
+  }
+  stats_.boundsMin = lo;
+  stats_.boundsMax = hi;
+}
+
+}  // namespace mq::cloth

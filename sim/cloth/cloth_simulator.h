@@ -1,0 +1,127 @@
+#pragma once
+// The cloth simulation a caller steps: the CLI, the editor (live while the
+// character plays, or baking with progress and cancel) and the tests.
+//
+// One step(dt) reads top to bottom (cloth_simulator.cpp): for each solver
+// substep, move the body and the pin targets, integrate, limit the
+// elongation, resolve self-collisions, resolve collisions with the colliders
+// and the body, put pinned vertices on their targets, check for NaNs.
+//
+//   ClothSimulator sim(mesh, fabricPreset("cotton"), settings);
+//   sim.addCollider(PrimitiveCollider::sphere({0, 0, 0}, 0.3f));
+//   sim.setBody(restPositions, triangles);            // optional
+//   for each frame: sim.updateBody(posed); sim.step(1 / 24.f); use sim.positions();
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "core/garment/fabric.h"
+#include "core/util/error.h"
+#include "sim/cloth/cloth_settings.h"
+#include "sim/cloth/cloth_state.h"
+#include "sim/cloth/cloth_topology.h"
+#include "sim/cloth/collision/body_collider.h"
+#include "sim/cloth/collision/primitive_collider.h"
+#include "sim/cloth/forces/cloth_forces.h"
+
+namespace mq::cloth {
+
+class Integrator;
+class SelfCollision;
+
+// A NaN or infinity appeared in the state: reported, never propagated.
+class ClothDiverged : public Error {
+ public:
+  using Error::Error;
+};
+
+struct ClothStats {
+  float maxStretch = 1.0f;       // largest structural length / rest length now
+  float maxStretchEver = 1.0f;   // ... over all steps so far
+  int penetratingVertices = 0;   // vertices inside a collider or the body now
+  glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
+  int substeps = 0;              // solver steps in the last step()
+  int solverIterations = 0;      // CG iterations in the last step() (implicit)
+  int selfContacts = 0;          // cloth-cloth pairs closer than the thickness in the last step()
+  int stretchPasses = 0;         // elongation-limit passes in the last step()
+  long long steps = 0;
+  double simulatedTime = 0.0;
+};
+
+class ClothSimulator {
+ public:
+  ClothSimulator(const ClothMesh& mesh, const Fabric& fabric, const ClothSettings& settings);
+  // With springs from `topology` instead of the mesh's shape (e.g. remapped
+  // after welding seams, see sim/garment/garment_sewing.h).
+  ClothSimulator(const ClothMesh& mesh, const ClothTopology& topology, const Fabric& fabric,
+                 const ClothSettings& settings);
+  ~ClothSimulator();
+
+  // Colliders and the body
+  void addCollider(const PrimitiveCollider& collider);
+  const std::vector<PrimitiveCollider>& colliders() const { return colliders_; }
+  void setBody(const std::vector<float>& positions, const std::vector<uint32_t>& triangles);
+  // The posed body (same vertices) at the end of the next step().
+  void updateBody(const std::vector<float>& posedPositions);
+
+  // Pins: a pinned vertex follows its target exactly.
+  void pinVertex(uint32_t vertex);                      // where it is now
+  void pinVertex(uint32_t vertex, glm::vec3 target);
+  void pinToBodyVertex(uint32_t vertex, uint32_t bodyVertex);  // keeps today's offset
+  void setPinTarget(uint32_t vertex, glm::vec3 target);        // e.g. from a bone each frame
+  void unpin(uint32_t vertex);
+  size_t pinCount() const { return pins_.size(); }
+
+  // Stepping; throws ClothDiverged when the state is not finite.
+  void step(float dt);
+
+  // Results
+  const std::vector<glm::vec3>& positions() const { return state_.x; }
+  std::vector<float> flatPositions() const;
+  const std::vector<uint32_t>& triangles() const { return triangles_; }
+  const ClothState& state() const { return state_; }
+  ClothState& mutableState() { return state_; }  // tests and tools: edit, then step
+  const ClothStats& stats() const { return stats_; }
+  const ClothSettings& settings() const { return settings_; }
+  const ClothForces& forces() const { return *forces_; }
+  double kineticEnergy() const;
+  double potentialEnergy() const;
+  float currentMaxStretch() const;
+  int countPenetrating() const;
+  // Solver steps one step(dt) takes with these settings.
+  int substepsFor(float dt) const;
+
+ private:
+  struct Pin {
+    uint32_t vertex;
+    glm::vec3 target;
+    int64_t bodyVertex = -1;
+    glm::vec3 offset{0.0f};
+  };
+  void substep(float h, float bodyFraction);
+  void preparePins(float h);
+  void placePins();
+  void collideWithColliders(float h);
+  void checkFinite(const char* where) const;
+  void updateStats();
+  Pin* findPin(uint32_t vertex);
+
+  ClothSettings settings_;
+  Fabric fabric_;
+  std::vector<uint32_t> triangles_;
+  ClothTopology topology_;
+  std::unique_ptr<ClothForces> forces_;
+  std::unique_ptr<Integrator> integrator_;
+  std::unique_ptr<SelfCollision> selfCollision_;
+  ClothState state_;
+  std::vector<float> freeInvMass_;
+  std::vector<glm::vec3> stepStart_;
+  std::vector<PrimitiveCollider> colliders_;
+  BodyCollider body_;
+  std::vector<float> pendingBody_;
+  std::vector<Pin> pins_;
+  ClothStats stats_;
+};
+
+}  // namespace mq::cloth

@@ -1,0 +1,70 @@
+#include "sim/cloth/collision/aabb_tree.h"
+
+#include <algorithm>
+
+namespace mq::cloth {
+
+namespace {
+constexpr uint32_t kLeafSize = 4;
+}
+
+std::vector<Box> triangleBoxes(const std::vector<glm::vec3>& p, const std::vector<uint32_t>& triangles, float margin) {
+  std::vector<Box> boxes(triangles.size() / 3);
+  for (size_t t = 0; t < boxes.size(); ++t) {
+    Box& b = boxes[t];
+    for (int c = 0; c < 3; ++c) b.extend(p[triangles[3 * t + c]]);
+    b.min -= glm::vec3(margin);
+    b.max += glm::vec3(margin);
+  }
+  return boxes;
+}
+
+void AabbTree::build(const std::vector<Box>& boxes) {
+  const uint32_t count = uint32_t(boxes.size());
+  order_.resize(count);
+  for (uint32_t t = 0; t < count; ++t) order_[t] = t;
+  nodes_.clear();
+  nodes_.reserve(2 * count / kLeafSize + 2);
+  if (count > 0) buildNode(0, count, boxes);
+}
+
+int32_t AabbTree::buildNode(uint32_t first, uint32_t count, const std::vector<Box>& boxes) {
+  const int32_t index = int32_t(nodes_.size());
+  nodes_.emplace_back();
+  Box box;
+  for (uint32_t k = first; k < first + count; ++k) box.extend(boxes[order_[k]]);
+  nodes_[index].box = box;
+  if (count <= kLeafSize) {
+    nodes_[index].first = first;
+    nodes_[index].count = count;
+    return index;
+  }
+  const glm::vec3 extent = box.max - box.min;
+  const int axis = extent.x > extent.y ? (extent.x > extent.z ? 0 : 2) : (extent.y > extent.z ? 1 : 2);
+  const uint32_t half = count / 2;
+  auto centre = [&](uint32_t t) { return boxes[t].min[axis] + boxes[t].max[axis]; };
+  std::nth_element(order_.begin() + first, order_.begin() + first + half, order_.begin() + first + count,
+                   [&](uint32_t a, uint32_t b) { return centre(a) < centre(b) || (centre(a) == centre(b) && a < b); });
+  const int32_t left = buildNode(first, half, boxes);
+  const int32_t right = buildNode(first + half, count - half, boxes);
+  nodes_[index].left = left;
+  nodes_[index].right = right;
+  return index;
+}
+
+void AabbTree::refit(const std::vector<Box>& boxes) {
+  // Children always follow their parent, so a reverse sweep is bottom-up.
+  for (size_t i = nodes_.size(); i-- > 0;) {
+    Node& n = nodes_[i];
+    Box box;
+    if (n.left < 0) {
+      for (uint32_t k = n.first; k < n.first + n.count; ++k) box.extend(boxes[order_[k]]);
+    } else {
+      box = nodes_[n.left].box;
+      box.extend(nodes_[n.right].box);
+    }
+    n.box = box;
+  }
+}
+
+}  // namespace mq::cloth

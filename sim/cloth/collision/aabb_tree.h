@@ -1,0 +1,70 @@
+#pragma once
+// A bounding volume hierarchy over primitives given by their boxes (triangles,
+// or triangles swept over a time step): built by median splits on the longest
+// axis, refitted bottom-up when the primitives move (the topology of a skinned
+// body or a cloth never changes).
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace mq::cloth {
+
+struct Box {
+  glm::vec3 min{1e30f}, max{-1e30f};
+  void extend(const glm::vec3& p) { min = glm::min(min, p); max = glm::max(max, p); }
+  void extend(const Box& o) { min = glm::min(min, o.min); max = glm::max(max, o.max); }
+  bool overlaps(const Box& o) const {
+    return min.x <= o.max.x && o.min.x <= max.x && min.y <= o.max.y && o.min.y <= max.y && min.z <= o.max.z &&
+           o.min.z <= max.z;
+  }
+};
+
+class AabbTree {
+ public:
+  void build(const std::vector<Box>& boxes);
+  // New boxes for the same primitives.
+  void refit(const std::vector<Box>& boxes);
+  // Calls visit(primitive) for every primitive whose box overlaps `box`.
+  template <class Visit>
+  void query(const Box& box, Visit&& visit) const;
+
+  bool empty() const { return nodes_.empty(); }
+
+ private:
+  struct Node {
+    Box box;
+    int32_t left = -1, right = -1;  // children; leaves have left = -1
+    uint32_t first = 0, count = 0;  // leaf: range in order_
+  };
+  int32_t buildNode(uint32_t first, uint32_t count, const std::vector<Box>& boxes);
+
+  std::vector<Node> nodes_;
+  std::vector<uint32_t> order_;  // primitive indices, leaf ranges
+};
+
+// Boxes of the triangles of `positions`, grown by `margin`.
+std::vector<Box> triangleBoxes(const std::vector<glm::vec3>& positions, const std::vector<uint32_t>& triangles,
+                               float margin);
+
+template <class Visit>
+void AabbTree::query(const Box& box, Visit&& visit) const {
+  if (nodes_.empty()) return;
+  int32_t stack[64];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& n = nodes_[stack[--top]];
+    if (!n.box.overlaps(box)) continue;
+    if (n.left < 0) {
+      for (uint32_t k = n.first; k < n.first + n.count; ++k) visit(order_[k]);
+    } else {
+      stack[top++] = n.left;
+      stack[top++] = n.right;
+    }
+  }
+}
+
+}  // namespace mq::cloth

@@ -1,0 +1,75 @@
+#include "sim/cloth/collision/body_collider.h"
+
+#include "core/util/error.h"
+#include "sim/cloth/collision/proximity.h"
+
+namespace mq::cloth {
+
+namespace {
+
+std::vector<glm::vec3> toVec3(const std::vector<float>& flat) {
+  std::vector<glm::vec3> out(flat.size() / 3);
+  for (size_t i = 0; i < out.size(); ++i) out[i] = {flat[3 * i], flat[3 * i + 1], flat[3 * i + 2]};
+  return out;
+}
+
+}  // namespace
+
+void BodyCollider::setMesh(const std::vector<float>& positions, const std::vector<uint32_t>& triangles,
+                           float searchRadius) {
+  const size_t n = positions.size() / 3;
+  for (uint32_t t : triangles)
+    if (t >= n) throw Error("body mesh triangle index out of range");
+  triangles_ = triangles;
+  from_ = to_ = current_ = toVec3(positions);
+  velocity_.assign(n, glm::vec3(0.0f));
+  searchRadius_ = searchRadius;
+  tree_.build(triangleBoxes(current_, triangles_, searchRadius_));
+}
+
+void BodyCollider::setTarget(const std::vector<float>& positions, float frameTime) {
+  if (positions.size() != 3 * from_.size()) throw Error("posed body has a different vertex count");
+  from_ = current_;
+  to_ = toVec3(positions);
+  for (size_t i = 0; i < to_.size(); ++i) velocity_[i] = frameTime > 0.0f ? (to_[i] - from_[i]) / frameTime : glm::vec3(0.0f);
+}
+
+void BodyCollider::moveTo(float fraction) {
+  for (size_t i = 0; i < current_.size(); ++i) current_[i] = from_[i] + fraction * (to_[i] - from_[i]);
+  tree_.refit(triangleBoxes(current_, triangles_, searchRadius_));
+}
+
+std::vector<float> BodyCollider::flatPositions() const {
+  std::vector<float> flat;
+  flat.reserve(3 * current_.size());
+  for (const glm::vec3& p : current_) flat.insert(flat.end(), {p.x, p.y, p.z});
+  return flat;
+}
+
+bool BodyCollider::nearestContact(const glm::vec3& p, BodyContact& contact) const {
+  Box box;
+  box.min = box.max = p;  // triangle boxes are grown by the search radius
+  float best = searchRadius_;
+  bool found = false;
+  tree_.query(box, [&](uint32_t t) {
+    const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
+    const glm::vec3 w = closestTriangleWeights(p, current_[a], current_[b], current_[c]);
+    const glm::vec3 q = w.x * current_[a] + w.y * current_[b] + w.z * current_[c];
+    const float d = glm::length(p - q);
+    if (d >= best) return;
+    const glm::vec3 faceNormal = glm::cross(current_[b] - current_[a], current_[c] - current_[a]);
+    const float area2 = glm::length(faceNormal);
+    if (area2 <= 0.0f) return;
+    best = d;
+    found = true;
+    const glm::vec3 n = faceNormal / area2;
+    const bool inside = glm::dot(p - q, n) < 0.0f;
+    contact.point = q;
+    contact.signedDistance = inside ? -d : d;
+    contact.normal = (!inside && d > 1e-6f) ? (p - q) / d : n;
+    contact.velocity = w.x * velocity_[a] + w.y * velocity_[b] + w.z * velocity_[c];
+  });
+  return found;
+}
+
+}  // namespace mq::cloth

@@ -1,0 +1,48 @@
+#pragma once
+// The animated skinned body as a collider: its triangles in a BVH refitted
+// every frame. Between two frames the body moves linearly; a cloth vertex
+// closer than `thickness` to the surface (or behind it) is pushed out with the
+// contact response, relative to the body's velocity at the contact point.
+// Inside/outside comes from the normal of the nearest triangle, so the body
+// should be a closed, outward-oriented surface; vertices deeper than the
+// search radius are not seen.
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "sim/cloth/collision/aabb_tree.h"
+
+namespace mq::cloth {
+
+struct BodyContact {
+  glm::vec3 point, normal, velocity;
+  float signedDistance;
+};
+
+class BodyCollider {
+ public:
+  // Rest (or first) pose: flat positions (3 per vertex) and triangles.
+  void setMesh(const std::vector<float>& positions, const std::vector<uint32_t>& triangles, float searchRadius);
+  // The pose at the end of the next frame, reached after `frameTime` seconds.
+  void setTarget(const std::vector<float>& positions, float frameTime);
+  // Positions at a fraction [0,1] of the way from the last pose to the target.
+  void moveTo(float fraction);
+  // Nearest contact within the search radius; false when there is none.
+  bool nearestContact(const glm::vec3& p, BodyContact& contact) const;
+
+  bool empty() const { return triangles_.empty(); }
+  const std::vector<glm::vec3>& positions() const { return current_; }
+  std::vector<float> flatPositions() const;
+  const std::vector<uint32_t>& triangles() const { return triangles_; }
+  float searchRadius() const { return searchRadius_; }
+
+ private:
+  std::vector<uint32_t> triangles_;
+  std::vector<glm::vec3> from_, to_, current_, velocity_;
+  AabbTree tree_;
+  float searchRadius_ = 0.02f;
+};
+
+}  // namespace mq::cloth

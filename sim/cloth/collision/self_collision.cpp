@@ -1,0 +1,161 @@
+#include "sim/cloth/collision/self_collision.h"
+
+#include <algorithm>
+#include <map>
+
+#include "sim/cloth/collision/proximity.h"
+#include "core/util/thread_pool.h"
+
+namespace mq::cloth {
+
+namespace {
+
+constexpr size_t kBlocks = 64;
+
+bool sharesVertex(uint32_t a0, uint32_t a1, uint32_t b0, uint32_t b1) {
+  return a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1;
+}
+
+// Runs body(item, outBlock) over [0, count) in fixed blocks, in parallel, and
+// concatenates the blocks' outputs in order: deterministic.
+template <class T, class Body>
+std::vector<T> collectInBlocks(size_t count, Body&& body) {
+  std::vector<std::vector<T>> blocks(kBlocks);
+  const size_t size = (count + kBlocks - 1) / kBlocks;
+  ThreadPool::shared().parallelFor(0, kBlocks, 1, [&](size_t b0, size_t b1) {
+    for (size_t b = b0; b < b1; ++b)
+      for (size_t i = b * size; i < std::min(count, (b + 1) * size); ++i) body(i, blocks[b]);
+  });
+  std::vector<T> all;
+  for (auto& b : blocks) all.insert(all.end(), b.begin(), b.end());
+  return all;
+}
+
+}  // namespace
+
+SelfCollision::SelfCollision(const std::vector<uint32_t>& triangles, size_t vertexCount) : triangles_(triangles) {
+  std::map<std::pair<uint32_t, uint32_t>, uint32_t> index;
+  triangleEdges_.resize(triangles.size());
+  for (size_t t = 0; t < triangles.size(); t += 3)
+    for (int c = 0; c < 3; ++c) {
+      const uint32_t a = triangles[t + c], b = triangles[t + (c + 1) % 3];
+      const auto key = std::minmax(a, b);
+      auto [it, added] = index.emplace(std::make_pair(key.first, key.second), uint32_t(edges_.size()));
+      if (added) edges_.push_back({key.first, key.second});
+      triangleEdges_[t + c] = it->second;
+    }
+}
+
+void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::vec3>& x0, float thickness) {
+  const size_t n = s.size(), triangleCount = triangles_.size() / 3;
+  // Box of every triangle over the step (its corners at x0 and at x1).
+  std::vector<Box> boxes(triangleCount);
+  for (size_t t = 0; t < triangleCount; ++t) {
+    for (int c = 0; c < 3; ++c) {
+      boxes[t].extend(x0[triangles_[3 * t + c]]);
+      boxes[t].extend(s.x[triangles_[3 * t + c]]);
+    }
+    boxes[t].min -= glm::vec3(thickness);
+    boxes[t].max += glm::vec3(thickness);
+  }
+  tree_.build(boxes);
+  auto sweptBox = [&](std::initializer_list<uint32_t> vertices) {
+    Box b;
+    for (uint32_t v : vertices) {
+      b.extend(x0[v]);
+      b.extend(s.x[v]);
+    }
+    b.min -= glm::vec3(thickness);
+    b.max += glm::vec3(thickness);
+    return b;
+  };
+  vertexTriangle_ = collectInBlocks<VertexTriangle>(n, [&](size_t v, std::vector<VertexTriangle>& out) {
+    tree_.query(sweptBox({uint32_t(v)}), [&](uint32_t t) {
+      const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
+      if (v == a || v == b || v == c) return;
+      const glm::vec3 w = closestTriangleWeights(x0[v], x0[a], x0[b], x0[c]);
+      const glm::vec3 normal = glm::cross(x0[b] - x0[a], x0[c] - x0[a]);
+      const float side = glm::dot(x0[v] - (w.x * x0[a] + w.y * x0[b] + w.z * x0[c]), normal) >= 0.0f ? 1.0f : -1.0f;
+      out.push_back({uint32_t(v), t, w, side});
+    });
+  });
+  edgeEdge_ = collectInBlocks<EdgeEdge>(edges_.size(), [&](size_t e, std::vector<EdgeEdge>& out) {
+    const auto [p0, p1] = edges_[e];
+    tree_.query(sweptBox({p0, p1}), [&](uint32_t t) {
+      for (int c = 0; c < 3; ++c) {
+        const uint32_t f = triangleEdges_[3 * t + c];
+        if (f <= e) continue;
+        const auto [q0, q1] = edges_[f];
+        if (sharesVertex(p0, p1, q0, q1)) continue;
+        const glm::vec2 st = closestSegmentParameters(x0[p0], x0[p1], x0[q0], x0[q1]);
+        const glm::vec3 d = glm::mix(x0[p0], x0[p1], st.x) - glm::mix(x0[q0], x0[q1], st.y);
+        const float l = glm::length(d);
+        if (l < 1e-9f) continue;
+        out.push_back({uint32_t(e), f, st, d / l});
+      }
+    });
+  });
+  // An edge pair can be reached through both triangles of an edge.
+  std::sort(edgeEdge_.begin(), edgeEdge_.end(),
+            [](const EdgeEdge& a, const EdgeEdge& b) { return a.e0 != b.e0 ? a.e0 < b.e0 : a.e1 < b.e1; });
+  edgeEdge_.erase(std::unique(edgeEdge_.begin(), edgeEdge_.end(),
+                              [](const EdgeEdge& a, const EdgeEdge& b) { return a.e0 == b.e0 && a.e1 == b.e1; }),
+                  edgeEdge_.end());
+}
+
+// Pushes the weighted point sum_k w_k x_k of a pair apart along n until its
+// gap is `thickness`, sharing the move by inverse mass (a position
+// constraint), and removes the approaching part of the relative velocity.
+template <size_t N>
+static int separate(ClothState& s, const uint32_t (&v)[N], const float (&w)[N], const glm::vec3& n, float thickness) {
+  glm::vec3 gapPoint(0.0f), relVelocity(0.0f);
+  float denom = 0.0f;
+  for (size_t k = 0; k < N; ++k) {
+    gapPoint += w[k] * s.x[v[k]];
+    relVelocity += w[k] * s.v[v[k]];
+    denom += w[k] * w[k] * s.invMass[v[k]];
+  }
+  const float gap = glm::dot(gapPoint, n);
+  if (gap >= thickness || denom <= 0.0f) return 0;
+  const float push = (thickness - gap) / denom;
+  const float vn = glm::dot(relVelocity, n);
+  const float stop = vn < 0.0f ? -vn / denom : 0.0f;
+  for (size_t k = 0; k < N; ++k) {
+    s.x[v[k]] += (push * w[k] * s.invMass[v[k]]) * n;
+    s.v[v[k]] += (stop * w[k] * s.invMass[v[k]]) * n;
+  }
+  return 1;
+}
+
+int SelfCollision::applyVertexTriangle(ClothState& s, const VertexTriangle& c, float thickness) const {
+  const uint32_t a = triangles_[3 * c.triangle], b = triangles_[3 * c.triangle + 1], d = triangles_[3 * c.triangle + 2];
+  const glm::vec3 normal = glm::cross(s.x[b] - s.x[a], s.x[d] - s.x[a]);
+  const float l = glm::length(normal);
+  if (l <= 0.0f) return 0;
+  const uint32_t v[4] = {c.vertex, a, b, d};
+  const float w[4] = {1.0f, -c.weights.x, -c.weights.y, -c.weights.z};
+  return separate(s, v, w, (c.side / l) * normal, thickness);
+}
+
+int SelfCollision::applyEdgeEdge(ClothState& s, const EdgeEdge& c, float thickness) const {
+  const auto [p0, p1] = edges_[c.e0];
+  const auto [q0, q1] = edges_[c.e1];
+  const uint32_t v[4] = {p0, p1, q0, q1};
+  const float w[4] = {1.0f - c.params.x, c.params.x, -(1.0f - c.params.y), -c.params.y};
+  return separate(s, v, w, c.normal0, thickness);
+}
+
+int SelfCollision::resolve(ClothState& s, const std::vector<glm::vec3>& x0, float thickness, int passes) {
+  findCandidates(s, x0, thickness);
+  int contacts = 0;
+  for (int pass = 0; pass < passes; ++pass) {
+    int active = 0;
+    for (const auto& c : vertexTriangle_) active += applyVertexTriangle(s, c, thickness);
+    for (const auto& c : edgeEdge_) active += applyEdgeEdge(s, c, thickness);
+    if (pass == 0) contacts = active;
+    if (active == 0) break;
+  }
+  return contacts;
+}
+
+}  // namespace mq::cloth

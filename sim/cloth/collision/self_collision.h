@@ -1,0 +1,49 @@
+#pragma once
+// Cloth-cloth collisions with a BVH over the cloth's triangles: vertex-triangle
+// and edge-edge proximity (Bridson, Fedkiw and Anderson 2002, simplified).
+// Candidates are pairs whose boxes, swept over the step and grown by the
+// thickness, overlap. Which side of each other two elements are on is read at
+// the start of the step (x0), so an element that crossed during the step is
+// pulled back to its side. At the end of the step every pair closer than the
+// thickness along that side's normal is pushed apart (mass-weighted, like a
+// position constraint) and loses its approaching relative normal velocity.
+// Pairs are processed in a fixed order: deterministic.
+
+#include <cstdint>
+#include <vector>
+
+#include "sim/cloth/cloth_state.h"
+#include "sim/cloth/collision/aabb_tree.h"
+
+namespace mq::cloth {
+
+class SelfCollision {
+ public:
+  SelfCollision(const std::vector<uint32_t>& triangles, size_t vertexCount);
+  // Returns the number of pairs that were closer than `thickness`.
+  int resolve(ClothState& s, const std::vector<glm::vec3>& x0, float thickness, int passes);
+
+ private:
+  struct VertexTriangle {
+    uint32_t vertex, triangle;
+    glm::vec3 weights;  // closest point at x0
+    float side;         // +1 / -1: the vertex's side of the triangle at x0
+  };
+  struct EdgeEdge {
+    uint32_t e0, e1;
+    glm::vec2 params;    // closest points at x0
+    glm::vec3 normal0;   // direction from edge 1 to edge 0 at x0
+  };
+  void findCandidates(const ClothState& s, const std::vector<glm::vec3>& x0, float thickness);
+  int applyVertexTriangle(ClothState& s, const VertexTriangle& c, float thickness) const;
+  int applyEdgeEdge(ClothState& s, const EdgeEdge& c, float thickness) const;
+
+  std::vector<uint32_t> triangles_;
+  std::vector<std::pair<uint32_t, uint32_t>> edges_;
+  std::vector<uint32_t> triangleEdges_;  // 3 per triangle
+  AabbTree tree_;
+  std::vector<VertexTriangle> vertexTriangle_;
+  std::vector<EdgeEdge> edgeEdge_;
+};
+
+}  // namespace mq::cloth

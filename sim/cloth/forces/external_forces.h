@@ -1,0 +1,31 @@
+#pragma once
+// Forces on every vertex alone: gravity m g, and air drag against the wind
+// f = -c A (v - w), with A the cloth area a vertex stands for (a third of its
+// triangles), c the air damping in N s/m^3 and w the wind velocity.
+
+#include <vector>
+
+#include "sim/cloth/forces/force_term.h"
+
+namespace mq::cloth {
+
+class ExternalForces : public ForceTerm {
+ public:
+  ExternalForces(glm::vec3 gravity, glm::vec3 wind, float airDamping, std::vector<float> vertexArea);
+
+  void setWind(glm::vec3 wind) { wind_ = wind; }
+
+  void addForces(const ClothState& s, std::vector<glm::vec3>& f) const override;
+  double potentialEnergy(const ClothState& s) const override;  // gravity only
+  void prepareImplicit(const ClothState& s, float h, std::vector<glm::vec3>& hKv,
+                       std::vector<glm::mat3>& diagonal) override;
+  void addProduct(const std::vector<glm::vec3>& p, std::vector<glm::vec3>& y) const override;
+
+ private:
+  glm::vec3 gravity_, wind_;
+  float airDamping_;
+  std::vector<float> vertexArea_;
+  float h_ = 0.0f;
+};
+
+}  // namespace mq::cloth

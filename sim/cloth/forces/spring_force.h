@@ -1,0 +1,53 @@
+#pragma once
+// Provot's linear springs with damping along the spring:
+//
+//   E = 1/2 k (l - L)^2,  l = |x_a - x_b|,  d = (x_a - x_b) / l
+//   f_a = -k (l - L) d - kd ((v_a - v_b) . d) d,   f_b = -f_a
+//   df_a/dx_a = -k [ d d^T + (1 - L/l) (I - d d^T) ]
+//
+// For the implicit solve the factor (1 - L/l) is clamped at 0 so a compressed
+// spring never makes the system indefinite (Choi and Ko 2002; Baraff-Witkin's
+// "filtered" Jacobian). Forces are computed per spring, then gathered per
+// vertex in a fixed order, so the result does not depend on the thread count.
+
+#include <cstdint>
+#include <vector>
+
+#include "sim/cloth/forces/force_term.h"
+
+namespace mq::cloth {
+
+struct Spring {
+  uint32_t a, b;
+  float rest;  // m
+  float k;     // N/m
+  float kd;    // N s/m
+};
+
+class SpringForce : public ForceTerm {
+ public:
+  SpringForce(std::vector<Spring> springs, size_t vertexCount);
+
+  const std::vector<Spring>& springs() const { return springs_; }
+
+  void addForces(const ClothState& s, std::vector<glm::vec3>& f) const override;
+  double potentialEnergy(const ClothState& s) const override;
+  void prepareImplicit(const ClothState& s, float h, std::vector<glm::vec3>& hKv,
+                       std::vector<glm::mat3>& diagonal) override;
+  void addProduct(const std::vector<glm::vec3>& p, std::vector<glm::vec3>& y) const override;
+
+  // df_a/dx_a of one spring (exact, or filtered as the solver uses it).
+  glm::mat3 stiffnessBlock(size_t spring, const std::vector<glm::vec3>& x, bool filtered) const;
+
+ private:
+  // For every vertex, y[v] += sum over its springs of sign * perSpring[s].
+  void gather(const std::vector<glm::vec3>& perSpring, std::vector<glm::vec3>& y) const;
+
+  std::vector<Spring> springs_;
+  std::vector<uint32_t> incidenceStart_;  // CSR over vertices
+  std::vector<int32_t> incidence_;        // spring index + 1, negative when the vertex is b
+  std::vector<glm::mat3> blocks_;         // per spring: h^2 k S + h kd d d^T (implicit)
+  mutable std::vector<glm::vec3> perSpring_;
+};
+
+}  // namespace mq::cloth

@@ -1,0 +1,48 @@
+#pragma once
+// Deterministic data-parallel helpers over the shared thread pool: loops over
+// contiguous ranges, and sums whose result does not depend on the thread
+// count (fixed blocks, partial sums added in block order).
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+#include "core/util/thread_pool.h"
+
+namespace mq::cloth {
+
+constexpr size_t kParallelGrain = 2048;
+
+template <class Body>
+void forRange(size_t count, Body&& body) {
+  if (count < 2 * kParallelGrain) {
+    body(size_t(0), count);
+    return;
+  }
+  ThreadPool::shared().parallelFor(0, count, kParallelGrain, [&](size_t b, size_t e) { body(b, e); });
+}
+
+// Sum of term(i) for i in [0, count), in double, identical for any thread count.
+template <class Term>
+double deterministicSum(size_t count, Term&& term) {
+  constexpr size_t kBlocks = 64;
+  const size_t block = (count + kBlocks - 1) / kBlocks;
+  double partial[kBlocks] = {};
+  auto sumBlocks = [&](size_t b0, size_t b1) {
+    for (size_t b = b0; b < b1; ++b) {
+      double s = 0.0;
+      const size_t end = std::min(count, (b + 1) * block);
+      for (size_t i = b * block; i < end; ++i) s += term(i);
+      partial[b] = s;
+    }
+  };
+  if (count < 2 * kParallelGrain)
+    sumBlocks(0, kBlocks);
+  else
+    ThreadPool::shared().parallelFor(0, kBlocks, 1, sumBlocks);
+  double total = 0.0;
+  for (double p : partial) total += p;
+  return total;
+}
+
+}  // namespace mq::cloth

@@ -1,0 +1,136 @@
+// Analytic gradients and Jacobians of the cloth forces against central
+// finite differences of the energy and of the forces.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "sim/cloth/forces/cantilever_bending.h"
+#include "sim/cloth/forces/spring_force.h"
+
+namespace mq::cloth {
+namespace {
+
+ClothState randomState(size_t n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(-0.3f, 0.3f);
+  ClothState s;
+  for (size_t i = 0; i < n; ++i) {
+    s.x.push_back(glm::vec3(float(i) * 0.1f, 0.0f, 0.0f) + glm::vec3(u(rng), u(rng), u(rng)) * 0.2f);
+    s.v.push_back(glm::vec3(0.0f));
+    s.mass.push_back(1.0f);
+    s.invMass.push_back(1.0f);
+  }
+  return s;
+}
+
+std::vector<glm::vec3> forcesOf(const ForceTerm& term, const ClothState& s) {
+  std::vector<glm::vec3> f(s.size(), glm::vec3(0.0f));
+  term.addForces(s, f);
+  return f;
+}
+
+// f = -dE/dx, checked component by component with central differences (double energy).
+void expectForceIsMinusGradient(const ForceTerm& term, ClothState s, double tolerance) {
+  const std::vector<glm::vec3> f = forcesOf(term, s);
+  const float h = 1e-3f;
+  for (size_t i = 0; i < s.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      const float keep = s.x[i][c];
+      s.x[i][c] = keep + h;
+      const double ep = term.potentialEnergy(s);
+      s.x[i][c] = keep - h;
+      const double em = term.potentialEnergy(s);
+      s.x[i][c] = keep;
+      const double numeric = -(ep - em) / (2.0 * h);
+      EXPECT_NEAR(f[i][c], numeric, tolerance * (1.0 + std::abs(numeric))) << "vertex " << i << " axis " << c;
+    }
+}
+
+TEST(ClothForces, SpringForceIsMinusEnergyGradient) {
+  const ClothState s = randomState(4, 7);
+  const SpringForce springs({{0, 1, 0.08f, 120.0f, 0.0f}, {1, 2, 0.12f, 80.0f, 0.0f}, {0, 3, 0.25f, 50.0f, 0.0f}}, 4);
+  expectForceIsMinusGradient(springs, s, 2e-3);
+}
+
+TEST(ClothForces, SpringJacobianMatchesFiniteDifferences) {
+  ClothState s = randomState(2, 11);
+  const SpringForce springs({{0, 1, 0.05f, 300.0f, 0.0f}}, 2);
+  for (bool stretched : {true, false}) {
+    // Rest shorter than the current length (stretched) and longer (compressed).
+    const float l = glm::length(s.x[0] - s.x[1]);
+    const SpringForce spring({{0, 1, stretched ? 0.7f * l : 1.3f * l, 300.0f, 0.0f}}, 2);
+    const glm::mat3 K = spring.stiffnessBlock(0, s.x, false);
+    const float h = 1e-3f;
+    for (int c = 0; c < 3; ++c) {
+      const float keep = s.x[0][c];
+      s.x[0][c] = keep + h;
+      const glm::vec3 fp = forcesOf(spring, s)[0];
+      s.x[0][c] = keep - h;
+      const glm::vec3 fm = forcesOf(spring, s)[0];
+      s.x[0][c] = keep;
+      const glm::vec3 column = (fp - fm) / (2.0f * h);
+      for (int r = 0; r < 3; ++r) EXPECT_NEAR(K[c][r], column[r], 1e-2f * (1.0f + std::abs(column[r])));
+    }
+    // The filtered block the solver uses is negative semi-definite.
+    const glm::mat3 F = spring.stiffnessBlock(0, s.x, true);
+    std::mt19937 rng(3);
+    std::normal_distribution<float> g;
+    for (int k = 0; k < 20; ++k) {
+      const glm::vec3 p(g(rng), g(rng), g(rng));
+      EXPECT_LE(glm::dot(p, F * p), 1e-3f);
+    }
+  }
+}
+
+TEST(ClothForces, SpringDampingOpposesRelativeVelocity) {
+  ClothState s = randomState(2, 5);
+  const float l = glm::length(s.x[0] - s.x[1]);
+  const SpringForce spring({{0, 1, l, 0.0f, 2.0f}}, 2);
+  s.v[0] = glm::normalize(s.x[0] - s.x[1]);  // separating
+  const auto f = forcesOf(spring, s);
+  EXPECT_LT(glm::dot(f[0], s.v[0]), 0.0f);
+  EXPECT_NEAR(glm::length(f[0] + f[1]), 0.0f, 1e-6f);  // momentum conserved
+}
+
+TEST(ClothForces, CantileverForceIsMinusEnergyGradient) {
+  const ClothState s = randomState(5, 21);
+  const CantileverBending bending({{0, 1, 2, 0.02f, 0.0f}, {1, 2, 3, 0.03f, 0.0f}, {2, 3, 4, 0.01f, 0.0f}}, 5);
+  expectForceIsMinusGradient(bending, s, 2e-3);
+}
+
+TEST(ClothForces, CantileverJacobianMatchesFiniteDifferencesWhenStraight) {
+  // Straight line: the Gauss-Newton Jacobian equals the exact one.
+  ClothState s = randomState(3, 1);
+  s.x = {{0, 0, 0}, {0.1f, 0.01f, 0}, {0.2f, 0.02f, 0}};
+  const CantileverBending bending({{0, 1, 2, 0.05f, 0.0f}}, 3);
+  const float h = 1e-3f;
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) {
+      const glm::mat3 J = bending.jacobianBlock(0, a, b, s.x);
+      for (int c = 0; c < 3; ++c) {
+        const float keep = s.x[b][c];
+        s.x[b][c] = keep + h;
+        const glm::vec3 fp = forcesOf(bending, s)[a];
+        s.x[b][c] = keep - h;
+        const glm::vec3 fm = forcesOf(bending, s)[a];
+        s.x[b][c] = keep;
+        const glm::vec3 column = (fp - fm) / (2.0f * h);
+        for (int r = 0; r < 3; ++r)
+          EXPECT_NEAR(J[c][r], column[r], 2e-2f * (1.0f + std::abs(column[r]))) << a << b << c << r;
+      }
+    }
+}
+
+TEST(ClothForces, CantileverResistsBendingOnly) {
+  ClothState s = randomState(3, 1);
+  s.x = {{0, 0, 0}, {0.1f, 0, 0}, {0.2f, 0, 0}};
+  const CantileverBending bending({{0, 1, 2, 0.05f, 0.0f}}, 3);
+  EXPECT_NEAR(bending.potentialEnergy(s), 0.0, 1e-9);
+  s.x[2] = {0.2f, 0.02f, 0};  // bend up: the tip is pushed back down
+  const auto f = forcesOf(bending, s);
+  EXPECT_LT(f[2].y, 0.0f);
+  EXPECT_NEAR(glm::length(f[0] + f[1] + f[2]), 0.0f, 1e-5f);
+}
+
+}  // namespace
+}  // namespace mq::cloth
