@@ -38,8 +38,8 @@ struct HairShading {
   float secondarySpecular = 0.5f;
   float secondaryExponent = 25.0f;
   float secondaryShift = -0.12f;
-  float tipOpacity = 0.25f;          // opacity at the tip (1 at the root)
-  float tipFadeStart = 0.6f;         // share of the strand where the fade starts
+  float tipOpacity = 0.3f;           // opacity at the tip (1 at the root)
+  float tipFadeStart = 0.7f;         // share of the strand where the fade starts
   bool selfShadowing = true;
   float shadowPerStrand = 0.05f;     // light lost per strand crossing (Beer-Lambert)
   float shadowCellSize = 0.004f;     // metres: light-aligned grid cell

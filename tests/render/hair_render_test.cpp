@@ -157,7 +157,6 @@ TEST(HairRenderDefault, DefaultMannequinWithDefaultHairstyle) {
     view.setCamera(head + offset, head + glm::vec3(0.0f, -0.15f, 0.0f));
     hair.setVisible(false);
     const render::RgbImage bare = renderer.capture();
-    render::writePng(bare, std::string("/tmp/bare_") + name + ".png");
     hair.setVisible(true);
     const render::RgbImage image = renderer.capture();
     const test::Foreground f = test::foregroundOf(image, bare);
