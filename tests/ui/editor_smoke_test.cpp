@@ -1,0 +1,333 @@
+// GUI smoke test of the editor (needs X: run under xvfb-run). Drives the real
+// main window through the same code paths the user's clicks take: picking in
+// the viewport, the scene tree, the typed angles, the gizmo, undo/redo, the
+// timeline, failed opens and save/reopen.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <chrono>
+#include <thread>
+
+#include <QApplication>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QMouseEvent>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QComboBox>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+#include <QTreeWidget>
+#include <QUndoStack>
+
+#include <vtkRenderer.h>
+
+#include "core/character/character.h"
+#include "core/math/transform.h"
+#include "render/scene_view.h"
+#include "ui/document/editor_document.h"
+#include "ui/document/pose_commands.h"
+#include "ui/main_window.h"
+#include "ui/panels/properties_panel.h"
+#include "ui/panels/scene_tree_panel.h"
+#include "ui/panels/timeline_panel.h"
+#include "ui/viewport/pose_tool.h"
+#include "ui/viewport/vtk_viewport_widget.h"
+
+using namespace mq;
+using namespace mq::ui;
+
+namespace {
+
+std::vector<float> allPositions(const EditorDocument& doc) {
+  std::vector<float> out;
+  for (const PosedMesh& m : doc.posed().meshes()) out.insert(out.end(), m.positions.begin(), m.positions.end());
+  return out;
+}
+
+float maxDifference(const std::vector<float>& a, const std::vector<float>& b) {
+  if (a.size() != b.size()) return INFINITY;
+  float d = 0.0f;
+  for (size_t i = 0; i < a.size(); ++i) d = std::max(d, std::abs(a[i] - b[i]));
+  return d;
+}
+
+// Sends a mouse event straight to the widget (event filters see it first,
+// as with real input).
+void sendMouse(QWidget* w, QEvent::Type type, QPoint pos, Qt::MouseButton button, Qt::MouseButtons buttons) {
+  QMouseEvent event(type, QPointF(pos), w->mapToGlobal(QPointF(pos)), button, buttons, Qt::NoModifier);
+  QApplication::sendEvent(w, &event);
+}
+
+}  // namespace
+
+class EditorSmokeTest : public QObject {
+  Q_OBJECT
+
+ private:
+  MainWindow* window_ = nullptr;
+  EditorDocument* doc() { return window_->document(); }
+
+  int bone(const char* name) { return doc()->character().skeleton.findBone(name); }
+
+  // Widget coordinates of a world point in the viewport.
+  QPoint toWidget(const glm::vec3& world) {
+    vtkRenderer* renderer = window_->sceneView()->renderer();
+    renderer->SetWorldPoint(world.x, world.y, world.z, 1.0);
+    renderer->WorldToDisplay();
+    const double* d = renderer->GetDisplayPoint();
+    const double ratio = window_->viewport()->devicePixelRatioF();
+    return QPoint(int(d[0] / ratio), int((window_->viewport()->height() * ratio - 1 - d[1]) / ratio));
+  }
+
+  glm::vec3 jointOf(int b) { return glm::vec3(doc()->posed().worldFromBone()[b][3]); }
+
+  void renderNow() {
+    window_->viewport()->grabFramebuffer();  // paints synchronously
+    QApplication::processEvents();
+  }
+
+ private slots:
+  void initTestCase() {
+    window_ = new MainWindow;
+    window_->reportError = [](const QString& title, const QString& message) {
+      QFAIL(qPrintable("unexpected error dialog: " + title + ": " + message));
+    };
+    window_->confirmDiscardChanges = [] { return true; };
+    window_->resize(1280, 800);
+    window_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window_));
+    QString error;
+    QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));
+    QVERIFY(doc()->character().skeleton.boneCount() > 10);
+  }
+
+  void cleanupTestCase() {
+    delete window_;
+    window_ = nullptr;
+  }
+
+  void titleStartsWithMannequin() { QVERIFY2(window_->windowTitle().startsWith("Mannequin"), qPrintable(window_->windowTitle())); }
+
+  void viewportRendersTheCharacter() {
+    const QImage image = window_->viewport()->grabFramebuffer();
+    QVERIFY(image.width() > 100 && image.height() > 100);
+    // Compare with the same view without the character's meshes: the
+    // character must cover a good part of the frame.
+    vtkActor* body = window_->sceneView()->meshActor(0);
+    QVERIFY(body != nullptr);
+    body->SetVisibility(false);
+    const QImage empty = window_->viewport()->grabFramebuffer();
+    body->SetVisibility(true);
+    int differing = 0;
+    for (int y = 0; y < image.height(); ++y)
+      for (int x = 0; x < image.width(); ++x) {
+        const QColor a = image.pixelColor(x, y), b = empty.pixelColor(x, y);
+        if (std::abs(a.red() - b.red()) + std::abs(a.green() - b.green()) + std::abs(a.blue() - b.blue()) > 30)
+          ++differing;
+      }
+    const double fraction = double(differing) / (image.width() * image.height());
+    QVERIFY2(fraction > 0.03, qPrintable(QString("character covers only %1 of the viewport").arg(fraction)));
+    QVERIFY2(fraction < 0.9, qPrintable(QString("character covers %1 of the viewport").arg(fraction)));
+  }
+
+  void clickPicksTheBoneUnderTheCursor() {
+    doc()->setClip(-1);  // rest pose: limbs apart
+    window_->frameAll();
+    renderNow();
+    const int forearm = bone("forearm_l"), hand = bone("hand_l");
+    QVERIFY(forearm >= 0 && hand >= 0);
+    const QPoint at = toWidget(0.5f * (jointOf(forearm) + jointOf(hand)));
+    QTest::mouseClick(window_->viewport(), Qt::LeftButton, Qt::NoModifier, at);
+    QCOMPARE(doc()->selectedBone(), forearm);
+    // The scene tree follows the selection.
+    QCOMPARE(window_->sceneTree()->tree()->currentItem(), window_->sceneTree()->boneItem(forearm));
+    // A click on empty background clears it.
+    QTest::mouseClick(window_->viewport(), Qt::LeftButton, Qt::NoModifier, QPoint(5, 5));
+    QCOMPARE(doc()->selectedBone(), -1);
+  }
+
+  void typedRotationIsUndoable() {
+    const int upperarm = bone("upperarm_l");
+    window_->sceneTree()->tree()->setCurrentItem(window_->sceneTree()->boneItem(upperarm));
+    QCOMPARE(doc()->selectedBone(), upperarm);
+    const std::vector<float> before = allPositions(*doc());
+    const int commands = doc()->undoStack()->index();
+
+    window_->properties()->angleBox(0)->setValue(40.0);  // as if typed + Enter
+    QCOMPARE(doc()->undoStack()->index(), commands + 1);
+    const std::vector<float> after = allPositions(*doc());
+    QVERIFY2(maxDifference(before, after) > 0.05f, "rotating the upper arm 40 degrees barely moved the mesh");
+    QVERIFY(window_->isWindowModified());
+
+    doc()->undoStack()->undo();
+    QCOMPARE(allPositions(*doc()), before);  // exactly
+    QVERIFY(!doc()->boneRotation(upperarm).has_value());
+    QCOMPARE(window_->properties()->angleBox(0)->value(), 0.0);
+
+    doc()->undoStack()->redo();
+    QCOMPARE(allPositions(*doc()), after);
+    QVERIFY(std::abs(eulerDegreesFromQuat(*doc()->boneRotation(upperarm)).x - 40.0f) < 0.01f);
+    doc()->undoStack()->undo();
+  }
+
+  void gizmoDragRotatesAsOneCommand() {
+    const int forearm = bone("forearm_l");
+    doc()->selectBone(forearm);
+    renderNow();
+    RotationGizmo& gizmo = window_->poseTool()->gizmo();
+    QVERIFY(gizmo.visible());
+    // Find a pixel on a ring: walk around each ring until the gizmo picks it.
+    QPoint onRing;
+    int axis = -1;
+    const double ratio = window_->viewport()->devicePixelRatioF();
+    for (int a = 0; a < 3 && axis < 0; ++a) {
+      const glm::vec3 u = gizmo.axis((a + 1) % 3), v = gizmo.axis((a + 2) % 3);
+      for (int step = 0; step < 24 && axis < 0; ++step) {
+        const float t = float(step) * 2.0f * float(M_PI) / 24.0f;
+        const QPoint p = toWidget(gizmo.center() + gizmo.radius() * (std::cos(t) * u + std::sin(t) * v));
+        const int display_y = int(window_->viewport()->height() * ratio) - 1 - int(p.y() * ratio);
+        if (gizmo.pickAxis(int(p.x() * ratio), display_y) == a) {
+          axis = a;
+          onRing = p;
+        }
+      }
+    }
+    QVERIFY2(axis >= 0, "no ring of the gizmo could be picked");
+    const std::vector<float> before = allPositions(*doc());
+    const int commands = doc()->undoStack()->index();
+    QWidget* viewport = window_->viewport();
+    sendMouse(viewport, QEvent::MouseButtonPress, onRing, Qt::LeftButton, Qt::LeftButton);
+    // Drag along the ring's tangent on screen, as a user follows the ring.
+    const QPointF radial = QPointF(onRing - toWidget(gizmo.center()));
+    const double length = std::hypot(radial.x(), radial.y());
+    QVERIFY(length > 5.0);
+    const QPointF tangent(-radial.y() / length, radial.x() / length);
+    QPoint end = onRing;
+    for (int i = 1; i <= 6; ++i) {
+      end = onRing + (tangent * (8.0 * i)).toPoint();
+      sendMouse(viewport, QEvent::MouseMove, end, Qt::NoButton, Qt::LeftButton);
+    }
+    sendMouse(viewport, QEvent::MouseButtonRelease, end, Qt::LeftButton, Qt::NoButton);
+
+    QCOMPARE(doc()->selectedBone(), forearm);  // the drag did not re-pick
+    QCOMPARE(doc()->undoStack()->index(), commands + 1);  // the drag steps merged
+    QVERIFY(doc()->boneRotation(forearm).has_value());
+    const float angle = 2.0f * std::acos(std::min(1.0f, std::abs(doc()->boneRotation(forearm)->w)));
+    QVERIFY2(angle > 0.05f, qPrintable(QString("gizmo drag turned the bone by only %1 rad").arg(angle)));
+    QVERIFY(maxDifference(before, allPositions(*doc())) > 0.01f);
+    doc()->undoStack()->undo();
+    QCOMPARE(allPositions(*doc()), before);
+  }
+
+  void gizmoRotationTurnsAboutTheWorldAxis() {
+    // The edit computed for a world-axis turn rotates the bone's world frame
+    // by exactly that turn.
+    const glm::quat edit = quatFromEulerDegrees({10, 20, 30});
+    const glm::quat world = quatFromEulerDegrees({-30, 45, 5});
+    const glm::vec3 axis = glm::normalize(glm::vec3(0.3f, 1.0f, -0.2f));
+    const glm::quat after = PoseTool::editAfterWorldRotation(edit, world, axis, 0.7f);
+    const glm::quat expectedWorld = glm::angleAxis(0.7f, axis) * world;
+    const glm::quat gotWorld = world * glm::inverse(edit) * after;
+    QVERIFY(std::abs(std::abs(glm::dot(expectedWorld, gotWorld)) - 1.0f) < 1e-5f);
+  }
+
+  void timelineScrubsTheClip() {
+    const int walk = doc()->character().findClip("walk");
+    QVERIFY(walk >= 0);
+    window_->timeline()->clipBox()->setCurrentIndex(walk + 1);
+    QCOMPARE(doc()->clipIndex(), walk);
+    const std::vector<float> start = allPositions(*doc());
+    QSlider* slider = window_->timeline()->slider();
+    QVERIFY(slider->isEnabled() && slider->maximum() > 4);
+    slider->setValue(slider->maximum() / 2);
+    QVERIFY(doc()->time() > doc()->clipStart());
+    QVERIFY(maxDifference(start, allPositions(*doc())) > 0.02f);
+    // Playback advances time on its own.
+    slider->setValue(0);
+    window_->timeline()->setPlaying(true);
+    QTRY_VERIFY_WITH_TIMEOUT(doc()->time() > doc()->clipStart(), 3000);
+    window_->timeline()->setPlaying(false);
+  }
+
+  void failedOpenKeepsTheDocument() {
+    QTemporaryDir dir;
+    const QString broken = dir.filePath("broken.glb");
+    QFile file(broken);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("this is not a binary glTF file at all");
+    file.close();
+
+    const int upperarm = bone("upperarm_l");
+    doc()->setBoneRotation(upperarm, quatFromEulerDegrees({0, 0, 25}));
+    const std::vector<float> before = allPositions(*doc());
+    const QString title = window_->windowTitle();
+
+    QString reported;
+    auto previous = window_->reportError;
+    window_->reportError = [&reported](const QString&, const QString& message) { reported = message; };
+    QSignalSpy finished(window_, &MainWindow::loadFinished);
+    window_->openFile(broken);
+    QVERIFY(window_->isBusy());
+    QVERIFY(finished.wait(20000));
+    window_->reportError = previous;
+
+    QCOMPARE(finished.first().first().toBool(), false);
+    QVERIFY2(reported.contains("broken.glb"), qPrintable("error does not name the file: " + reported));
+    QCOMPARE(allPositions(*doc()), before);
+    QCOMPARE(window_->windowTitle(), title);
+    QVERIFY(doc()->boneRotation(upperarm).has_value());
+    doc()->setBoneRotation(upperarm, std::nullopt);
+  }
+
+  void saveAndReopenKeepsThePose() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("pose.mqscene");
+    const int forearm = bone("forearm_r");
+    doc()->undoStack()->push(new SetBoneRotationCommand(doc(), forearm, quatFromEulerDegrees({-35, 10, 5})));
+    const glm::quat edit = *doc()->boneRotation(forearm);
+    QString error;
+    QVERIFY2(window_->saveDocument(path, &error), qPrintable(error));
+    QVERIFY(!window_->isWindowModified());
+    QVERIFY(window_->windowTitle().contains("pose.mqscene"));
+
+    QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));
+    QVERIFY(!doc()->boneRotation(forearm).has_value());
+    QVERIFY2(window_->openFileNow(path, &error), qPrintable(error));
+    QVERIFY(doc()->boneRotation(forearm).has_value());
+    QVERIFY(std::abs(std::abs(glm::dot(*doc()->boneRotation(forearm), edit)) - 1.0f) < 1e-5f);
+  }
+
+  void exportWritesTheMesh() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("posed.obj");
+    QString error;
+    QVERIFY2(window_->exportPosedMesh(path, &error), qPrintable(error));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QVERIFY(file.size() > 100000);
+  }
+
+};
+
+int main(int argc, char** argv) {
+  // The viewport bridge needs its GL format before QApplication exists.
+  QSurfaceFormat::setDefaultFormat(VtkViewportWidget::defaultFormat());
+  QApplication app(argc, argv);
+  QApplication::setOrganizationName("MannequinTests");  // keep the user's settings (recent files) apart
+  QApplication::setApplicationName("gui_smoke");
+  // A widget test must never hang: give up after two minutes, even when
+  // the event loop is stuck.
+  std::thread([] {
+    std::this_thread::sleep_for(std::chrono::seconds(120));
+    std::fprintf(stderr, "gui_smoke: timed out\n");
+    std::_Exit(2);
+  }).detach();
+  EditorSmokeTest test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "editor_smoke_test.moc"
