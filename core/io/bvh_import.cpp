@@ -79,12 +79,19 @@ class BvhParser {
   }
 
   std::string peek() const { return pos_ < tokens_.size() ? tokens_[pos_].text : std::string(); }
+  // The next token as it may appear in a message: printable, short.
+  std::string shown() const {
+    std::string t = peek().substr(0, 24);
+    for (char& c : t)
+      if (!std::isprint(static_cast<unsigned char>(c))) c = '?';
+    return t;
+  }
   const Token& next() {
     if (pos_ >= tokens_.size()) fail("unexpected end of file");
     return tokens_[pos_++];
   }
   void expect(const std::string& word) {
-    if (peek() != word) fail("expected '" + word + "', found '" + peek() + "'");
+    if (peek() != word) fail("expected '" + word + "', found '" + shown() + "'");
     ++pos_;
   }
   float number() {
@@ -107,7 +114,7 @@ class BvhParser {
         {"Xposition", Channel::Xposition}, {"Yposition", Channel::Yposition}, {"Zposition", Channel::Zposition},
         {"Xrotation", Channel::Xrotation}, {"Yrotation", Channel::Yrotation}, {"Zrotation", Channel::Zrotation}};
     auto it = names.find(peek());
-    if (it == names.end()) fail("unknown channel '" + peek() + "'");
+    if (it == names.end()) fail("unknown channel '" + shown() + "'");
     ++pos_;
     return it->second;
   }
@@ -142,7 +149,7 @@ class BvhParser {
         vec3();
         expect("}");
       } else {
-        fail("expected JOINT, End Site or '}', found '" + peek() + "'");
+        fail("expected JOINT, End Site or '}', found '" + shown() + "'");
       }
     }
     expect("}");

@@ -10,7 +10,8 @@ namespace mq {
 
 Character importCharacter(const std::string& path) {
   const std::string ext = fileExtension(path);
-  (void)readFileBytes(path);  // a missing or unreadable file fails here, whatever its type
+  // A missing, unreadable or empty file fails here, whatever its type.
+  if (readFileBytes(path).empty()) throw FileError(path, "empty file");
   if (ext == "gltf" || ext == "glb") return readGltfCharacter(path);
   if (ext == "fbx" || ext == "dae") return importWithAssimp(path);
   if (ext == "bvh") return loadBvhCharacter(path);

@@ -98,6 +98,12 @@ std::string percentDecode(const std::string& uri) {
 
 }  // namespace
 
+std::string jsonProblem(const std::exception& e) {
+  const std::string what = e.what();
+  const size_t bracket = what.find("] ");
+  return bracket == std::string::npos ? what : what.substr(bracket + 2);
+}
+
 struct Document::RawAccessor {
   const uint8_t* data = nullptr;  // null: all zeros (no bufferView)
   size_t count = 0;
@@ -126,7 +132,7 @@ Document Document::load(const std::string& path) {
     try {
       doc.json_ = nlohmann::json::parse(bytes.begin(), bytes.end());
     } catch (const nlohmann::json::exception& e) {
-      doc.fail(std::string("not valid glTF JSON (") + e.what() + ")");
+      doc.fail("not valid glTF JSON: " + jsonProblem(e));
     }
   }
   if (!doc.json_.is_object()) doc.fail("not a glTF document (top level is not a JSON object)");
@@ -135,7 +141,7 @@ Document Document::load(const std::string& path) {
     if (version.rfind("2.", 0) != 0) doc.fail("glTF version " + version + " is not supported (only 2.x)");
     doc.loadBuffers();
   } catch (const nlohmann::json::exception& e) {
-    doc.fail(std::string("malformed glTF: ") + e.what());
+    doc.fail("malformed glTF: " + jsonProblem(e));
   }
   return doc;
 }
@@ -156,7 +162,7 @@ void Document::parseGlb(const std::vector<uint8_t>& bytes) {
       try {
         json_ = nlohmann::json::parse(bytes.begin() + offset, bytes.begin() + offset + chunkLength);
       } catch (const nlohmann::json::exception& e) {
-        fail(std::string("GLB JSON chunk is not valid JSON (") + e.what() + ")");
+        fail("GLB JSON chunk is not valid JSON: " + jsonProblem(e));
       }
       haveJson = true;
     } else if (chunkType == kChunkBinary && glbBinary_.empty()) {
@@ -276,7 +282,7 @@ std::vector<double> Document::readDoubles(int accessor, int* components) const {
       }
     }
   } catch (const nlohmann::json::exception& e) {
-    fail("malformed accessor " + std::to_string(accessor) + ": " + e.what());
+    fail("malformed accessor " + std::to_string(accessor) + ": " + jsonProblem(e));
   }
   if (components) *components = raw.components;
   return out;
@@ -307,7 +313,7 @@ size_t Document::accessorCount(int accessor) const {
   try {
     return element("accessors", accessor).at("count").get<size_t>();
   } catch (const nlohmann::json::exception& e) {
-    fail("malformed accessor " + std::to_string(accessor) + ": " + e.what());
+    fail("malformed accessor " + std::to_string(accessor) + ": " + jsonProblem(e));
   }
 }
 

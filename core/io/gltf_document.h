@@ -11,6 +11,9 @@
 
 namespace mq::gltf {
 
+// nlohmann's message without its "[json.exception.parse_error.101] " prefix.
+std::string jsonProblem(const std::exception& e);
+
 class Document {
  public:
   // Reads the JSON and every buffer; throws FileError.

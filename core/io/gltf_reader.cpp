@@ -413,7 +413,7 @@ Character readGltfCharacter(const std::string& path) {
     character = buildCharacter(doc);
     character.validate();
   } catch (const json::exception& e) {
-    doc.fail(std::string("malformed glTF: ") + e.what());
+    doc.fail("malformed glTF: " + gltf::jsonProblem(e));
   } catch (const std::invalid_argument& e) {
     doc.fail(e.what());
   } catch (const FileError&) {
