@@ -1,0 +1,67 @@
+// mannequin-cli export FILE --out OUT.obj|OUT.ply [--clip NAME|INDEX --fps F]
+// Without --fps: the rest (bind) pose. With --fps: every frame of the clip,
+// one file per frame (OUT_0000.obj, OUT_0001.obj, ...), for other tools.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "app/cli/command.h"
+#include "core/character/posed_character.h"
+#include "core/io/mesh_export.h"
+#include "core/scene/open_scene.h"
+#include "core/util/error.h"
+#include "core/util/thread_pool.h"
+
+namespace mq::cli {
+namespace {
+
+std::string framePath(const std::string& out, int frame) {
+  const std::filesystem::path p(out);
+  char number[16];
+  std::snprintf(number, sizeof number, "_%04d", frame);
+  return (p.parent_path() / (p.stem().string() + number + p.extension().string())).string();
+}
+
+int exportSequence(const LoadedScene& scene, int clip, double fps, const std::string& out) {
+  const Clip& c = scene.character.clips[clip];
+  const int frames = static_cast<int>(std::floor(c.duration() * fps + 1e-6)) + 1;
+  PosedCharacter posed;
+  for (int f = 0; f < frames; ++f) {
+    posed.evaluate(scene.character, clip, c.startTime() + static_cast<float>(f / fps), &scene.edits,
+                   &ThreadPool::shared());
+    exportPosedCharacter(scene.character, posed, framePath(out, f));
+  }
+  std::cout << "wrote " << frames << " frames of clip '" << c.name << "' to " << framePath(out, 0) << " ...\n";
+  return 0;
+}
+
+int runExport(const std::vector<std::string>& argv) {
+  const Args args(argv);
+  args.allowOnly({"--out", "--clip", "--fps"});
+  if (args.positional().size() != 1) throw Error("export needs exactly one FILE");
+  const std::string out = args.option("--out");
+  if (out.empty() || !isMeshExportPath(out)) throw Error("export needs --out OUT.obj or OUT.ply");
+  const LoadedScene scene = openScene(args.positional()[0]);
+
+  if (!args.has("--fps")) {
+    if (args.has("--clip")) throw Error("--clip needs --fps (export writes one file per frame)");
+    PosedCharacter posed;
+    posed.evaluate(scene.character, -1, 0.0f, nullptr, &ThreadPool::shared());
+    exportPosedCharacter(scene.character, posed, out);
+    std::cout << "wrote " << out << " (rest pose)\n";
+    return 0;
+  }
+  const double fps = args.number("--fps", 24.0);
+  if (!(fps > 0.0 && fps <= 1000.0)) throw Error("--fps must be in (0, 1000]");
+  int clip = scene.clipIndex;
+  if (args.has("--clip")) clip = scene.character.findClip(args.option("--clip"));
+  if (clip < 0) throw Error("'" + scene.character.name + "' has no such clip");
+  return exportSequence(scene, clip, fps, out);
+}
+
+static Registration reg({"export", "FILE --out OUT.obj|OUT.ply [--clip NAME|INDEX --fps F]",
+                         "write the rest pose, or every frame of a clip (OUT_0000.obj ...), as meshes", runExport});
+
+}  // namespace
+}  // namespace mq::cli

@@ -1,0 +1,73 @@
+// mannequin-cli info FILE [--json]: what a character file holds.
+#include <iomanip>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "app/cli/command.h"
+#include "core/scene/open_scene.h"
+#include "core/util/error.h"
+
+namespace mq::cli {
+namespace {
+
+nlohmann::json describe(const Character& c) {
+  nlohmann::json j;
+  j["name"] = c.name;
+  j["source"] = c.sourcePath;
+  j["meshes"] = nlohmann::json::array();
+  for (const Mesh& m : c.meshes)
+    j["meshes"].push_back({{"name", m.name},
+                           {"vertices", m.vertexCount()},
+                           {"triangles", m.triangleCount()},
+                           {"skinned", !m.skin.empty()},
+                           {"morph_targets", m.morphTargets.size()}});
+  j["bones"] = nlohmann::json::array();
+  for (const Bone& b : c.skeleton.bones()) j["bones"].push_back({{"name", b.name}, {"parent", b.parent}});
+  j["vertices"] = c.vertexCount();
+  j["triangles"] = c.triangleCount();
+  j["max_influences"] = c.maxInfluences();
+  j["clips"] = nlohmann::json::array();
+  for (const Clip& clip : c.clips)
+    j["clips"].push_back(
+        {{"name", clip.name}, {"duration", clip.duration()}, {"start", clip.startTime()}, {"end", clip.endTime()}});
+  return j;
+}
+
+void printText(const Character& c, std::ostream& out) {
+  out << c.name << " (" << c.sourcePath << ")\n";
+  out << "  meshes: " << c.meshes.size() << ", " << c.vertexCount() << " vertices, " << c.triangleCount()
+      << " triangles\n";
+  for (const Mesh& m : c.meshes)
+    out << "    " << m.name << ": " << m.vertexCount() << " vertices, " << m.triangleCount() << " triangles"
+        << (m.skin.empty() ? "" : ", skinned") << "\n";
+  out << "  bones: " << c.skeleton.boneCount() << ", max influences per vertex: " << c.maxInfluences() << "\n";
+  for (int b = 0; b < c.skeleton.boneCount(); ++b) {
+    int depth = 0;
+    for (int p = c.skeleton.bone(b).parent; p >= 0; p = c.skeleton.bone(p).parent) ++depth;
+    out << "    " << std::string(2 * depth, ' ') << c.skeleton.bone(b).name << "\n";
+  }
+  out << "  clips: " << c.clips.size() << "\n";
+  for (size_t i = 0; i < c.clips.size(); ++i)
+    out << "    [" << i << "] " << c.clips[i].name << ": " << c.clips[i].duration() << " s (keys "
+        << c.clips[i].startTime() << " .. " << c.clips[i].endTime() << " s)\n";
+}
+
+int runInfo(const std::vector<std::string>& argv) {
+  const Args args(argv);
+  args.allowOnly({"--json"});
+  if (args.positional().size() != 1) throw Error("info needs exactly one FILE");
+  const LoadedScene scene = openScene(args.positional()[0]);
+  if (args.has("--json"))
+    std::cout << std::setw(2) << describe(scene.character) << "\n";
+  else
+    printText(scene.character, std::cout);
+  return 0;
+}
+
+static Registration reg({"info", "FILE [--json]",
+                         "meshes (vertices, triangles), bones (name, parent), max influences, clips (name, duration)",
+                         runInfo});
+
+}  // namespace
+}  // namespace mq::cli
