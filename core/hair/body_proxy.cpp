@@ -72,6 +72,7 @@ void addEllipsoidPanels(const Ellipsoid& e, int n, SurfacePanels& out) {
     out.normals.push_back(glm::normalize(e.axes * gradient));
     // Area element of the map u -> radii * u: det * |radii^-1 n| * dOmega.
     out.areas.push_back(4.0f * kPi / float(n) * volumeFactor * glm::length(gradient));
+    out.depths.push_back(std::min(std::sqrt(out.areas.back()), 0.5f * std::min({e.radii.x, e.radii.y, e.radii.z})));
   }
 }
 
@@ -88,6 +89,7 @@ void addCapsulePanels(const Capsule& c, float spacing, SurfacePanels& out) {
       out.centers.push_back(glm::mix(c.a, c.b, (float(r) + 0.5f) / float(rings)) + c.radius * n);
       out.normals.push_back(n);
       out.areas.push_back(ringArea);
+      out.depths.push_back(std::min(std::sqrt(ringArea), 0.5f * c.radius));
     }
   const int capPanels = std::max(8, int(std::round(4.0f * kPi * c.radius * c.radius / (spacing * spacing))));
   for (int i = 0; i < capPanels; ++i) {
@@ -96,6 +98,7 @@ void addCapsulePanels(const Capsule& c, float spacing, SurfacePanels& out) {
     out.centers.push_back((atB ? c.b : c.a) + c.radius * n);
     out.normals.push_back(n);
     out.areas.push_back(4.0f * kPi * c.radius * c.radius / float(capPanels));
+    out.depths.push_back(std::min(std::sqrt(out.areas.back()), 0.5f * c.radius));
   }
 }
 
@@ -160,6 +163,7 @@ SurfacePanels BodyProxy::makePanels(int targetCount) const {
     boundary.centers.push_back(all.centers[i]);
     boundary.normals.push_back(all.normals[i]);
     boundary.areas.push_back(all.areas[i]);
+    boundary.depths.push_back(all.depths[i]);
   }
   return boundary;
 }

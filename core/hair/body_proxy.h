@@ -23,10 +23,11 @@ struct Capsule {
   float radius = 0.05f;
 };
 
-// Flat source panels over a closed surface: centre, outward normal, area.
+// Source panels over a closed surface: centre, outward normal, area, and how
+// deep below the centre the panel's source may sit (inside the shape).
 struct SurfacePanels {
   std::vector<glm::vec3> centers, normals;
-  std::vector<float> areas;
+  std::vector<float> areas, depths;
   size_t size() const { return centers.size(); }
 };
 

@@ -11,7 +11,7 @@ namespace mq {
 namespace {
 
 constexpr float kInvFourPi = 0.0795774715f;
-constexpr float kCoreFraction = 0.3f;  // panel core radius / sqrt(area)
+constexpr float kCoreFraction = 0.02f;  // source core radius / sqrt(panel area)
 
 inline glm::vec3 sourceVelocity(const PointSource& s, const glm::vec3& x) {
   const glm::vec3 d = x - s.position;
@@ -34,30 +34,32 @@ void FlowField::setObstacle(const SurfacePanels& panels, const std::vector<uint8
   scalpPanel_ = scalpPanel;
   scalpPanel_.resize(panels.size(), 0);
   const int n = int(panels.size());
-  Eigen::MatrixXf a(n, n);
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      if (i == j) {
-        a(i, j) = 0.5f;
-        continue;
-      }
-      const glm::vec3 d = panels.centers[i] - panels.centers[j];
-      const float q = glm::dot(d, d) + kCoreFraction * kCoreFraction * panels.areas[j];
-      a(i, j) = panels.areas[j] * kInvFourPi * glm::dot(d, panels.normals[i]) / (q * std::sqrt(q));
-    }
-  lu_ = Eigen::PartialPivLU<Eigen::MatrixXf>(a);
+  sourcePositions_.resize(n);
+  for (int j = 0; j < n; ++j) {
+    const float depth = j < int(panels.depths.size()) ? panels.depths[j] : std::sqrt(panels.areas[j]);
+    sourcePositions_[j] = panels.centers[j] - depth * panels.normals[j];
+  }
   const size_t padded = (panels.size() + 3) & ~size_t(3);
   px_.assign(padded, 0.0f);
   py_.assign(padded, 0.0f);
   pz_.assign(padded, 0.0f);
   weight_.assign(padded, 0.0f);
   core2_.assign(padded, 1.0f);
-  for (size_t j = 0; j < panels.size(); ++j) {
-    px_[j] = panels.centers[j].x;
-    py_[j] = panels.centers[j].y;
-    pz_[j] = panels.centers[j].z;
+  for (int j = 0; j < n; ++j) {
+    px_[j] = sourcePositions_[j].x;
+    py_[j] = sourcePositions_[j].y;
+    pz_[j] = sourcePositions_[j].z;
     core2_[j] = kCoreFraction * kCoreFraction * panels.areas[j];
   }
+  // a(i, j): normal velocity at collocation point i from a unit flux at source j.
+  Eigen::MatrixXd a(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const glm::vec3 d = panels.centers[i] - sourcePositions_[j];
+      const float q = glm::dot(d, d) + core2_[j];
+      a(i, j) = kInvFourPi * glm::dot(d, panels.normals[i]) / (q * std::sqrt(q));
+    }
+  lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(a);
   solveStrengths();
 }
 
@@ -97,18 +99,18 @@ void FlowField::setNoise(uint32_t seed, float amplitude, float wavelength) {
 
 void FlowField::solveStrengths() {
   const int n = int(panels_.size());
-  sigma_.assign(n, 0.0f);
+  flux_.assign(n, 0.0f);
   target_.assign(n, 0.0f);
   if (n == 0) return;
-  Eigen::VectorXf rhs(n);
+  Eigen::VectorXd rhs(n);
   for (int i = 0; i < n; ++i) {
     target_[i] = scalpPanel_[i] ? scalpOutflow_ : 0.0f;
     rhs[i] = target_[i] - glm::dot(primitiveVelocity(panels_.centers[i]), panels_.normals[i]);
   }
-  const Eigen::VectorXf s = lu_.solve(rhs);
+  const Eigen::VectorXd q = lu_.solve(rhs);
   for (int j = 0; j < n; ++j) {
-    sigma_[j] = s[j];
-    weight_[j] = s[j] * panels_.areas[j] * kInvFourPi;
+    flux_[j] = float(q[j]);
+    weight_[j] = float(q[j]) * kInvFourPi;
   }
 }
 
@@ -159,7 +161,7 @@ glm::vec3 FlowField::panelVelocity(const glm::vec3& x, int skip) const {
 #endif
   glm::vec3 v(vx, vy, vz);
   if (skip >= 0 && size_t(skip) < panels_.size()) {
-    const glm::vec3 d = x - panels_.centers[skip];
+    const glm::vec3 d = x - sourcePositions_[skip];
     const float r2 = glm::dot(d, d) + core2_[skip];
     v -= d * (weight_[skip] / (r2 * std::sqrt(r2)));
   }
@@ -169,11 +171,6 @@ glm::vec3 FlowField::panelVelocity(const glm::vec3& x, int skip) const {
 glm::vec3 FlowField::noise(const glm::vec3& x) const {
   if (noiseAmplitude_ <= 0.0f) return glm::vec3(0.0f);
   return noiseAmplitude_ * perlin_.noise3(x * noiseFrequency_);
-}
-
-float FlowField::panelNormalVelocity(int i) const {
-  const glm::vec3& c = panels_.centers[i];
-  return glm::dot(primitiveVelocity(c) + panelVelocity(c, i), panels_.normals[i]) + 0.5f * sigma_[i];
 }
 
 }  // namespace mq

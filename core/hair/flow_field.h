@@ -3,16 +3,18 @@
 // (irrotational outside vortex cores, incompressible) flow whose streamlines
 // are the hair. It is the sum of the style's primitives (uniform streams,
 // point sources, vortices) and of source panels over the body proxy whose
-// strengths are solved so that the boundary condition
-//     v(c_i) . n_i = b_i     at every panel centre c_i
+// fluxes are solved so that the boundary condition
+//     v(c_i) . n_i = b_i     at every panel centre c_i (collocation points)
 // holds (the panel method): b = 0 on the body, so the flow goes around it,
 // and b = scalpOutflow on the scalp, so hair springs from the roots.
 //
-// Panel j is a source of density sigma_j over area A_j; seen from a point x
-// it acts as a point source with a smoothed core d_j:
-//     v_j(x) = sigma_j A_j / (4 pi) * (x - c_j) / (|x - c_j|^2 + d_j^2)^(3/2)
-// and on its own centre it contributes sigma_j / 2 along n_j (the flat-panel
-// limit from outside). A volumetric Perlin field perturbs the directions.
+// Desingularised panels: panel j's source of flux q_j sits at s_j, a depth
+// d_j (about the panel spacing) below its centre, inside the body:
+//     v_j(x) = q_j / (4 pi) * (x - s_j) / |x - s_j|^3
+// so the field is smooth everywhere outside the body and the condition holds
+// between the collocation points too, up to the discretisation error. The
+// dense system is factorised once (LU) and re-solved when primitives move. A
+// volumetric Perlin field perturbs the directions.
 
 #include <cstdint>
 #include <vector>
@@ -46,21 +48,22 @@ class FlowField {
   glm::vec3 noise(const glm::vec3& x) const;
   bool hasNoise() const { return noiseAmplitude_ > 0.0f; }
 
-  // v . n at panel i's centre, its own contribution sigma_i / 2 included.
-  float panelNormalVelocity(int i) const;
+  // v . n at panel i's centre.
+  float panelNormalVelocity(int i) const { return glm::dot(velocity(panels_.centers[i]), panels_.normals[i]); }
   float boundaryTarget(int i) const { return target_[i]; }
   const SurfacePanels& panels() const { return panels_; }
-  const std::vector<float>& strengths() const { return sigma_; }
+  const std::vector<float>& fluxes() const { return flux_; }
 
  private:
   void solveStrengths();
 
   SurfacePanels panels_;
   std::vector<uint8_t> scalpPanel_;
-  Eigen::PartialPivLU<Eigen::MatrixXf> lu_;
-  std::vector<float> sigma_, target_;
-  // Panels as padded structure of arrays for the vectorised sum: centre,
-  // weight sigma A / 4 pi, squared core radius.
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  std::vector<float> flux_, target_;
+  std::vector<glm::vec3> sourcePositions_;
+  // Sources as padded structure of arrays for the vectorised sum: position,
+  // weight q / 4 pi, squared core radius (a tiny smoothing for safety).
   std::vector<float> px_, py_, pz_, weight_, core2_;
 
   std::vector<UniformStream> streams_;  // world space, directions normalised
