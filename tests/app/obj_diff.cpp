@@ -1,0 +1,50 @@
+// mannequin_obj_diff A.obj B.obj TOLERANCE: compares the vertices of two OBJ
+// files in order; prints the largest distance; exit 0 when within tolerance,
+// 1 when not, 2 when the files differ in vertex count or cannot be read.
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+bool readVertices(const char* path, std::vector<double>& out) {
+  std::ifstream in(path);
+  if (!in) return false;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("v ", 0) != 0) continue;
+    std::istringstream s(line.substr(2));
+    double x, y, z;
+    if (!(s >> x >> y >> z)) return false;
+    out.insert(out.end(), {x, y, z});
+  }
+  return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 4) {
+    std::fprintf(stderr, "usage: mannequin_obj_diff A.obj B.obj TOLERANCE\n");
+    return 2;
+  }
+  std::vector<double> a, b;
+  if (!readVertices(argv[1], a) || !readVertices(argv[2], b)) {
+    std::fprintf(stderr, "cannot read %s or %s\n", argv[1], argv[2]);
+    return 2;
+  }
+  if (a.size() != b.size() || a.empty()) {
+    std::fprintf(stderr, "vertex counts differ: %zu vs %zu\n", a.size() / 3, b.size() / 3);
+    return 2;
+  }
+  double worst = 0.0;
+  for (size_t i = 0; i < a.size(); i += 3)
+    worst = std::max(worst, std::hypot(a[i] - b[i], a[i + 1] - b[i + 1], a[i + 2] - b[i + 2]));
+  const double tolerance = std::atof(argv[3]);
+  std::printf("%zu vertices, max distance %.3e (tolerance %.3e)\n", a.size() / 3, worst, tolerance);
+  return worst <= tolerance ? 0 : 1;
+}
