@@ -1,0 +1,73 @@
+#include "core/scene/open_scene.h"
+
+#include "core/character/default_mannequin.h"
+#include "core/io/bvh_import.h"
+#include "core/io/character_import.h"
+#include "core/util/error.h"
+
+namespace mq {
+
+int addMotion(Character& character, const std::string& bvhPath, const std::string& nameMapPath) {
+  character.clips.push_back(importBvhMotion(bvhPath, character, nameMapPath));
+  return static_cast<int>(character.clips.size()) - 1;
+}
+
+PoseEdits poseEditsFromNames(const std::map<std::string, glm::quat>& rotations, const Skeleton& skeleton) {
+  PoseEdits edits;
+  for (const auto& [name, rotation] : rotations) {
+    const int bone = skeleton.findBone(name);
+    if (bone < 0) throw Error("pose edit for bone '" + name + "', which the character does not have");
+    edits.rotations[bone] = rotation;
+  }
+  return edits;
+}
+
+std::map<std::string, glm::quat> poseEditsToNames(const PoseEdits& edits, const Skeleton& skeleton) {
+  std::map<std::string, glm::quat> named;
+  for (const auto& [bone, rotation] : edits.rotations) named[skeleton.bone(bone).name] = rotation;
+  return named;
+}
+
+LoadedScene resolveSceneDocument(const SceneDocument& document, const std::string& documentPath) {
+  LoadedScene scene;
+  scene.document = document;
+  scene.documentPath = documentPath;
+  if (!document.hasCharacter()) return scene;
+  if (document.character == "default") {
+    scene.character = makeDefaultMannequin();
+  } else {
+    scene.character = importCharacter(resolveDocumentPath(documentPath, document.character));
+  }
+  if (!document.motionFile.empty()) {
+    const std::string map =
+        document.motionMapFile.empty() ? "" : resolveDocumentPath(documentPath, document.motionMapFile);
+    scene.clipIndex = addMotion(scene.character, resolveDocumentPath(documentPath, document.motionFile), map);
+  }
+  if (!document.clip.empty()) {
+    scene.clipIndex = scene.character.findClip(document.clip);
+    if (scene.clipIndex < 0) throw Error("the character has no clip '" + document.clip + "'");
+  } else if (scene.clipIndex < 0 && !scene.character.clips.empty()) {
+    scene.clipIndex = 0;
+  }
+  scene.edits = poseEditsFromNames(document.poseRotations, scene.character.skeleton);
+  return scene;
+}
+
+LoadedScene openScene(const std::string& fileOrDefault) {
+  if (fileOrDefault == "default") return resolveSceneDocument(SceneDocument{}, "");
+  if (isSceneDocumentPath(fileOrDefault)) {
+    const SceneDocument document = loadSceneDocument(fileOrDefault);
+    try {
+      return resolveSceneDocument(document, fileOrDefault);
+    } catch (const FileError&) {
+      throw;  // already names the file that failed (the character or motion)
+    } catch (const Error& e) {
+      throw FileError(fileOrDefault, e.what());
+    }
+  }
+  SceneDocument document;
+  document.character = fileOrDefault;
+  return resolveSceneDocument(document, "");
+}
+
+}  // namespace mq

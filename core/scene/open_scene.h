@@ -1,0 +1,35 @@
+#pragma once
+// Opening whatever a user names: the word "default" (the built-in mannequin),
+// a character file (glTF, GLB, FBX, DAE, BVH) or a scene document. The CLI
+// and the editor both go through here, so they agree on what a FILE means.
+
+#include <string>
+
+#include "core/character/character.h"
+#include "core/scene/scene_document.h"
+
+namespace mq {
+
+struct LoadedScene {
+  SceneDocument document;
+  std::string documentPath;  // empty unless opened from a scene document
+  Character character;       // empty skeleton and meshes when the scene has none
+  int clipIndex = -1;        // current clip, -1 for none
+  PoseEdits edits;           // document pose rotations mapped to bone indices
+};
+
+// Throws FileError naming the file and the problem.
+LoadedScene openScene(const std::string& fileOrDefault);
+
+// Loads the character a document refers to and applies its motion, clip and
+// pose. `documentPath` resolves relative paths ("" = relative to the cwd).
+LoadedScene resolveSceneDocument(const SceneDocument& document, const std::string& documentPath);
+
+// Adds a BVH motion to `character` as a new clip and returns its index.
+int addMotion(Character& character, const std::string& bvhPath, const std::string& nameMapPath = "");
+
+// Pose rotations keyed by bone name <-> bone index (unknown names throw Error).
+PoseEdits poseEditsFromNames(const std::map<std::string, glm::quat>& rotations, const Skeleton& skeleton);
+std::map<std::string, glm::quat> poseEditsToNames(const PoseEdits& edits, const Skeleton& skeleton);
+
+}  // namespace mq
