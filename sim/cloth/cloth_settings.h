@@ -23,6 +23,9 @@ struct ClothSettings {
   StretchLimitMode stretchLimit = StretchLimitMode::PositionCorrection;
   float maxStretch = 1.10f;    // Provot's limit: no structural spring longer than this times its rest length
   int stretchIterations = 100; // passes of the correction at most per solver step
+  // When the position correction cannot hold the limit in a step, the step is
+  // redone with 2, 4, ... times the substeps, up to this factor (1 = never).
+  int maxRefinement = 8;
   bool selfCollisions = false;
   float collisionThickness = 0.005f;  // m: cloth keeps this far from colliders and the body
   float selfThickness = 0.004f;       // m: distance kept between non-adjacent cloth elements

@@ -42,6 +42,20 @@ void validateSettings(const ClothSettings& s) {
     throw Error("cloth solver settings out of range (substeps >= 0, cg iterations >= 1, tolerance > 0)");
 }
 
+// The first point of the segment from -> to within `thickness` of the
+// collider, by bisection (to itself when `from` is already that close or the
+// segment never gets that close).
+glm::vec3 firstContactAlong(const PrimitiveCollider& c, const glm::vec3& from, const glm::vec3& to, float thickness) {
+  glm::vec3 n;
+  if (c.signedDistance(to, n) >= 0.0f || c.signedDistance(from, n) < thickness) return to;
+  float lo = 0.0f, hi = 1.0f;  // lo: outside, hi: inside
+  for (int k = 0; k < 12; ++k) {
+    const float mid = 0.5f * (lo + hi);
+    (c.signedDistance(glm::mix(from, to, mid), n) >= 0.0f ? lo : hi) = mid;
+  }
+  return glm::mix(from, to, lo);
+}
+
 }  // namespace
 
 ClothSimulator::ClothSimulator(const ClothMesh& mesh, const Fabric& fabric, const ClothSettings& settings)
@@ -133,10 +147,20 @@ void ClothSimulator::step(float dt) {
   } else if (!body_.empty()) {
     body_.setTarget(body_.flatPositions(), dt);  // the body stands still
   }
-  const int substeps = substepsFor(dt);
-  const float h = dt / float(substeps);
-  stats_.solverIterations = stats_.selfContacts = stats_.stretchPasses = 0;
-  for (int k = 0; k < substeps; ++k) substep(h, float(k + 1) / float(substeps));
+  // Adaptive refinement: when the elongation limit could not hold a step
+  // (a violent impact), the step is redone with twice the substeps.
+  int substeps = substepsFor(dt);
+  const ClothState start = state_;
+  for (;;) {
+    const float h = dt / float(substeps);
+    stats_.solverIterations = stats_.selfContacts = stats_.stretchPasses = 0;
+    limitHeld_ = true;
+    if (!body_.empty()) body_.restartStep();
+    for (int k = 0; k < substeps; ++k) substep(h, float(k + 1) / float(substeps));
+    if (limitHeld_ || substeps >= settings_.maxRefinement * std::max(1, substepsFor(dt))) break;
+    state_ = start;
+    substeps *= 2;
+  }
   stats_.substeps = substeps;
   ++stats_.steps;
   stats_.simulatedTime += dt;
@@ -146,19 +170,33 @@ void ClothSimulator::step(float dt) {
 void ClothSimulator::substep(float h, float bodyFraction) {
   if (!body_.empty()) body_.moveTo(bodyFraction);
   preparePins(h);
+  findRestingContacts();
   stepStart_ = state_.x;
   stats_.solverIterations += integrator_->step(state_, h, *forces_).solverIterations;
   const auto& springs = forces_->springs().springs();
   const size_t structural = forces_->structuralCount();
-  if (settings_.stretchLimit == StretchLimitMode::PositionCorrection)
-    stats_.stretchPasses +=
-        limitStretchByPositions(state_, springs, structural, settings_.maxStretch, settings_.stretchIterations, h).passes;
-  else if (settings_.stretchLimit == StretchLimitMode::VelocityCorrection)
+  collideWithColliders(h);
+  bool held = true;
+  if (settings_.stretchLimit == StretchLimitMode::PositionCorrection) {
+    const StretchLimitResult r =
+        limitStretchByPositions(state_, springs, structural, settings_.maxStretch, settings_.stretchIterations, h);
+    stats_.stretchPasses += r.passes;
+    held = r.maxStretchAfter <= settings_.maxStretch;
+  } else if (settings_.stretchLimit == StretchLimitMode::VelocityCorrection)
     stats_.stretchPasses += limitStretchByVelocities(state_, stepStart_, springs, structural, settings_.maxStretch,
                                                      settings_.stretchIterations, h)
                                 .passes;
   if (selfCollision_) stats_.selfContacts += selfCollision_->resolve(state_, stepStart_, settings_.selfThickness, 4);
   collideWithColliders(h);
+  if (settings_.stretchLimit == StretchLimitMode::PositionCorrection && (!colliders_.empty() || !body_.empty())) {
+    // Contacts moved vertices after the limit: limit again. The corrections
+    // are small next to the collision thickness, so vertices stay outside.
+    const StretchLimitResult r =
+        limitStretchByPositions(state_, springs, structural, settings_.maxStretch, settings_.stretchIterations, h);
+    stats_.stretchPasses += r.passes;
+    held = r.maxStretchAfter <= settings_.maxStretch;
+  }
+  limitHeld_ = limitHeld_ && held;
   placePins();
   checkFinite("after a solver step");
 }
@@ -171,6 +209,29 @@ void ClothSimulator::preparePins(float h) {
   }
 }
 
+void ClothSimulator::findRestingContacts() {
+  state_.contactNormal.assign(state_.size(), glm::vec3(0.0f));
+  if (colliders_.empty() && body_.empty()) return;
+  // A vertex resting on a surface: within twice the thickness, not moving
+  // away, and pressed onto it by gravity (so it can still fall off an overhang).
+  const float reach = 2.0f * settings_.collisionThickness + 1e-4f;
+  forRange(state_.size(), [&](size_t b, size_t e) {
+    for (size_t i = b; i < e; ++i) {
+      if (state_.invMass[i] == 0.0f) continue;
+      glm::vec3 normal(0.0f);
+      for (const PrimitiveCollider& c : colliders_) {
+        glm::vec3 n;
+        if (c.signedDistance(state_.x[i], n) < reach) normal = n;
+      }
+      BodyContact contact;
+      if (!body_.empty() && body_.nearestContact(state_.x[i], contact) && contact.signedDistance < reach)
+        normal = contact.normal;
+      if (glm::dot(normal, settings_.gravity) < 0.0f && glm::dot(state_.v[i], normal) <= 1e-3f)
+        state_.contactNormal[i] = normal;
+    }
+  });
+}
+
 void ClothSimulator::placePins() {
   for (const Pin& p : pins_) state_.x[p.vertex] = p.bodyVertex >= 0 ? body_.positions()[p.bodyVertex] + p.offset : p.target;
 }
@@ -181,14 +242,21 @@ void ClothSimulator::collideWithColliders(float h) {
     for (size_t i = b; i < e; ++i) {
       if (state_.invMass[i] == 0.0f) continue;
       for (const PrimitiveCollider& c : colliders_) {
+        // A vertex that entered during the step goes back to where it entered
+        // (continuous), not to the nearest surface point, which for a fast
+        // vertex can be on the far side.
         glm::vec3 n;
+        const glm::vec3 entry = firstContactAlong(c, stepStart_[i], state_.x[i], thickness);
+        if (entry != state_.x[i]) state_.x[i] = entry;
         const float d = c.signedDistance(state_.x[i], n);
         if (d < thickness)
           respondToContact(state_.x[i], state_.v[i], n, thickness - d, glm::vec3(0.0f),
                            c.friction >= 0.0f ? c.friction : settings_.friction);
       }
+      if (body_.empty()) continue;
       BodyContact contact;
-      if (!body_.empty() && body_.nearestContact(state_.x[i], contact) && contact.signedDistance < thickness)
+      if (body_.firstHitAlong(stepStart_[i], state_.x[i], contact)) state_.x[i] = contact.point;
+      if (body_.nearestContact(state_.x[i], contact) && contact.signedDistance < thickness)
         respondToContact(state_.x[i], state_.v[i], contact.normal, thickness - contact.signedDistance,
                          contact.velocity, settings_.friction);
     }

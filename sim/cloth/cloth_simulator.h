@@ -102,6 +102,7 @@ class ClothSimulator {
   void substep(float h, float bodyFraction);
   void preparePins(float h);
   void placePins();
+  void findRestingContacts();
   void collideWithColliders(float h);
   void checkFinite(const char* where) const;
   void updateStats();
@@ -122,6 +123,7 @@ class ClothSimulator {
   std::vector<float> pendingBody_;
   std::vector<Pin> pins_;
   ClothStats stats_;
+  bool limitHeld_ = true;  // the elongation limit held in every substep of this try
 };
 
 }  // namespace mq::cloth

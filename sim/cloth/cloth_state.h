@@ -14,6 +14,9 @@ struct ClothState {
   std::vector<glm::vec3> v;  // velocities, m/s
   std::vector<float> mass;   // kg
   std::vector<float> invMass;  // 1/kg; 0 for vertices the solver must not move (pins)
+  // Outward normal of a resting contact at the start of the step (zero: none);
+  // the implicit solver keeps such a vertex's normal velocity at zero.
+  std::vector<glm::vec3> contactNormal;
 
   size_t size() const { return x.size(); }
 };

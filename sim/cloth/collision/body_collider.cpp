@@ -46,6 +46,34 @@ std::vector<float> BodyCollider::flatPositions() const {
   return flat;
 }
 
+bool BodyCollider::firstHitAlong(const glm::vec3& from, const glm::vec3& to, BodyContact& contact) const {
+  const glm::vec3 dir = to - from;
+  if (glm::dot(dir, dir) <= 1e-16f) return false;
+  Box box;
+  box.extend(from);
+  box.extend(to);
+  float best = 1.0f;
+  bool found = false;
+  tree_.query(box, [&](uint32_t t) {
+    const glm::vec3 a = current_[triangles_[3 * t]], b = current_[triangles_[3 * t + 1]], c = current_[triangles_[3 * t + 2]];
+    const glm::vec3 n = glm::cross(b - a, c - a);
+    const float approach = glm::dot(dir, n);
+    if (approach >= 0.0f) return;  // only entering through the front side
+    const float s = glm::dot(a - from, n) / approach;
+    if (s < 0.0f || s >= best) return;
+    const glm::vec3 p = from + s * dir;
+    if (glm::dot(glm::cross(b - a, p - a), n) < 0.0f || glm::dot(glm::cross(c - b, p - b), n) < 0.0f ||
+        glm::dot(glm::cross(a - c, p - c), n) < 0.0f)
+      return;
+    best = s;
+    found = true;
+    contact.point = p;
+    contact.normal = glm::normalize(n);
+    contact.signedDistance = 0.0f;
+  });
+  return found;
+}
+
 bool BodyCollider::nearestContact(const glm::vec3& p, BodyContact& contact) const {
   Box box;
   box.min = box.max = p;  // triangle boxes are grown by the search radius

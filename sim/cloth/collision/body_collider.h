@@ -27,8 +27,13 @@ class BodyCollider {
   void setMesh(const std::vector<float>& positions, const std::vector<uint32_t>& triangles, float searchRadius);
   // The pose at the end of the next frame, reached after `frameTime` seconds.
   void setTarget(const std::vector<float>& positions, float frameTime);
+  // Back to the pose at the start of the step (to redo a step).
+  void restartStep() { moveTo(0.0f); }
   // Positions at a fraction [0,1] of the way from the last pose to the target.
   void moveTo(float fraction);
+  // First crossing of the surface from outside to inside along the segment
+  // from -> to (contact.point is the crossing); false when there is none.
+  bool firstHitAlong(const glm::vec3& from, const glm::vec3& to, BodyContact& contact) const;
   // Nearest contact within the search radius; false when there is none.
   bool nearestContact(const glm::vec3& p, BodyContact& contact) const;
 

@@ -36,10 +36,13 @@ StretchLimitResult limitStretchByPositions(ClothState& s, const std::vector<Spri
   if (result.maxStretchBefore <= maxStretch) return result;
   const std::vector<glm::vec3> before = s.x;
   // Aim a hair below the limit so rounding leaves every spring within it.
-  const float target = maxStretch * (1.0f - 1e-4f);
+  const float target = maxStretch * (1.0f - 1e-3f);
+  // Symmetric Gauss-Seidel: forward and backward passes alternate, so a
+  // correction travels across the cloth in both directions.
   for (; result.passes < maxPasses && result.maxStretchAfter > maxStretch; ++result.passes) {
-    for (size_t i = 0; i < count; ++i) {
-      const Spring& sp = springs[i];
+    const bool forward = result.passes % 2 == 0;
+    for (size_t k = 0; k < count; ++k) {
+      const Spring& sp = springs[forward ? k : count - 1 - k];
       const glm::vec3 d = s.x[sp.a] - s.x[sp.b];
       const float l = glm::length(d), limit = target * sp.rest;
       if (l <= limit) continue;

@@ -93,7 +93,7 @@ void CantileverBending::prepareImplicit(const ClothState& s, float h, std::vecto
   });
 }
 
-void CantileverBending::addProduct(const std::vector<glm::vec3>& p, std::vector<glm::vec3>& y) const {
+void CantileverBending::productPass(const std::vector<glm::vec3>& p) const {
   forRange(lines_.size(), [&](size_t b, size_t e) {
     for (size_t n = b; n < e; ++n) {
       const CantileverLine& line = lines_[n];
@@ -102,7 +102,6 @@ void CantileverBending::addProduct(const std::vector<glm::vec3>& p, std::vector<
       for (int a = 0; a < 3; ++a) perSlot_[3 * n + a] = glm::transpose(J[a]) * u;
     }
   });
-  gather(y);
 }
 
 glm::mat3 CantileverBending::jacobianBlock(size_t line, int a, int b, const std::vector<glm::vec3>& x) const {

@@ -39,7 +39,12 @@ class CantileverBending : public ForceTerm {
   double potentialEnergy(const ClothState& s) const override;
   void prepareImplicit(const ClothState& s, float h, std::vector<glm::vec3>& hKv,
                        std::vector<glm::mat3>& diagonal) override;
-  void addProduct(const std::vector<glm::vec3>& p, std::vector<glm::vec3>& y) const override;
+  void productPass(const std::vector<glm::vec3>& p) const override;
+  glm::vec3 productAt(size_t vertex) const override {
+    glm::vec3 sum(0.0f);
+    for (uint32_t k = incidenceStart_[vertex]; k < incidenceStart_[vertex + 1]; ++k) sum += perSlot_[incidence_[k]];
+    return sum;
+  }
 
   // The Gauss-Newton Jacobian block d f_a / d x_b (a, b in 0..2 for i, k, j) of one line.
   glm::mat3 jacobianBlock(size_t line, int a, int b, const std::vector<glm::vec3>& x) const;

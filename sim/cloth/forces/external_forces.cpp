@@ -25,10 +25,4 @@ void ExternalForces::prepareImplicit(const ClothState& s, float h, std::vector<g
   });
 }
 
-void ExternalForces::addProduct(const std::vector<glm::vec3>& p, std::vector<glm::vec3>& y) const {
-  forRange(p.size(), [&](size_t b, size_t e) {
-    for (size_t i = b; i < e; ++i) y[i] += (h_ * airDamping_ * vertexArea_[i]) * p[i];
-  });
-}
-
 }  // namespace mq::cloth

@@ -19,13 +19,15 @@ class ExternalForces : public ForceTerm {
   double potentialEnergy(const ClothState& s) const override;  // gravity only
   void prepareImplicit(const ClothState& s, float h, std::vector<glm::vec3>& hKv,
                        std::vector<glm::mat3>& diagonal) override;
-  void addProduct(const std::vector<glm::vec3>& p, std::vector<glm::vec3>& y) const override;
+  void productPass(const std::vector<glm::vec3>& p) const override { p_ = &p; }
+  glm::vec3 productAt(size_t vertex) const override { return (h_ * airDamping_ * vertexArea_[vertex]) * (*p_)[vertex]; }
 
  private:
   glm::vec3 gravity_, wind_;
   float airDamping_;
   std::vector<float> vertexArea_;
   float h_ = 0.0f;
+  mutable const std::vector<glm::vec3>* p_ = nullptr;
 };
 
 }  // namespace mq::cloth

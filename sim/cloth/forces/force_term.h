@@ -7,8 +7,10 @@
 //
 // prepareImplicit() linearises the term at the current state (adding
 // h^2 (df/dx) v0 to `hKv` and the term's diagonal blocks of
-// -(h df/dv + h^2 df/dx) to `diagonal`), then addProduct() adds
-// -(h df/dv + h^2 df/dx) p to y, matrix-free.
+// -(h df/dv + h^2 df/dx) to `diagonal`), then the product
+// y = -(h df/dv + h^2 df/dx) p is formed matrix-free in two passes:
+// productPass(p) over the term's elements, then productAt(v) per vertex (so
+// the solver fuses the per-vertex part of all terms into one loop).
 
 #include <vector>
 
@@ -25,7 +27,13 @@ class ForceTerm {
   virtual double potentialEnergy(const ClothState& s) const = 0;
   virtual void prepareImplicit(const ClothState& s, float h, std::vector<glm::vec3>& hKv,
                                std::vector<glm::mat3>& diagonal) = 0;
-  virtual void addProduct(const std::vector<glm::vec3>& p, std::vector<glm::vec3>& y) const = 0;
+  virtual void productPass(const std::vector<glm::vec3>& p) const = 0;
+  virtual glm::vec3 productAt(size_t vertex) const = 0;
+  // Both passes: y += product (for tests and simple callers).
+  void addProduct(const std::vector<glm::vec3>& p, std::vector<glm::vec3>& y) const {
+    productPass(p);
+    for (size_t v = 0; v < y.size(); ++v) y[v] += productAt(v);
+  }
 };
 
 }  // namespace mq::cloth

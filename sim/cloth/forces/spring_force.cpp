@@ -48,14 +48,7 @@ SpringForce::SpringForce(std::vector<Spring> springs, size_t vertexCount) : spri
 
 void SpringForce::gather(const std::vector<glm::vec3>& perSpring, std::vector<glm::vec3>& y) const {
   forRange(y.size(), [&](size_t b, size_t e) {
-    for (size_t v = b; v < e; ++v) {
-      glm::vec3 sum(0.0f);
-      for (uint32_t k = incidenceStart_[v]; k < incidenceStart_[v + 1]; ++k) {
-        const int32_t s = incidence_[k];
-        sum += s > 0 ? perSpring[s - 1] : -perSpring[-s - 1];
-      }
-      y[v] += sum;
-    }
+    for (size_t v = b; v < e; ++v) y[v] += gatherAt(v, perSpring);
   });
 }
 
@@ -98,11 +91,10 @@ void SpringForce::prepareImplicit(const ClothState& st, float h, std::vector<glm
   });
 }
 
-void SpringForce::addProduct(const std::vector<glm::vec3>& p, std::vector<glm::vec3>& y) const {
+void SpringForce::productPass(const std::vector<glm::vec3>& p) const {
   forRange(springs_.size(), [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) perSpring_[i] = blocks_[i] * (p[springs_[i].a] - p[springs_[i].b]);
   });
-  gather(perSpring_, y);
 }
 
 glm::mat3 SpringForce::stiffnessBlock(size_t spring, const std::vector<glm::vec3>& x, bool filtered) const {

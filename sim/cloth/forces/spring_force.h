@@ -34,7 +34,8 @@ class SpringForce : public ForceTerm {
   double potentialEnergy(const ClothState& s) const override;
   void prepareImplicit(const ClothState& s, float h, std::vector<glm::vec3>& hKv,
                        std::vector<glm::mat3>& diagonal) override;
-  void addProduct(const std::vector<glm::vec3>& p, std::vector<glm::vec3>& y) const override;
+  void productPass(const std::vector<glm::vec3>& p) const override;
+  glm::vec3 productAt(size_t vertex) const override { return gatherAt(vertex, perSpring_); }
 
   // df_a/dx_a of one spring (exact, or filtered as the solver uses it).
   glm::mat3 stiffnessBlock(size_t spring, const std::vector<glm::vec3>& x, bool filtered) const;
@@ -42,6 +43,14 @@ class SpringForce : public ForceTerm {
  private:
   // For every vertex, y[v] += sum over its springs of sign * perSpring[s].
   void gather(const std::vector<glm::vec3>& perSpring, std::vector<glm::vec3>& y) const;
+  glm::vec3 gatherAt(size_t v, const std::vector<glm::vec3>& perSpring) const {
+    glm::vec3 sum(0.0f);
+    for (uint32_t k = incidenceStart_[v]; k < incidenceStart_[v + 1]; ++k) {
+      const int32_t s = incidence_[k];
+      sum += s > 0 ? perSpring[s - 1] : -perSpring[-s - 1];
+    }
+    return sum;
+  }
 
   std::vector<Spring> springs_;
   std::vector<uint32_t> incidenceStart_;  // CSR over vertices

@@ -9,15 +9,14 @@ namespace mq::cloth {
 
 namespace {
 
-void filterPinned(const ClothState& s, std::vector<glm::vec3>& a) {
-  forRange(s.size(), [&](size_t b, size_t e) {
-    for (size_t i = b; i < e; ++i)
-      if (s.invMass[i] == 0.0f) a[i] = glm::vec3(0.0f);
-  });
-}
-
-double dot(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b) {
-  return deterministicSum(a.size(), [&](size_t i) { return double(glm::dot(a[i], b[i])); });
+// Baraff-Witkin's filter S_i: removes the constrained directions of vertex i.
+inline glm::vec3 filtered(const ClothState& s, size_t i, const glm::vec3& a) {
+  if (s.invMass[i] == 0.0f) return glm::vec3(0.0f);
+  if (!s.contactNormal.empty()) {
+    const glm::vec3& n = s.contactNormal[i];
+    return a - glm::dot(a, n) * n;
+  }
+  return a;
 }
 
 }  // namespace
@@ -26,12 +25,20 @@ float ImplicitEuler::stableStep(const ClothState&, const ClothForces&) const {
   return std::numeric_limits<float>::infinity();
 }
 
-void ImplicitEuler::multiply(const ClothState& s, ClothForces& forces, const std::vector<glm::vec3>& p,
-                             std::vector<glm::vec3>& y) const {
-  forRange(s.size(), [&](size_t b, size_t e) {
-    for (size_t i = b; i < e; ++i) y[i] = s.mass[i] * p[i];
+double ImplicitEuler::multiplyFiltered(const ClothState& s, ClothForces& forces, const std::vector<glm::vec3>& p,
+                                       std::vector<glm::vec3>& y) const {
+  const auto& terms = forces.terms();
+  for (const ForceTerm* t : terms) t->productPass(p);
+  return blockReduce(s.size(), [&](size_t b, size_t e) {
+    double dot = 0.0;
+    for (size_t i = b; i < e; ++i) {
+      glm::vec3 sum = s.mass[i] * p[i];
+      for (const ForceTerm* t : terms) sum += t->productAt(i);
+      y[i] = filtered(s, i, sum);
+      dot += double(glm::dot(p[i], y[i]));
+    }
+    return dot;
   });
-  for (ForceTerm* t : forces.terms()) t->addProduct(p, y);
 }
 
 IntegratorReport ImplicitEuler::step(ClothState& s, float h, ClothForces& forces) {
@@ -41,10 +48,15 @@ IntegratorReport ImplicitEuler::step(ClothState& s, float h, ClothForces& forces
   diagonal_.assign(n, glm::mat3(0.0f));
   for (ForceTerm* t : forces.terms()) t->prepareImplicit(s, h, b_, diagonal_);
   preconditioner_.resize(n);
+  dv_.resize(n);
   forRange(n, [&](size_t bb, size_t e) {
     for (size_t i = bb; i < e; ++i) {
       b_[i] = h * f_[i] + b_[i];
       preconditioner_[i] = glm::inverse(diagonal_[i] + glm::mat3(s.mass[i]));
+      // z: the constrained part of dv (stop a resting contact's normal velocity).
+      dv_[i] = glm::vec3(0.0f);
+      if (!s.contactNormal.empty() && s.invMass[i] != 0.0f)
+        dv_[i] = -glm::dot(s.v[i], s.contactNormal[i]) * s.contactNormal[i];
     }
   });
   const IntegratorReport report = solve(s, forces);
@@ -59,44 +71,45 @@ IntegratorReport ImplicitEuler::step(ClothState& s, float h, ClothForces& forces
 
 IntegratorReport ImplicitEuler::solve(const ClothState& s, ClothForces& forces) {
   const size_t n = s.size();
-  dv_.assign(n, glm::vec3(0.0f));
-  r_ = b_;
-  filterPinned(s, r_);
+  r_.resize(n);
   z_.resize(n);
   q_.resize(n);
-  auto precondition = [&](const std::vector<glm::vec3>& in, std::vector<glm::vec3>& out) {
-    forRange(n, [&](size_t b, size_t e) {
-      for (size_t i = b; i < e; ++i) out[i] = preconditioner_[i] * in[i];
-    });
-  };
-  precondition(r_, z_);
-  c_ = z_;
-  double delta = dot(r_, z_);
+  c_.resize(n);
+  // r = filter(b - A z), c = P r.
+  multiplyFiltered(s, forces, dv_, q_);
+  double delta = blockReduce(n, [&](size_t b, size_t e) {
+    double dot = 0.0;
+    for (size_t i = b; i < e; ++i) {
+      r_[i] = filtered(s, i, b_[i]) - q_[i];
+      c_[i] = filtered(s, i, preconditioner_[i] * r_[i]);
+      dot += double(glm::dot(r_[i], c_[i]));
+    }
+    return dot;
+  });
   const double delta0 = delta;
   const double stop = double(tolerance_) * double(tolerance_) * delta0;
   int it = 0;
   for (; it < maxIterations_ && delta > stop && delta > 0.0; ++it) {
-    multiply(s, forces, c_, q_);
-    filterPinned(s, q_);
-    const double cq = dot(c_, q_);
+    const double cq = multiplyFiltered(s, forces, c_, q_);
     if (!(cq > 0.0)) break;
     const float alpha = float(delta / cq);
-    forRange(n, [&](size_t b, size_t e) {
+    const double deltaNew = blockReduce(n, [&](size_t b, size_t e) {
+      double dot = 0.0;
       for (size_t i = b; i < e; ++i) {
         dv_[i] += alpha * c_[i];
         r_[i] -= alpha * q_[i];
+        z_[i] = preconditioner_[i] * r_[i];
+        dot += double(glm::dot(r_[i], z_[i]));
       }
+      return dot;
     });
-    precondition(r_, z_);
-    const double deltaNew = dot(r_, z_);
     const float beta = float(deltaNew / delta);
     delta = deltaNew;
     forRange(n, [&](size_t b, size_t e) {
-      for (size_t i = b; i < e; ++i) c_[i] = z_[i] + beta * c_[i];
+      for (size_t i = b; i < e; ++i) c_[i] = filtered(s, i, z_[i] + beta * c_[i]);
     });
-    filterPinned(s, c_);
   }
-  return {it, delta0 > 0.0 ? float(std::sqrt(delta / delta0)) : 0.0f};
+  return {it, delta0 > 0.0 ? float(std::sqrt(std::max(delta, 0.0) / delta0)) : 0.0f};
 }
 
 }  // namespace mq::cloth

@@ -6,9 +6,11 @@
 //   v1 = v0 + dv,  x1 = x0 + h v1,
 //
 // with A applied matrix-free by the force terms and solved by their
-// "modified" preconditioned conjugate gradients: pinned vertices are
-// filtered out of the search directions (dv = 0 there), the preconditioner is
-// the inverse of A's 3x3 diagonal blocks.
+// "modified" preconditioned conjugate gradients: constrained vertices are
+// filtered (S_i = 0 for pins, I - n n^T for a resting contact with normal n,
+// whose normal velocity is set to zero through the start value z), the
+// preconditioner is the inverse of A's 3x3 diagonal blocks. Each CG iteration
+// is four parallel passes (element products, then three fused vertex loops).
 
 #include <vector>
 
@@ -23,9 +25,10 @@ class ImplicitEuler : public Integrator {
   float stableStep(const ClothState& s, const ClothForces& forces) const override;
 
  private:
-  void multiply(const ClothState& s, ClothForces& forces, const std::vector<glm::vec3>& p,
-                std::vector<glm::vec3>& y) const;
   IntegratorReport solve(const ClothState& s, ClothForces& forces);
+  // y_i = filter(M p + sum of the terms' products)_i; returns p . y.
+  double multiplyFiltered(const ClothState& s, ClothForces& forces, const std::vector<glm::vec3>& p,
+                          std::vector<glm::vec3>& y) const;
 
   int maxIterations_;
   float tolerance_;
