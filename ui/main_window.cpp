@@ -28,6 +28,7 @@
 #include "render/scene_view.h"
 #include "ui/document/document_loader.h"
 #include "ui/document/editor_document.h"
+#include "ui/icons.h"
 #include "ui/panels/properties_panel.h"
 #include "ui/panels/scene_tree_panel.h"
 #include "ui/panels/timeline_panel.h"
@@ -134,18 +135,17 @@ void MainWindow::createDocks() {
 }
 
 void MainWindow::createActions() {
-  auto icon = [this](QStyle::StandardPixmap p) { return style()->standardIcon(p); };
-  newAction_ = new QAction(icon(QStyle::SP_FileIcon), tr("&New"), this);
+  newAction_ = new QAction(makeIcon(Icon::New), tr("&New"), this);
   newAction_->setShortcut(QKeySequence::New);
   newAction_->setStatusTip(tr("A new scene with the default mannequin"));
   connect(newAction_, &QAction::triggered, this, &MainWindow::newDocument);
 
-  openAction_ = new QAction(icon(QStyle::SP_DialogOpenButton), tr("&Open..."), this);
+  openAction_ = new QAction(makeIcon(Icon::Open), tr("&Open..."), this);
   openAction_->setShortcut(QKeySequence::Open);
   openAction_->setStatusTip(tr("Open a character (glTF, GLB, FBX, DAE), a motion (BVH) or a scene"));
   connect(openAction_, &QAction::triggered, this, &MainWindow::openWithDialog);
 
-  saveAction_ = new QAction(icon(QStyle::SP_DialogSaveButton), tr("&Save"), this);
+  saveAction_ = new QAction(makeIcon(Icon::Save), tr("&Save"), this);
   saveAction_->setShortcut(QKeySequence::Save);
   connect(saveAction_, &QAction::triggered, this, &MainWindow::save);
 
@@ -165,26 +165,26 @@ void MainWindow::createActions() {
   QUndoStack* stack = document_->undoStack();
   undoAction_ = stack->createUndoAction(this, tr("&Undo"));
   undoAction_->setShortcut(QKeySequence(tr("Ctrl+Z")));
-  undoAction_->setIcon(icon(QStyle::SP_ArrowBack));
+  undoAction_->setIcon(makeIcon(Icon::Undo));
   redoAction_ = stack->createRedoAction(this, tr("&Redo"));
   redoAction_->setShortcuts({QKeySequence(tr("Ctrl+Shift+Z")), QKeySequence(tr("Ctrl+Y"))});
-  redoAction_->setIcon(icon(QStyle::SP_ArrowForward));
+  redoAction_->setIcon(makeIcon(Icon::Redo));
 
-  frameAllAction_ = new QAction(icon(QStyle::SP_TitleBarMaxButton), tr("&Frame All"), this);
+  frameAllAction_ = new QAction(makeIcon(Icon::FrameAll), tr("&Frame All"), this);
   frameAllAction_->setShortcut(QKeySequence(tr("Home")));
   frameAllAction_->setStatusTip(tr("Fit the character in the viewport (also F in the viewport)"));
   connect(frameAllAction_, &QAction::triggered, this, &MainWindow::frameAll);
 
-  showSkeletonAction_ = new QAction(tr("Show &Skeleton"), this);
+  showSkeletonAction_ = new QAction(makeIcon(Icon::Skeleton), tr("Show &Skeleton"), this);
   showSkeletonAction_->setCheckable(true);
   showSkeletonAction_->setShortcut(QKeySequence(tr("Ctrl+K")));
   connect(showSkeletonAction_, &QAction::toggled, this, &MainWindow::setSkeletonVisible);
 
-  playAction_ = new QAction(icon(QStyle::SP_MediaPlay), tr("&Play / Pause"), this);
+  playAction_ = new QAction(makeIcon(Icon::Play), tr("&Play / Pause"), this);
   playAction_->setShortcut(QKeySequence(tr("Space")));
   connect(playAction_, &QAction::triggered, timeline_, &TimelinePanel::togglePlaying);
   connect(timeline_, &TimelinePanel::playingChanged, this, [this](bool playing) {
-    playAction_->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+    playAction_->setIcon(makeIcon(playing ? Icon::Pause : Icon::Play));
   });
 }
 
@@ -396,6 +396,8 @@ void MainWindow::openFile(const QString& fileOrDefault) {
       }
       Clip clip = std::move(std::get<Clip>(outcome));
       const QString name = QString::fromStdString(clip.name);
+      // The document records the motion so a saved scene re-applies it.
+      document_->sceneSections().motionFile = QFileInfo(fileOrDefault).absoluteFilePath().toStdString();
       document_->addClip(std::move(clip));
       addRecentFile(fileOrDefault);
       statusBar()->showMessage(tr("Applied motion %1 (%2 s)").arg(name).arg(clock->elapsed() / 1000.0, 0, 'f', 2), 8000);
@@ -433,7 +435,9 @@ bool MainWindow::openFileNow(const QString& fileOrDefault, QString* error) {
   clock.start();
   try {
     if (isMotionFile(fileOrDefault)) {
-      document_->addClip(loadMotion(fileOrDefault, document_->character()));
+      Clip clip = loadMotion(fileOrDefault, document_->character());
+      document_->sceneSections().motionFile = QFileInfo(fileOrDefault).absoluteFilePath().toStdString();
+      document_->addClip(std::move(clip));
     } else {
       adoptLoaded(loadDocument(fileOrDefault), clock.elapsed() / 1000.0);
     }
@@ -460,11 +464,18 @@ void MainWindow::adoptLoaded(LoadedDocument loaded, double seconds) {
 bool MainWindow::saveDocument(const QString& path, QString* error) {
   storeCamera();
   SceneDocument scene = document_->sceneDocument();
-  // Store the character path relative to the document when it is a file.
-  if (scene.character != "default" && !scene.character.empty()) {
-    const QString absolute = QFileInfo(QString::fromStdString(scene.character)).absoluteFilePath();
-    scene.character = QFileInfo(path).absoluteDir().relativeFilePath(absolute).toStdString();
-  }
+  // Files the document refers to are stored relative to it.
+  const QDir folder = QFileInfo(path).absoluteDir();
+  const QDir oldFolder = document_->documentPath().isEmpty() ? QDir::current()
+                                                              : QFileInfo(document_->documentPath()).absoluteDir();
+  auto relative = [&](std::string& stored) {
+    if (stored.empty() || stored == "default") return;
+    const QString absolute = oldFolder.absoluteFilePath(QString::fromStdString(stored));
+    stored = folder.relativeFilePath(absolute).toStdString();
+  };
+  relative(scene.character);
+  relative(scene.motionFile);
+  relative(scene.motionMapFile);
   try {
     saveSceneDocument(scene, path.toStdString());
   } catch (const std::exception& e) {

@@ -3,6 +3,7 @@
 // (glTF, GLB, FBX, DAE), a BVH motion (applied to the default mannequin) or a
 // scene document. --screenshot renders the window once the file is open,
 // saves it as a PNG and quits (exit code 1 if the file could not be opened).
+// --select BONE, --clip NAME and --time SECONDS set up the view first.
 #include <cstdio>
 
 #include <QApplication>
@@ -11,6 +12,7 @@
 #include <QTimer>
 
 #include "ui/document/document_loader.h"
+#include "ui/document/editor_document.h"
 #include "ui/main_window.h"
 #include "ui/theme.h"
 #include "ui/viewport/vtk_viewport_widget.h"
@@ -43,7 +45,13 @@ int main(int argc, char** argv) {
                                        "or a scene document (.mqscene)");
   const QCommandLineOption screenshot("screenshot", "Save a picture of the window to OUT.png and quit.", "OUT.png");
   const QCommandLineOption size("size", "Window size, WIDTHxHEIGHT (default 1600x1000).", "WxH", "1600x1000");
+  const QCommandLineOption select("select", "Select BONE (shows the rotation gizmo on it).", "BONE");
+  const QCommandLineOption clip("clip", "Show clip NAME (or index).", "NAME");
+  const QCommandLineOption timeOption("time", "Go to SECONDS into the clip.", "SECONDS");
   parser.addOption(screenshot);
+  parser.addOption(select);
+  parser.addOption(clip);
+  parser.addOption(timeOption);
   parser.addOption(size);
   parser.process(app);
   const QStringList files = parser.positionalArguments();
@@ -61,25 +69,34 @@ int main(int argc, char** argv) {
   }
   window.show();
 
+  // Once the file is open: apply the view options, then take the screenshot
+  // after the layout has settled and the viewport has painted.
   const QString screenshotPath = parser.value(screenshot);
-  // After the next load finishes, let the layout settle and the viewport
-  // paint, then grab.
-  auto screenshotAfterLoad = [&window, takeScreenshot, screenshotPath] {
-    if (!takeScreenshot) return;
-    QObject::connect(&window, &mq::ui::MainWindow::loadFinished, &window, [&window, screenshotPath](bool ok) {
-      QTimer::singleShot(400, &window, [&window, screenshotPath, ok] { saveScreenshotAndQuit(window, screenshotPath, ok); });
-    }, Qt::SingleShotConnection);
+  const QString selectBone = parser.value(select), clipName = parser.value(clip);
+  const double time = parser.value(timeOption).toDouble();
+  const bool setTime = parser.isSet(timeOption);
+  auto afterLoad = [&window, takeScreenshot, screenshotPath, selectBone, clipName, time, setTime] {
+    QObject::connect(&window, &mq::ui::MainWindow::loadFinished, &window,
+        [&window, takeScreenshot, screenshotPath, selectBone, clipName, time, setTime](bool ok) {
+          mq::ui::EditorDocument* doc = window.document();
+          if (!clipName.isEmpty()) doc->setClip(doc->character().findClip(clipName.toStdString()));
+          if (setTime) doc->setTime(doc->clipStart() + float(time));
+          if (!selectBone.isEmpty()) doc->selectBone(doc->character().skeleton.findBone(selectBone.toStdString()));
+          if (!takeScreenshot) return;
+          QTimer::singleShot(400, &window, [&window, screenshotPath, ok] { saveScreenshotAndQuit(window, screenshotPath, ok); });
+        },
+        Qt::SingleShotConnection);
   };
 
   if (mq::ui::isMotionFile(file)) {
     // A motion alone is shown on the default mannequin.
-    QObject::connect(&window, &mq::ui::MainWindow::loadFinished, &window, [&window, file, screenshotAfterLoad](bool) {
-      screenshotAfterLoad();
+    QObject::connect(&window, &mq::ui::MainWindow::loadFinished, &window, [&window, file, afterLoad](bool) {
+      afterLoad();
       window.openFile(file);
     }, Qt::SingleShotConnection);
     window.openFile("default");
   } else {
-    screenshotAfterLoad();
+    afterLoad();
     window.openFile(file);
   }
   return app.exec();

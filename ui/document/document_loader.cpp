@@ -2,9 +2,8 @@
 
 #include <QFileInfo>
 
-#include "core/character/default_mannequin.h"
 #include "core/io/bvh_import.h"
-#include "core/io/character_import.h"
+#include "core/scene/open_scene.h"
 #include "core/scene/scene_document.h"
 
 namespace mq::ui {
@@ -12,42 +11,24 @@ namespace {
 
 QString suffixOf(const QString& path) { return QFileInfo(path).suffix().toLower(); }
 
-Character characterOfScene(const SceneDocument& scene, const std::string& documentPath) {
-  if (!scene.hasCharacter()) return Character{};
-  if (scene.character == "default") return makeDefaultMannequin();
-  return importCharacter(resolveDocumentPath(documentPath, scene.character));
-}
-
-LoadedDocument loadSceneFile(const QString& path) {
-  const std::string file = path.toStdString();
-  LoadedDocument out;
-  out.scene = loadSceneDocument(file);
-  out.character = characterOfScene(out.scene, file);
-  if (!out.scene.motionFile.empty()) {
-    const std::string motion = resolveDocumentPath(file, out.scene.motionFile);
-    const std::string map =
-        out.scene.motionMapFile.empty() ? std::string() : resolveDocumentPath(file, out.scene.motionMapFile);
-    out.character.clips.push_back(importBvhMotion(motion, out.character, map));
-  }
-  out.documentPath = QFileInfo(path).absoluteFilePath();
-  out.displayName = QFileInfo(path).fileName();
-  return out;
-}
-
 }  // namespace
 
 LoadedDocument loadDocument(const QString& fileOrDefault) {
-  if (fileOrDefault.isEmpty() || fileOrDefault == "default") {
-    LoadedDocument out;
-    out.character = makeDefaultMannequin();
-    out.displayName = "default mannequin";
-    return out;
-  }
-  if (isSceneFile(fileOrDefault)) return loadSceneFile(fileOrDefault);
+  const QString file = fileOrDefault.isEmpty() ? QString("default") : fileOrDefault;
+  LoadedScene scene = openScene(file.toStdString());
   LoadedDocument out;
-  out.character = importCharacter(fileOrDefault.toStdString());
-  out.scene.character = QFileInfo(fileOrDefault).absoluteFilePath().toStdString();
-  out.displayName = QFileInfo(fileOrDefault).fileName();
+  out.character = std::move(scene.character);
+  out.scene = std::move(scene.document);
+  out.edits = std::move(scene.edits);
+  out.clipIndex = scene.clipIndex;
+  if (file == "default") {
+    out.displayName = "default mannequin";
+  } else {
+    out.displayName = QFileInfo(file).fileName();
+    if (!scene.documentPath.empty()) out.documentPath = QFileInfo(file).absoluteFilePath();
+    // A character file: keep its absolute path (saving makes it relative).
+    else out.scene.character = QFileInfo(file).absoluteFilePath().toStdString();
+  }
   return out;
 }
 

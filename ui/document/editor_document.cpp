@@ -1,5 +1,7 @@
 #include "ui/document/editor_document.h"
 
+#include <algorithm>
+
 #include <QUndoStack>
 
 #include "core/util/thread_pool.h"
@@ -18,12 +20,8 @@ void EditorDocument::replace(LoadedDocument loaded) {
   scene_ = std::move(loaded.scene);
   documentPath_ = loaded.documentPath;
   displayName_ = loaded.displayName;
-  edits_ = {};
-  for (const auto& [name, rotation] : scene_.poseRotations) {
-    const int bone = character_.skeleton.findBone(name);
-    if (bone >= 0) edits_.rotations[bone] = rotation;
-  }
-  clipIndex_ = scene_.clip.empty() ? (character_.clips.empty() ? -1 : 0) : character_.findClip(scene_.clip);
+  edits_ = std::move(loaded.edits);
+  clipIndex_ = loaded.clipIndex < static_cast<int>(character_.clips.size()) ? loaded.clipIndex : -1;
   time_ = clipIndex_ >= 0 ? std::clamp(scene_.time, clipStart(), clipEnd()) : 0.0f;
   selectedBone_ = -1;
   selectedMesh_ = -1;

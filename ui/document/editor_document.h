@@ -22,6 +22,8 @@ namespace mq::ui {
 struct LoadedDocument {
   Character character;
   SceneDocument scene;
+  PoseEdits edits;       // scene.poseRotations by bone index
+  int clipIndex = -1;    // current clip, -1 for the rest pose
   QString documentPath;  // the scene file, empty for a character file or "default"
   QString displayName;   // for the title bar
 };

@@ -12,30 +12,32 @@
 #include <QToolButton>
 
 #include "ui/document/editor_document.h"
+#include "ui/icons.h"
 
 namespace mq::ui {
 
 TimelinePanel::TimelinePanel(EditorDocument* document, QWidget* parent)
     : QWidget(parent), document_(document), timer_(new QTimer(this)) {
-  auto makeButton = [this](QStyle::StandardPixmap icon, const QString& tip) {
+  auto makeButton = [this](Icon icon, const QString& tip) {
     auto* b = new QToolButton(this);
-    b->setIcon(style()->standardIcon(icon));
+    b->setIcon(makeIcon(icon));
+    b->setIconSize(QSize(18, 18));
     b->setToolTip(tip);
     b->setAutoRaise(true);
     return b;
   };
-  toStart_ = makeButton(QStyle::SP_MediaSkipBackward, tr("Go to start (Home)"));
-  stepBack_ = makeButton(QStyle::SP_MediaSeekBackward, tr("Previous frame (Left)"));
-  play_ = makeButton(QStyle::SP_MediaPlay, tr("Play / pause (Space)"));
+  toStart_ = makeButton(Icon::ToStart, tr("Go to start"));
+  stepBack_ = makeButton(Icon::StepBack, tr("Previous frame"));
+  play_ = makeButton(Icon::Play, tr("Play / pause (Space)"));
   play_->setObjectName("playButton");
-  stepForward_ = makeButton(QStyle::SP_MediaSeekForward, tr("Next frame (Right)"));
-  toEnd_ = makeButton(QStyle::SP_MediaSkipForward, tr("Go to end (End)"));
+  stepForward_ = makeButton(Icon::StepForward, tr("Next frame"));
+  toEnd_ = makeButton(Icon::ToEnd, tr("Go to end"));
 
   slider_ = new QSlider(Qt::Horizontal, this);
   slider_->setTickPosition(QSlider::TicksBelow);
   slider_->setMinimumWidth(200);
   timeLabel_ = new QLabel(this);
-  timeLabel_->setMinimumWidth(190);
+  timeLabel_->setMinimumWidth(150);
   timeLabel_->setAlignment(Qt::AlignVCenter | Qt::AlignRight);
   timeLabel_->setFont(QFont("monospace"));
   clipBox_ = new QComboBox(this);
@@ -91,7 +93,7 @@ void TimelinePanel::setPlaying(bool playing) {
   } else {
     timer_->stop();
   }
-  play_->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+  play_->setIcon(makeIcon(playing ? Icon::Pause : Icon::Play));
   emit playingChanged(playing);
 }
 
