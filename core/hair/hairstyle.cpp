@@ -12,9 +12,9 @@ namespace {
 HairStyle baseStyle(const std::string& name) {
   HairStyle s;
   s.name = name;
-  s.primitives.streams.push_back({glm::vec3(0.0f, -1.0f, -0.2f), 1.0f});
+  s.primitives.streams.push_back({glm::vec3(0.0f, -1.0f, -0.25f), 1.0f});
   s.primitives.sources.push_back({glm::vec3(0.0f, 0.10f, -0.01f), 0.9f, 0.07f});
-  s.primitives.sources.push_back({glm::vec3(0.0f, -0.03f, 0.16f), 0.8f, 0.07f});
+  s.primitives.sources.push_back({glm::vec3(0.0f, -0.02f, 0.14f), 3.0f, 0.08f});
   return s;
 }
 
@@ -34,6 +34,8 @@ HairStyle bob() {
   s.lengthMap.push_back({glm::vec3(0.0f, 0.06f, 0.1f), 0.55f, 0.06f});  // a shorter fringe
   s.clumping = 0.5f;
   s.frizz = 0.002f;
+  s.strandNoise = 0.004f;
+  s.noiseAmplitude = 0.08f;
   return s;
 }
 
