@@ -1,5 +1,7 @@
 #include "core/io/bvh_import.h"
 
+#include <glm/gtx/quaternion.hpp>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -327,6 +329,31 @@ float heightRatio(const std::vector<glm::mat4>& bvhRest, const std::vector<glm::
   return hb > 1e-6f && ht > 1e-6f ? ht / hb : 1.0f;
 }
 
+glm::vec3 originOf(const glm::mat4& m) { return glm::vec3(m[3]); }
+
+// Rotations that turn each driven bone's rest direction (towards its only
+// child) onto its BVH joint's rest direction, so a T-pose motion drives an
+// A-pose skeleton sensibly. Identity where either side branches or ends.
+std::vector<glm::quat> restAlignment(const BvhData& bvh, const std::vector<glm::mat4>& sourceRest,
+                                     const Skeleton& target, const std::vector<glm::mat4>& targetRest,
+                                     const std::vector<int>& jointOfBone) {
+  std::vector<glm::quat> align(target.boneCount(), glm::quat(1, 0, 0, 0));
+  for (int b = 0; b < target.boneCount(); ++b) {
+    const int j = jointOfBone[b];
+    if (j < 0) continue;
+    std::vector<int> jointChildren;
+    for (size_t c = 0; c < bvh.joints.size(); ++c)
+      if (bvh.joints[c].parent == j) jointChildren.push_back(static_cast<int>(c));
+    const std::vector<int> boneChildren = target.children(b);
+    if (jointChildren.size() != 1 || boneChildren.size() != 1) continue;
+    const glm::vec3 dt = originOf(targetRest[boneChildren[0]]) - originOf(targetRest[b]);
+    const glm::vec3 db = originOf(sourceRest[jointChildren[0]]) - originOf(sourceRest[j]);
+    if (glm::length(dt) < 1e-6f || glm::length(db) < 1e-6f) continue;
+    align[b] = glm::rotation(glm::normalize(dt), glm::normalize(db));
+  }
+  return align;
+}
+
 Clip retarget(const BvhData& bvh, const std::vector<int>& boneOfJoint, const Skeleton& target, const std::string& name) {
   const Skeleton source = skeletonOf(bvh);
   const std::vector<glm::mat4> sourceRest = source.worldTransforms(source.restPose());
@@ -342,6 +369,7 @@ Clip retarget(const BvhData& bvh, const std::vector<int>& boneOfJoint, const Ske
     if (rootJoint < 0 && hasPosition(bvh.joints[j])) rootJoint = static_cast<int>(j);
   }
   const float scale = heightRatio(sourceRest, targetRest, boneOfJoint);
+  const std::vector<glm::quat> align = restAlignment(bvh, sourceRest, target, targetRest, jointOfBone);
 
   Clip clip;
   clip.name = name;
@@ -371,7 +399,7 @@ Clip retarget(const BvhData& bvh, const std::vector<int>& boneOfJoint, const Ske
       const int j = jointOfBone[b];
       if (j >= 0) {
         const glm::quat change = rotationOf(sourceWorld[j]) * glm::inverse(rotationOf(sourceRest[j]));
-        local = glm::normalize(glm::inverse(parentRotation) * change * rotationOf(targetRest[b]));
+        local = glm::normalize(glm::inverse(parentRotation) * change * align[b] * rotationOf(targetRest[b]));
         BoneChannel& channel = clip.boneChannels[channelOfBone[b]];
         appendKey(channel.rotation, time, local);
         if (j == rootJoint) {

@@ -11,9 +11,11 @@
 //
 // Retargeting: each driven bone gets the BVH joint's world rotation change
 // from the BVH rest pose, applied on top of the bone's own rest world
-// orientation, so skeletons whose local axes differ still move alike. The
-// root's displacement from the first frame is scaled by the ratio of the two
-// skeletons' heights (over the matched joints).
+// orientation, so skeletons whose local axes differ still move alike. Where
+// both the bone and the joint have exactly one child, the bone's rest
+// direction is first turned onto the joint's (a T-pose motion on an A-pose
+// skeleton). The root's displacement from the first frame is scaled by the
+// ratio of the two skeletons' heights (over the matched joints).
 
 #include <string>
 
