@@ -34,6 +34,11 @@ nlohmann::json describe(const Character& c) {
   return j;
 }
 
+void printBoneTree(const Skeleton& skeleton, int bone, int depth, std::ostream& out) {
+  out << "    " << std::string(2 * depth, ' ') << skeleton.bone(bone).name << "\n";
+  for (int child : skeleton.children(bone)) printBoneTree(skeleton, child, depth + 1, out);
+}
+
 void printText(const Character& c, std::ostream& out) {
   out << c.name << " (" << c.sourcePath << ")\n";
   out << "  meshes: " << c.meshes.size() << ", " << c.vertexCount() << " vertices, " << c.triangleCount()
@@ -42,11 +47,8 @@ void printText(const Character& c, std::ostream& out) {
     out << "    " << m.name << ": " << m.vertexCount() << " vertices, " << m.triangleCount() << " triangles"
         << (m.skin.empty() ? "" : ", skinned") << "\n";
   out << "  bones: " << c.skeleton.boneCount() << ", max influences per vertex: " << c.maxInfluences() << "\n";
-  for (int b = 0; b < c.skeleton.boneCount(); ++b) {
-    int depth = 0;
-    for (int p = c.skeleton.bone(b).parent; p >= 0; p = c.skeleton.bone(p).parent) ++depth;
-    out << "    " << std::string(2 * depth, ' ') << c.skeleton.bone(b).name << "\n";
-  }
+  for (int b = 0; b < c.skeleton.boneCount(); ++b)
+    if (c.skeleton.bone(b).parent < 0) printBoneTree(c.skeleton, b, 0, out);
   out << "  clips: " << c.clips.size() << "\n";
   for (size_t i = 0; i < c.clips.size(); ++i)
     out << "    [" << i << "] " << c.clips[i].name << ": " << c.clips[i].duration() << " s (keys "

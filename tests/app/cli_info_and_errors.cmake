@@ -1,5 +1,9 @@
 # `mannequin-cli info --json` reports the MANIFEST counts; bad files give
-# exit code 1 and a one-line message naming the file. -DCLI -DASSETS -DWORK
+# exit code 1 and a one-line message naming the file.
+# -DCLI -DASSETS -DWORK [-DSOURCE_DIR]
+if(NOT SOURCE_DIR)
+  get_filename_component(SOURCE_DIR "${CMAKE_CURRENT_LIST_DIR}/../.." ABSOLUTE)
+endif()
 function(info_json file out_var)
   execute_process(COMMAND "${CLI}" info "${file}" --json RESULT_VARIABLE rc OUTPUT_VARIABLE json ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
@@ -67,3 +71,14 @@ endif()
 execute_process(COMMAND "${CLI}" pose "${ASSETS}/characters/SimpleSkin/SimpleSkin.gltf" --time 1 --clip nosuchclip --out "${WORK}/x.obj"
                 RESULT_VARIABLE rc ERROR_VARIABLE err)
 expect("${rc}" 1 "unknown clip exit code")
+
+# The built-in mannequin driven by CMU motion capture through the shipped name map.
+execute_process(COMMAND "${CLI}" pose default --motion "${ASSETS}/motion/cmu_01_01.bvh"
+                        --map "${SOURCE_DIR}/resources/motion_maps/cmu_to_default.txt" --time 3 --out "${WORK}/cmu.obj"
+                RESULT_VARIABLE rc ERROR_VARIABLE err)
+expect("${rc}" 0 "pose default with CMU motion: ${err}")
+file(STRINGS "${WORK}/cmu.obj" vertex_lines REGEX "^v ")
+list(LENGTH vertex_lines vertex_count)
+if(vertex_count LESS 1000)
+  message(FATAL_ERROR "posed mannequin has only ${vertex_count} vertices")
+endif()
