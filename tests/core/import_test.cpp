@@ -132,10 +132,31 @@ void expectBindPoseIsRigid(const Character& c) {
   }
 }
 
-// Posed vertices stay finite, the bbox keeps a similar size, and no vertex
-// jumps between frames 1/60 s apart.
+// Longest ratio of a posed triangle edge to its rest length, over all meshes
+// (skinning with wrong bind matrices tears the mesh apart).
+float worstEdgeStretch(const Character& c, const PosedCharacter& rest, const PosedCharacter& posed) {
+  float worst = 1.0f;
+  for (size_t m = 0; m < c.meshes.size(); ++m) {
+    const auto& r = rest.meshes()[m].positions;
+    const auto& p = posed.meshes()[m].positions;
+    const auto& tri = c.meshes[m].triangles;
+    for (size_t t = 0; t < tri.size(); t += 3)
+      for (int e = 0; e < 3; ++e) {
+        const uint32_t a = tri[t + e], b = tri[t + (e + 1) % 3];
+        const float restLength = glm::distance(glm::vec3(r[3 * a], r[3 * a + 1], r[3 * a + 2]), glm::vec3(r[3 * b], r[3 * b + 1], r[3 * b + 2]));
+        const float posedLength = glm::distance(glm::vec3(p[3 * a], p[3 * a + 1], p[3 * a + 2]), glm::vec3(p[3 * b], p[3 * b + 1], p[3 * b + 2]));
+        if (restLength > 1e-6f) worst = std::max(worst, std::max(posedLength / restLength, restLength / std::max(posedLength, 1e-12f)));
+      }
+  }
+  return worst;
+}
+
+// Posed vertices stay finite, the bbox keeps a similar size, no edge
+// stretches or shrinks more than 3x, and no vertex jumps between frames 1/60 s
+// apart.
 void expectPlausibleOverClips(const Character& c) {
-  PosedCharacter posed;
+  PosedCharacter posed, posedRest;
+  posedRest.evaluate(c, -1, 0.0f, nullptr, nullptr);
   posed.evaluate(c, -1, 0.0f, nullptr, nullptr);
   std::vector<float> rest;
   for (const PosedMesh& m : posed.meshes()) rest.insert(rest.end(), m.positions.begin(), m.positions.end());
@@ -151,6 +172,7 @@ void expectPlausibleOverClips(const Character& c) {
       const float diagonal = boundsOf(all).diagonal();
       EXPECT_GT(diagonal, 0.5f * restDiagonal) << "clip " << clip << " t " << t;
       EXPECT_LT(diagonal, 1.5f * restDiagonal) << "clip " << clip << " t " << t;
+      EXPECT_LT(worstEdgeStretch(c, posedRest, posed), 3.0f) << "clip " << clip << " t " << t;
       for (size_t i = 0; i < previous.size(); ++i)
         ASSERT_LT(std::abs(all[i] - previous[i]), 0.2f * restDiagonal) << "clip " << clip << " t " << t;
       previous = all;
