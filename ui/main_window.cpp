@@ -28,6 +28,7 @@
 #include "render/scene_view.h"
 #include "ui/document/document_loader.h"
 #include "ui/document/editor_document.h"
+#include "ui/document/pose_commands.h"
 #include "ui/icons.h"
 #include "ui/panels/properties_panel.h"
 #include "ui/panels/scene_tree_panel.h"
@@ -180,6 +181,31 @@ void MainWindow::createActions() {
   showSkeletonAction_->setShortcut(QKeySequence(tr("Ctrl+K")));
   connect(showSkeletonAction_, &QAction::toggled, this, &MainWindow::setSkeletonVisible);
 
+  showGridAction_ = new QAction(tr("Show &Grid"), this);
+  showGridAction_->setCheckable(true);
+  showGridAction_->setChecked(true);
+  connect(showGridAction_, &QAction::toggled, this, [this](bool visible) {
+    scene_->setGridVisible(visible);
+    viewport_->requestRender();
+  });
+
+  resetBoneAction_ = new QAction(tr("Reset &Bone Rotation"), this);
+  resetBoneAction_->setShortcut(QKeySequence(tr("Alt+R")));
+  connect(resetBoneAction_, &QAction::triggered, this, [this] {
+    const int bone = document_->selectedBone();
+    if (bone >= 0 && document_->boneRotation(bone))
+      document_->undoStack()->push(new SetBoneRotationCommand(document_, bone, std::nullopt));
+  });
+  resetPoseAction_ = new QAction(tr("Reset &Pose"), this);
+  resetPoseAction_->setShortcut(QKeySequence(tr("Alt+Shift+R")));
+  connect(resetPoseAction_, &QAction::triggered, this, [this] {
+    if (!document_->poseEdits().empty())
+      document_->undoStack()->push(new SetPoseEditsCommand(document_, PoseEdits{}, tr("Reset pose")));
+  });
+  deselectAction_ = new QAction(tr("&Deselect"), this);
+  deselectAction_->setShortcut(QKeySequence(tr("Esc")));
+  connect(deselectAction_, &QAction::triggered, this, [this] { document_->selectBone(-1); });
+
   playAction_ = new QAction(makeIcon(Icon::Play), tr("&Play / Pause"), this);
   playAction_->setShortcut(QKeySequence(tr("Space")));
   connect(playAction_, &QAction::triggered, timeline_, &TimelinePanel::togglePlaying);
@@ -204,9 +230,14 @@ void MainWindow::createMenus() {
   QMenu* edit = menuBar()->addMenu(tr("&Edit"));
   edit->addAction(undoAction_);
   edit->addAction(redoAction_);
+  edit->addSeparator();
+  edit->addAction(resetBoneAction_);
+  edit->addAction(resetPoseAction_);
+  edit->addAction(deselectAction_);
 
   viewMenu_ = menuBar()->addMenu(tr("&View"));
   viewMenu_->addAction(showSkeletonAction_);
+  viewMenu_->addAction(showGridAction_);
   viewMenu_->addAction(frameAllAction_);
   viewMenu_->addSeparator();
   panelsMenu_ = viewMenu_->addMenu(tr("&Panels"));
@@ -258,7 +289,7 @@ void MainWindow::createStatusBar() {
 }
 
 void MainWindow::restoreLayout() {
-  resizeDocks({treeDock_, propertiesDock_}, {250, 290}, Qt::Horizontal);
+  resizeDocks({treeDock_, propertiesDock_}, {270, 300}, Qt::Horizontal);
   resizeDocks({timelineDock_}, {timeline_->sizeHint().height()}, Qt::Vertical);
 }
 

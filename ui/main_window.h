@@ -132,6 +132,10 @@ class MainWindow : public QMainWindow {
   QAction* redoAction_ = nullptr;
   QAction* frameAllAction_ = nullptr;
   QAction* showSkeletonAction_ = nullptr;
+  QAction* showGridAction_ = nullptr;
+  QAction* resetBoneAction_ = nullptr;
+  QAction* resetPoseAction_ = nullptr;
+  QAction* deselectAction_ = nullptr;
   QAction* playAction_ = nullptr;
   QMenu* recentMenu_ = nullptr;
   QMenu* viewMenu_ = nullptr;

@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
   const QCommandLineOption screenshot("screenshot", "Save a picture of the window to OUT.png and quit.", "OUT.png");
   const QCommandLineOption size("size", "Window size, WIDTHxHEIGHT (default 1600x1000).", "WxH", "1600x1000");
   const QCommandLineOption select("select", "Select BONE (shows the rotation gizmo on it).", "BONE");
-  const QCommandLineOption clip("clip", "Show clip NAME (or index).", "NAME");
+  const QCommandLineOption clip("clip", "Show clip NAME (or index; rest: the rest pose).", "NAME");
   const QCommandLineOption timeOption("time", "Go to SECONDS into the clip.", "SECONDS");
   parser.addOption(screenshot);
   parser.addOption(select);
@@ -79,7 +79,8 @@ int main(int argc, char** argv) {
     QObject::connect(&window, &mq::ui::MainWindow::loadFinished, &window,
         [&window, takeScreenshot, screenshotPath, selectBone, clipName, time, setTime](bool ok) {
           mq::ui::EditorDocument* doc = window.document();
-          if (!clipName.isEmpty()) doc->setClip(doc->character().findClip(clipName.toStdString()));
+          if (clipName == "rest") doc->setClip(-1);
+          else if (!clipName.isEmpty()) doc->setClip(doc->character().findClip(clipName.toStdString()));
           if (setTime) doc->setTime(doc->clipStart() + float(time));
           if (!selectBone.isEmpty()) doc->selectBone(doc->character().skeleton.findBone(selectBone.toStdString()));
           if (!takeScreenshot) return;

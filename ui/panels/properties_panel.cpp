@@ -20,7 +20,7 @@
 namespace mq::ui {
 namespace {
 
-enum Page { EmptyPage = 0, BonePage, MeshPage };
+enum Page { CharacterPage = 0, BonePage, MeshPage };
 
 QString count(size_t n) { return QLocale().toString(static_cast<qulonglong>(n)); }
 
@@ -32,22 +32,64 @@ PropertiesPanel::PropertiesPanel(EditorDocument* document, QWidget* parent)
   layout->setContentsMargins(6, 6, 6, 6);
   layout->addWidget(pages_);
   layout->addStretch(1);
-  pages_->addWidget(makeEmptyPage());
+  pages_->addWidget(makeCharacterPage());
   pages_->addWidget(makeBonePage());
   pages_->addWidget(makeMeshPage());
 
   connect(document_, &EditorDocument::selectionChanged, this, &PropertiesPanel::showSelection);
   connect(document_, &EditorDocument::characterReplaced, this, &PropertiesPanel::showSelection);
-  connect(document_, &EditorDocument::poseChanged, this, &PropertiesPanel::showBoneAngles);
+  connect(document_, &EditorDocument::poseChanged, this, [this] {
+    if (pages_->currentIndex() == BonePage) showBoneAngles();
+    else if (pages_->currentIndex() == CharacterPage) characterEdits_->setText(QString::number(document_->poseEdits().rotations.size()));
+  });
+  connect(document_, &EditorDocument::clipsChanged, this, [this] {
+    if (pages_->currentIndex() == CharacterPage) showCharacter();
+  });
   showSelection();
 }
 
-QWidget* PropertiesPanel::makeEmptyPage() {
-  auto* label = new QLabel(tr("Nothing selected.\n\nClick a bone in the viewport or the scene tree to pose it."));
-  label->setWordWrap(true);
-  label->setAlignment(Qt::AlignTop | Qt::AlignLeft);
-  label->setEnabled(false);
-  return label;
+QWidget* PropertiesPanel::makeCharacterPage() {
+  auto* page = new QWidget;
+  auto* layout = new QVBoxLayout(page);
+  layout->setContentsMargins(0, 0, 0, 0);
+  auto* box = new QGroupBox(tr("Character"));
+  auto* form = new QFormLayout(box);
+  characterName_ = new QLabel;
+  characterSource_ = new QLabel;
+  characterSource_->setWordWrap(true);
+  characterCounts_ = new QLabel;
+  characterClips_ = new QLabel;
+  characterClips_->setWordWrap(true);
+  characterEdits_ = new QLabel;
+  form->addRow(tr("Name"), characterName_);
+  form->addRow(tr("Source"), characterSource_);
+  form->addRow(tr("Geometry"), characterCounts_);
+  form->addRow(tr("Clips"), characterClips_);
+  form->addRow(tr("Posed bones"), characterEdits_);
+  layout->addWidget(box);
+  auto* hint = new QLabel(tr("Click a bone in the viewport or the scene tree to pose it; "
+                             "drag a ring of the gizmo or type angles."));
+  hint->setWordWrap(true);
+  hint->setEnabled(false);
+  layout->addWidget(hint);
+  return page;
+}
+
+void PropertiesPanel::showCharacter() {
+  const Character& c = document_->character();
+  characterName_->setText(QString::fromStdString(c.name.empty() ? "(unnamed)" : c.name));
+  const QString source = QString::fromStdString(c.sourcePath);
+  characterSource_->setText(source.section('/', -1));
+  characterSource_->setToolTip(source);
+  characterCounts_->setText(tr("%1 meshes, %2 vertices\n%3 triangles, %4 bones")
+                                .arg(c.meshes.size())
+                                .arg(count(c.vertexCount()))
+                                .arg(count(c.triangleCount()))
+                                .arg(c.skeleton.boneCount()));
+  QStringList clips;
+  for (const Clip& clip : c.clips) clips << QString("%1 (%2 s)").arg(QString::fromStdString(clip.name)).arg(clip.duration(), 0, 'f', 2);
+  characterClips_->setText(clips.isEmpty() ? tr("none") : clips.join(", "));
+  characterEdits_->setText(QString::number(document_->poseEdits().rotations.size()));
 }
 
 QWidget* PropertiesPanel::makeBonePage() {
@@ -60,8 +102,13 @@ QWidget* PropertiesPanel::makeBonePage() {
   boneName_ = new QLabel;
   boneName_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   boneParent_ = new QLabel;
+  boneJoint_ = new QLabel;
+  boneChildren_ = new QLabel;
+  boneChildren_->setWordWrap(true);
   form->addRow(tr("Name"), boneName_);
   form->addRow(tr("Parent"), boneParent_);
+  form->addRow(tr("Children"), boneChildren_);
+  form->addRow(tr("Joint (m)"), boneJoint_);
   layout->addWidget(info);
 
   auto* rotation = new QGroupBox(tr("Pose rotation (degrees, XYZ)"));
@@ -120,6 +167,10 @@ void PropertiesPanel::showSelection() {
     boneName_->setText(QString::fromStdString(b.name));
     boneParent_->setText(b.parent >= 0 ? QString::fromStdString(character.skeleton.bone(b.parent).name)
                                        : tr("(root)"));
+    QStringList children;
+    for (int child : character.skeleton.children(bone))
+      children << QString::fromStdString(character.skeleton.bone(child).name);
+    boneChildren_->setText(children.isEmpty() ? tr("none") : children.join(", "));
     showBoneAngles();
     pages_->setCurrentIndex(BonePage);
   } else if (mesh >= 0) {
@@ -133,7 +184,8 @@ void PropertiesPanel::showSelection() {
     meshMorphs_->setText(QString::number(m.morphTargets.size()));
     pages_->setCurrentIndex(MeshPage);
   } else {
-    pages_->setCurrentIndex(EmptyPage);
+    showCharacter();
+    pages_->setCurrentIndex(CharacterPage);
   }
 }
 
@@ -144,6 +196,11 @@ void PropertiesPanel::showBoneAngles() {
   syncing_ = true;
   for (int axis = 0; axis < 3; ++axis)
     if (std::abs(angles_[axis]->value() - degrees[axis]) > 0.05) angles_[axis]->setValue(degrees[axis]);
+  const auto& world = document_->posed().worldFromBone();
+  if (bone < static_cast<int>(world.size())) {
+    const glm::vec3 joint(world[bone][3]);
+    boneJoint_->setText(QString("%1, %2, %3").arg(joint.x, 0, 'f', 3).arg(joint.y, 0, 'f', 3).arg(joint.z, 0, 'f', 3));
+  }
   resetBone_->setEnabled(document_->boneRotation(bone).has_value());
   resetAll_->setEnabled(!document_->poseEdits().empty());
   syncing_ = false;

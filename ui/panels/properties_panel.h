@@ -27,10 +27,11 @@ class PropertiesPanel : public QWidget {
   QPushButton* resetButton() const { return resetBone_; }
 
  private:
-  QWidget* makeEmptyPage();
+  QWidget* makeCharacterPage();
   QWidget* makeBonePage();
   QWidget* makeMeshPage();
   void showSelection();
+  void showCharacter();
   void showBoneAngles();
   void applyTypedAngles();
   void resetBone();
@@ -40,6 +41,13 @@ class PropertiesPanel : public QWidget {
   QStackedWidget* pages_;
   QLabel* boneName_ = nullptr;
   QLabel* boneParent_ = nullptr;
+  QLabel* boneJoint_ = nullptr;
+  QLabel* boneChildren_ = nullptr;
+  QLabel* characterName_ = nullptr;
+  QLabel* characterSource_ = nullptr;
+  QLabel* characterCounts_ = nullptr;
+  QLabel* characterClips_ = nullptr;
+  QLabel* characterEdits_ = nullptr;
   std::array<QDoubleSpinBox*, 3> angles_{};
   QPushButton* resetBone_ = nullptr;
   QPushButton* resetAll_ = nullptr;

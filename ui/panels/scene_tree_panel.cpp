@@ -29,6 +29,7 @@ SceneTreePanel::SceneTreePanel(EditorDocument* document, QWidget* parent)
 
   connect(document_, &EditorDocument::characterReplaced, this, &SceneTreePanel::rebuild);
   connect(document_, &EditorDocument::selectionChanged, this, &SceneTreePanel::showSelection);
+  connect(document_, &EditorDocument::poseChanged, this, &SceneTreePanel::showPoseEdits);
   connect(tree_, &QTreeWidget::currentItemChanged, this,
           [this](QTreeWidgetItem* item) { onCurrentItemChanged(item); });
   rebuild();
@@ -73,7 +74,17 @@ void SceneTreePanel::rebuild() {
   }
   tree_->expandAll();
   syncing_ = false;
+  showPoseEdits();
   showSelection();
+}
+
+void SceneTreePanel::showPoseEdits() {
+  // Bones with a pose edit are marked, as DCC tools mark keyed channels.
+  const PoseEdits& edits = document_->poseEdits();
+  for (size_t b = 0; b < boneItems_.size(); ++b) {
+    const bool posed = edits.rotations.count(static_cast<int>(b)) > 0;
+    if ((boneItems_[b]->text(1) == tr("posed")) != posed) boneItems_[b]->setText(1, posed ? tr("posed") : QString());
+  }
 }
 
 void SceneTreePanel::showSelection() {

@@ -26,6 +26,7 @@ class SceneTreePanel : public QWidget {
  private:
   void rebuild();
   void showSelection();
+  void showPoseEdits();
   void onCurrentItemChanged(QTreeWidgetItem* item);
 
   EditorDocument* document_;

@@ -1,0 +1,142 @@
+#include "ui/hair/hair_handles.h"
+
+#include <vtkActor.h>
+#include <vtkLineSource.h>
+#include <vtkNew.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkSphereSource.h>
+
+namespace mq::ui {
+
+namespace {
+constexpr float kStreamHandleDistance = 0.22f;
+constexpr float kLineLength = 0.06f;
+
+glm::vec3 kindColor(PrimitiveRef::Kind kind) {
+  switch (kind) {
+    case PrimitiveRef::Stream: return {0.3f, 0.6f, 1.0f};
+    case PrimitiveRef::Source: return {0.35f, 0.9f, 0.4f};
+    default: return {1.0f, 0.55f, 0.15f};
+  }
+}
+
+vtkSmartPointer<vtkActor> makeActor(vtkAlgorithm* source, const glm::vec3& color) {
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(source->GetOutputPort());
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(color.x, color.y, color.z);
+  actor->GetProperty()->SetLineWidth(2.0f);
+  actor->GetProperty()->LightingOff();
+  actor->PickableOff();
+  return actor;
+}
+}  // namespace
+
+std::vector<PrimitiveRef> primitivesOf(const HairStyle& style) {
+  std::vector<PrimitiveRef> out;
+  for (int i = 0; i < int(style.primitives.streams.size()); ++i) out.push_back({PrimitiveRef::Stream, i});
+  for (int i = 0; i < int(style.primitives.sources.size()); ++i) out.push_back({PrimitiveRef::Source, i});
+  for (int i = 0; i < int(style.primitives.vortices.size()); ++i) out.push_back({PrimitiveRef::Vortex, i});
+  return out;
+}
+
+glm::vec3 handlePosition(const HairStyle& style, const PrimitiveRef& ref) {
+  switch (ref.kind) {
+    case PrimitiveRef::Stream: {
+      const glm::vec3 d = style.primitives.streams[ref.index].direction;
+      return glm::length(d) > 1e-6f ? glm::normalize(d) * kStreamHandleDistance : glm::vec3(0.0f);
+    }
+    case PrimitiveRef::Source: return style.primitives.sources[ref.index].position;
+    default: return style.primitives.vortices[ref.index].position;
+  }
+}
+
+void moveHandle(HairStyle& style, const PrimitiveRef& ref, const glm::vec3& headSpace) {
+  switch (ref.kind) {
+    case PrimitiveRef::Stream:
+      if (glm::length(headSpace) > 1e-4f) style.primitives.streams[ref.index].direction = glm::normalize(headSpace);
+      break;
+    case PrimitiveRef::Source: style.primitives.sources[ref.index].position = headSpace; break;
+    default: style.primitives.vortices[ref.index].position = headSpace; break;
+  }
+}
+
+HairHandles::HairHandles(vtkRenderer* renderer) : renderer_(renderer) {}
+HairHandles::~HairHandles() { clear(); }
+
+void HairHandles::clear() {
+  for (Handle& h : handles_) {
+    renderer_->RemoveActor(h.sphere);
+    renderer_->RemoveActor(h.line);
+  }
+  handles_.clear();
+}
+
+void HairHandles::update(const HairStyle& style, const glm::vec3& headCenter, const PrimitiveRef& selected) {
+  clear();
+  for (const PrimitiveRef& ref : primitivesOf(style)) {
+    Handle h;
+    h.ref = ref;
+    h.world = headCenter + handlePosition(style, ref);
+    const bool isSelected = ref == selected;
+    const glm::vec3 color = isSelected ? glm::vec3(1.0f, 0.95f, 0.2f) : kindColor(ref.kind);
+    vtkNew<vtkSphereSource> sphere;
+    sphere->SetCenter(h.world.x, h.world.y, h.world.z);
+    sphere->SetRadius(isSelected ? 0.009 : 0.006);
+    sphere->SetThetaResolution(12);
+    sphere->SetPhiResolution(8);
+    h.sphere = makeActor(sphere, color);
+    glm::vec3 along(0.0f);
+    if (ref.kind == PrimitiveRef::Stream) along = style.primitives.streams[ref.index].direction;
+    if (ref.kind == PrimitiveRef::Vortex) along = style.primitives.vortices[ref.index].axis;
+    if (glm::length(along) > 1e-6f) along = glm::normalize(along) * kLineLength;
+    vtkNew<vtkLineSource> line;
+    line->SetPoint1(h.world.x, h.world.y, h.world.z);
+    line->SetPoint2(h.world.x + along.x, h.world.y + along.y, h.world.z + along.z);
+    h.line = makeActor(line, color);
+    h.sphere->SetVisibility(visible_);
+    h.line->SetVisibility(visible_ && glm::length(along) > 0.0f);
+    renderer_->AddActor(h.sphere);
+    renderer_->AddActor(h.line);
+    handles_.push_back(std::move(h));
+  }
+}
+
+void HairHandles::setVisible(bool visible) {
+  visible_ = visible;
+  for (Handle& h : handles_) {
+    h.sphere->SetVisibility(visible);
+    h.line->SetVisibility(visible);
+  }
+}
+
+PrimitiveRef HairHandles::pick(int x, int y, float radiusPixels) const {
+  if (!visible_) return {};
+  PrimitiveRef best;
+  double bestDepth = 2.0;
+  for (const Handle& h : handles_) {
+    renderer_->SetWorldPoint(h.world.x, h.world.y, h.world.z, 1.0);
+    renderer_->WorldToDisplay();
+    const double* d = renderer_->GetDisplayPoint();
+    const double dx = d[0] - x, dy = d[1] - y;
+    if (dx * dx + dy * dy > double(radiusPixels) * radiusPixels || d[2] >= bestDepth) continue;
+    bestDepth = d[2];
+    best = h.ref;
+  }
+  return best;
+}
+
+glm::vec3 HairHandles::displayToWorld(int x, int y, const glm::vec3& atDepthOf) const {
+  renderer_->SetWorldPoint(atDepthOf.x, atDepthOf.y, atDepthOf.z, 1.0);
+  renderer_->WorldToDisplay();
+  const double depth = renderer_->GetDisplayPoint()[2];
+  renderer_->SetDisplayPoint(x, y, depth);
+  renderer_->DisplayToWorld();
+  const double* w = renderer_->GetWorldPoint();
+  return glm::vec3(float(w[0] / w[3]), float(w[1] / w[3]), float(w[2] / w[3]));
+}
+
+}  // namespace mq::ui

@@ -1,0 +1,338 @@
+#include "ui/hair/hair_panel.h"
+
+#include <QCheckBox>
+#include <QColorDialog>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
+
+#include "ui/hair/hair_style_command.h"
+#include "ui/hair/hair_tool.h"
+
+namespace mq::ui {
+
+namespace {
+
+enum FieldKey {
+  kStrength = 1, kRadius, kAxisX, kAxisY, kAxisZ, kPosX, kPosY, kPosZ,
+  kDensity, kLength, kClumping, kFrizz, kRootColor, kTipColor
+};
+
+QString kindName(PrimitiveRef::Kind kind) {
+  switch (kind) {
+    case PrimitiveRef::Stream: return QObject::tr("Stream");
+    case PrimitiveRef::Source: return QObject::tr("Source");
+    default: return QObject::tr("Vortex");
+  }
+}
+
+QColor toQColor(const glm::vec3& c) { return QColor::fromRgbF(c.x, c.y, c.z); }
+glm::vec3 fromQColor(const QColor& c) { return {float(c.redF()), float(c.greenF()), float(c.blueF())}; }
+
+void paintSwatch(QPushButton* button, const glm::vec3& color) {
+  button->setStyleSheet(QString("background-color: %1;").arg(toQColor(color).name()));
+}
+
+}  // namespace
+
+HairPanel::HairPanel(HairTool* tool, QWidget* parent) : QWidget(parent), tool_(tool) {
+  auto* layout = new QVBoxLayout(this);
+
+  // Style
+  styleCombo_ = new QComboBox;
+  styleCombo_->addItem(tr("(no hair)"));
+  for (const std::string& name : builtinHairStyleNames()) styleCombo_->addItem(QString::fromStdString(name));
+  styleCombo_->addItem(tr("(custom)"));
+  auto* styleForm = new QFormLayout;
+  styleForm->addRow(tr("Hairstyle"), styleCombo_);
+  layout->addLayout(styleForm);
+  connect(styleCombo_, &QComboBox::activated, this, [this](int index) {
+    if (index == 0) tool_->removeHair();
+    else if (index < styleCombo_->count() - 1) tool_->useBuiltinStyle(styleCombo_->itemText(index));
+  });
+
+  // Primitives
+  auto* primitives = new QGroupBox(tr("Flow primitives"));
+  auto* primitiveLayout = new QVBoxLayout(primitives);
+  list_ = new QListWidget;
+  list_->setMaximumHeight(130);
+  primitiveLayout->addWidget(list_);
+  auto* buttons = new QHBoxLayout;
+  addStream_ = new QPushButton(tr("+ Stream"));
+  addSource_ = new QPushButton(tr("+ Source"));
+  addVortex_ = new QPushButton(tr("+ Vortex"));
+  delete_ = new QPushButton(tr("Delete"));
+  for (QPushButton* b : {addStream_, addSource_, addVortex_, delete_}) buttons->addWidget(b);
+  primitiveLayout->addLayout(buttons);
+  connect(addStream_, &QPushButton::clicked, this, [this] { addPrimitive(PrimitiveRef::Stream); });
+  connect(addSource_, &QPushButton::clicked, this, [this] { addPrimitive(PrimitiveRef::Source); });
+  connect(addVortex_, &QPushButton::clicked, this, [this] { addPrimitive(PrimitiveRef::Vortex); });
+  connect(delete_, &QPushButton::clicked, this, &HairPanel::deleteSelected);
+  connect(list_, &QListWidget::currentRowChanged, this, [this](int row) {
+    if (refreshing_ || !tool_->hasHair()) return;
+    const auto all = primitivesOf(tool_->style());
+    tool_->selectPrimitive(row >= 0 && row < int(all.size()) ? all[row] : PrimitiveRef{});
+  });
+
+  auto* primitiveForm = new QFormLayout;
+  kindLabel_ = new QLabel("-");
+  primitiveForm->addRow(tr("Type"), kindLabel_);
+  strength_ = addSpin(-5.0, 5.0, 0.05, 3);
+  radius_ = addSpin(0.005, 0.5, 0.005, 3);
+  primitiveForm->addRow(tr("Strength"), strength_);
+  primitiveForm->addRow(tr("Radius (m)"), radius_);
+  auto vectorRow = [&](QDoubleSpinBox** spins, double range, const QString& label) {
+    auto* row = new QHBoxLayout;
+    for (int i = 0; i < 3; ++i) {
+      spins[i] = addSpin(-range, range, 0.01, 3);
+      row->addWidget(spins[i]);
+    }
+    primitiveForm->addRow(label, row);
+  };
+  vectorRow(axis_, 1.0, tr("Axis / direction"));
+  vectorRow(position_, 0.6, tr("Position (m, head)"));
+  primitiveLayout->addLayout(primitiveForm);
+  layout->addWidget(primitives);
+
+  connect(strength_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+    editPrimitive(tr("Primitive strength"), kStrength, [&](HairStyle& s) {
+      const PrimitiveRef r = tool_->selectedPrimitive();
+      if (r.kind == PrimitiveRef::Stream) s.primitives.streams[r.index].strength = float(v);
+      if (r.kind == PrimitiveRef::Source) s.primitives.sources[r.index].strength = float(v);
+      if (r.kind == PrimitiveRef::Vortex) s.primitives.vortices[r.index].strength = float(v);
+    });
+  });
+  connect(radius_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+    editPrimitive(tr("Primitive radius"), kRadius, [&](HairStyle& s) {
+      const PrimitiveRef r = tool_->selectedPrimitive();
+      if (r.kind == PrimitiveRef::Source) s.primitives.sources[r.index].radius = float(v);
+      if (r.kind == PrimitiveRef::Vortex) s.primitives.vortices[r.index].radius = float(v);
+    });
+  });
+  for (int i = 0; i < 3; ++i) {
+    connect(axis_[i], &QDoubleSpinBox::valueChanged, this, [this, i](double v) {
+      editPrimitive(tr("Primitive axis"), kAxisX + i, [&](HairStyle& s) {
+        const PrimitiveRef r = tool_->selectedPrimitive();
+        if (r.kind == PrimitiveRef::Stream) s.primitives.streams[r.index].direction[i] = float(v);
+        if (r.kind == PrimitiveRef::Vortex) s.primitives.vortices[r.index].axis[i] = float(v);
+      });
+    });
+    connect(position_[i], &QDoubleSpinBox::valueChanged, this, [this, i](double v) {
+      editPrimitive(tr("Primitive position"), kPosX + i, [&](HairStyle& s) {
+        const PrimitiveRef r = tool_->selectedPrimitive();
+        if (r.kind == PrimitiveRef::Source) s.primitives.sources[r.index].position[i] = float(v);
+        if (r.kind == PrimitiveRef::Vortex) s.primitives.vortices[r.index].position[i] = float(v);
+      });
+    });
+  }
+
+  // Strands
+  auto* strands = new QGroupBox(tr("Strands"));
+  auto* strandForm = new QFormLayout(strands);
+  density_ = addSpin(1.0, 400.0, 5.0, 0);
+  length_ = addSpin(0.02, 1.2, 0.01, 2);
+  clumping_ = addSpin(0.0, 1.0, 0.05, 2);
+  frizz_ = addSpin(0.0, 0.05, 0.001, 3);
+  strandForm->addRow(tr("Density (/cm²)"), density_);
+  strandForm->addRow(tr("Length (m)"), length_);
+  strandForm->addRow(tr("Clumping"), clumping_);
+  strandForm->addRow(tr("Frizz (m)"), frizz_);
+  rootColor_ = new QPushButton;
+  tipColor_ = new QPushButton;
+  auto* colors = new QHBoxLayout;
+  colors->addWidget(rootColor_);
+  colors->addWidget(tipColor_);
+  strandForm->addRow(tr("Colour root / tip"), colors);
+  layout->addWidget(strands);
+  connect(density_, &QDoubleSpinBox::valueChanged, this,
+          [this](double v) { editField(tr("Hair density"), kDensity, [&](HairStyle& s) { s.density = float(v); }); });
+  connect(length_, &QDoubleSpinBox::valueChanged, this,
+          [this](double v) { editField(tr("Hair length"), kLength, [&](HairStyle& s) { s.length = float(v); }); });
+  connect(clumping_, &QDoubleSpinBox::valueChanged, this,
+          [this](double v) { editField(tr("Hair clumping"), kClumping, [&](HairStyle& s) { s.clumping = float(v); }); });
+  connect(frizz_, &QDoubleSpinBox::valueChanged, this,
+          [this](double v) { editField(tr("Hair frizz"), kFrizz, [&](HairStyle& s) { s.frizz = float(v); }); });
+  connect(rootColor_, &QPushButton::clicked, this, [this] { pickColor(true); });
+  connect(tipColor_, &QPushButton::clicked, this, [this] { pickColor(false); });
+
+  // View and dynamics
+  auto* dynamics = new QGroupBox(tr("View and dynamics"));
+  auto* dynamicsLayout = new QVBoxLayout(dynamics);
+  handles_ = new QCheckBox(tr("Show primitive handles"));
+  handles_->setChecked(true);
+  simulate_ = new QCheckBox(tr("Simulate while playing"));
+  bake_ = new QPushButton(tr("Bake clip"));
+  dynamicsLayout->addWidget(handles_);
+  dynamicsLayout->addWidget(simulate_);
+  dynamicsLayout->addWidget(bake_);
+  layout->addWidget(dynamics);
+  connect(handles_, &QCheckBox::toggled, tool_, &HairTool::setHandlesVisible);
+  connect(simulate_, &QCheckBox::toggled, tool_, &HairTool::setSimulating);
+  connect(bake_, &QPushButton::clicked, this, [this] {
+    status_->setText(tool_->bake() ? tr("Baked: the clip plays the simulated hair.") : tr("Bake cancelled."));
+  });
+
+  status_ = new QLabel;
+  status_->setWordWrap(true);
+  layout->addWidget(status_);
+  layout->addStretch(1);
+
+  connect(tool_, &HairTool::styleChanged, this, &HairPanel::refresh);
+  connect(tool_, &HairTool::selectionChanged, this, &HairPanel::refresh);
+  refresh();
+}
+
+QDoubleSpinBox* HairPanel::addSpin(double min, double max, double step, int decimals) {
+  auto* spin = new QDoubleSpinBox;
+  spin->setRange(min, max);
+  spin->setSingleStep(step);
+  spin->setDecimals(decimals);
+  spin->setKeyboardTracking(false);
+  return spin;
+}
+
+void HairPanel::editField(const QString& text, int fieldKey, const std::function<void(HairStyle&)>& change) {
+  if (refreshing_ || !tool_->hasHair()) return;
+  HairStyle after = tool_->style();
+  change(after);
+  if (fieldKey != lastFieldKey_) {
+    lastFieldKey_ = fieldKey;
+    lastMergeKey_ = HairStyleCommand::nextMergeKey();
+  }
+  tool_->editStyle(after, text, lastMergeKey_);
+}
+
+void HairPanel::editPrimitive(const QString& text, int fieldKey, const std::function<void(HairStyle&)>& change) {
+  if (!tool_->selectedPrimitive().valid()) return;
+  editField(text, fieldKey, change);
+}
+
+void HairPanel::addPrimitive(int kind) {
+  if (!tool_->hasHair()) return;
+  HairStyle after = tool_->style();
+  PrimitiveRef ref{PrimitiveRef::Kind(kind), 0};
+  if (kind == PrimitiveRef::Stream) {
+    after.primitives.streams.push_back({});
+    ref.index = int(after.primitives.streams.size()) - 1;
+  } else if (kind == PrimitiveRef::Source) {
+    after.primitives.sources.push_back({glm::vec3(0.0f, 0.05f, 0.12f), 0.3f, 0.05f});
+    ref.index = int(after.primitives.sources.size()) - 1;
+  } else {
+    after.primitives.vortices.push_back({glm::vec3(0.0f, -0.15f, -0.12f), glm::vec3(0.0f, -1.0f, 0.0f), 0.5f, 0.05f});
+    ref.index = int(after.primitives.vortices.size()) - 1;
+  }
+  lastFieldKey_ = 0;
+  tool_->editStyle(after, tr("Add %1").arg(kindName(ref.kind)));
+  tool_->selectPrimitive(ref);
+}
+
+void HairPanel::deleteSelected() {
+  const PrimitiveRef r = tool_->selectedPrimitive();
+  if (!tool_->hasHair() || !r.valid()) return;
+  HairStyle after = tool_->style();
+  if (r.kind == PrimitiveRef::Stream) after.primitives.streams.erase(after.primitives.streams.begin() + r.index);
+  if (r.kind == PrimitiveRef::Source) after.primitives.sources.erase(after.primitives.sources.begin() + r.index);
+  if (r.kind == PrimitiveRef::Vortex) after.primitives.vortices.erase(after.primitives.vortices.begin() + r.index);
+  lastFieldKey_ = 0;
+  tool_->selectPrimitive({});
+  tool_->editStyle(after, tr("Delete %1").arg(kindName(r.kind)));
+}
+
+void HairPanel::pickColor(bool root) {
+  if (!tool_->hasHair()) return;
+  const glm::vec3 current = root ? tool_->style().rootColor : tool_->style().tipColor;
+  const QColor chosen = QColorDialog::getColor(toQColor(current), this, root ? tr("Root colour") : tr("Tip colour"));
+  if (!chosen.isValid()) return;
+  editField(root ? tr("Hair root colour") : tr("Hair tip colour"), root ? kRootColor : kTipColor, [&](HairStyle& s) {
+    (root ? s.rootColor : s.tipColor) = fromQColor(chosen);
+  });
+}
+
+void HairPanel::refresh() {
+  refreshing_ = true;
+  const bool hair = tool_->hasHair();
+  {
+    QSignalBlocker block(styleCombo_);
+    if (!hair) {
+      styleCombo_->setCurrentIndex(0);
+    } else {
+      const int index = styleCombo_->findText(QString::fromStdString(tool_->style().name));
+      styleCombo_->setCurrentIndex(index > 0 ? index : styleCombo_->count() - 1);
+    }
+  }
+  {
+    QSignalBlocker block(list_);
+    list_->clear();
+    if (hair) {
+      const auto all = primitivesOf(tool_->style());
+      int counts[3] = {0, 0, 0};
+      for (const PrimitiveRef& r : all) {
+        list_->addItem(QString("%1 %2").arg(kindName(r.kind)).arg(++counts[r.kind]));
+        if (r == tool_->selectedPrimitive()) list_->setCurrentRow(list_->count() - 1);
+      }
+    }
+  }
+  for (QWidget* w : std::initializer_list<QWidget*>{addStream_, addSource_, addVortex_, density_, length_, clumping_,
+                                                    frizz_, rootColor_, tipColor_, simulate_, bake_})
+    w->setEnabled(hair);
+  delete_->setEnabled(hair && tool_->selectedPrimitive().valid());
+  if (hair) {
+    const HairStyle& s = tool_->style();
+    for (auto [spin, value] : {std::pair{density_, s.density}, std::pair{length_, s.length},
+                               std::pair{clumping_, s.clumping}, std::pair{frizz_, s.frizz}}) {
+      QSignalBlocker block(spin);
+      spin->setValue(value);
+    }
+    paintSwatch(rootColor_, s.rootColor);
+    paintSwatch(tipColor_, s.tipColor);
+    status_->setText(tr("%1 strands, %2 flow primitives").arg(tool_->strandCount()).arg(list_->count()));
+  } else {
+    status_->setText(tool_->lastError().isEmpty() ? tr("No hair: pick a hairstyle.") : tool_->lastError());
+  }
+  refreshPrimitiveFields();
+  refreshing_ = false;
+}
+
+void HairPanel::refreshPrimitiveFields() {
+  const PrimitiveRef r = tool_->selectedPrimitive();
+  const bool valid = tool_->hasHair() && r.valid();
+  float strength = 0.0f, radius = 0.0f;
+  glm::vec3 axis(0.0f), position(0.0f);
+  if (valid) {
+    const FlowPrimitives& p = tool_->style().primitives;
+    if (r.kind == PrimitiveRef::Stream) {
+      strength = p.streams[r.index].strength;
+      axis = p.streams[r.index].direction;
+    } else if (r.kind == PrimitiveRef::Source) {
+      strength = p.sources[r.index].strength;
+      radius = p.sources[r.index].radius;
+      position = p.sources[r.index].position;
+    } else {
+      strength = p.vortices[r.index].strength;
+      radius = p.vortices[r.index].radius;
+      axis = p.vortices[r.index].axis;
+      position = p.vortices[r.index].position;
+    }
+  }
+  kindLabel_->setText(valid ? kindName(r.kind) : QString("-"));
+  auto set = [](QDoubleSpinBox* spin, float value, bool enabled) {
+    QSignalBlocker block(spin);
+    spin->setValue(value);
+    spin->setEnabled(enabled);
+  };
+  set(strength_, strength, valid);
+  set(radius_, radius, valid && r.kind != PrimitiveRef::Stream);
+  for (int i = 0; i < 3; ++i) {
+    set(axis_[i], axis[i], valid && r.kind != PrimitiveRef::Source);
+    set(position_[i], position[i], valid && r.kind != PrimitiveRef::Stream);
+  }
+}
+
+}  // namespace mq::ui

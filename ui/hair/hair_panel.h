@@ -1,0 +1,65 @@
+#pragma once
+// The hair tool's dock: the built-in style, the flow primitives of the style
+// (list with add/delete and the selected one's fields), the strand
+// parameters (density, length, clumping, frizz, colours) and the dynamics
+// (simulate while playing, bake the clip). Every change goes to
+// HairTool::editStyle as an undoable edit; the panel refreshes from the
+// tool's signals.
+
+#include <QWidget>
+
+#include <glm/glm.hpp>
+
+#include "core/hair/hairstyle.h"
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QListWidget;
+class QPushButton;
+
+namespace mq::ui {
+
+class HairTool;
+
+class HairPanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit HairPanel(HairTool* tool, QWidget* parent = nullptr);
+
+  // For tests and scripts.
+  QListWidget* primitiveList() const { return list_; }
+  QComboBox* styleCombo() const { return styleCombo_; }
+
+ private:
+  void refresh();
+  void refreshPrimitiveFields();
+  QDoubleSpinBox* addSpin(double min, double max, double step, int decimals);
+  // Applies `change` to a copy of the style and pushes it (merging with the
+  // previous change of the same field).
+  void editField(const QString& text, int fieldKey, const std::function<void(HairStyle&)>& change);
+  void editPrimitive(const QString& text, int fieldKey, const std::function<void(HairStyle&)>& change);
+  void addPrimitive(int kind);
+  void deleteSelected();
+  void pickColor(bool root);
+
+  HairTool* tool_;
+  QComboBox* styleCombo_;
+  QListWidget* list_;
+  QPushButton *addStream_, *addSource_, *addVortex_, *delete_;
+  QLabel* kindLabel_;
+  QDoubleSpinBox *strength_, *radius_;
+  QDoubleSpinBox* axis_[3];
+  QDoubleSpinBox* position_[3];
+  QDoubleSpinBox *density_, *length_, *clumping_, *frizz_;
+  QPushButton *rootColor_, *tipColor_;
+  QCheckBox *handles_, *simulate_;
+  QPushButton* bake_;
+  QLabel* status_;
+  bool refreshing_ = false;
+  int lastFieldKey_ = 0, lastMergeKey_ = 0;
+};
+
+}  // namespace mq::ui

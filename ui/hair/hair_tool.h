@@ -1,0 +1,134 @@
+#pragma once
+// The editor's hair tool: grooms the document's character with the
+// hairstyle of the scene document's "hair" section, shows the strands
+// (render::HairActor) and the flow primitives' handles in the viewport, and
+// edits the style through undo commands (HairStyleCommand). Dragging a
+// handle regrows the guides live; the children regrow when it is released.
+// Simulate steps the guide dynamics as the timeline moves; Bake simulates the
+// whole clip with a progress dialog and plays it back.
+//
+// It plugs into MainWindow through its extension points: addToolDock() for
+// the panel, the document's signals, sceneView()->addProp(), and an event
+// filter on the viewport for handle drags (clicks elsewhere pass through to
+// the pose tool and the camera).
+
+#include <memory>
+#include <optional>
+
+#include <QObject>
+#include <QPoint>
+
+#include "core/hair/hairstyle.h"
+#include "core/hair/scalp.h"
+#include "sim/hair/hair_bake.h"
+#include "ui/hair/hair_handles.h"
+
+class QDockWidget;
+class QMouseEvent;
+
+namespace mq {
+class HairGroom;
+class HairSimulator;
+namespace render {
+class HairActor;
+}
+}  // namespace mq
+
+namespace mq::ui {
+
+class HairPanel;
+class MainWindow;
+
+class HairTool : public QObject {
+  Q_OBJECT
+
+ public:
+  explicit HairTool(MainWindow* window);
+  ~HairTool() override;
+
+  bool hasHair() const { return style_.has_value(); }
+  // The style being edited (valid when hasHair()).
+  const HairStyle& style() const { return *style_; }
+  size_t strandCount() const;
+  QString lastError() const { return lastError_; }
+
+  // Edits through the undo stack. mergeKey: steps with the same non-zero key
+  // merge into one command (a drag, a spin box); live: guides only.
+  void editStyle(const HairStyle& after, const QString& text, int mergeKey = 0, bool live = false);
+  // A built-in style (hair is created when there is none).
+  void useBuiltinStyle(const QString& name);
+  void removeHair();
+  // Applies a style (nullopt: no hair) without undo (the commands call this).
+  void applyStyle(const std::optional<HairStyle>& style, bool live);
+
+  // Primitive selection (shown by the panel and the handles).
+  PrimitiveRef selectedPrimitive() const { return selected_; }
+  void selectPrimitive(const PrimitiveRef& ref);
+  void setHandlesVisible(bool visible);
+
+  // Dynamics
+  void setSimulating(bool on);
+  bool simulating() const { return simulating_; }
+  // Simulates the current clip; false when cancelled or impossible.
+  bool bake();
+  bool hasBake() const { return bake_.has_value(); }
+
+  HairPanel* panel() const { return panel_; }
+  QDockWidget* dock() const { return dock_; }
+
+ signals:
+  void styleChanged();
+  void selectionChanged();
+  void hairRegrown();
+
+ protected:
+  bool eventFilter(QObject* watched, QEvent* event) override;
+
+ private:
+  void onCharacterReplaced();
+  void onPoseChanged();
+  void loadSection();
+  void storeSection();
+  bool makeGroom();
+  void regrow(const HairStyle& before, const HairStyle& after, bool live);
+  void showStrands(bool guidesOnly);
+  void showPosedStrands();
+  void ensureDynamics();
+  void updateHandles();
+  void invalidateDynamics();
+  glm::vec3 headCenter() const;
+  QPoint toDisplay(const QPointF& position) const;
+  bool onPress(QMouseEvent* event);
+  bool onMove(QMouseEvent* event);
+  bool onRelease(QMouseEvent* event);
+
+  MainWindow* window_;
+  HairPanel* panel_ = nullptr;
+  QDockWidget* dock_ = nullptr;
+  std::unique_ptr<render::HairActor> actor_;
+  std::unique_ptr<HairHandles> handles_;
+  std::unique_ptr<HairGroom> groom_;
+  std::optional<HairStyle> style_;
+  ScalpRegion scalp_;
+  size_t requestedStrands_ = 20000;
+  PrimitiveRef selected_;
+  QString lastError_;
+  bool loading_ = false;  // a section being loaded: not written back
+  bool guidesOnly_ = false;  // the actor shows the guides alone (during a drag)
+
+  // Dynamics
+  std::unique_ptr<HairSimulator> simulator_;
+  std::unique_ptr<HairRig> rig_;
+  std::optional<HairBake> bake_;
+  bool simulating_ = false;
+  float lastTime_ = 0.0f;
+
+  // Handle drag
+  PrimitiveRef dragging_;
+  int dragKey_ = 0;
+  HairStyle dragBefore_;
+  glm::vec3 dragWorld_{0.0f};
+  bool dragMoved_ = false;
+};
+
+}  // namespace mq::ui
