@@ -1,0 +1,159 @@
+#include "core/garment/body_measurements.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+#include "core/character/character.h"
+#include "core/character/posed_character.h"
+#include "core/util/error.h"
+
+namespace mq {
+namespace {
+
+std::string canonical(std::string name) {
+  size_t colon = name.rfind(':');  // "mixamorig:LeftArm"
+  if (colon != std::string::npos) name = name.substr(colon + 1);
+  std::string out;
+  for (char c : name)
+    if (std::isalnum(static_cast<unsigned char>(c))) out += char(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+// Bone names by role; "%" stands for a side: l/r or left/right.
+const std::vector<std::pair<std::string, std::vector<std::string>>>& aliases() {
+  static const std::vector<std::pair<std::string, std::vector<std::string>>> table = {
+      {"pelvis", {"pelvis", "hips", "hip", "root"}},
+      {"spine", {"spine", "spine1", "spine01", "abdomen"}},
+      {"chest", {"chest", "spine2", "spine02", "upperchest", "thorax"}},
+      {"neck", {"neck", "neck1", "neck01"}},
+      {"upperarm", {"upperarm%", "%upperarm", "%arm", "arm%", "upperarm%"}},
+      {"forearm", {"forearm%", "%forearm", "lowerarm%", "%lowerarm"}},
+      {"hand", {"hand%", "%hand"}},
+      {"thigh", {"thigh%", "%thigh", "%upleg", "upperleg%", "%upperleg"}},
+      {"shin", {"shin%", "%shin", "calf%", "%leg", "lowerleg%", "%lowerleg"}},
+      {"foot", {"foot%", "%foot"}},
+  };
+  return table;
+}
+
+int findRoleBone(const Skeleton& skeleton, const std::string& role, int side) {
+  std::vector<std::string> sides = side == 0 ? std::vector<std::string>{"l", "left"} : std::vector<std::string>{"r", "right"};
+  for (const auto& [name, patterns] : aliases()) {
+    if (name != role) continue;
+    for (const std::string& pattern : patterns) {
+      std::vector<std::string> candidates;
+      size_t pct = pattern.find('%');
+      if (pct == std::string::npos) candidates.push_back(pattern);
+      else
+        for (const std::string& s : sides) candidates.push_back(pattern.substr(0, pct) + s + pattern.substr(pct + 1));
+      for (const std::string& candidate : candidates)
+        for (int b = 0; b < skeleton.boneCount(); ++b)
+          if (canonical(skeleton.bone(b).name) == candidate) return b;
+    }
+  }
+  return -1;
+}
+
+struct RestBody {
+  std::vector<glm::mat4> world;
+  std::vector<glm::vec3> positions;  // all meshes
+  std::vector<int> dominantBone;
+};
+
+RestBody restBody(const Character& character) {
+  PosedCharacter rest;
+  rest.evaluate(character, -1, 0.0f, nullptr, nullptr);
+  RestBody body;
+  body.world = rest.worldFromBone();
+  for (size_t m = 0; m < character.meshes.size(); ++m) {
+    const Mesh& mesh = character.meshes[m];
+    const std::vector<float>& p = rest.meshes()[m].positions;
+    const SkinBinding& skin = mesh.skin;
+    for (size_t v = 0; v < mesh.vertexCount(); ++v) {
+      body.positions.push_back({p[3 * v], p[3 * v + 1], p[3 * v + 2]});
+      int bone = mesh.attachBone;
+      float best = 0.0f;
+      for (int i = 0; i < skin.influencesPerVertex; ++i) {
+        float w = skin.weights[v * skin.influencesPerVertex + i];
+        if (w > best) best = w, bone = skin.jointBones[skin.joints[v * skin.influencesPerVertex + i]];
+      }
+      body.dominantBone.push_back(bone);
+    }
+  }
+  return body;
+}
+
+// Ramanujan's approximation of an ellipse's perimeter.
+float ellipsePerimeter(float a, float b) {
+  float h = (a - b) * (a - b) / std::max((a + b) * (a + b), 1e-12f);
+  return float(M_PI) * (a + b) * (1.0f + 3.0f * h / (10.0f + std::sqrt(4.0f - 3.0f * h)));
+}
+
+// Girth of the slice of skin across `axis` at `center`, from the vertices of
+// `bones`: an ellipse through the slice's extents along e1 and e2.
+float girth(const RestBody& body, const std::vector<int>& bones, glm::vec3 center, glm::vec3 axis, glm::vec3 e1) {
+  e1 = glm::normalize(e1 - glm::dot(e1, axis) * axis);
+  glm::vec3 e2 = glm::cross(axis, e1);
+  glm::vec2 lo(1e30f), hi(-1e30f);
+  for (size_t v = 0; v < body.positions.size(); ++v) {
+    if (std::find(bones.begin(), bones.end(), body.dominantBone[v]) == bones.end()) continue;
+    glm::vec3 d = body.positions[v] - center;
+    if (std::abs(glm::dot(d, axis)) > 0.012f) continue;
+    glm::vec2 q(glm::dot(d, e1), glm::dot(d, e2));
+    lo = glm::min(lo, q), hi = glm::max(hi, q);
+  }
+  if (lo.x > hi.x) return 0.0f;
+  return ellipsePerimeter(0.5f * (hi.x - lo.x), 0.5f * (hi.y - lo.y));
+}
+
+}  // namespace
+
+glm::vec3 BodyMeasurements::torsoAxisAt(float y) const {
+  return {0.5f * (pelvis.x + chest.x), y, 0.5f * (pelvis.z + chest.z)};
+}
+
+BodyMeasurements measureBody(const Character& character) {
+  const Skeleton& skeleton = character.skeleton;
+  RestBody body = restBody(character);
+  auto bone = [&](const std::string& role, int side) {
+    int b = findRoleBone(skeleton, role, side);
+    if (b < 0) throw Error("character '" + character.name + "': no bone for the " + role +
+                           (role == "pelvis" || role == "spine" || role == "chest" || role == "neck"
+                                ? std::string()
+                                : side == 0 ? " (left)" : " (right)"));
+    return b;
+  };
+  auto joint = [&](int b) { return glm::vec3(body.world[b][3]); };
+
+  BodyMeasurements m;
+  int pelvis = bone("pelvis", 0), spine = bone("spine", 0), chest = bone("chest", 0), neck = bone("neck", 0);
+  m.pelvis = joint(pelvis), m.waist = joint(spine), m.chest = joint(chest), m.neck = joint(neck);
+  int upperArm[2], thigh[2];
+  for (int s = 0; s < 2; ++s) {
+    upperArm[s] = bone("upperarm", s), thigh[s] = bone("thigh", s);
+    m.shoulder[s] = joint(upperArm[s]), m.elbow[s] = joint(bone("forearm", s)), m.wrist[s] = joint(bone("hand", s));
+    m.hip[s] = joint(thigh[s]), m.knee[s] = joint(bone("shin", s)), m.ankle[s] = joint(bone("foot", s));
+  }
+  glm::vec3 up(0, 1, 0), across(1, 0, 0);
+  float chestY = glm::mix(m.chest.y, m.neck.y, 0.35f);
+  m.chestGirth = girth(body, {chest, spine}, m.torsoAxisAt(chestY), up, across);
+  m.waistGirth = girth(body, {spine, pelvis}, m.torsoAxisAt(m.waist.y), up, across);
+  float hipY = m.hip[0].y - 0.03f;
+  m.hipGirth = girth(body, {pelvis, thigh[0], thigh[1]}, m.torsoAxisAt(hipY), up, across);
+  glm::vec3 armAxis = glm::normalize(m.elbow[0] - m.shoulder[0]);
+  m.upperArmGirth = girth(body, {upperArm[0]}, glm::mix(m.shoulder[0], m.elbow[0], 0.3f), armAxis, {0, 0, 1});
+  glm::vec3 legAxis = glm::normalize(m.knee[0] - m.hip[0]);
+  m.thighGirth = girth(body, {thigh[0]}, glm::mix(m.hip[0], m.knee[0], 0.25f), legAxis, {1, 0, 0});
+  // A skeleton without skin: proportions of the stature (ISO 8559 averages).
+  float stature = std::max(m.neck.y / 0.82f, 1.0f);
+  if (m.chestGirth <= 0.0f) m.chestGirth = 0.55f * stature;
+  if (m.waistGirth <= 0.0f) m.waistGirth = 0.47f * stature;
+  if (m.hipGirth <= 0.0f) m.hipGirth = 0.56f * stature;
+  if (m.upperArmGirth <= 0.0f) m.upperArmGirth = 0.17f * stature;
+  if (m.thighGirth <= 0.0f) m.thighGirth = 0.32f * stature;
+  m.capsules = fitBodyCapsules(character);
+  return m;
+}
+
+}  // namespace mq

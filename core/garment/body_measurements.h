@@ -1,0 +1,33 @@
+#pragma once
+// What a tailor measures, read from a character in its rest pose: joint
+// positions (skeleton rest world transforms, bones found by name with common
+// aliases), girths (ellipses fitted to thin slices of the skin) and the
+// bounding capsules of the body. Index 0 of a pair is the character's left (+X).
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/garment/body_capsules.h"
+
+namespace mq {
+
+struct Character;
+
+struct BodyMeasurements {
+  glm::vec3 pelvis{0.0f}, waist{0.0f}, chest{0.0f}, neck{0.0f};
+  glm::vec3 shoulder[2]{}, elbow[2]{}, wrist[2]{};
+  glm::vec3 hip[2]{}, knee[2]{}, ankle[2]{};
+  float chestGirth = 0.0f, waistGirth = 0.0f, hipGirth = 0.0f;
+  float upperArmGirth = 0.0f, thighGirth = 0.0f;
+  std::vector<BodyCapsule> capsules;
+
+  // The vertical torso axis (through pelvis and chest), as a point at height y.
+  glm::vec3 torsoAxisAt(float y) const;
+};
+
+// Throws mq::Error naming the missing bone when the skeleton lacks one of
+// pelvis, spine, chest, neck, upper arms, forearms, hands, thighs, shins or feet.
+BodyMeasurements measureBody(const Character& character);
+
+}  // namespace mq

@@ -1,0 +1,58 @@
+#pragma once
+// A garment: pattern panels (each with its placement around the body) and the
+// seams that sew them. buildGarmentMesh meshes the panels, pairs the seam
+// vertices and places everything in 3D: the cloth solver's input.
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/garment/panel.h"
+#include "core/garment/seam.h"
+#include "core/mesh/mesh.h"
+
+namespace mq {
+
+// How a built-in garment was made, so an editor can change a measurement and
+// rebuild it (see parametric_garments.h). Empty type: hand-made panels.
+struct ParametricRecipe {
+  std::string type;
+  std::map<std::string, float> parameters;
+};
+
+struct Garment {
+  std::string name;
+  std::vector<Panel> panels;
+  std::vector<Seam> seams;
+  std::string fabric = "cotton";    // a fabric preset name
+  float targetEdgeLength = 0.02f;   // metres
+  ParametricRecipe recipe;
+
+  int findPanel(const std::string& panelName) const;  // -1 if absent
+  // Throws mq::Error naming the garment and the problem: invalid panels,
+  // duplicate panel names, seams naming unknown panels or edges, an edge in
+  // two seams, a seam sewing an edge to itself.
+  void validate() const;
+};
+
+// The meshed, placed garment: one triangle mesh over all panels.
+struct GarmentMesh {
+  std::vector<float> positions;      // 3 per vertex: world space around the rest-pose body
+  std::vector<float> restUvs;        // 2 per vertex: pattern coordinates in metres
+  std::vector<uint32_t> triangles;   // 3 per triangle, facing outwards
+  std::vector<uint16_t> panelIds;    // per vertex: index into Garment::panels
+  std::vector<VertexPair> seamPairs; // vertices to sew together
+  std::vector<uint32_t> panelFirstVertex;  // per panel: its first vertex (panels are contiguous)
+
+  size_t vertexCount() const { return positions.size() / 3; }
+  size_t triangleCount() const { return triangles.size() / 3; }
+  glm::vec3 position(size_t v) const { return {positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]}; }
+  // A renderable mesh: positions, normals, and the rest UVs as texture coordinates.
+  Mesh toMesh() const;
+};
+
+// Throws mq::Error (from validate or the mesher) when the garment is invalid.
+GarmentMesh buildGarmentMesh(const Garment& garment);
+
+}  // namespace mq

@@ -1,0 +1,34 @@
+#pragma once
+// JSON (de)serialisation of garments for the scene document's "garments"
+// section (an array of garment objects):
+//   { "name": "T-shirt", "fabric": "cotton", "targetEdgeLength": 0.02,
+//     "recipe": { "type": "tshirt", "parameters": { "length": 0.66, ... } },
+//     "panels": [ { "name": "front", "corners": [[u, v], ...],
+//                   "edges": [ { "name": "hem", "shape": "line" },
+//                              { "name": "neck", "shape": "cubic", "controls": [[u, v], [u, v]] }, ... ],
+//                   "placement": { "shape": "cylinder", "bone": "spine", "center": [x, y, z],
+//                                  "axis": [x, y, z], "facing": [x, y, z], "radius": 0.2,
+//                                  "anchor": [u, v] } }, ... ],
+//     "seams": [ { "a": ["front", "side_l"], "b": ["back", "side_l"], "reversed": true }, ... ] }
+// Pattern coordinates are metres. "recipe" is optional (hand-made panels).
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "core/garment/garment.h"
+
+namespace mq {
+
+nlohmann::json garmentToJson(const Garment& garment);
+nlohmann::json garmentsToJson(const std::vector<Garment>& garments);
+
+// Throw mq::Error naming the JSON path of the bad value (e.g.
+// "garments[0].panels[1].corners[2]: expected [u, v]") and what was expected;
+// the result is validated (Garment::validate).
+Garment garmentFromJson(const nlohmann::json& json, const std::string& path = "garment");
+// A null or missing section gives no garments.
+std::vector<Garment> garmentsFromJson(const nlohmann::json& json, const std::string& path = "garments");
+
+}  // namespace mq

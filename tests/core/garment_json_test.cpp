@@ -1,0 +1,113 @@
+// Garments in the scene document's "garments" section.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "core/garment/garment_json.h"
+#include "core/util/error.h"
+
+namespace mq {
+namespace {
+
+Garment sample() {
+  Garment g;
+  g.name = "apron";
+  g.fabric = "denim";
+  g.targetEdgeLength = 0.03f;
+  g.recipe = {"custom", {{"width", 0.5f}}};
+  Panel front;
+  front.name = "front";
+  front.addLine("hem", {-0.25f, 0});
+  front.addQuadratic("side_l", {0.25f, 0}, {0.3f, 0.3f});
+  front.addCubic("top", {0.2f, 0.6f}, {0.1f, 0.5f}, {-0.1f, 0.5f});
+  front.addLine("side_r", {-0.2f, 0.6f});
+  front.placement.shape = PanelPlacement::Shape::Cylinder;
+  front.placement.bone = "spine";
+  front.placement.center = {0.0f, 1.1f, 0.01f};
+  front.placement.radius = 0.21f;
+  front.placement.anchor = {0.0f, 0.6f};
+  Panel back = front;
+  back.name = "back";
+  back.placement.facing = {0, 0, -1};
+  g.panels = {front, back};
+  g.seams = {{"front", "side_l", "back", "side_r", true}, {"front", "side_r", "back", "side_l", false}};
+  return g;
+}
+
+TEST(GarmentJson, RoundTripKeepsEverything) {
+  Garment g = sample();
+  nlohmann::json j = garmentsToJson({g});
+  // Through text, as the scene document stores it.
+  std::vector<Garment> back = garmentsFromJson(nlohmann::json::parse(j.dump(2)));
+  ASSERT_EQ(back.size(), 1u);
+  const Garment& r = back[0];
+  EXPECT_EQ(r.name, g.name);
+  EXPECT_EQ(r.fabric, "denim");
+  EXPECT_FLOAT_EQ(r.targetEdgeLength, 0.03f);
+  EXPECT_EQ(r.recipe.type, "custom");
+  EXPECT_FLOAT_EQ(r.recipe.parameters.at("width"), 0.5f);
+  ASSERT_EQ(r.panels.size(), 2u);
+  for (size_t p = 0; p < 2; ++p) {
+    const Panel &a = g.panels[p], &b = r.panels[p];
+    EXPECT_EQ(a.name, b.name);
+    ASSERT_EQ(a.corners.size(), b.corners.size());
+    for (size_t i = 0; i < a.corners.size(); ++i) {
+      EXPECT_EQ(a.corners[i], b.corners[i]);
+      EXPECT_EQ(a.edges[i].name, b.edges[i].name);
+      EXPECT_EQ(a.edges[i].shape, b.edges[i].shape);
+      EXPECT_EQ(a.edges[i].control[0], b.edges[i].control[0]);
+      EXPECT_EQ(a.edges[i].control[1], b.edges[i].control[1]);
+    }
+    EXPECT_EQ(a.placement.shape, b.placement.shape);
+    EXPECT_EQ(a.placement.bone, b.placement.bone);
+    EXPECT_EQ(a.placement.center, b.placement.center);
+    EXPECT_EQ(a.placement.facing, b.placement.facing);
+    EXPECT_FLOAT_EQ(a.placement.radius, b.placement.radius);
+    EXPECT_EQ(a.placement.anchor, b.placement.anchor);
+  }
+  ASSERT_EQ(r.seams.size(), 2u);
+  EXPECT_EQ(r.seams[1].edgeB, "side_l");
+  EXPECT_FALSE(r.seams[1].reversed);
+  // Serialising again gives the same JSON.
+  EXPECT_EQ(garmentsToJson(back), j);
+}
+
+TEST(GarmentJson, MissingSectionIsNoGarments) { EXPECT_TRUE(garmentsFromJson(nlohmann::json()).empty()); }
+
+std::string errorOf(const nlohmann::json& j) {
+  try {
+    garmentsFromJson(j);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(GarmentJson, MalformedGarmentsGiveErrorsNamingThePlace) {
+  nlohmann::json good = garmentsToJson({sample()});
+  nlohmann::json j = good;
+  j[0]["panels"][1]["corners"][2] = {1.0, "x"};
+  EXPECT_EQ(errorOf(j), "garments[0].panels[1].corners[2]: expected [u, v] (two numbers)");
+  j = good;
+  j[0]["panels"][0]["edges"][1]["shape"] = "spline";
+  EXPECT_EQ(errorOf(j), "garments[0].panels[0].edges[1].shape: unknown edge shape 'spline' (line, quadratic or cubic)");
+  j = good;
+  j[0]["panels"][0]["edges"][2]["controls"].erase(1);
+  EXPECT_EQ(errorOf(j), "garments[0].panels[0].edges[2].controls: a cubic edge needs 2 control point(s), got 1");
+  j = good;
+  j[0].erase("panels");
+  EXPECT_EQ(errorOf(j), "garments[0]: missing \"panels\"");
+  j = good;
+  j[0]["seams"][0]["b"] = {"back", "collar"};
+  EXPECT_NE(errorOf(j).find("unknown edge 'collar'"), std::string::npos) << errorOf(j);
+  j = good;
+  j[0]["panels"][0]["edges"].erase(0);
+  EXPECT_EQ(errorOf(j), "garments[0].panels[0].edges: has 3 edges for 4 corners (one edge leaves each corner)");
+  j = good;
+  j[0]["panels"][0]["placement"]["radius"] = -1;
+  EXPECT_EQ(errorOf(j), "garments[0].panels[0].placement.radius: must be positive");
+  EXPECT_EQ(errorOf(nlohmann::json::object()), "garments: expected an array");
+}
+
+}  // namespace
+}  // namespace mq
