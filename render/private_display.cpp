@@ -73,6 +73,9 @@ class PrivateXvfb {
   }
   ~PrivateXvfb() { stop(); }
   const std::string& display() const { return display_; }
+  // A forked child inherits this object but not the server: only the
+  // process that started Xvfb may stop it.
+  bool ownedByThisProcess() const { return owner_ == getpid(); }
 
  private:
   [[noreturn]] static void runXvfb(const std::string& xvfb, int readEnd, int writeEnd) {
@@ -91,13 +94,14 @@ class PrivateXvfb {
   }
 
   void stop() {
-    if (pid_ <= 0) return;
+    if (pid_ <= 0 || !ownedByThisProcess()) return;
     kill(pid_, SIGTERM);
     waitpid(pid_, nullptr, 0);
     pid_ = -1;
   }
 
   pid_t pid_ = -1;
+  pid_t owner_ = getpid();
   std::string display_;
 };
 
@@ -109,7 +113,12 @@ std::unique_ptr<PrivateXvfb> privateServer;  // lives until the process exits
 std::string ensureDisplay() {
   std::lock_guard lock(displayMutex);
   const char* current = std::getenv("DISPLAY");
-  if (privateServer || displayAnswers(current)) return current ? current : "";
+  if (privateServer && !privateServer->ownedByThisProcess()) (void)privateServer.release();  // the parent's
+  if (displayAnswers(current)) return current;
+  if (privateServer) {  // DISPLAY was changed since: point it back at ours
+    setenv("DISPLAY", privateServer->display().c_str(), 1);
+    return privateServer->display();
+  }
   const std::string xvfb = findInPath("Xvfb");
   if (xvfb.empty())
     throw Error(std::string(current && *current ? "the X display " + std::string(current) + " does not answer"

@@ -22,9 +22,9 @@
 #include "core/character/character.h"
 #include "core/character/posed_character.h"
 #include "render/ground.h"
-#include "render/materials.h"
 #include "render/skeleton_overlay.h"
 #include "render/studio.h"
+#include "render/surface_shading.h"
 
 namespace mq::render {
 namespace {
@@ -37,6 +37,12 @@ struct MeshActor {
   vtkSmartPointer<vtkFloatArray> normals;
   std::vector<uint32_t> triangles;  // for normals when the posed mesh has none
 };
+
+// Meshes without a colour of their own (the default grey) get the mannequin's wood.
+SurfaceLook defaultLookFor(const Mesh& mesh) {
+  const glm::vec3& c = mesh.baseColor;
+  return c == glm::vec3(0.8f) ? SurfaceLook::mannequin() : SurfaceLook::plain(c);
+}
 
 MeshActor makeMeshActor(const Mesh& mesh) {
   MeshActor m;
@@ -61,12 +67,12 @@ MeshActor makeMeshActor(const Mesh& mesh) {
   m.polyData->SetPolys(cells);
   m.polyData->GetPointData()->SetNormals(m.normals);
 
-  vtkNew<vtkOpenGLPolyDataMapper> mapper;
+  vtkSmartPointer<vtkOpenGLPolyDataMapper> mapper = vtkSmartPointer<vtkOpenGLPolyDataMapper>::Take(newSurfaceMapper());
   mapper->SetInputData(m.polyData);
   mapper->ScalarVisibilityOff();
   m.actor = vtkSmartPointer<vtkActor>::New();
   m.actor->SetMapper(mapper);
-  applyMannequinMaterial(m.actor, mesh.baseColor);
+  applySurfaceLook(m.actor, defaultLookFor(mesh));
   return m;
 }
 
@@ -138,6 +144,10 @@ void SceneView::setCharacter(const Character& character) {
   m.skeleton.setSkeleton(character.skeleton, std::max(0.008f * std::max(height, m.bounds.diagonal() * 0.5f), 1e-4f));
   m.skeleton.update(rest.worldFromBone());
   m.ground.fit(m.bounds, footprintOf(m.meshes, m.bounds));
+}
+
+void SceneView::setSurfaceLook(const SurfaceLook& look) {
+  for (MeshActor& mesh : impl_->meshes) applySurfaceLook(mesh.actor, look);
 }
 
 void SceneView::updatePose(const PosedCharacter& posed) {

@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include "core/mesh/mesh.h"
+#include "render/surface_shading.h"
 
 class vtkActor;
 class vtkProp;
@@ -37,6 +38,9 @@ class SceneView {
   // Character
   // Builds one actor per mesh and the skeleton overlay, shown in the rest pose.
   void setCharacter(const Character& character);
+  // Shades every mesh with `look` (setCharacter gives the mannequin look to
+  // meshes without a colour of their own, a plain look to the others).
+  void setSurfaceLook(const SurfaceLook& look);
   // Copies the posed positions and normals into the actors' arrays.
   void updatePose(const PosedCharacter& posed);
   // World-space bounds of the character as last posed (invalid when empty).

@@ -27,8 +27,8 @@ void addCameraLight(vtkRenderer* renderer, double x, double y, double z, double 
 void addThreePointLights(vtkRenderer* renderer) {
   renderer->AutomaticLightCreationOff();
   renderer->RemoveAllLights();
-  addCameraLight(renderer, -0.9, 0.9, 0.9, 1.00, 0.95, 0.88, 0.85);  // key: warm, upper left
-  addCameraLight(renderer, 1.0, 0.0, 0.7, 0.80, 0.88, 1.00, 0.30);   // fill: cool, right, low
+  addCameraLight(renderer, -0.9, 0.8, 0.8, 1.00, 0.95, 0.88, 1.00);  // key: warm, upper left
+  addCameraLight(renderer, 1.0, 0.0, 0.7, 0.80, 0.88, 1.00, 0.22);   // fill: cool, right, low
   addCameraLight(renderer, 1.0, 0.5, -0.6, 1.00, 1.00, 1.00, 1.00);  // rim: behind, upper right
   addCameraLight(renderer, -1.0, 0.3, -0.6, 0.85, 0.90, 1.00, 0.60); // second rim, left
 }

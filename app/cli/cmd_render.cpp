@@ -27,6 +27,13 @@ ImageSize parseSize(const std::string& text) {
   return size;
 }
 
+render::SurfaceLook parseLook(const std::string& name) {
+  if (name == "mannequin") return render::SurfaceLook::mannequin();
+  if (name == "skin") return render::SurfaceLook::skin({0.87f, 0.67f, 0.55f});
+  if (name == "plain") return render::SurfaceLook::plain({0.8f, 0.8f, 0.8f});
+  throw Error("--look expects mannequin, skin or plain, got '" + name + "'");
+}
+
 int chooseClip(const Args& args, const LoadedScene& scene, const std::string& file) {
   if (!args.has("--clip")) return scene.clipIndex;
   const std::string wanted = args.option("--clip");
@@ -44,7 +51,7 @@ void placeCamera(render::SceneView& view, const ViewSettings& settings, const Im
 
 int runRender(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--out", "--time", "--clip", "--size", "--skeleton"});
+  args.allowOnly({"--out", "--time", "--clip", "--size", "--skeleton", "--look"});
   if (args.positional().size() != 1) throw Error("expects one FILE (or 'default'); see mannequin-cli --help");
   const std::string file = args.positional()[0];
   const std::string out = args.option("--out");
@@ -61,6 +68,7 @@ int runRender(const std::vector<std::string>& argv) {
   render::SceneView view;
   view.setCharacter(scene.character);
   view.updatePose(posed);
+  if (args.has("--look")) view.setSurfaceLook(parseLook(args.option("--look")));
   view.setSkeletonVisible(args.has("--skeleton") || scene.document.view.showSkeleton);
   placeCamera(view, scene.document.view, size);
   render::renderToPng(view, out, size.width, size.height);
@@ -71,7 +79,8 @@ int runRender(const std::vector<std::string>& argv) {
   return 0;
 }
 
-Registration reg({"render", "FILE --out OUT.png [--time T] [--clip NAME|INDEX] [--size WxH] [--skeleton]",
+Registration reg({"render", "FILE --out OUT.png [--time T] [--clip NAME|INDEX] [--size WxH] [--skeleton]\n"
+                  "         [--look mannequin|skin|plain]",
                   "renders an image offscreen (starts a private Xvfb when there is no X display)", runRender});
 
 }  // namespace

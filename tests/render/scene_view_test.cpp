@@ -131,6 +131,60 @@ TEST_F(SceneViewTest, DefaultMannequinArmRaiseChangesTheImage) {
   EXPECT_GT(test::compareImages(rest, renderer.capture()).changedFraction, 0.01);
 }
 
+// Mean brightness of the outermost `depth` pixels on each row's right-hand
+// silhouette (the main rim light is behind the figure, to the viewer's right),
+// and of the pixels 6..8 further in.
+std::pair<double, double> rightEdgeBrightness(const render::RgbImage& image, const render::RgbImage& empty) {
+  double edge = 0.0, inside = 0.0;
+  int rows = 0;
+  auto brightness = [&](int x, int y) { return (image.at(x, y)[0] + image.at(x, y)[1] + image.at(x, y)[2]) / 3.0; };
+  for (int y = 0; y < image.height; ++y) {
+    int right = -1;
+    for (int x = image.width - 1; x >= 0 && right < 0; --x)
+      if (std::abs(image.at(x, y)[1] - empty.at(x, y)[1]) > 24) right = x;
+    if (right < 12) continue;
+    edge += (brightness(right, y) + brightness(right - 1, y)) / 2.0;
+    inside += (brightness(right - 6, y) + brightness(right - 7, y) + brightness(right - 8, y)) / 3.0;
+    ++rows;
+  }
+  return {rows ? edge / rows : 0.0, rows ? inside / rows : 0.0};
+}
+
+TEST_F(SceneViewTest, RimLightBrightensTheSilhouette) {
+  show(test::makeTestFigure());
+  render::OffscreenRenderer renderer(view, kWidth, kHeight);
+  const render::RgbImage empty = background(renderer, 1);
+  render::SurfaceLook look = render::SurfaceLook::mannequin();
+  const auto [edgeWithRim, insideWithRim] = rightEdgeBrightness(renderer.capture(), empty);
+  look.rim = 0.0f;
+  view.setSurfaceLook(look);
+  const auto [edgeWithout, insideWithout] = rightEdgeBrightness(renderer.capture(), empty);
+  // The rim lights the outline and leaves the inside nearly alone.
+  EXPECT_GT(edgeWithRim - edgeWithout, 15.0);
+  EXPECT_LT(insideWithRim - insideWithout, 0.5 * (edgeWithRim - edgeWithout));
+  EXPECT_GT(edgeWithRim, insideWithRim);
+}
+
+TEST_F(SceneViewTest, SkinLookScattersWarmLightPastTheTerminator) {
+  show(test::makeTestFigure());
+  render::OffscreenRenderer renderer(view, kWidth, kHeight);
+  const render::RgbImage empty = background(renderer, 1);
+  view.setSurfaceLook(render::SurfaceLook::plain({0.87f, 0.67f, 0.55f}));
+  const render::RgbImage plain = renderer.capture();
+  view.setSurfaceLook(render::SurfaceLook::skin({0.87f, 0.67f, 0.55f}));
+  const render::RgbImage skin = renderer.capture();
+  // Over the figure, the skin look adds light, and more red than blue.
+  double red = 0.0, blue = 0.0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      if (std::abs(plain.at(x, y)[1] - empty.at(x, y)[1]) <= 24) continue;
+      red += skin.at(x, y)[0] - plain.at(x, y)[0];
+      blue += skin.at(x, y)[2] - plain.at(x, y)[2];
+    }
+  EXPECT_GT(red, 0.0);
+  EXPECT_GT(red, 1.5 * blue);
+}
+
 TEST_F(SceneViewTest, SkeletonOverlayShowsThroughTheBody) {
   show(test::makeTestFigure());
   render::OffscreenRenderer renderer(view, kWidth, kHeight);

@@ -1,0 +1,134 @@
+#include "render/surface_shading.h"
+
+#include <vtkActor.h>
+#include <vtkObjectFactory.h>
+#include <vtkOpenGLPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkShaderProperty.h>
+#include <vtkUniforms.h>
+
+#include "render/view_lights.h"
+
+namespace mq::render {
+namespace {
+
+// Runs after VTK's own lighting (the tag stays first) and replaces its result.
+const char* kSurfaceLight = R"(//VTK::Light::Impl
+  {
+    vec3 N = normalize(normalVCVSOutput);
+    vec3 V = normalize(-vertexVC.xyz);
+    float NdV = clamp(dot(N, V), 0.0, 1.0);
+    vec3 albedo = pow(mqAlbedo, vec3(2.2));
+    vec3 scatterTint = pow(mqScatterColour, vec3(2.2));
+    // Hemisphere ambient: cool sky above, warm floor bounce below.
+    float skyward = 0.5 + 0.5 * dot(N, mqUpVC);
+    vec3 colour = mqAmbient * albedo * mix(vec3(0.10, 0.085, 0.07), vec3(0.20, 0.23, 0.28), skyward);
+    vec3 rimLight = vec3(0.0);
+    for (int i = 0; i < mqLightCount; ++i) {
+      vec3 L = mqLightDirVC[i];
+      vec3 C = mqLightColour[i];
+      float NdL = dot(N, L);
+      float lambert = max(NdL, 0.0);
+      // Subsurface scattering, approximated: light wraps past the terminator
+      // and what arrives there has travelled under the skin, so it is tinted.
+      float wrapped = max((NdL + mqWrap) / (1.0 + mqWrap), 0.0);
+      vec3 diffuse = vec3(lambert) + mqScatter * scatterTint * (wrapped - lambert);
+      // Translucency: back light seen through thin parts.
+      float through = pow(clamp(dot(V, -normalize(L + 0.3 * N)), 0.0, 1.0), 6.0);
+      diffuse += mqTranslucency * through * scatterTint;
+      // Gloss: normalised Blinn-Phong, brighter at grazing angles (Fresnel).
+      vec3 H = normalize(L + V);
+      float NdH = max(dot(N, H), 0.0);
+      float fresnel = 1.0 + 4.0 * pow(1.0 - clamp(dot(H, V), 0.0, 1.0), 5.0);
+      float gloss = mqSpecular * fresnel * (mqGlossiness + 8.0) / 8.0 * pow(NdH, mqGlossiness) * lambert;
+      // Lights from behind mostly outline the silhouette (the rim term
+      // below) rather than flood the sides they face.
+      float behind = clamp(0.25 - dot(L, V), 0.0, 1.0);
+      colour += C * (albedo * diffuse * (1.0 - 0.6 * behind) + vec3(gloss));
+      rimLight += C * behind * smoothstep(-0.2, 0.4, NdL);
+    }
+    float rimShape = pow(1.0 - NdV, mqRimPower);
+    colour += mqRim * rimShape * rimLight * mix(vec3(1.0), albedo / max(albedo.r, 1e-3), 0.35);
+    gl_FragData[0] = vec4(pow(mqExposure * colour, vec3(1.0 / 2.2)), opacity);
+  }
+)";
+
+class SurfaceMapper : public vtkOpenGLPolyDataMapper {
+ public:
+  static SurfaceMapper* New();
+  vtkTypeMacro(SurfaceMapper, vtkOpenGLPolyDataMapper);
+
+  void RenderPiece(vtkRenderer* renderer, vtkActor* actor) override {
+    const ViewLights lights = gatherViewLights(renderer);
+    vtkUniforms* u = actor->GetShaderProperty()->GetFragmentCustomUniforms();
+    u->SetUniformi("mqLightCount", lights.count);
+    u->SetUniform3fv("mqLightDirVC", ViewLights::kMax, lights.towardLightVC);
+    u->SetUniform3fv("mqLightColour", ViewLights::kMax, lights.colour);
+    u->SetUniform3f("mqUpVC", lights.upVC);
+    vtkOpenGLPolyDataMapper::RenderPiece(renderer, actor);
+  }
+};
+vtkStandardNewMacro(SurfaceMapper);
+
+void setUniform3(vtkUniforms* u, const char* name, const glm::vec3& v) {
+  const float values[3] = {v.x, v.y, v.z};
+  u->SetUniform3f(name, values);
+}
+
+}  // namespace
+
+SurfaceLook SurfaceLook::mannequin() { return SurfaceLook{}; }
+
+SurfaceLook SurfaceLook::skin(const glm::vec3& albedo) {
+  SurfaceLook look;
+  look.albedo = albedo;
+  look.wrap = 0.5f;
+  look.scatterColour = {1.0f, 0.42f, 0.3f};
+  look.scatter = 0.6f;
+  look.translucency = 0.35f;
+  look.specular = 0.18f;
+  look.glossiness = 40.0f;
+  look.rim = 1.0f;
+  look.rimPower = 2.5f;
+  return look;
+}
+
+SurfaceLook SurfaceLook::plain(const glm::vec3& albedo) {
+  SurfaceLook look;
+  look.albedo = albedo;
+  look.wrap = 0.0f;
+  look.scatter = 0.0f;
+  return look;
+}
+
+vtkOpenGLPolyDataMapper* newSurfaceMapper() { return SurfaceMapper::New(); }
+
+void applySurfaceLook(vtkActor* actor, const SurfaceLook& look) {
+  vtkProperty* p = actor->GetProperty();
+  p->SetInterpolationToPhong();
+  p->SetColor(look.albedo.x, look.albedo.y, look.albedo.z);  // for renderers without the shader
+  vtkShaderProperty* sp = actor->GetShaderProperty();
+  sp->ClearAllFragmentShaderReplacements();
+  sp->AddFragmentShaderReplacement("//VTK::Light::Impl", true, kSurfaceLight, false);
+  vtkUniforms* u = sp->GetFragmentCustomUniforms();
+  setUniform3(u, "mqAlbedo", look.albedo);
+  setUniform3(u, "mqScatterColour", look.scatterColour);
+  u->SetUniformf("mqAmbient", look.ambient);
+  u->SetUniformf("mqWrap", look.wrap);
+  u->SetUniformf("mqScatter", look.scatter);
+  u->SetUniformf("mqTranslucency", look.translucency);
+  u->SetUniformf("mqSpecular", look.specular);
+  u->SetUniformf("mqGlossiness", look.glossiness);
+  u->SetUniformf("mqRim", look.rim);
+  u->SetUniformf("mqRimPower", look.rimPower);
+  u->SetUniformf("mqExposure", look.exposure);
+  // Declared before the first frame so the first shader compiles with them.
+  const ViewLights none;
+  u->SetUniformi("mqLightCount", 0);
+  u->SetUniform3fv("mqLightDirVC", ViewLights::kMax, none.towardLightVC);
+  u->SetUniform3fv("mqLightColour", ViewLights::kMax, none.colour);
+  u->SetUniform3f("mqUpVC", none.upVC);
+}
+
+}  // namespace mq::render
