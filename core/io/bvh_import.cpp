@@ -160,13 +160,17 @@ class BvhParser {
   void parseMotion() {
     expect("Frames:");
     const float frames = number();
+    --pos_;  // problems with the count point at its own line
     if (frames < 1 || frames != std::floor(frames)) fail("Frames must be a positive whole number");
+    if (frames > 1e8f) fail("implausible frame count " + std::to_string(static_cast<long long>(frames)));
+    ++pos_;
     data_.frames = static_cast<int>(frames);
     expect("Frame");
     expect("Time:");
     data_.frameTime = number();
     if (!(data_.frameTime > 0.0f)) fail("Frame Time must be positive");
-    data_.values.reserve(size_t(data_.frames) * data_.channelCount);
+    // Reserve by what the file holds, not by what it declares.
+    data_.values.reserve(std::min(size_t(data_.frames) * data_.channelCount, tokens_.size() - pos_));
     for (int f = 0; f < data_.frames; ++f) {
       if (pos_ >= tokens_.size()) fail("file ends after " + std::to_string(f) + " of " + std::to_string(data_.frames) + " frames");
       const int line = tokens_[pos_].line;

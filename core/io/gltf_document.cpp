@@ -222,6 +222,8 @@ Document::RawAccessor Document::describe(int accessor) const {
     fail("accessor " + std::to_string(accessor) + " has an unknown type or component type");
   const size_t elementSize = size_t(raw.components) * componentSize;
   raw.stride = elementSize;
+  constexpr size_t kMaxElements = size_t(1) << 28;  // far beyond any real asset; guards the allocation
+  if (raw.count > kMaxElements) fail("accessor " + std::to_string(accessor) + " has an implausible count");
   if (!a.contains("bufferView")) return raw;
 
   const int viewIndex = a["bufferView"].get<int>();

@@ -170,6 +170,14 @@ TEST(Bvh, MalformedFilesNameTheLine) {
                             "HIERARCHY\nROOT Hips\n{\n OFFSET 0 0 0\n CHANNELS 3 Zrotation Xrotation Yrotation\n}\n"
                             "MOTION\nFrames: 2\nFrame Time: 0.1\n1 2 3\n4 5\n"),
                   "line 11: frame 1 has 2 values, expected 3");
+  expectFileError(writeTemp("huge_frames.bvh",
+                            "HIERARCHY\nROOT Hips\n{\n OFFSET 0 0 0\n CHANNELS 3 Zrotation Xrotation Yrotation\n}\n"
+                            "MOTION\nFrames: 4000000000\nFrame Time: 0.1\n1 2 3\n"),
+                  "line 8: implausible frame count");
+  expectFileError(writeTemp("few_frames.bvh",
+                            "HIERARCHY\nROOT Hips\n{\n OFFSET 0 0 0\n CHANNELS 3 Zrotation Xrotation Yrotation\n}\n"
+                            "MOTION\nFrames: 40000\nFrame Time: 0.1\n1 2 3\n"),
+                  "file ends after 1 of 40000 frames");
   const std::string cmu = loadFileText(kMotion + "cmu_01_01.bvh");
   expectFileError(writeTemp("truncated.bvh", cmu.substr(0, cmu.size() / 2)), "frame");
   expectFileError(tempPath("missing.bvh"), "no such file");

@@ -89,6 +89,9 @@ TEST(ImportErrors, GltfWithBadReferences) {
   expectFileError(writeTemp("badmesh.gltf", R"({"asset": {"version": "2.0"}, "nodes": [{"mesh": 3}]})"));
   expectFileError(writeTemp("cycle.gltf", R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}],
                                               "nodes": [{"children": [1]}, {"children": [0]}]})"));
+  expectFileError(writeTemp("hugecount.gltf", R"({"asset": {"version": "2.0"},
+      "accessors": [{"componentType": 5126, "count": 9000000000000, "type": "VEC3"}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}], "nodes": [{"mesh": 0}]})"));
   expectFileError(writeTemp("badaccessor.gltf", R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 4,
       "uri": "data:application/octet-stream;base64,AAAAAA=="}], "bufferViews": [{"buffer": 0, "byteLength": 4}],
       "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}],
