@@ -405,6 +405,22 @@ void MainWindow::setBusy(bool busy, const QString& message) {
   statusBar()->showMessage(message, busy ? 0 : 8000);
 }
 
+void MainWindow::showProgress(const QString& message, int percent) {
+  if (percent < 0) progress_->setRange(0, 0);
+  else {
+    progress_->setRange(0, 100);
+    progress_->setValue(percent);
+  }
+  progress_->setVisible(true);
+  statusBar()->showMessage(message);
+}
+
+void MainWindow::hideProgress(const QString& message) {
+  progress_->setVisible(busy_);
+  if (message.isEmpty()) statusBar()->clearMessage();
+  else statusBar()->showMessage(message, 8000);
+}
+
 void MainWindow::openFile(const QString& fileOrDefault) {
   if (busy_) return;
   const bool motion = isMotionFile(fileOrDefault);

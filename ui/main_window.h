@@ -66,6 +66,11 @@ class MainWindow : public QMainWindow {
   void frameAll();
   void setSkeletonVisible(bool visible);
 
+  // Progress of long work in the status bar (bakes, simulations): percent
+  // 0..100, or -1 for a busy indicator. Tools call hideProgress when done.
+  void showProgress(const QString& message, int percent = -1);
+  void hideProgress(const QString& message = QString());
+
   // How errors and questions reach the user (message boxes by default;
   // tests replace them).
   std::function<void(const QString& title, const QString& message)> reportError;

@@ -12,7 +12,9 @@
 #include <QApplication>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QMimeData>
 #include <QMouseEvent>
+#include <QWheelEvent>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QComboBox>
@@ -233,6 +235,51 @@ class EditorSmokeTest : public QObject {
     const glm::quat expectedWorld = glm::angleAxis(0.7f, axis) * world;
     const glm::quat gotWorld = world * glm::inverse(edit) * after;
     QVERIFY(std::abs(std::abs(glm::dot(expectedWorld, gotWorld)) - 1.0f) < 1e-5f);
+  }
+
+  void dragOrbitsAndWheelZooms() {
+    doc()->selectBone(-1);
+    window_->frameAll();
+    renderNow();
+    const glm::vec3 eye = window_->sceneView()->cameraPosition();
+    QWidget* viewport = window_->viewport();
+    const QPoint start(40, viewport->height() / 2);
+    sendMouse(viewport, QEvent::MouseButtonPress, start, Qt::LeftButton, Qt::LeftButton);
+    for (int i = 1; i <= 5; ++i)
+      sendMouse(viewport, QEvent::MouseMove, start + QPoint(20 * i, 0), Qt::NoButton, Qt::LeftButton);
+    sendMouse(viewport, QEvent::MouseButtonRelease, start + QPoint(100, 0), Qt::LeftButton, Qt::NoButton);
+    const glm::vec3 orbited = window_->sceneView()->cameraPosition();
+    const glm::vec3 focus = window_->sceneView()->cameraFocus();
+    QVERIFY2(glm::length(orbited - eye) > 0.05f, "a left drag did not orbit the camera");
+    QVERIFY(std::abs(glm::length(orbited - focus) - glm::length(eye - focus)) < 0.02f);  // orbit keeps the distance
+    QCOMPARE(doc()->selectedBone(), -1);  // a drag is not a click
+
+    QWheelEvent wheel(QPointF(viewport->width() / 2, viewport->height() / 2),
+                      viewport->mapToGlobal(QPointF(viewport->width() / 2, viewport->height() / 2)), QPoint(),
+                      QPoint(0, 120), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(viewport, &wheel);
+    const glm::vec3 zoomed = window_->sceneView()->cameraPosition();
+    QVERIFY2(glm::length(zoomed - focus) < glm::length(orbited - focus) - 0.01f, "the wheel did not zoom in");
+    window_->frameAll();
+  }
+
+  void droppingAFileOpensIt() {
+    const QString glb = QString(MANNEQUIN_SHARED_DIR) + "/assets/characters/CesiumMan/glTF-Binary/CesiumMan.glb";
+    if (!QFile::exists(glb)) QSKIP("CesiumMan.glb not in the shared assets");
+    QMimeData mime;
+    mime.setUrls({QUrl::fromLocalFile(glb)});
+    QDragEnterEvent enter(QPoint(200, 200), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(window_, &enter);
+    QVERIFY(enter.isAccepted());
+    QSignalSpy finished(window_, &MainWindow::loadFinished);
+    QDropEvent drop(QPointF(200, 200), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(window_, &drop);
+    QVERIFY(finished.wait(20000));
+    QCOMPARE(finished.first().first().toBool(), true);
+    QVERIFY(window_->windowTitle().contains("CesiumMan.glb"));
+    QCOMPARE(doc()->character().vertexCount(), size_t(3273));
+    QString error;
+    QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));
   }
 
   void timelineScrubsTheClip() {
