@@ -242,6 +242,11 @@ std::vector<std::vector<int>> skinNeighbourhoods(const Skeleton& skeleton) {
 // Dense per-vertex bone weights (vertices x bones) from primitive potentials.
 std::vector<float> potentialWeights(const Mesh& mesh, const ImplicitBody& body, const Skeleton& skeleton) {
   constexpr float kFalloff = 0.02f;
+  // The pelvis reaches further down the thighs, so the crotch and the
+  // buttocks blend between the hip and both legs instead of being torn
+  // between the two thighs.
+  const int pelvis = skeleton.findBone("pelvis");
+  auto falloff = [&](int bone) { return bone == pelvis ? 2.0f * kFalloff : kFalloff; };
   const int bones = skeleton.boneCount();
   const auto allowed = skinNeighbourhoods(skeleton);
   const auto& prims = body.primitives();
@@ -257,7 +262,7 @@ std::vector<float> potentialWeights(const Mesh& mesh, const ImplicitBody& body, 
         if (distance[i] < distance[nearest]) nearest = i;
       }
       std::fill(perBone.begin(), perBone.end(), 0.0f);
-      for (size_t i = 0; i < prims.size(); ++i) perBone[prims[i].bone] += std::exp(-std::max(distance[i], 0.0f) / kFalloff);
+      for (size_t i = 0; i < prims.size(); ++i) perBone[prims[i].bone] += std::exp(-std::max(distance[i], 0.0f) / falloff(prims[i].bone));
       for (int b : allowed[prims[nearest].bone]) dense[v * bones + b] = perBone[b];
     }
   });
@@ -425,8 +430,9 @@ Clip makeWalk(const Skeleton& s) {
     addRotation(clip, foot, rotationTrack(kKeys, kDuration, true, [&](float u) {
       return m.local(foot, about(xAxis, 10.0f * wave(u, shift + 0.1f)));
     }));
+    const float toBody = left ? -1.0f : 1.0f;  // brings the A-pose arm down beside the body
     addRotation(clip, upper, rotationTrack(kKeys, kDuration, true, [&](float u) {
-      return m.local(upper, about(xAxis, 18.0f * wave(u, shift)));
+      return m.local(upper, about(xAxis, 18.0f * wave(u, shift)) * about({0, 0, 1}, toBody * 32.0f));
     }));
     addRotation(clip, fore, rotationTrack(kKeys, kDuration, true, [&](float u) {
       const glm::vec3 hinge = glm::cross(m.restDirection(fore), glm::vec3(0, 0, 1));

@@ -81,9 +81,12 @@ ImplicitPrimitive ImplicitPrimitive::roundCone(const glm::vec3& a, const glm::ve
   p.length = glm::distance(a, b);
   p.radius0 = r0;
   p.radius1 = r1;
-  const float reach = std::max(r0, r1) * std::max({wideScale, thickScale, 1.0f}) + ImplicitBody::kCutoff * blend;
-  p.support.extend(glm::min(a, b) - glm::vec3(reach));
-  p.support.extend(glm::max(a, b) + glm::vec3(reach));
+  const float radius = std::max(r0, r1) * std::max({wideScale, thickScale, 1.0f});
+  p.extent.extend(glm::min(a, b) - glm::vec3(radius));
+  p.extent.extend(glm::max(a, b) + glm::vec3(radius));
+  p.support = p.extent;
+  p.support.extend(p.extent.min - glm::vec3(ImplicitBody::kCutoff * blend));
+  p.support.extend(p.extent.max + glm::vec3(ImplicitBody::kCutoff * blend));
   return p;
 }
 
@@ -95,6 +98,8 @@ ImplicitPrimitive ImplicitPrimitive::ellipsoid(const glm::vec3& center, const gl
   p.blend = blend;
   p.origin = center;
   p.radii = radii;
+  p.extent.extend(center - radii);
+  p.extent.extend(center + radii);
   const glm::vec3 reach = radii + glm::vec3(ImplicitBody::kCutoff * blend);
   p.support.extend(center - reach);
   p.support.extend(center + reach);
@@ -143,10 +148,13 @@ float ImplicitBody::valueFrom(const glm::vec3& p, const int* candidates, size_t 
 }
 
 float ImplicitBody::value(const glm::vec3& p) const {
-  static thread_local std::vector<int> all;
-  all.resize(primitives_.size());
-  std::iota(all.begin(), all.end(), 0);
-  return valueFrom(p, all.data(), all.size());
+  static thread_local std::vector<int> near;
+  near.clear();
+  for (size_t i = 0; i < primitives_.size(); ++i) {
+    const Aabb& s = primitives_[i].support;
+    if (glm::all(glm::lessThanEqual(s.min, p)) && glm::all(glm::lessThanEqual(p, s.max))) near.push_back(int(i));
+  }
+  return valueFrom(p, near.data(), near.size());
 }
 
 glm::vec3 ImplicitBody::normal(const glm::vec3& p, float h) const {
@@ -164,9 +172,17 @@ void ImplicitBody::potentials(const glm::vec3& p, float falloff, std::vector<flo
 
 ScalarGrid ImplicitBody::sample(float cellSize, ThreadPool* pool) const {
   constexpr int kBlock = 8;
-  Aabb box = bounds();
-  const glm::vec3 margin(2.0f * cellSize);
-  if (hasGround_) box.min.y = std::max(box.min.y, groundHeight_ - 2.0f * cellSize);
+  // Summed potentials push the skin out by at most blend * ln(overlapping
+  // primitives) beyond the shapes; 4 blends covers a dozen overlaps.
+  Aabb box;
+  float largestBlend = 0.0f;
+  for (const ImplicitPrimitive& p : primitives_) {
+    box.extend(p.extent.min);
+    box.extend(p.extent.max);
+    largestBlend = std::max(largestBlend, p.blend);
+  }
+  const glm::vec3 margin(4.0f * largestBlend + 2.0f * cellSize);
+  if (hasGround_) box.min.y = std::max(box.min.y, groundHeight_);
   ScalarGrid grid;
   grid.cellSize = cellSize;
   grid.origin = box.min - margin;

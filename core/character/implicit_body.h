@@ -37,6 +37,7 @@ struct ImplicitPrimitive {
   float length = 0.0f;            // round cone: along local +Y from the origin
   float radius0 = 0.0f, radius1 = 0.0f;
   glm::vec3 radii{0.0f};          // ellipsoid
+  Aabb extent;                    // the primitive itself
   Aabb support;                   // where the potential is not negligible
 
   // A cone from a (radius r0) to b (radius r1) with round ends. The cross
@@ -54,7 +55,7 @@ struct ImplicitPrimitive {
 class ImplicitBody {
  public:
   // Potentials beyond cutoff * k are dropped.
-  static constexpr float kCutoff = 8.0f;
+  static constexpr float kCutoff = 7.0f;
   static constexpr int kMaxGroups = 8;
 
   void add(const ImplicitPrimitive& primitive);
@@ -62,7 +63,7 @@ class ImplicitBody {
   void setReferenceBlend(float k) { referenceBlend_ = k; }
 
   const std::vector<ImplicitPrimitive>& primitives() const { return primitives_; }
-  Aabb bounds() const;
+  Aabb bounds() const;  // where the field is not "far away"
 
   // The field: about the signed distance to the skin, negative inside.
   float value(const glm::vec3& p) const;
@@ -71,8 +72,8 @@ class ImplicitBody {
   // Each primitive's potential exp(-max(d_i, 0) / falloff) at p.
   void potentials(const glm::vec3& p, float falloff, std::vector<float>& out) const;
 
-  // Samples value() on a grid covering bounds() with a margin, skipping
-  // primitives far from each block of samples.
+  // Samples value() on a grid covering the primitives' shapes with a margin
+  // for the blending, skipping primitives far from each block of samples.
   ScalarGrid sample(float cellSize, ThreadPool* pool) const;
 
  private:
