@@ -161,6 +161,7 @@ class BodyBuilder {
     const int h = bone("head");
     ellipsoid({0, 1.655f, -0.008f}, {0.078f, 0.095f, 0.098f}, h, 0.01f);
     ellipsoid({0, 1.6f, 0.03f}, {0.058f, 0.06f, 0.065f}, h, 0.012f);
+    ellipsoid({0, 1.622f, 0.092f}, {0.012f, 0.022f, 0.014f}, h, 0.005f);  // a nose shows where it faces
   }
 
   void addArm(bool left) {
