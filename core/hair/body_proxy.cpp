@@ -27,9 +27,19 @@ glm::vec3 closestOnSegment(const Capsule& c, const glm::vec3& p) {
   return c.a + t * ab;
 }
 
+glm::vec4 boundingSphere(const Ellipsoid& e) { return {e.center, std::max({e.radii.x, e.radii.y, e.radii.z})}; }
+glm::vec4 boundingSphere(const Capsule& c) { return {0.5f * (c.a + c.b), 0.5f * glm::length(c.b - c.a) + c.radius}; }
+
 bool insideEllipsoid(const Ellipsoid& e, const glm::vec3& p, float margin) {
   const glm::vec3 q = scaledLocal(e, p, margin);
   return glm::dot(q, q) < 1.0f;
+}
+
+bool mayReachEllipsoid(const Ellipsoid& e, const glm::vec3& p, float distance) {
+  const float smallest = std::min({e.radii.x, e.radii.y, e.radii.z});
+  const float limit = 1.0f + distance / std::max(smallest, 1e-6f);
+  const glm::vec3 q = scaledLocal(e, p, 0.0f);
+  return glm::dot(q, q) < limit * limit;
 }
 
 bool insideCapsule(const Capsule& c, const glm::vec3& p, float margin) {
@@ -104,20 +114,75 @@ void addCapsulePanels(const Capsule& c, float spacing, SurfacePanels& out) {
 
 }  // namespace
 
+void BodyProxy::updateBounds() {
+  const size_t shapes = ellipsoids.size() + capsules.size();
+  cellShapes_.clear();
+  gridShapeCount_ = 0;
+  if (shapes == 0 || shapes > 64) return;
+  glm::vec3 lo(1e30f), hi(-1e30f);
+  auto extend = [&](const glm::vec4& sphere) {
+    lo = glm::min(lo, glm::vec3(sphere) - sphere.w);
+    hi = glm::max(hi, glm::vec3(sphere) + sphere.w);
+  };
+  for (const Ellipsoid& e : ellipsoids) extend(boundingSphere(e));
+  for (const Capsule& c : capsules) extend(boundingSphere(c));
+  lo -= glm::vec3(kMaxCachedMargin);
+  hi += glm::vec3(kMaxCachedMargin);
+  const glm::vec3 extent = hi - lo;
+  cellSize_ = std::max({extent.x, extent.y, extent.z}) / 64.0f;
+  gridDims_ = glm::max(glm::ivec3(glm::ceil(extent / cellSize_)), glm::ivec3(1));
+  gridOrigin_ = lo;
+  cellShapes_.assign(size_t(gridDims_.x) * gridDims_.y * gridDims_.z, 0);
+  // A cell may meet a shape grown by the margin only when its centre lies
+  // within margin + half the cell diagonal of the shape. For an ellipsoid,
+  // points within h of it have |scaled local| < 1 + h / (smallest radius)
+  // (growing the radii by h is not enough: the offset surface bulges out).
+  const float reach = kMaxCachedMargin + 0.8661f * cellSize_;
+  for (int z = 0; z < gridDims_.z; ++z)
+    for (int y = 0; y < gridDims_.y; ++y)
+      for (int x = 0; x < gridDims_.x; ++x) {
+        const glm::vec3 c = gridOrigin_ + (glm::vec3(x, y, z) + 0.5f) * cellSize_;
+        uint64_t mask = 0;
+        for (size_t i = 0; i < ellipsoids.size(); ++i)
+          if (mayReachEllipsoid(ellipsoids[i], c, reach)) mask |= uint64_t(1) << i;
+        for (size_t i = 0; i < capsules.size(); ++i)
+          if (insideCapsule(capsules[i], c, reach)) mask |= uint64_t(1) << (ellipsoids.size() + i);
+        cellShapes_[(size_t(z) * gridDims_.y + y) * gridDims_.x + x] = mask;
+      }
+  gridShapeCount_ = shapes;
+}
+
+uint64_t BodyProxy::candidates(const glm::vec3& p, float margin) const {
+  const size_t shapes = ellipsoids.size() + capsules.size();
+  const uint64_t all = shapes >= 64 ? ~uint64_t(0) : (uint64_t(1) << shapes) - 1;
+  if (gridShapeCount_ != shapes || shapes == 0 || margin > kMaxCachedMargin) return all;
+  const glm::vec3 q = (p - gridOrigin_) / cellSize_;
+  if (q.x < 0.0f || q.y < 0.0f || q.z < 0.0f) return 0;
+  const glm::ivec3 c(q);
+  if (c.x >= gridDims_.x || c.y >= gridDims_.y || c.z >= gridDims_.z) return 0;
+  return cellShapes_[(size_t(c.z) * gridDims_.y + c.y) * gridDims_.x + c.x];
+}
+
 bool BodyProxy::contains(const glm::vec3& p, float margin) const {
-  for (const Ellipsoid& e : ellipsoids)
-    if (insideEllipsoid(e, p, margin)) return true;
-  for (const Capsule& c : capsules)
-    if (insideCapsule(c, p, margin)) return true;
+  const uint64_t mask = candidates(p, margin);
+  for (size_t i = 0; i < ellipsoids.size(); ++i)
+    if ((mask >> i & 1) && insideEllipsoid(ellipsoids[i], p, margin)) return true;
+  for (size_t i = 0; i < capsules.size(); ++i)
+    if ((mask >> (ellipsoids.size() + i) & 1) && insideCapsule(capsules[i], p, margin)) return true;
   return false;
 }
 
 bool BodyProxy::pushOut(glm::vec3& p, float margin) const {
+  // Out of the first shape that holds p, then again: a push out of one shape
+  // can land inside another, a few rounds settle it.
   bool moved = false;
-  // A push out of one shape can land inside another: a few rounds settle it.
-  for (int round = 0; round < 4; ++round) {
+  const glm::vec3 start = p;
+  for (int round = 0; round < 8; ++round) {
+    const uint64_t mask = candidates(p, margin);
     bool movedThisRound = false;
-    for (const Ellipsoid& e : ellipsoids) {
+    for (size_t i = 0; i < ellipsoids.size() && !movedThisRound; ++i) {
+      if (!(mask >> i & 1)) continue;
+      const Ellipsoid& e = ellipsoids[i];
       glm::vec3 q = scaledLocal(e, p, margin);
       const float len2 = glm::dot(q, q);
       if (len2 >= 1.0f) continue;
@@ -125,7 +190,9 @@ bool BodyProxy::pushOut(glm::vec3& p, float margin) const {
       p = e.center + e.axes * (q * (e.radii + glm::vec3(margin)) * 1.0001f);
       movedThisRound = true;
     }
-    for (const Capsule& c : capsules) {
+    for (size_t i = 0; i < capsules.size() && !movedThisRound; ++i) {
+      if (!(mask >> (ellipsoids.size() + i) & 1)) continue;
+      const Capsule& c = capsules[i];
       const glm::vec3 base = closestOnSegment(c, p);
       glm::vec3 d = p - base;
       const float r = c.radius + margin;
@@ -135,9 +202,14 @@ bool BodyProxy::pushOut(glm::vec3& p, float margin) const {
       p = base + d * (r * 1.0001f);
       movedThisRound = true;
     }
-    moved |= movedThisRound;
-    if (!movedThisRound) break;
+    if (!movedThisRound) return moved;
+    moved = true;
   }
+  // Still inside: caught in a crease between shapes that push it back and
+  // forth. March on along the way it was being pushed until it is free.
+  glm::vec3 away = p - start;
+  away = glm::dot(away, away) > 1e-18f ? glm::normalize(away) : glm::vec3(0, 1, 0);
+  for (float step = 0.001f; contains(p, margin) && step < 4.0f; step *= 1.5f) p += away * step;
   return moved;
 }
 
@@ -171,6 +243,7 @@ SurfacePanels BodyProxy::makePanels(int targetCount) const {
 BodyProxy sphereProxy(const glm::vec3& center, float radius) {
   BodyProxy proxy;
   proxy.ellipsoids.push_back({center, glm::mat3(1.0f), glm::vec3(radius)});
+  proxy.updateBounds();
   return proxy;
 }
 
@@ -305,6 +378,7 @@ BodyProxy fitBodyProxy(const Character& character, const std::string& headBone,
   BodyProxy proxy;
   proxy.ellipsoids.push_back(e);
   addBodyCapsules(character, head, verts, worldFromBone, proxy);
+  proxy.updateBounds();
   return proxy;
 }
 

@@ -4,6 +4,7 @@
 // chest and shoulders. Cheap inside tests and push-out, and the surface the
 // flow's source panels are spread over.
 
+#include <cstdint>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -36,6 +37,13 @@ class BodyProxy {
   std::vector<Ellipsoid> ellipsoids;  // the first one is the head
   std::vector<Capsule> capsules;
 
+  // Builds a coarse grid over the shapes recording, per cell, which shapes
+  // (grown by up to kMaxCachedMargin) may reach into it, so contains() and
+  // pushOut() test only those. Call after editing the shapes; a stale grid is
+  // ignored when the shape counts differ, not when shapes move.
+  void updateBounds();
+  static constexpr float kMaxCachedMargin = 0.01f;
+
   bool empty() const { return ellipsoids.empty() && capsules.empty(); }
   glm::vec3 headCenter() const { return ellipsoids.empty() ? glm::vec3(0.0f) : ellipsoids[0].center; }
 
@@ -47,6 +55,15 @@ class BodyProxy {
   // About `targetCount` panels over the union's surface (panels inside
   // another shape are dropped: they are not on the boundary).
   SurfacePanels makePanels(int targetCount) const;
+
+ private:
+  // Bit i set: shape i (ellipsoids, then capsules) may hold p grown by margin.
+  uint64_t candidates(const glm::vec3& p, float margin) const;
+  std::vector<uint64_t> cellShapes_;
+  glm::vec3 gridOrigin_{0.0f};
+  float cellSize_ = 1.0f;
+  glm::ivec3 gridDims_{0};
+  size_t gridShapeCount_ = 0;
 };
 
 // A sphere head (tests and characters without a head bone).

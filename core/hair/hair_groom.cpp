@@ -124,6 +124,7 @@ struct StrandShaper {
 
 HairGroom::HairGroom(ScalpSurface scalp, BodyProxy proxy, int panelCount)
     : scalp_(std::move(scalp)), proxy_(std::move(proxy)) {
+  proxy_.updateBounds();
   const SurfacePanels panels = proxy_.makePanels(panelCount);
   std::vector<uint8_t> onScalp(panels.size(), 0);
   const size_t vertices = scalp_.positions.size() / 3;

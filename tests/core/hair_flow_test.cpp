@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "core/hair/body_proxy.h"
 #include "core/hair/flow_field.h"
 #include "core/hair/strand_tracer.h"
@@ -156,9 +158,29 @@ TEST(HairFlow, LoneVortexTurnsStrandsMoreWithStrength) {
   EXPECT_LT(sweptAngle(0.4f) * sweptAngle(-0.4f), 0.0f);  // the sign sets the sense
 }
 
+TEST(HairFlow, ProxyCellGridAgreesWithTestingEveryShape) {
+  BodyProxy plain;
+  plain.ellipsoids.push_back({glm::vec3(0.0f, 1.6f, 0.0f), glm::mat3(glm::rotate(glm::mat4(1.0f), 0.4f, glm::vec3(1, 0, 1))),
+                              glm::vec3(0.07f, 0.11f, 0.03f)});
+  plain.capsules.push_back({glm::vec3(0, 1.5f, 0), glm::vec3(0.2f, 1.3f, 0), 0.04f});
+  plain.capsules.push_back({glm::vec3(0, 1.2f, 0), glm::vec3(0, 1.45f, 0), 0.12f});
+  BodyProxy gridded = plain;
+  gridded.updateBounds();
+  for (int i = 0; i < 200000; ++i) {
+    const glm::vec3 p(0.3f * std::sin(1.37f * i), 1.1f + 0.7f * std::fmod(0.6180339f * i, 1.0f), 0.3f * std::cos(0.91f * i));
+    for (float margin : {0.0f, 0.002f, 0.01f}) ASSERT_EQ(plain.contains(p, margin), gridded.contains(p, margin)) << i;
+    glm::vec3 a = p, b = p;
+    plain.pushOut(a, 0.002f);
+    gridded.pushOut(b, 0.002f);
+    ASSERT_EQ(a, b) << i;
+    ASSERT_FALSE(plain.contains(b, 0.0015f)) << i;
+  }
+}
+
 TEST(HairFlow, PushOutKeepsPointsOutsideEveryShape) {
   BodyProxy proxy = sphereProxy(glm::vec3(0.0f), 0.1f);
   proxy.capsules.push_back({glm::vec3(0, -0.05f, 0), glm::vec3(0, -0.3f, 0), 0.05f});
+  proxy.updateBounds();
   for (int i = 0; i < 1000; ++i) {
     glm::vec3 p(std::sin(1.3f * i) * 0.12f, -0.3f + 0.45f * float(i) / 1000.0f, std::cos(0.7f * i) * 0.1f);
     proxy.pushOut(p, 0.001f);
