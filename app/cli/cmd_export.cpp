@@ -1,4 +1,4 @@
-// mannequin-cli export FILE --out OUT.obj|OUT.ply [--clip NAME|INDEX --fps F]
+// mannequin-cli export FILE --out OUT.obj|.ply|.gltf|.glb [--clip NAME|INDEX --fps F]
 // Without --fps: the rest (bind) pose. With --fps: every frame of the clip,
 // one file per frame (OUT_0000.obj, OUT_0001.obj, ...), for other tools.
 #include <cmath>
@@ -41,7 +41,7 @@ int runExport(const std::vector<std::string>& argv) {
   args.allowOnly({"--out", "--clip", "--fps"});
   if (args.positional().size() != 1) throw Error("export needs exactly one FILE");
   const std::string out = args.option("--out");
-  if (out.empty() || !isMeshExportPath(out)) throw Error("export needs --out OUT.obj or OUT.ply");
+  if (out.empty() || !isMeshExportPath(out)) throw Error("export needs --out OUT.obj, .ply, .gltf or .glb");
   const LoadedScene scene = openScene(args.positional()[0]);
 
   if (!args.has("--fps")) {
@@ -60,7 +60,7 @@ int runExport(const std::vector<std::string>& argv) {
   return exportSequence(scene, clip, fps, out);
 }
 
-static Registration reg({"export", "FILE --out OUT.obj|OUT.ply [--clip NAME|INDEX --fps F]",
+static Registration reg({"export", "FILE --out OUT.obj|.ply|.gltf|.glb [--clip NAME|INDEX --fps F]",
                          "write the rest pose, or every frame of a clip (OUT_0000.obj ...), as meshes", runExport});
 
 }  // namespace

@@ -1,4 +1,4 @@
-// mannequin-cli pose FILE --time T [--clip NAME|INDEX] [--motion BVH [--map MAP]] --out OUT.obj|OUT.ply
+// mannequin-cli pose FILE --time T [--clip NAME|INDEX] [--motion BVH [--map MAP]] --out OUT.obj|.ply|.gltf|.glb
 // Writes the character posed at time T (on the clip's own key-time axis) in
 // world space.
 #include <iostream>
@@ -31,8 +31,8 @@ int runPose(const std::vector<std::string>& argv) {
   args.allowOnly({"--time", "--clip", "--motion", "--map", "--out"});
   if (args.positional().size() != 1) throw Error("pose needs exactly one FILE");
   const std::string out = args.option("--out");
-  if (out.empty()) throw Error("pose needs --out OUT.obj or OUT.ply");
-  if (!isMeshExportPath(out)) throw Error("--out must end in .obj or .ply: " + out);
+  if (out.empty()) throw Error("pose needs --out OUT.obj, .ply, .gltf or .glb");
+  if (!isMeshExportPath(out)) throw Error("--out must end in .obj, .ply, .gltf or .glb: " + out);
 
   LoadedScene scene = openScene(args.positional()[0]);
   const int clip = chooseClip(args, scene);
@@ -47,8 +47,8 @@ int runPose(const std::vector<std::string>& argv) {
   return 0;
 }
 
-static Registration reg({"pose", "FILE --time T [--clip NAME|INDEX] [--motion BVH [--map MAP]] --out OUT.obj|OUT.ply",
-                         "write the posed mesh at time T in world space (OBJ or PLY)", runPose});
+static Registration reg({"pose", "FILE --time T [--clip NAME|INDEX] [--motion BVH [--map MAP]] --out OUT.obj|.ply|.gltf|.glb",
+                         "write the posed mesh at time T in world space (OBJ, PLY, glTF or GLB)", runPose});
 
 }  // namespace
 }  // namespace mq::cli

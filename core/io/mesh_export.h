@@ -1,9 +1,11 @@
 #pragma once
 // Writes posed meshes (world-space positions and normals, the meshes' own
-// triangles, vertices in importer order, no welding) to OBJ or PLY, chosen by
-// the file extension. PLY is binary little-endian (float xyz + normals, int
-// triangle lists). Files are written atomically (temporary file, then rename);
-// failures throw FileError naming the file.
+// triangles, vertices in importer order, no welding) to OBJ, PLY, glTF or GLB,
+// chosen by the file extension. PLY is binary little-endian (float xyz +
+// normals, int triangle lists); glTF/GLB hold static meshes (one node per
+// mesh, no skin; .gltf embeds its buffer as a data URI). Files are written
+// atomically (temporary file, then rename); failures throw FileError naming
+// the file.
 
 #include <string>
 #include <vector>
