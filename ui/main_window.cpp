@@ -33,6 +33,7 @@
 #include "ui/panels/properties_panel.h"
 #include "ui/panels/scene_tree_panel.h"
 #include "ui/panels/timeline_panel.h"
+#include "ui/hair/hair_tool.h"
 #include "ui/viewport/pose_tool.h"
 #include "ui/viewport/vtk_viewport_widget.h"
 
@@ -95,6 +96,7 @@ MainWindow::MainWindow(QWidget* parent)
   createToolBar();
   createStatusBar();
   connectDocument();
+  new HairTool(this);  // the hair dock and viewport handles (ui/hair)
   restoreLayout();
   updateTitle();
 }
@@ -296,7 +298,10 @@ void MainWindow::restoreLayout() {
 void MainWindow::addToolDock(QDockWidget* dock, Qt::DockWidgetArea area) {
   if (dock->objectName().isEmpty()) dock->setObjectName(dock->windowTitle());
   addDockWidget(area, dock);
-  if (area == Qt::RightDockWidgetArea) tabifyDockWidget(propertiesDock_, dock);
+  if (area == Qt::RightDockWidgetArea) {
+    tabifyDockWidget(propertiesDock_, dock);
+    propertiesDock_->raise();  // the selection's properties stay in front
+  }
   panelsMenu_->addAction(dock->toggleViewAction());
 }
 

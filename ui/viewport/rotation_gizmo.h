@@ -1,8 +1,9 @@
 #pragma once
 // The on-screen rotation gizmo: three rings around the selected joint, red,
-// green and blue for its local X, Y and Z axes, drawn in an overlay renderer
-// layer so the body never hides them. The rings keep a constant size on
-// screen. Pure VTK; the pose tool (pose_tool.h) turns drags into rotations.
+// green and blue for its local X, Y and Z axes, and a larger white ring
+// facing the viewer for turns about the view axis (as in Blender). They are
+// drawn in an overlay renderer layer so the body never hides them, and keep a
+// constant size on screen. Pure VTK; the pose tool (pose_tool.h) turns drags into rotations.
 
 #include <array>
 
@@ -32,7 +33,10 @@ class RotationGizmo {
   // Centre and orientation (the ring normals are the rotated X, Y, Z axes).
   void setFrame(const glm::vec3& center, const glm::quat& orientation);
   glm::vec3 center() const { return center_; }
-  glm::vec3 axis(int index) const;  // world space, unit
+  static constexpr int kViewAxis = 3;  // the ring facing the viewer
+  static constexpr int kRingCount = 4;
+  // World space, unit; kViewAxis points from the centre towards the camera.
+  glm::vec3 axis(int index) const;
   // Ring radius in world units at the current camera distance.
   float radius() const { return radius_; }
 
@@ -49,12 +53,13 @@ class RotationGizmo {
 
   vtkSmartPointer<vtkRenderer> overlay_;
   vtkSmartPointer<vtkRenderer> scene_;
-  std::array<vtkSmartPointer<vtkActor>, 3> rings_;
+  std::array<vtkSmartPointer<vtkActor>, kRingCount> rings_;
   vtkSmartPointer<vtkCellPicker> picker_;
   glm::vec3 center_{0.0f};
   glm::vec3 lastPick_{0.0f};
   glm::quat orientation_{1.0f, 0.0f, 0.0f, 0.0f};
   float radius_ = 0.1f;
+  glm::vec3 toCamera_{0.0f, 0.0f, 1.0f};
   int highlighted_ = -1;
   bool visible_ = false;
   unsigned long observer_ = 0;
