@@ -208,6 +208,18 @@ void MainWindow::createActions() {
   deselectAction_->setShortcut(QKeySequence(tr("Esc")));
   connect(deselectAction_, &QAction::triggered, this, [this] { document_->selectBone(-1); });
 
+  // Frame steps, Blender-style, while the viewport has the focus.
+  auto* previousFrame = new QAction(tr("Previous Frame"), viewport_);
+  previousFrame->setShortcut(QKeySequence(Qt::Key_Left));
+  previousFrame->setShortcutContext(Qt::WidgetShortcut);
+  connect(previousFrame, &QAction::triggered, this, [this] { timeline_->stepFrames(-1); });
+  auto* nextFrame = new QAction(tr("Next Frame"), viewport_);
+  nextFrame->setShortcut(QKeySequence(Qt::Key_Right));
+  nextFrame->setShortcutContext(Qt::WidgetShortcut);
+  connect(nextFrame, &QAction::triggered, this, [this] { timeline_->stepFrames(1); });
+  viewport_->addAction(previousFrame);
+  viewport_->addAction(nextFrame);
+
   playAction_ = new QAction(makeIcon(Icon::Play), tr("&Play / Pause"), this);
   playAction_->setShortcut(QKeySequence(tr("Space")));
   connect(playAction_, &QAction::triggered, timeline_, &TimelinePanel::togglePlaying);
@@ -610,8 +622,20 @@ void MainWindow::rebuildRecentMenu() {
 // --- window events ------------------------------------------------------------------
 
 void MainWindow::closeEvent(QCloseEvent* event) {
-  if (busy_ || !maybeDiscardChanges()) event->ignore();
-  else event->accept();
+  if (busy_ || !maybeDiscardChanges()) {
+    event->ignore();
+    return;
+  }
+  QSettings settings;
+  settings.setValue("window/geometry", saveGeometry());
+  settings.setValue("window/state", saveState());
+  event->accept();
+}
+
+void MainWindow::restoreWindowState() {
+  QSettings settings;
+  restoreGeometry(settings.value("window/geometry").toByteArray());
+  restoreState(settings.value("window/state").toByteArray());
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {

@@ -65,6 +65,9 @@ class MainWindow : public QMainWindow {
   bool exportPosedMesh(const QString& path, QString* error = nullptr);
   void frameAll();
   void setSkeletonVisible(bool visible);
+  // Dock layout and window size from the last session (QSettings); the
+  // layout is saved when the window closes.
+  void restoreWindowState();
 
   // Progress of long work in the status bar (bakes, simulations): percent
   // 0..100, or -1 for a busy indicator. Tools call hideProgress when done.

@@ -61,6 +61,8 @@ int main(int argc, char** argv) {
   const QStringList wh = parser.value(size).split('x');
   window.resize(wh.value(0).toInt() > 0 ? wh.value(0).toInt() : 1600, wh.value(1).toInt() > 0 ? wh.value(1).toInt() : 1000);
   const bool takeScreenshot = parser.isSet(screenshot);
+  // Screenshots use the default layout, so they look the same everywhere.
+  if (!takeScreenshot && !parser.isSet(size)) window.restoreWindowState();
   if (takeScreenshot) {
     // No dialogs in batch mode: errors go to stderr.
     window.reportError = [](const QString&, const QString& message) {

@@ -225,6 +225,49 @@ class EditorSmokeTest : public QObject {
     QCOMPARE(allPositions(*doc()), before);
   }
 
+  void viewRingTurnsAboutTheViewAxis() {
+    const int forearm = bone("forearm_l");
+    doc()->selectBone(forearm);
+    renderNow();
+    RotationGizmo& gizmo = window_->poseTool()->gizmo();
+    const glm::vec3 toCamera = gizmo.axis(RotationGizmo::kViewAxis);
+    // Two directions across the view ring's plane.
+    const glm::vec3 u = glm::normalize(glm::cross(toCamera, glm::vec3(0, 1, 0)));
+    const glm::vec3 v = glm::cross(toCamera, u);
+    const double ratio = window_->viewport()->devicePixelRatioF();
+    QPoint onRing;
+    bool found = false;
+    for (int step = 0; step < 36 && !found; ++step) {
+      const float t = float(step) * 2.0f * float(M_PI) / 36.0f;
+      const QPoint p = toWidget(gizmo.center() + 1.25f * gizmo.radius() * (std::cos(t) * u + std::sin(t) * v));
+      const int displayY = int(window_->viewport()->height() * ratio) - 1 - int(p.y() * ratio);
+      if (gizmo.pickAxis(int(p.x() * ratio), displayY) == RotationGizmo::kViewAxis) {
+        found = true;
+        onRing = p;
+      }
+    }
+    QVERIFY2(found, "the view ring could not be picked");
+    auto worldRotation = [&] {
+      const glm::mat4& m = doc()->posed().worldFromBone()[forearm];
+      return glm::normalize(glm::quat_cast(glm::mat3(glm::normalize(glm::vec3(m[0])), glm::normalize(glm::vec3(m[1])),
+                                                     glm::normalize(glm::vec3(m[2])))));
+    };
+    const glm::quat before = worldRotation();
+    const QPointF radial = QPointF(onRing - toWidget(gizmo.center()));
+    const QPointF tangent = QPointF(-radial.y(), radial.x()) / std::hypot(radial.x(), radial.y());
+    QWidget* viewport = window_->viewport();
+    sendMouse(viewport, QEvent::MouseButtonPress, onRing, Qt::LeftButton, Qt::LeftButton);
+    const QPoint end = onRing + (tangent * 40.0).toPoint();
+    sendMouse(viewport, QEvent::MouseMove, end, Qt::NoButton, Qt::LeftButton);
+    sendMouse(viewport, QEvent::MouseButtonRelease, end, Qt::LeftButton, Qt::NoButton);
+    const glm::quat turn = worldRotation() * glm::inverse(before);
+    const float angle = 2.0f * std::acos(std::min(1.0f, std::abs(turn.w)));
+    QVERIFY2(angle > 0.05f, qPrintable(QString("view ring turned the bone by only %1 rad").arg(angle)));
+    const glm::vec3 turnAxis = glm::normalize(glm::vec3(turn.x, turn.y, turn.z));
+    QVERIFY2(std::abs(glm::dot(turnAxis, toCamera)) > 0.999f, "the turn is not about the view axis");
+    doc()->undoStack()->undo();
+  }
+
   void gizmoRotationTurnsAboutTheWorldAxis() {
     // The edit computed for a world-axis turn rotates the bone's world frame
     // by exactly that turn.
