@@ -17,6 +17,7 @@ constexpr float kTwoPi = 6.28318530718f;
 constexpr float kMargin = 0.002f;         // hair keeps this far from the proxy surface
 constexpr float kScalpPanelDistance = 0.025f;
 constexpr uint64_t kChildKey = uint64_t(1) << 32;
+constexpr float kPartingSpread = 0.06f;  // guide tips this far apart start to part, metres
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -294,10 +295,18 @@ void HairGroom::growChildren(const HairStyle& style) {
       const uint64_t key = kChildKey + c;
       const glm::vec3 root = childRoots_.position(c);
       const int32_t* near = &neighbours_[3 * c];
-      const float* w = &weights_[3 * c];
       const float* g0 = strands_.strand(near[0]);
       const float* g1 = strands_.strand(near[1]);
       const float* g2 = strands_.strand(near[2]);
+      // Where neighbouring guides part (left and right of a parting, either
+      // side of the face), a blend of them would cut across the gap: follow
+      // the nearest guide alone there.
+      const int last = points - 1;
+      const float spread = std::max({glm::length(load(g0, last) - load(g1, last)) * float(weights_[3 * c + 1] > 0.0f),
+                                     glm::length(load(g0, last) - load(g2, last)) * float(weights_[3 * c + 2] > 0.0f)});
+      const float alone = std::clamp((spread - kPartingSpread) / kPartingSpread, 0.0f, 1.0f);
+      const float w[3] = {weights_[3 * c] + alone * (1.0f - weights_[3 * c]), (1.0f - alone) * weights_[3 * c + 1],
+                          (1.0f - alone) * weights_[3 * c + 2]};
       const float guideLength = w[0] * guideLengths_[near[0]] + w[1] * guideLengths_[near[1]] + w[2] * guideLengths_[near[2]];
       const float ratio = strandLength(style, root, key) / std::max(guideLength, 1e-6f);
       const float wanderStart = 256.0f * random01(style.seed, key, 5);

@@ -1,5 +1,8 @@
 #include "core/hair/hairstyle_json.h"
 
+#include <cstdio>
+#include <cstdlib>
+
 #include "core/util/error.h"
 
 namespace mq {
@@ -8,7 +11,14 @@ using nlohmann::json;
 
 namespace {
 
-json vec(const glm::vec3& v) { return json::array({v.x, v.y, v.z}); }
+// Floats written with 6 significant digits, so files read 0.05, not 0.0500000007.
+double tidy(float f) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", double(f));
+  return std::strtod(text, nullptr);
+}
+
+json vec(const glm::vec3& v) { return json::array({tidy(v.x), tidy(v.y), tidy(v.z)}); }
 
 glm::vec3 readVec(const json& j, const char* field) {
   if (!j.is_array() || j.size() != 3 || !j[0].is_number() || !j[1].is_number() || !j[2].is_number())
@@ -152,36 +162,36 @@ HairSection hairSectionFromJson(const json& j) {
 
 json toJson(const HairStyle& s) {
   json streams = json::array(), sources = json::array(), vortices = json::array(), lengthMap = json::array();
-  for (const UniformStream& e : s.primitives.streams) streams.push_back({{"direction", vec(e.direction)}, {"strength", e.strength}});
+  for (const UniformStream& e : s.primitives.streams) streams.push_back({{"direction", vec(e.direction)}, {"strength", tidy(e.strength)}});
   for (const PointSource& e : s.primitives.sources)
-    sources.push_back({{"position", vec(e.position)}, {"strength", e.strength}, {"radius", e.radius}});
+    sources.push_back({{"position", vec(e.position)}, {"strength", tidy(e.strength)}, {"radius", tidy(e.radius)}});
   for (const Vortex& e : s.primitives.vortices)
-    vortices.push_back({{"position", vec(e.position)}, {"axis", vec(e.axis)}, {"strength", e.strength}, {"radius", e.radius}});
+    vortices.push_back({{"position", vec(e.position)}, {"axis", vec(e.axis)}, {"strength", tidy(e.strength)}, {"radius", tidy(e.radius)}});
   for (const LengthPoint& e : s.lengthMap)
-    lengthMap.push_back({{"position", vec(e.position)}, {"scale", e.scale}, {"radius", e.radius}});
+    lengthMap.push_back({{"position", vec(e.position)}, {"scale", tidy(e.scale)}, {"radius", tidy(e.radius)}});
   return json{{"name", s.name},
               {"streams", streams},
               {"sources", sources},
               {"vortices", vortices},
-              {"scalp_outflow", s.scalpOutflow},
-              {"noise_amplitude", s.noiseAmplitude},
-              {"noise_scale", s.noiseScale},
-              {"density", s.density},
+              {"scalp_outflow", tidy(s.scalpOutflow)},
+              {"noise_amplitude", tidy(s.noiseAmplitude)},
+              {"noise_scale", tidy(s.noiseScale)},
+              {"density", tidy(s.density)},
               {"max_strands", s.maxStrands},
               {"guides", s.guideCount},
-              {"length", s.length},
-              {"length_variation", s.lengthVariation},
+              {"length", tidy(s.length)},
+              {"length_variation", tidy(s.lengthVariation)},
               {"length_map", lengthMap},
               {"points_per_strand", s.pointsPerStrand},
-              {"strand_noise", s.strandNoise},
-              {"wave_amplitude", s.waveAmplitude},
-              {"wave_length", s.waveLength},
-              {"curl_radius", s.curlRadius},
-              {"curl_length", s.curlLength},
-              {"clumping", s.clumping},
-              {"clump_shape", s.clumpShape},
-              {"frizz", s.frizz},
-              {"frizz_frequency", s.frizzFrequency},
+              {"strand_noise", tidy(s.strandNoise)},
+              {"wave_amplitude", tidy(s.waveAmplitude)},
+              {"wave_length", tidy(s.waveLength)},
+              {"curl_radius", tidy(s.curlRadius)},
+              {"curl_length", tidy(s.curlLength)},
+              {"clumping", tidy(s.clumping)},
+              {"clump_shape", tidy(s.clumpShape)},
+              {"frizz", tidy(s.frizz)},
+              {"frizz_frequency", tidy(s.frizzFrequency)},
               {"root_color", vec(s.rootColor)},
               {"tip_color", vec(s.tipColor)},
               {"seed", s.seed}};
@@ -190,7 +200,7 @@ json toJson(const HairStyle& s) {
 json toJson(const ScalpRegion& r) {
   switch (r.kind) {
     case ScalpRegion::Kind::BoneCone:
-      return {{"kind", "bone_cone"}, {"bone", r.bone}, {"axis", vec(r.axis)}, {"angle", r.angleDegrees}};
+      return {{"kind", "bone_cone"}, {"bone", r.bone}, {"axis", vec(r.axis)}, {"angle", tidy(r.angleDegrees)}};
     case ScalpRegion::Kind::Faces:
       return {{"kind", "faces"}, {"mesh", r.mesh}, {"faces", r.faces}};
     case ScalpRegion::Kind::Tagged:

@@ -94,7 +94,10 @@ ScalpSurface extractScalp(const Character& character, const ScalpRegion& region)
     case ScalpRegion::Kind::Tagged:
       for (size_t m = 0; m < character.meshes.size(); ++m)
         appendFaces(character.meshes[m], posed.meshes()[m], taggedFaces(character.meshes[m]), out);
-      if (out.empty()) throw Error("character '" + character.name + "' has no faces tagged as scalp");
+      if (out.empty())
+        throw Error("character '" + character.name +
+                    "' has no faces tagged as scalp: give the scene's hair section a scalp region, e.g. "
+                    "\"scalp\": {\"kind\": \"bone_cone\", \"bone\": \"<head bone>\", \"axis\": [0, 1, 0], \"angle\": 70}");
       break;
     case ScalpRegion::Kind::BoneCone: {
       const int bone = character.skeleton.findBone(region.bone);
