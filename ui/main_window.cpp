@@ -156,6 +156,10 @@ void MainWindow::createActions() {
   saveAsAction_->setShortcut(QKeySequence::SaveAs);
   connect(saveAsAction_, &QAction::triggered, this, &MainWindow::saveAs);
 
+  applyMotionAction_ = new QAction(tr("Apply &Motion..."), this);
+  applyMotionAction_->setStatusTip(tr("Retarget a BVH motion onto the character, optionally with a bone-name map"));
+  connect(applyMotionAction_, &QAction::triggered, this, &MainWindow::applyMotionWithDialog);
+
   exportAction_ = new QAction(tr("&Export Posed Mesh..."), this);
   exportAction_->setShortcut(QKeySequence(tr("Ctrl+E")));
   exportAction_->setStatusTip(tr("Write the posed meshes as OBJ or PLY"));
@@ -233,6 +237,7 @@ void MainWindow::createMenus() {
   file->addAction(newAction_);
   file->addAction(openAction_);
   recentMenu_ = file->addMenu(tr("Open &Recent"));
+  file->addAction(applyMotionAction_);
   file->addSeparator();
   file->addAction(saveAction_);
   file->addAction(saveAsAction_);
@@ -415,7 +420,8 @@ void MainWindow::setBusy(bool busy, const QString& message) {
   busy_ = busy;
   progress_->setRange(0, 0);  // busy indicator: the loaders report no fraction
   progress_->setVisible(busy);
-  for (QAction* a : {newAction_, openAction_, saveAction_, saveAsAction_, exportAction_}) a->setEnabled(!busy);
+  for (QAction* a : {newAction_, openAction_, applyMotionAction_, saveAction_, saveAsAction_, exportAction_})
+    a->setEnabled(!busy);
   recentMenu_->setEnabled(!busy);
   if (busy) QApplication::setOverrideCursor(Qt::BusyCursor);
   else QApplication::restoreOverrideCursor();
@@ -447,30 +453,8 @@ void MainWindow::openFile(const QString& fileOrDefault) {
   clock->start();
 
   if (motion) {
-    auto* watcher = new QFutureWatcher<Outcome<Clip>>(this);
-    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, fileOrDefault, clock] {
-      Outcome<Clip> outcome = watcher->future().takeResult();
-      watcher->deleteLater();
-      setBusy(false, QString());
-      if (auto* error = std::get_if<QString>(&outcome)) {
-        statusBar()->showMessage(tr("Could not open %1").arg(fileOrDefault), 8000);
-        if (reportError) reportError(tr("Could not apply the motion"), *error);
-        emit loadFinished(false);
-        return;
-      }
-      Clip clip = std::move(std::get<Clip>(outcome));
-      const QString name = QString::fromStdString(clip.name);
-      // The document records the motion so a saved scene re-applies it.
-      document_->sceneSections().motionFile = QFileInfo(fileOrDefault).absoluteFilePath().toStdString();
-      document_->addClip(std::move(clip));
-      addRecentFile(fileOrDefault);
-      statusBar()->showMessage(tr("Applied motion %1 (%2 s)").arg(name).arg(clock->elapsed() / 1000.0, 0, 'f', 2), 8000);
-      emit loadFinished(true);
-    });
-    const Character target = document_->character();
-    watcher->setFuture(QtConcurrent::run([fileOrDefault, target] {
-      return runCatching<Clip>([&] { return loadMotion(fileOrDefault, target); });
-    }));
+    setBusy(false, QString());
+    applyMotion(fileOrDefault);
     return;
   }
 
@@ -492,6 +476,51 @@ void MainWindow::openFile(const QString& fileOrDefault) {
   watcher->setFuture(QtConcurrent::run([fileOrDefault] {
     return runCatching<LoadedDocument>([&] { return loadDocument(fileOrDefault); });
   }));
+}
+
+void MainWindow::applyMotion(const QString& bvhPath, const QString& nameMapPath) {
+  if (busy_) return;
+  setBusy(true, tr("Applying %1...").arg(QFileInfo(bvhPath).fileName()));
+  auto clock = std::make_shared<QElapsedTimer>();
+  clock->start();
+  auto* watcher = new QFutureWatcher<Outcome<Clip>>(this);
+  connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, bvhPath, nameMapPath, clock] {
+    Outcome<Clip> outcome = watcher->future().takeResult();
+    watcher->deleteLater();
+    setBusy(false, QString());
+    if (auto* error = std::get_if<QString>(&outcome)) {
+      statusBar()->showMessage(tr("Could not apply %1").arg(bvhPath), 8000);
+      if (reportError) reportError(tr("Could not apply the motion"), *error);
+      emit loadFinished(false);
+      return;
+    }
+    Clip clip = std::move(std::get<Clip>(outcome));
+    const QString name = QString::fromStdString(clip.name);
+    // The document records the motion so a saved scene re-applies it.
+    SceneDocument& scene = document_->sceneSections();
+    scene.motionFile = QFileInfo(bvhPath).absoluteFilePath().toStdString();
+    scene.motionMapFile = nameMapPath.isEmpty() ? std::string() : QFileInfo(nameMapPath).absoluteFilePath().toStdString();
+    document_->addClip(std::move(clip));
+    addRecentFile(bvhPath);
+    statusBar()->showMessage(tr("Applied motion %1 (%2 s)").arg(name).arg(clock->elapsed() / 1000.0, 0, 'f', 2), 8000);
+    emit loadFinished(true);
+  });
+  const Character target = document_->character();
+  watcher->setFuture(QtConcurrent::run([bvhPath, nameMapPath, target] {
+    return runCatching<Clip>([&] { return loadMotion(bvhPath, target, nameMapPath); });
+  }));
+}
+
+void MainWindow::applyMotionWithDialog() {
+  QSettings settings;
+  const QString bvh = QFileDialog::getOpenFileName(this, tr("Apply Motion"), settings.value("lastDirectory").toString(),
+                                                   motionFilter());
+  if (bvh.isEmpty()) return;
+  settings.setValue("lastDirectory", QFileInfo(bvh).absolutePath());
+  const QString map = QFileDialog::getOpenFileName(
+      this, tr("Bone-name map for %1 (cancel: match names as they are)").arg(QFileInfo(bvh).fileName()),
+      QFileInfo(bvh).absolutePath(), nameMapFilter());
+  applyMotion(bvh, map);
 }
 
 bool MainWindow::openFileNow(const QString& fileOrDefault, QString* error) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <type_traits>
 
+#include <glm/gtx/quaternion.hpp>
+
 #include "core/util/thread_pool.h"
 #include "sim/hair/hair_colliders.h"
 #include "sim/hair/hair_simulator.h"
@@ -80,6 +82,31 @@ void followGuides(const Strands& restChildren, const Strands& restGuides, const 
                   const PosedHairColliders* body) {
   childPositions.resize(restChildren.points.size());
   followFrom(restChildren, 0, restGuides, guidePositions, guideFrames, childPositions, body);
+}
+
+std::vector<glm::quat> guideFrames(const Strands& restGuides, const std::vector<float>& positions,
+                                   const glm::quat& rootRotation) {
+  const int n = restGuides.pointsPerStrand;
+  const size_t strands = restGuides.strandCount();
+  std::vector<glm::quat> frames(strands * size_t(std::max(n, 0)), rootRotation);
+  if (n < 2 || positions.size() < restGuides.points.size()) return frames;
+  ThreadPool::shared().parallelFor(0, strands, 256, [&](size_t begin, size_t end) {
+    for (size_t s = begin; s < end; ++s) {
+      const float* rest = restGuides.strand(s);
+      const float* now = positions.data() + 3 * s * n;
+      glm::quat carried = rootRotation;
+      for (int i = 0; i + 1 < n; ++i) {
+        const glm::vec3 restSegment = load(rest, i + 1) - load(rest, i);
+        const glm::vec3 segment = load(now, i + 1) - load(now, i);
+        if (glm::length(restSegment) > 1e-9f && glm::length(segment) > 1e-9f) {
+          const glm::vec3 wanted = carried * glm::normalize(restSegment);
+          carried = glm::normalize(glm::rotation(wanted, glm::normalize(segment)) * carried);
+        }
+        frames[s * n + i + 1] = carried;
+      }
+    }
+  });
+  return frames;
 }
 
 Strands leadingStrands(const Strands& all, size_t guideCount) {

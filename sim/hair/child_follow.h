@@ -34,6 +34,13 @@ void followGuides(const Strands& restChildren, const HairSimulator& guides, std:
 // children's guideOf index the guides), with the simulator holding those
 // guides: writes every strand's current points into `positions` (resized
 // like all.points): the guides as simulated, the children following them.
+// The frames followGuides needs, rebuilt from guide positions alone (e.g. a
+// baked frame): the root rotation carried down each strand by the minimal
+// rotation from each rest segment direction to the current one, as the
+// simulator does. rootRotation maps rest space to the posed world.
+std::vector<glm::quat> guideFrames(const Strands& restGuides, const std::vector<float>& positions,
+                                   const glm::quat& rootRotation);
+
 // The first guideCount strands of `all` (the guides of a groom).
 Strands leadingStrands(const Strands& all, size_t guideCount);
 

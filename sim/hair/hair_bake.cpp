@@ -67,7 +67,7 @@ const std::vector<float>* HairBake::frameAt(float t) const {
 
 HairBake bakeHair(const Character& character, int clipIndex, const Strands& restGuides,
                   const HairSimParams& params, const HairBakeSettings& settings,
-                  const HairBakeCallbacks& callbacks) {
+                  const HairBakeCallbacks& callbacks, const HairRig* givenRig) {
   HairBake bake;
   bake.fps = settings.fps > 0.0f ? settings.fps : 60.0f;
   bake.pointsPerStrand = restGuides.pointsPerStrand;
@@ -78,7 +78,7 @@ HairBake bakeHair(const Character& character, int clipIndex, const Strands& rest
   const int frameCount = int(std::floor(duration * bake.fps + 1e-3f)) + 1;
   const float dt = 1.0f / bake.fps;
 
-  const HairRig rig = HairRig::fromCharacter(character);
+  const HairRig rig = givenRig ? *givenRig : HairRig::fromCharacter(character);
   HairSimulator simulator(params);
   simulator.setRest(restGuides);
   std::vector<glm::mat4> worldFromBone;

@@ -59,8 +59,9 @@ struct HairBakeSettings {
 // Simulates restGuides (in the character's bind pose, world space) through
 // clip clipIndex (-1: the rest pose for one second). Deterministic. Stops
 // early, with cancelled set and the frames done so far, when asked to.
+// rig: null fits one with HairRig::fromCharacter.
 HairBake bakeHair(const Character& character, int clipIndex, const Strands& restGuides,
                   const HairSimParams& params, const HairBakeSettings& settings = {},
-                  const HairBakeCallbacks& callbacks = {});
+                  const HairBakeCallbacks& callbacks = {}, const HairRig* rig = nullptr);
 
 }  // namespace mq

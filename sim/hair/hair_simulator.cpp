@@ -191,8 +191,9 @@ void HairSimulator::stepStrand(size_t s, float h, const RootTarget& root, const 
     glm::vec3 q = p[i] + direction * length;
     contact[i + 1] = 0;
     if (body) {
-      // Push out, restore the length, twice; end pushed out (never inside).
-      for (int pass = 0; pass < 2; ++pass) {
+      // Push out and restore the length until both hold (a few passes
+      // slide the point along the surface); end pushed out (never inside).
+      for (int pass = 0; pass < 6; ++pass) {
         if (!body->pushOut(q, normal[i + 1])) break;
         contact[i + 1] = 1;
         const glm::vec3 d = q - p[i];

@@ -25,6 +25,10 @@ glm::vec3 kindColor(PrimitiveRef::Kind kind) {
 vtkSmartPointer<vtkActor> makeActor(vtkAlgorithm* source, const glm::vec3& color) {
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputConnection(source->GetOutputPort());
+  // Drawn over the hair: a large depth offset keeps handles inside the hair visible.
+  mapper->SetResolveCoincidentTopologyToPolygonOffset();
+  mapper->SetRelativeCoincidentTopologyPolygonOffsetParameters(0.0, -66000.0);
+  mapper->SetRelativeCoincidentTopologyLineOffsetParameters(0.0, -66000.0);
   auto actor = vtkSmartPointer<vtkActor>::New();
   actor->SetMapper(mapper);
   actor->GetProperty()->SetColor(color.x, color.y, color.z);
