@@ -109,6 +109,9 @@ void setUnlit(vtkActor* actor) {
 struct Ground::Impl {
   vtkNew<vtkActor> grid, floor, shadow;
   vtkNew<vtkPolyDataMapper> gridMapper, floorMapper, shadowMapper;
+  double extent = 1.75;  // the character's size, metres
+  bool visible = true;
+  bool shadowHasContact = true;
 };
 
 Ground::Ground() : impl_(std::make_unique<Impl>()) {
@@ -147,19 +150,28 @@ void Ground::fit(const Aabb& bounds, const Aabb& footprint) {
   impl_->floorMapper->SetInputData(makeDisc(0.0, 0.0, 1.15 * half, 1.15 * half, below, Rgba{70, 76, 86, 150},
                                             Rgba{70, 76, 86, 0}, 2.0));
 
-  // The contact shadow: a soft dark ellipse around the feet, just above the grid.
-  const Aabb feet = footprint.valid() ? footprint : bounds;
-  const glm::vec3 centre = feet.center();
-  const double rx = 0.5 * (feet.max.x - feet.min.x) + 0.08 * extent;
-  const double rz = 0.5 * (feet.max.z - feet.min.z) + 0.08 * extent;
-  impl_->shadowMapper->SetInputData(makeDisc(centre.x, centre.z, rx, rz, -below, Rgba{8, 8, 10, 170},
+  impl_->extent = extent;
+  placeShadow(footprint);
+}
+
+void Ground::placeShadow(const Aabb& footprint) {
+  impl_->shadowHasContact = footprint.valid();
+  impl_->shadow->SetVisibility(impl_->visible && impl_->shadowHasContact);
+  if (!footprint.valid()) return;
+  // A soft dark ellipse around the feet, just above the grid.
+  const double extent = impl_->extent;
+  const glm::vec3 centre = footprint.center();
+  const double rx = 0.5 * (footprint.max.x - footprint.min.x) + 0.08 * extent;
+  const double rz = 0.5 * (footprint.max.z - footprint.min.z) + 0.08 * extent;
+  impl_->shadowMapper->SetInputData(makeDisc(centre.x, centre.z, rx, rz, 1e-3 * extent, Rgba{8, 8, 10, 170},
                                              Rgba{8, 8, 10, 0}, 1.4));
 }
 
 void Ground::setVisible(bool visible) {
   impl_->grid->SetVisibility(visible);
   impl_->floor->SetVisibility(visible);
-  impl_->shadow->SetVisibility(visible);
+  impl_->visible = visible;
+  impl_->shadow->SetVisibility(visible && impl_->shadowHasContact);
 }
 
 }  // namespace mq::render

@@ -20,6 +20,8 @@ class Ground {
   // Sizes the grid to `characterBounds` and places the contact shadow over
   // `footprint` (the xz bounds of the vertices near the floor).
   void fit(const Aabb& characterBounds, const Aabb& footprint);
+  // Moves the contact shadow under the posed feet (cheap: once per frame).
+  void placeShadow(const Aabb& footprint);
   void setVisible(bool visible);
 
  private:

@@ -16,7 +16,9 @@
 #include <vtkPolyData.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
+#include <vtkRenderStepsPass.h>
 #include <vtkRenderer.h>
+#include <vtkSSAOPass.h>
 #include <vtkSmartPointer.h>
 
 #include "core/character/character.h"
@@ -84,10 +86,11 @@ bool copyInto(vtkFloatArray* target, const std::vector<float>& source) {
   return true;
 }
 
-// Bounds of the vertices within `height` of the lowest point: the feet.
+// Bounds of the vertices near (or below) the floor y = 0: the planted feet.
+// Invalid when nothing touches the floor (a jump: no contact shadow).
 Aabb footprintOf(const std::vector<MeshActor>& meshes, const Aabb& bounds) {
   Aabb feet;
-  const float limit = bounds.min.y + 0.06f * (bounds.max.y - bounds.min.y);
+  const float limit = 0.06f * (bounds.max.y - bounds.min.y);
   for (const MeshActor& m : meshes) {
     const float* p = m.positions->GetPointer(0);
     for (vtkIdType v = 0; v < m.positions->GetNumberOfTuples(); ++v, p += 3)
@@ -168,6 +171,7 @@ void SceneView::updatePose(const PosedCharacter& posed) {
   }
   m.updateBounds();
   m.skeleton.update(posed.worldFromBone());
+  m.ground.placeShadow(footprintOf(m.meshes, m.bounds));
 }
 
 Aabb SceneView::characterBounds() const { return impl_->bounds; }
@@ -189,6 +193,23 @@ void SceneView::setHighlightedBone(int bone) { impl_->skeleton.setHighlightedBon
 int SceneView::highlightedBone() const { return impl_->skeleton.highlightedBone(); }
 
 void SceneView::setGridVisible(bool visible) { impl_->ground.setVisible(visible); }
+
+void SceneView::setAmbientOcclusion(bool enabled) {
+  Impl& m = *impl_;
+  if (!enabled) {
+    m.renderer->SetPass(nullptr);
+    return;
+  }
+  const float size = m.bounds.valid() ? std::max(m.bounds.max.y - m.bounds.min.y, 0.01f) : 1.75f;
+  vtkNew<vtkRenderStepsPass> steps;
+  vtkNew<vtkSSAOPass> ssao;
+  ssao->SetDelegatePass(steps);
+  ssao->SetRadius(0.05 * size);  // the reach of the occlusion: about a limb's thickness
+  ssao->SetBias(0.002 * size);
+  ssao->SetKernelSize(64);
+  ssao->BlurOn();
+  m.renderer->SetPass(ssao);
+}
 
 void SceneView::frameAll(double aspect) {
   Impl& m = *impl_;

@@ -55,6 +55,10 @@ class SceneView {
   void setHighlightedBone(int bone);
   int highlightedBone() const;
   void setGridVisible(bool visible);
+  // Screen-space ambient occlusion (vtkSSAOPass): contact darkening where
+  // limbs meet the body and the feet meet the floor. Costs a few passes per
+  // frame; off by default, on for offscreen stills.
+  void setAmbientOcclusion(bool enabled);
 
   // Camera: a front three-quarter view from slightly above that fits the
   // character in an image of width/height `aspect` (0: the render window's).

@@ -84,8 +84,8 @@ SurfaceLook SurfaceLook::skin(const glm::vec3& albedo) {
   SurfaceLook look;
   look.albedo = albedo;
   look.wrap = 0.5f;
-  look.scatterColour = {1.0f, 0.42f, 0.3f};
-  look.scatter = 0.6f;
+  look.scatterColour = {1.0f, 0.5f, 0.38f};
+  look.scatter = 0.5f;
   look.translucency = 0.35f;
   look.specular = 0.18f;
   look.glossiness = 40.0f;

@@ -29,7 +29,7 @@ ImageSize parseSize(const std::string& text) {
 
 render::SurfaceLook parseLook(const std::string& name) {
   if (name == "mannequin") return render::SurfaceLook::mannequin();
-  if (name == "skin") return render::SurfaceLook::skin({0.87f, 0.67f, 0.55f});
+  if (name == "skin") return render::SurfaceLook::skin({0.85f, 0.69f, 0.6f});
   if (name == "plain") return render::SurfaceLook::plain({0.8f, 0.8f, 0.8f});
   throw Error("--look expects mannequin, skin or plain, got '" + name + "'");
 }
@@ -70,6 +70,7 @@ int runRender(const std::vector<std::string>& argv) {
   view.updatePose(posed);
   if (args.has("--look")) view.setSurfaceLook(parseLook(args.option("--look")));
   view.setSkeletonVisible(args.has("--skeleton") || scene.document.view.showSkeleton);
+  view.setAmbientOcclusion(true);
   placeCamera(view, scene.document.view, size);
   render::renderToPng(view, out, size.width, size.height);
   std::cout << "wrote " << out << " (" << size.width << "x" << size.height << ", "

@@ -185,6 +185,34 @@ TEST_F(SceneViewTest, SkinLookScattersWarmLightPastTheTerminator) {
   EXPECT_GT(red, 1.5 * blue);
 }
 
+TEST_F(SceneViewTest, AmbientOcclusionDarkensWhereSurfacesMeet) {
+  const LoadedScene scene = openScene("default");
+  show(scene.character);
+  render::OffscreenRenderer renderer(view, kWidth, kHeight);
+  const render::RgbImage empty = background(renderer, scene.character.meshes.size());
+  const render::RgbImage plain = renderer.capture();
+  view.setAmbientOcclusion(true);
+  const render::RgbImage occluded = renderer.capture();
+  view.setAmbientOcclusion(false);
+  EXPECT_EQ(test::compareImages(renderer.capture(), plain).rms, 0.0);  // switches back off
+  // Over the figure: darker overall, never brighter, but most of it open to the sky.
+  size_t figure = 0, darker = 0;
+  double change = 0.0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      if (std::abs(plain.at(x, y)[1] - empty.at(x, y)[1]) <= 24) continue;
+      ++figure;
+      const int d = int(occluded.at(x, y)[1]) - int(plain.at(x, y)[1]);
+      change += d;
+      if (d < -8) ++darker;
+    }
+  ASSERT_GT(figure, 0u);
+  EXPECT_LT(change / figure, -0.5);
+  EXPECT_GT(darker, figure / 100);
+  EXPECT_LT(darker, figure / 2);
+  render::writePng(occluded, MANNEQUIN_BINARY_DIR "/Testing/Temporary/ambient_occlusion.png");
+}
+
 TEST_F(SceneViewTest, SkeletonOverlayShowsThroughTheBody) {
   show(test::makeTestFigure());
   render::OffscreenRenderer renderer(view, kWidth, kHeight);
