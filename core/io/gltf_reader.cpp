@@ -384,7 +384,20 @@ Clip readAnimation(const Document& doc, const NodeGraph& g, const std::map<int, 
   return clip;
 }
 
+// Extensions that change how geometry is stored (Draco, meshopt) would be
+// read wrongly; refuse them clearly. Material, texture and light extensions
+// do not touch what we read, and quantised attributes are plain accessors.
+void checkRequiredExtensions(const Document& doc) {
+  for (const json& e : doc.json().value("extensionsRequired", json::array())) {
+    const std::string name = e.get<std::string>();
+    const bool harmless = name.rfind("KHR_materials_", 0) == 0 || name.rfind("KHR_texture_", 0) == 0 ||
+                          name == "KHR_mesh_quantization" || name == "KHR_lights_punctual";
+    if (!harmless) doc.fail("requires the extension " + name + ", which this importer does not support");
+  }
+}
+
 Character buildCharacter(const Document& doc) {
+  checkRequiredExtensions(doc);
   Character character;
   character.name = std::filesystem::path(doc.path()).stem().string();
   character.sourcePath = doc.path();

@@ -89,6 +89,10 @@ TEST(ImportErrors, GltfWithBadReferences) {
   expectFileError(writeTemp("badmesh.gltf", R"({"asset": {"version": "2.0"}, "nodes": [{"mesh": 3}]})"));
   expectFileError(writeTemp("cycle.gltf", R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}],
                                               "nodes": [{"children": [1]}, {"children": [0]}]})"));
+  EXPECT_NE(expectFileError(writeTemp("draco.gltf", R"({"asset": {"version": "2.0"},
+      "extensionsRequired": ["KHR_draco_mesh_compression"], "extensionsUsed": ["KHR_draco_mesh_compression"]})"))
+                .find("KHR_draco_mesh_compression"),
+            std::string::npos);
   expectFileError(writeTemp("hugecount.gltf", R"({"asset": {"version": "2.0"},
       "accessors": [{"componentType": 5126, "count": 9000000000000, "type": "VEC3"}],
       "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}], "nodes": [{"mesh": 0}]})"));
