@@ -333,6 +333,8 @@ void MainWindow::connectDocument() {
     viewport_->requestRender();
   });
   connect(document_, &EditorDocument::modifiedChanged, this, &MainWindow::updateTitle);
+  connect(document_, &EditorDocument::clipsChanged, this,
+          [this] { statsLabel_->setText(summaryOf(document_->character())); });
   connect(document_, &EditorDocument::documentChanged, this, &MainWindow::documentChanged);
   connect(document_, &EditorDocument::timeChanged, this, &MainWindow::timeChanged);
   connect(poseTool_, &PoseTool::bonePicked, this, [this](int bone) {
@@ -446,17 +448,14 @@ void MainWindow::hideProgress(const QString& message) {
 
 void MainWindow::openFile(const QString& fileOrDefault) {
   if (busy_) return;
-  const bool motion = isMotionFile(fileOrDefault);
+  if (isMotionFile(fileOrDefault)) {
+    applyMotion(fileOrDefault);
+    return;
+  }
   const QString shown = fileOrDefault == "default" ? tr("the default mannequin") : QFileInfo(fileOrDefault).fileName();
   setBusy(true, tr("Opening %1...").arg(shown));
   auto clock = std::make_shared<QElapsedTimer>();
   clock->start();
-
-  if (motion) {
-    setBusy(false, QString());
-    applyMotion(fileOrDefault);
-    return;
-  }
 
   auto* watcher = new QFutureWatcher<Outcome<LoadedDocument>>(this);
   connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, fileOrDefault, clock] {

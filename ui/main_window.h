@@ -58,6 +58,9 @@ class MainWindow : public QMainWindow {
   // Opens "default", a character, a scene document, or a BVH motion (applied
   // to the current character) on a worker thread; emits loadFinished.
   void openFile(const QString& fileOrDefault);
+  // Applies a BVH motion to the current character as a new clip (worker
+  // thread), mapping joint names through `nameMapPath` when given.
+  void applyMotion(const QString& bvhPath, const QString& nameMapPath = QString());
   bool isBusy() const { return busy_; }
   // Same, on the calling thread (tests, scripts). False and `error` on failure.
   bool openFileNow(const QString& fileOrDefault, QString* error = nullptr);
@@ -102,6 +105,7 @@ class MainWindow : public QMainWindow {
   // File menu
   void newDocument();
   void openWithDialog();
+  void applyMotionWithDialog();
   bool save();
   bool saveAs();
   void exportWithDialog();
@@ -135,6 +139,7 @@ class MainWindow : public QMainWindow {
   QAction* saveAction_ = nullptr;
   QAction* saveAsAction_ = nullptr;
   QAction* exportAction_ = nullptr;
+  QAction* applyMotionAction_ = nullptr;
   QAction* quitAction_ = nullptr;
   QAction* undoAction_ = nullptr;
   QAction* redoAction_ = nullptr;

@@ -3,7 +3,8 @@
 // (glTF, GLB, FBX, DAE), a BVH motion (applied to the default mannequin) or a
 // scene document. --screenshot renders the window once the file is open,
 // saves it as a PNG and quits (exit code 1 if the file could not be opened).
-// --select BONE, --clip NAME and --time SECONDS set up the view first.
+// --select BONE, --clip NAME and --time SECONDS set up the view first;
+// --map MAP names the bone-name map of a BVH FILE.
 #include <cstdio>
 
 #include <QApplication>
@@ -48,6 +49,8 @@ int main(int argc, char** argv) {
   const QCommandLineOption select("select", "Select BONE (shows the rotation gizmo on it).", "BONE");
   const QCommandLineOption clip("clip", "Show clip NAME (or index; rest: the rest pose).", "NAME");
   const QCommandLineOption timeOption("time", "Go to SECONDS into the clip.", "SECONDS");
+  const QCommandLineOption map("map", "Bone-name map for a BVH FILE (see core/io/bvh_import.h).", "MAP");
+  parser.addOption(map);
   parser.addOption(screenshot);
   parser.addOption(select);
   parser.addOption(clip);
@@ -93,9 +96,10 @@ int main(int argc, char** argv) {
 
   if (mq::ui::isMotionFile(file)) {
     // A motion alone is shown on the default mannequin.
-    QObject::connect(&window, &mq::ui::MainWindow::loadFinished, &window, [&window, file, afterLoad](bool) {
+    const QString mapPath = parser.value(map);
+    QObject::connect(&window, &mq::ui::MainWindow::loadFinished, &window, [&window, file, mapPath, afterLoad](bool) {
       afterLoad();
-      window.openFile(file);
+      window.applyMotion(file, mapPath);
     }, Qt::SingleShotConnection);
     window.openFile("default");
   } else {

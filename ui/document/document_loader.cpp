@@ -32,8 +32,8 @@ LoadedDocument loadDocument(const QString& fileOrDefault) {
   return out;
 }
 
-Clip loadMotion(const QString& bvhPath, const Character& target) {
-  return importBvhMotion(bvhPath.toStdString(), target);
+Clip loadMotion(const QString& bvhPath, const Character& target, const QString& nameMapPath) {
+  return importBvhMotion(bvhPath.toStdString(), target, nameMapPath.toStdString());
 }
 
 bool isMotionFile(const QString& path) { return suffixOf(path) == "bvh"; }
@@ -53,6 +53,8 @@ QString openFileFilter() {
                      "Motions (*.bvh);;All files (*)");
 }
 QString saveSceneFilter() { return QObject::tr("Scene documents (*.mqscene)"); }
+QString motionFilter() { return QObject::tr("Motions (*.bvh)"); }
+QString nameMapFilter() { return QObject::tr("Bone-name maps (*.txt *.map);;All files (*)"); }
 QString exportMeshFilter() { return QObject::tr("Wavefront OBJ (*.obj);;Stanford PLY (*.ply)"); }
 
 }  // namespace mq::ui

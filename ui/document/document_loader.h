@@ -13,8 +13,9 @@ namespace mq::ui {
 // character, motion and edits. Otherwise a character file (glTF, GLB, FBX, DAE).
 LoadedDocument loadDocument(const QString& fileOrDefault);
 
-// A BVH motion retargeted onto `target` by bone names.
-Clip loadMotion(const QString& bvhPath, const Character& target);
+// A BVH motion retargeted onto `target` by bone names, optionally through a
+// name-map file (lines "bvh_joint target_bone"; see core/io/bvh_import.h).
+Clip loadMotion(const QString& bvhPath, const Character& target, const QString& nameMapPath = QString());
 
 // File kinds by extension.
 bool isMotionFile(const QString& path);
@@ -25,5 +26,7 @@ bool isOpenableFile(const QString& path);
 QString openFileFilter();
 QString saveSceneFilter();
 QString exportMeshFilter();
+QString motionFilter();
+QString nameMapFilter();
 
 }  // namespace mq::ui

@@ -56,14 +56,18 @@ QWidget* PropertiesPanel::makeCharacterPage() {
   auto* form = new QFormLayout(box);
   characterName_ = new QLabel;
   characterSource_ = new QLabel;
-  characterSource_->setWordWrap(true);
-  characterCounts_ = new QLabel;
+  characterMeshes_ = new QLabel;
+  characterVertices_ = new QLabel;
+  characterTriangles_ = new QLabel;
+  characterBones_ = new QLabel;
   characterClips_ = new QLabel;
-  characterClips_->setWordWrap(true);
   characterEdits_ = new QLabel;
   form->addRow(tr("Name"), characterName_);
   form->addRow(tr("Source"), characterSource_);
-  form->addRow(tr("Geometry"), characterCounts_);
+  form->addRow(tr("Meshes"), characterMeshes_);
+  form->addRow(tr("Vertices"), characterVertices_);
+  form->addRow(tr("Triangles"), characterTriangles_);
+  form->addRow(tr("Bones"), characterBones_);
   form->addRow(tr("Clips"), characterClips_);
   form->addRow(tr("Posed bones"), characterEdits_);
   layout->addWidget(box);
@@ -81,14 +85,16 @@ void PropertiesPanel::showCharacter() {
   const QString source = QString::fromStdString(c.sourcePath);
   characterSource_->setText(source.section('/', -1));
   characterSource_->setToolTip(source);
-  characterCounts_->setText(tr("%1 meshes, %2 vertices\n%3 triangles, %4 bones")
-                                .arg(c.meshes.size())
-                                .arg(count(c.vertexCount()))
-                                .arg(count(c.triangleCount()))
-                                .arg(c.skeleton.boneCount()));
+  characterMeshes_->setText(QString::number(c.meshes.size()));
+  characterVertices_->setText(count(c.vertexCount()));
+  characterTriangles_->setText(count(c.triangleCount()));
+  characterBones_->setText(QString::number(c.skeleton.boneCount()));
   QStringList clips;
   for (const Clip& clip : c.clips) clips << QString("%1 (%2 s)").arg(QString::fromStdString(clip.name)).arg(clip.duration(), 0, 'f', 2);
-  characterClips_->setText(clips.isEmpty() ? tr("none") : clips.join(", "));
+  // One line: a label whose height changes later is not re-laid out inside
+  // the stacked pages; the timeline's clip box lists the clips anyway.
+  characterClips_->setText(QString::number(clips.size()));
+  characterClips_->setToolTip(clips.join("\n"));
   characterEdits_->setText(QString::number(document_->poseEdits().rotations.size()));
 }
 
@@ -104,7 +110,6 @@ QWidget* PropertiesPanel::makeBonePage() {
   boneParent_ = new QLabel;
   boneJoint_ = new QLabel;
   boneChildren_ = new QLabel;
-  boneChildren_->setWordWrap(true);
   form->addRow(tr("Name"), boneName_);
   form->addRow(tr("Parent"), boneParent_);
   form->addRow(tr("Children"), boneChildren_);

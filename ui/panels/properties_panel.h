@@ -45,7 +45,10 @@ class PropertiesPanel : public QWidget {
   QLabel* boneChildren_ = nullptr;
   QLabel* characterName_ = nullptr;
   QLabel* characterSource_ = nullptr;
-  QLabel* characterCounts_ = nullptr;
+  QLabel* characterMeshes_ = nullptr;
+  QLabel* characterVertices_ = nullptr;
+  QLabel* characterTriangles_ = nullptr;
+  QLabel* characterBones_ = nullptr;
   QLabel* characterClips_ = nullptr;
   QLabel* characterEdits_ = nullptr;
   std::array<QDoubleSpinBox*, 3> angles_{};
