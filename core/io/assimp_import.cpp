@@ -172,9 +172,10 @@ Skeleton buildSkeleton(const aiScene* scene, const std::vector<RawClip>& clips, 
 }
 
 // boneFromMesh at bind time. FBX: from the rest pose of the nodes, because
-// Assimp 5.2's FBX bone offsets are wrong for many files (assimp issue 4620:
-// it stores the cluster's Transform instead of TransformLink^-1 * Transform).
-// Other formats: Assimp's offset, which carries the file's own bind pose.
+// Assimp 5.2's FBX bone offsets are wrong for many files (assimp issue 4620;
+// with Assimp's offsets the test FBX's rest pose comes out bent by ~5% of its
+// length instead of reproducing the mesh). Other formats: Assimp's offset,
+// which carries the file's own bind pose.
 glm::mat4 inverseBindOf(const aiBone* bone, const NodeTable& t, int boneNode, int meshNode, bool fromNodes) {
   if (fromNodes) return glm::inverse(t.worldRest[boneNode]) * t.worldRest[meshNode];
   return toGlm(bone->mOffsetMatrix);
