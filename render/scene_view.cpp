@@ -109,12 +109,15 @@ struct SceneView::Impl {
   Aabb bounds;
   bool skeletonVisible = false;
 
-  void updateBounds() {
+  // Bounds of the meshes; of the joints for a character that has only a skeleton.
+  void updateBounds(const std::vector<glm::mat4>& worldFromBone) {
     bounds = Aabb{};
     for (const MeshActor& m : meshes) {
       const float* p = m.positions->GetPointer(0);
       for (vtkIdType v = 0; v < m.positions->GetNumberOfTuples(); ++v, p += 3) bounds.extend({p[0], p[1], p[2]});
     }
+    if (meshes.empty())
+      for (const glm::mat4& joint : worldFromBone) bounds.extend(glm::vec3(joint[3]));
   }
 };
 
@@ -141,7 +144,7 @@ void SceneView::setCharacter(const Character& character) {
   }
   PosedCharacter rest;
   rest.evaluate(character, -1, 0.0f, nullptr, nullptr);
-  m.updateBounds();  // rest bounds set the size of the bones
+  m.updateBounds(rest.worldFromBone());  // rest bounds set the size of the bones
   updatePose(rest);
   const float height = m.bounds.valid() ? m.bounds.max.y - m.bounds.min.y : 1.75f;
   m.skeleton.setSkeleton(character.skeleton, std::max(0.008f * std::max(height, m.bounds.diagonal() * 0.5f), 1e-4f));
@@ -169,7 +172,7 @@ void SceneView::updatePose(const PosedCharacter& posed) {
     mesh.polyData->GetPoints()->Modified();
     mesh.polyData->Modified();
   }
-  m.updateBounds();
+  m.updateBounds(posed.worldFromBone());
   m.skeleton.update(posed.worldFromBone());
   m.ground.placeShadow(footprintOf(m.meshes, m.bounds));
 }

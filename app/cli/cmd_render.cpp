@@ -59,7 +59,8 @@ int runRender(const std::vector<std::string>& argv) {
   const ImageSize size = parseSize(args.option("--size", "960x720"));
 
   const LoadedScene scene = openScene(file);
-  if (scene.character.meshes.empty()) throw FileError(file, "has no character meshes to render");
+  if (scene.character.skeleton.boneCount() == 0 && scene.character.meshes.empty())
+    throw FileError(file, "has no character to render");
   const int clip = chooseClip(args, scene, file);
   const float time = static_cast<float>(args.number("--time", scene.document.time));
 
@@ -69,7 +70,9 @@ int runRender(const std::vector<std::string>& argv) {
   view.setCharacter(scene.character);
   view.updatePose(posed);
   if (args.has("--look")) view.setSurfaceLook(parseLook(args.option("--look")));
-  view.setSkeletonVisible(args.has("--skeleton") || scene.document.view.showSkeleton);
+  // A motion file alone (no meshes) shows its skeleton.
+  view.setSkeletonVisible(args.has("--skeleton") || scene.document.view.showSkeleton ||
+                          scene.character.meshes.empty());
   view.setAmbientOcclusion(true);
   placeCamera(view, scene.document.view, size);
   render::renderToPng(view, out, size.width, size.height);

@@ -227,6 +227,18 @@ TEST_F(SceneViewTest, SkeletonOverlayShowsThroughTheBody) {
   EXPECT_GT(orangePixels(renderer.capture()), 30u);
 }
 
+TEST_F(SceneViewTest, SkeletonOnlyCharacterIsFramedByItsJoints) {
+  Character motionOnly = test::makeTestFigure();
+  motionOnly.meshes.clear();  // what a BVH file gives
+  view.setCharacter(motionOnly);
+  ASSERT_TRUE(view.characterBounds().valid());
+  EXPECT_NEAR(view.characterBounds().max.y, 1.57f, 1e-4f);  // the head joint
+  view.setSkeletonVisible(true);
+  view.frameAll(double(kWidth) / kHeight);
+  render::OffscreenRenderer renderer(view, kWidth, kHeight);
+  EXPECT_GT(bluePixels(renderer.capture()), 300u);
+}
+
 TEST_F(SceneViewTest, PickBoneFindsTheBoneUnderTheCursor) {
   const Character figure = test::makeTestFigure();
   show(figure);
