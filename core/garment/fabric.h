@@ -20,7 +20,7 @@ struct Fabric {
   float stretchStiffness = 1.0e4f;  // N/m: membrane tension per unit strain
   float shearStiffness = 50.0f;     // N/m per radian of in-plane shear
   float bendStiffness = 1.0e-5f;    // N m: bending moment per unit width per unit curvature
-  float damping = 0.02f;            // s: spring damping = damping * stiffness (Rayleigh)
+  float damping = 1e-3f;            // s: spring damping = damping * stiffness (Rayleigh)
   float friction = 0.3f;            // Coulomb coefficient against bodies and itself
   float thickness = 0.5e-3f;        // m
 

@@ -74,7 +74,8 @@ class SectionReader {
     if (!v.is_array() || v.size() != 3) fail(key, "must be an array of 3 numbers");
     glm::vec3 out;
     for (int c = 0; c < 3; ++c) {
-      if (!v[c].is_number() || !std::isfinite(v[c].get<double>())) fail(key, "must be an array of 3 finite numbers");
+      if (!v[c].is_number() || !std::isfinite(v[c].get<double>()) || std::abs(v[c].get<double>()) > 3.0e38)
+        fail(key, "must be an array of 3 finite numbers");
       out[c] = v[c].get<float>();
     }
     return out;

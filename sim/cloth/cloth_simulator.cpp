@@ -172,6 +172,7 @@ void ClothSimulator::substep(float h, float bodyFraction) {
   preparePins(h);
   findRestingContacts();
   stepStart_ = state_.x;
+  touched_.assign(state_.size(), 0);
   stats_.solverIterations += integrator_->step(state_, h, *forces_).solverIterations;
   const auto& springs = forces_->springs().springs();
   const size_t structural = forces_->structuralCount();
@@ -189,10 +190,14 @@ void ClothSimulator::substep(float h, float bodyFraction) {
   if (selfCollision_) stats_.selfContacts += selfCollision_->resolve(state_, stepStart_, settings_.selfThickness, 4);
   collideWithColliders(h);
   if (settings_.stretchLimit == StretchLimitMode::PositionCorrection && (!colliders_.empty() || !body_.empty())) {
-    // Contacts moved vertices after the limit: limit again. The corrections
-    // are small next to the collision thickness, so vertices stay outside.
+    // Contacts moved vertices after the limit: limit again, holding the
+    // vertices in contact where they are (as if pinned), so none goes back in.
+    const std::vector<float> freeInvMass = state_.invMass;
+    for (size_t i = 0; i < state_.size(); ++i)
+      if (touched_[i]) state_.invMass[i] = 0.0f;
     const StretchLimitResult r =
         limitStretchByPositions(state_, springs, structural, settings_.maxStretch, settings_.stretchIterations, h);
+    state_.invMass = freeInvMass;
     stats_.stretchPasses += r.passes;
     held = r.maxStretchAfter <= settings_.maxStretch;
   }
@@ -211,6 +216,7 @@ void ClothSimulator::preparePins(float h) {
 
 void ClothSimulator::findRestingContacts() {
   state_.contactNormal.assign(state_.size(), glm::vec3(0.0f));
+  state_.contactSpeed.assign(state_.size(), 0.0f);
   if (colliders_.empty() && body_.empty()) return;
   // A vertex resting on a surface: within twice the thickness, not moving
   // away, and pressed onto it by gravity (so it can still fall off an overhang).
@@ -219,15 +225,20 @@ void ClothSimulator::findRestingContacts() {
     for (size_t i = b; i < e; ++i) {
       if (state_.invMass[i] == 0.0f) continue;
       glm::vec3 normal(0.0f);
+      float speed = 0.0f;
       for (const PrimitiveCollider& c : colliders_) {
         glm::vec3 n;
         if (c.signedDistance(state_.x[i], n) < reach) normal = n;
       }
       BodyContact contact;
-      if (!body_.empty() && body_.nearestContact(state_.x[i], contact) && contact.signedDistance < reach)
+      if (!body_.empty() && body_.nearestContact(state_.x[i], contact) && contact.signedDistance < reach) {
         normal = contact.normal;
-      if (glm::dot(normal, settings_.gravity) < 0.0f && glm::dot(state_.v[i], normal) <= 1e-3f)
+        speed = glm::dot(contact.velocity, normal);
+      }
+      if (glm::dot(normal, settings_.gravity) < 0.0f && glm::dot(state_.v[i], normal) <= speed + 1e-3f) {
         state_.contactNormal[i] = normal;
+        state_.contactSpeed[i] = speed;
+      }
     }
   });
 }
@@ -249,6 +260,7 @@ void ClothSimulator::collideWithColliders(float h) {
         const glm::vec3 entry = firstContactAlong(c, stepStart_[i], state_.x[i], thickness);
         if (entry != state_.x[i]) state_.x[i] = entry;
         const float d = c.signedDistance(state_.x[i], n);
+        if (d < thickness) touched_[i] = 1;
         if (d < thickness)
           respondToContact(state_.x[i], state_.v[i], n, thickness - d, glm::vec3(0.0f),
                            c.friction >= 0.0f ? c.friction : settings_.friction);
@@ -256,9 +268,11 @@ void ClothSimulator::collideWithColliders(float h) {
       if (body_.empty()) continue;
       BodyContact contact;
       if (body_.firstHitAlong(stepStart_[i], state_.x[i], contact)) state_.x[i] = contact.point;
-      if (body_.nearestContact(state_.x[i], contact) && contact.signedDistance < thickness)
+      if (body_.nearestContact(state_.x[i], contact) && contact.signedDistance < thickness) {
+        touched_[i] = 1;
         respondToContact(state_.x[i], state_.v[i], contact.normal, thickness - contact.signedDistance,
                          contact.velocity, settings_.friction);
+      }
     }
   });
   (void)h;

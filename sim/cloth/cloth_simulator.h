@@ -118,6 +118,7 @@ class ClothSimulator {
   ClothState state_;
   std::vector<float> freeInvMass_;
   std::vector<glm::vec3> stepStart_;
+  std::vector<uint8_t> touched_;  // vertices a collision moved in this substep
   std::vector<PrimitiveCollider> colliders_;
   BodyCollider body_;
   std::vector<float> pendingBody_;

@@ -17,6 +17,7 @@ struct ClothState {
   // Outward normal of a resting contact at the start of the step (zero: none);
   // the implicit solver keeps such a vertex's normal velocity at zero.
   std::vector<glm::vec3> contactNormal;
+  std::vector<float> contactSpeed;  // the surface's velocity along contactNormal
 
   size_t size() const { return x.size(); }
 };

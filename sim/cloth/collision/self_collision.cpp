@@ -75,7 +75,11 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
       if (v == a || v == b || v == c) return;
       const glm::vec3 w = closestTriangleWeights(x0[v], x0[a], x0[b], x0[c]);
       const glm::vec3 normal = glm::cross(x0[b] - x0[a], x0[c] - x0[a]);
-      const float side = glm::dot(x0[v] - (w.x * x0[a] + w.y * x0[b] + w.z * x0[c]), normal) >= 0.0f ? 1.0f : -1.0f;
+      const glm::vec3 offset = x0[v] - (w.x * x0[a] + w.y * x0[b] + w.z * x0[c]);
+      const float reach = thickness + glm::length(s.x[v] - x0[v]) +
+                          std::max({glm::length(s.x[a] - x0[a]), glm::length(s.x[b] - x0[b]), glm::length(s.x[c] - x0[c])});
+      if (glm::length(offset) > reach) return;
+      const float side = glm::dot(offset, normal) >= 0.0f ? 1.0f : -1.0f;
       out.push_back({uint32_t(v), t, w, side});
     });
   });
@@ -90,7 +94,9 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
         const glm::vec2 st = closestSegmentParameters(x0[p0], x0[p1], x0[q0], x0[q1]);
         const glm::vec3 d = glm::mix(x0[p0], x0[p1], st.x) - glm::mix(x0[q0], x0[q1], st.y);
         const float l = glm::length(d);
-        if (l < 1e-9f) continue;
+        const float reach = thickness + std::max(glm::length(s.x[p0] - x0[p0]), glm::length(s.x[p1] - x0[p1])) +
+                            std::max(glm::length(s.x[q0] - x0[q0]), glm::length(s.x[q1] - x0[q1]));
+        if (l < 1e-9f || l > reach) continue;
         out.push_back({uint32_t(e), f, st, d / l});
       }
     });
@@ -132,14 +138,20 @@ int SelfCollision::applyVertexTriangle(ClothState& s, const VertexTriangle& c, f
   const glm::vec3 normal = glm::cross(s.x[b] - s.x[a], s.x[d] - s.x[a]);
   const float l = glm::length(normal);
   if (l <= 0.0f) return 0;
+  const glm::vec3 n = (c.side / l) * normal;
+  // Only a vertex over the triangle (not beside it in its plane) is in contact.
+  const glm::vec3 offset = s.x[c.vertex] - (c.weights.x * s.x[a] + c.weights.y * s.x[b] + c.weights.z * s.x[d]);
+  if (glm::length(offset - glm::dot(offset, n) * n) > thickness) return 0;
   const uint32_t v[4] = {c.vertex, a, b, d};
   const float w[4] = {1.0f, -c.weights.x, -c.weights.y, -c.weights.z};
-  return separate(s, v, w, (c.side / l) * normal, thickness);
+  return separate(s, v, w, n, thickness);
 }
 
 int SelfCollision::applyEdgeEdge(ClothState& s, const EdgeEdge& c, float thickness) const {
   const auto [p0, p1] = edges_[c.e0];
   const auto [q0, q1] = edges_[c.e1];
+  const glm::vec3 offset = glm::mix(s.x[p0], s.x[p1], c.params.x) - glm::mix(s.x[q0], s.x[q1], c.params.y);
+  if (glm::length(offset - glm::dot(offset, c.normal0) * c.normal0) > thickness) return 0;
   const uint32_t v[4] = {p0, p1, q0, q1};
   const float w[4] = {1.0f - c.params.x, c.params.x, -(1.0f - c.params.y), -c.params.y};
   return separate(s, v, w, c.normal0, thickness);

@@ -56,7 +56,7 @@ IntegratorReport ImplicitEuler::step(ClothState& s, float h, ClothForces& forces
       // z: the constrained part of dv (stop a resting contact's normal velocity).
       dv_[i] = glm::vec3(0.0f);
       if (!s.contactNormal.empty() && s.invMass[i] != 0.0f)
-        dv_[i] = -glm::dot(s.v[i], s.contactNormal[i]) * s.contactNormal[i];
+        dv_[i] = (s.contactSpeed[i] - glm::dot(s.v[i], s.contactNormal[i])) * s.contactNormal[i];
     }
   });
   const IntegratorReport report = solve(s, forces);
