@@ -187,7 +187,7 @@ void ClothSimulator::substep(float h, float bodyFraction) {
     stats_.stretchPasses += limitStretchByVelocities(state_, stepStart_, springs, structural, settings_.maxStretch,
                                                      settings_.stretchIterations, h)
                                 .passes;
-  if (selfCollision_) stats_.selfContacts += selfCollision_->resolve(state_, stepStart_, settings_.selfThickness, 4);
+  if (selfCollision_) stats_.selfContacts += selfCollision_->resolve(state_, stepStart_, settings_.selfThickness, 20);
   collideWithColliders(h);
   if (settings_.stretchLimit == StretchLimitMode::PositionCorrection && (!colliders_.empty() || !body_.empty())) {
     // Contacts moved vertices after the limit: limit again, holding the
