@@ -21,11 +21,23 @@
 namespace mq::render {
 namespace {
 
+// One connection held open for the life of the process: an X server without
+// -noreset (xvfb-run's) resets whenever its last client leaves, and a window
+// opened during that reset fails ("bad X server connection").
+Display* heldDisplay = nullptr;
+std::string heldName;
+pid_t heldBy = 0;
+
 bool displayAnswers(const char* name) {
+  if (heldDisplay && heldBy != getpid()) heldDisplay = nullptr;  // a forked child: the parent's socket, leave it
   if (!name || !*name) return false;
+  if (heldDisplay && heldName == name) return true;
   Display* display = XOpenDisplay(name);
   if (!display) return false;
-  XCloseDisplay(display);
+  if (heldDisplay) XCloseDisplay(heldDisplay);
+  heldBy = getpid();
+  heldDisplay = display;
+  heldName = name;
   return true;
 }
 
