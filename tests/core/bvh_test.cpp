@@ -15,6 +15,7 @@
 #include "core/io/character_import.h"
 #include "core/io/file_bytes.h"
 #include "core/util/error.h"
+#include "import_test_util.h"
 
 namespace mq {
 namespace {
@@ -22,8 +23,7 @@ namespace {
 const std::string kMotion = std::string(MANNEQUIN_SHARED_DIR) + "/assets/motion/";
 
 std::string tempPath(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("mq_bvh_test_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const auto dir = test::scratchDir("mq_bvh_test");
   return (dir / name).string();
 }
 

@@ -14,6 +14,7 @@
 #include "core/io/file_bytes.h"
 #include "core/io/mesh_export.h"
 #include "core/util/error.h"
+#include "import_test_util.h"
 
 namespace mq {
 namespace {
@@ -24,8 +25,7 @@ struct MeshData {
 };
 
 std::string tempPath(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("mq_export_test_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const auto dir = test::scratchDir("mq_export_test");
   return (dir / name).string();
 }
 

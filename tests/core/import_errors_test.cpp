@@ -10,6 +10,7 @@
 #include "core/io/character_import.h"
 #include "core/io/file_bytes.h"
 #include "core/util/error.h"
+#include "import_test_util.h"
 
 namespace mq {
 namespace {
@@ -17,8 +18,7 @@ namespace {
 const std::string kCharacters = std::string(MANNEQUIN_SHARED_DIR) + "/assets/characters/";
 
 std::filesystem::path tempDir() {
-  const auto dir = std::filesystem::temp_directory_path() / ("mq_import_errors_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const auto dir = test::scratchDir("mq_import_errors");
   return dir;
 }
 

@@ -12,6 +12,7 @@
 #include "core/io/character_import.h"
 #include "core/io/file_bytes.h"
 #include "core/util/error.h"
+#include "import_test_util.h"
 
 namespace mq {
 namespace {
@@ -21,8 +22,7 @@ const std::string kAssets = std::string(MANNEQUIN_SHARED_DIR) + "/assets/";
 void fuzz(const std::string& source, const std::string& extension, int rounds, int flipsPerRound,
           const std::string& alphabet = "") {
   const std::string original = loadFileText(kAssets + source);
-  const auto dir = std::filesystem::temp_directory_path() / ("mq_fuzz_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const auto dir = test::scratchDir("mq_fuzz");
   // Companion files (external buffers) beside the mutant.
   for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(kAssets + source).parent_path()))
     if (entry.path().extension() == ".bin")
@@ -69,8 +69,7 @@ void collectIntegers(nlohmann::json& j, std::vector<nlohmann::json*>& out) {
 // hostile values: the bounds checks must catch every one.
 TEST(ImportFuzz, GltfIntegerFields) {
   const nlohmann::json original = nlohmann::json::parse(loadFileText(kAssets + "characters/SimpleSkin/SimpleSkin.gltf"));
-  const auto dir = std::filesystem::temp_directory_path() / ("mq_fuzz_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const auto dir = test::scratchDir("mq_fuzz");
   const std::string path = (dir / "integers.gltf").string();
   const std::vector<int64_t> hostile = {0, 1, -1, 2, 3, 7, 255, 5126, 65535, 2147483647LL, 4294967295LL, 1000000000000LL};
   std::mt19937 rng(12111);

@@ -14,6 +14,7 @@
 
 #include "core/character/posed_character.h"
 #include "core/io/character_import.h"
+#include "import_test_util.h"
 
 namespace mq {
 namespace {
@@ -51,8 +52,7 @@ std::string writeGltf(const std::string& name, json gltf, const Buffer& buffer) 
   gltf["asset"] = {{"version", "2.0"}};
   gltf["buffers"] = {{{"byteLength", buffer.bytes.size()},
                       {"uri", "data:application/octet-stream;base64," + base64(buffer.bytes)}}};
-  const auto dir = std::filesystem::temp_directory_path() / ("mq_gltf_features_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const auto dir = test::scratchDir("mq_gltf_features");
   const std::string path = (dir / name).string();
   std::ofstream(path) << gltf.dump(1);
   return path;
