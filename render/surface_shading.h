@@ -30,7 +30,7 @@ struct SurfaceLook {
   float translucency = 0.0f;   // back light shining through thin parts
   float specular = 0.25f;      // gloss strength
   float glossiness = 28.0f;    // Blinn-Phong exponent
-  float rim = 1.4f;            // rim light strength
+  float rim = 2.0f;            // rim light strength
   float rimPower = 3.5f;       // higher: a thinner rim
   float exposure = 0.75f;      // scales the linear result before sRGB encoding
 
