@@ -89,6 +89,8 @@ struct StrandShaper {
     const glm::vec3 root = load(pts, 0);
     const float phase = kTwoPi * phaseField.noise(root * 25.0f) * 2.0f;
     const float wanderStart = 256.0f * random01(style.seed, key, 3);
+    const float fibreSegment = length / float(points - 1);
+    glm::vec3 placed = root;
     glm::vec3 original = root, next = load(pts, 1);
     glm::vec3 tangent = glm::normalize(next - original + glm::vec3(1e-9f));
     glm::vec3 normal = rootNormal - glm::dot(rootNormal, tangent) * tangent;
@@ -114,9 +116,20 @@ struct StrandShaper {
         const float along = s / std::max(length, 1e-6f);
         offset += style.strandNoise * along * std::sqrt(along) * wander.at(wanderStart + 6.0f * along);
       }
-      glm::vec3 p = original + offset;
-      proxy.pushOut(p, kMargin);
+      // Follow the leader towards the shaped point, so every segment keeps
+      // the fibre's segment length (what the dynamics take as rest length).
+      const glm::vec3 target = original + offset;
+      const glm::vec3 d = target - placed;
+      const float dl = glm::length(d);
+      glm::vec3 p = dl > 1e-9f ? placed + d * (fibreSegment / dl) : target;
+      if (proxy.pushOut(p, kMargin)) {
+        const glm::vec3 slid = p - placed;
+        const float sl = glm::length(slid);
+        if (sl > 1e-9f) p = placed + slid * (fibreSegment / sl);
+        proxy.pushOut(p, kMargin);
+      }
       store(pts, k, p);
+      placed = p;
     }
   }
 };

@@ -102,6 +102,27 @@ TEST(HairGroom, DefaultMannequinHairStaysOutOfTheBody) {
     groom->grow(style, 4000);
     EXPECT_EQ(groom->strands().strandCount(), 4000u) << name;
     EXPECT_EQ(groom->countPointsInside(), 0u) << name;
+    // Guides keep a fixed segment length (their rest lengths for the
+    // dynamics), but where a push-out bends them at the body.
+    const Strands& s = groom->strands();
+    size_t off = 0, total = 0;
+    for (size_t g = 0; g < groom->guideCount(); ++g) {
+      std::vector<float> lengths;
+      for (int k = 1; k < s.pointsPerStrand; ++k) {
+        const float* p = s.strand(g) + 3 * k;
+        lengths.push_back(glm::length(glm::vec3(p[0], p[1], p[2]) - glm::vec3(p[-3], p[-2], p[-1])));
+      }
+      std::vector<float> sorted = lengths;
+      std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+      const float median = sorted[sorted.size() / 2];
+      for (float len : lengths) {
+        ASSERT_GT(len, 0.8f * median) << name;
+        ASSERT_LT(len, 1.01f * median) << name;
+        off += std::abs(len - median) > 1e-3f * median;
+        ++total;
+      }
+    }
+    EXPECT_LT(off, total / 100) << name;  // under 1% of the segments differ from the strand's first
   }
 }
 
