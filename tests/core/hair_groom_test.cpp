@@ -7,6 +7,7 @@
 #include "core/hair/hairstyle_json.h"
 #include "core/hair/root_sampling.h"
 #include "core/hair/strand_tracer.h"
+#include "core/scene/scene_document.h"
 #include "core/util/error.h"
 #include "hair_test_util.h"
 
@@ -172,6 +173,17 @@ TEST(HairStyleJson, RoundTripAndOverrides) {
   EXPECT_THROW(hairStyleFromJson(nlohmann::json("mohawk")), Error);
   EXPECT_THROW(hairStyleFromJson(nlohmann::json::parse(R"({"length": "long"})")), Error);
   EXPECT_THROW(scalpRegionFromJson(nlohmann::json::parse(R"({"kind": "painted"})")), Error);
+}
+
+TEST(HairStyleJson, ShippedHairScenesHoldTheBuiltInStyles) {
+  for (const std::string& name : builtinHairStyleNames()) {
+    const std::string path = std::string(MANNEQUIN_SOURCE_DIR) + "/resources/scenes/hair_" + name + ".json";
+    const SceneDocument doc = loadSceneDocument(path);
+    EXPECT_EQ(doc.character, "default") << path;
+    const HairSection section = hairSectionFromJson(doc.hair);
+    EXPECT_EQ(toJson(section.style), toJson(builtinHairStyle(name))) << path;
+    EXPECT_EQ(section.scalp.kind, ScalpRegion::Kind::Tagged) << path;
+  }
 }
 
 }  // namespace
