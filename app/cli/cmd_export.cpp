@@ -43,6 +43,9 @@ int runExport(const std::vector<std::string>& argv) {
   const std::string out = args.option("--out");
   if (out.empty() || !isMeshExportPath(out)) throw Error("export needs --out OUT.obj, .ply, .gltf or .glb");
   const LoadedScene scene = openScene(args.positional()[0]);
+  if (scene.character.meshes.empty())
+    throw Error("'" + scene.character.name + "' has no meshes to write (a BVH holds a skeleton and motion only: "
+                "apply it to a character with pose FILE --motion BVH)");
 
   if (!args.has("--fps")) {
     if (args.has("--clip")) throw Error("--clip needs --fps (export writes one file per frame)");

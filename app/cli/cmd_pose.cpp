@@ -35,6 +35,9 @@ int runPose(const std::vector<std::string>& argv) {
   if (!isMeshExportPath(out)) throw Error("--out must end in .obj, .ply, .gltf or .glb: " + out);
 
   LoadedScene scene = openScene(args.positional()[0]);
+  if (scene.character.meshes.empty())
+    throw Error("'" + scene.character.name + "' has no meshes to write (a BVH holds a skeleton and motion only: "
+                "apply it to a character with pose FILE --motion BVH)");
   const int clip = chooseClip(args, scene);
   const float time = static_cast<float>(args.number("--time", scene.document.time));
   PosedCharacter posed;
