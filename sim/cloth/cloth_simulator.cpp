@@ -155,6 +155,9 @@ void ClothSimulator::step(float dt) {
     const float h = dt / float(substeps);
     stats_.solverIterations = stats_.selfContacts = stats_.stretchPasses = 0;
     limitHeld_ = true;
+    // The last try may spend 20 times the passes on the limit.
+    passBudget_ = settings_.stretchIterations *
+                  (substeps * 2 > settings_.maxRefinement * std::max(1, substepsFor(dt)) ? 20 : 1);
     if (!body_.empty()) body_.restartStep();
     for (int k = 0; k < substeps; ++k) substep(h, float(k + 1) / float(substeps));
     if (limitHeld_ || substeps >= settings_.maxRefinement * std::max(1, substepsFor(dt))) break;
@@ -180,7 +183,7 @@ void ClothSimulator::substep(float h, float bodyFraction) {
   bool held = true;
   if (settings_.stretchLimit == StretchLimitMode::PositionCorrection) {
     const StretchLimitResult r =
-        limitStretchByPositions(state_, springs, structural, settings_.maxStretch, settings_.stretchIterations, h);
+        limitStretchByPositions(state_, springs, structural, settings_.maxStretch, passBudget_, h);
     stats_.stretchPasses += r.passes;
     held = r.maxStretchAfter <= settings_.maxStretch;
   } else if (settings_.stretchLimit == StretchLimitMode::VelocityCorrection)
@@ -190,13 +193,14 @@ void ClothSimulator::substep(float h, float bodyFraction) {
   if (selfCollision_) stats_.selfContacts += selfCollision_->resolve(state_, stepStart_, settings_.selfThickness, 20);
   collideWithColliders(h);
   if (settings_.stretchLimit == StretchLimitMode::PositionCorrection && (!colliders_.empty() || !body_.empty())) {
-    // Contacts moved vertices after the limit: limit again, holding the
-    // vertices in contact where they are (as if pinned), so none goes back in.
+    // Contacts moved vertices after the limit: limit again, with the
+    // vertices in contact made 20 times heavier so they move little (far less
+    // than the thickness they keep from the surface) and none goes back in.
     const std::vector<float> freeInvMass = state_.invMass;
     for (size_t i = 0; i < state_.size(); ++i)
-      if (touched_[i]) state_.invMass[i] = 0.0f;
+      if (touched_[i]) state_.invMass[i] *= 0.05f;
     const StretchLimitResult r =
-        limitStretchByPositions(state_, springs, structural, settings_.maxStretch, settings_.stretchIterations, h);
+        limitStretchByPositions(state_, springs, structural, settings_.maxStretch, passBudget_, h);
     state_.invMass = freeInvMass;
     stats_.stretchPasses += r.passes;
     held = r.maxStretchAfter <= settings_.maxStretch;

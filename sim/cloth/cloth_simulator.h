@@ -124,7 +124,8 @@ class ClothSimulator {
   std::vector<float> pendingBody_;
   std::vector<Pin> pins_;
   ClothStats stats_;
-  bool limitHeld_ = true;  // the elongation limit held in every substep of this try
+  bool limitHeld_ = true;
+  int passBudget_ = 100;   // elongation-limit passes per call in this try  // the elongation limit held in every substep of this try
 };
 
 }  // namespace mq::cloth
