@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include <QLocale>
 #include <QUndoStack>
 
 #include "core/util/thread_pool.h"
@@ -55,6 +56,15 @@ void EditorDocument::notifyChanged() {
   unsavedSectionChanges_ = true;
   emit documentChanged();
   emit modifiedChanged(true);
+}
+
+QString EditorDocument::summary() const {
+  const QLocale locale;
+  return tr("%1 vertices, %2 triangles, %3 bones, %4 clips")
+      .arg(locale.toString(qulonglong(character_.vertexCount())))
+      .arg(locale.toString(qulonglong(character_.triangleCount())))
+      .arg(character_.skeleton.boneCount())
+      .arg(character_.clips.size());
 }
 
 // --- pose ---------------------------------------------------------------------

@@ -39,6 +39,8 @@ class EditorDocument : public QObject {
   void replace(LoadedDocument loaded);
 
   const Character& character() const { return character_; }
+  // "30,362 vertices, 60,720 triangles, 21 bones, 2 clips"
+  QString summary() const;
   const PosedCharacter& posed() const { return posed_; }
   const PoseEdits& poseEdits() const { return edits_; }
   QUndoStack* undoStack() const { return undoStack_; }

@@ -1,0 +1,335 @@
+// MainWindow's file handling: opening on a worker thread, motions, saving,
+// exporting, recent files, progress, drag and drop, closing.
+#include "ui/main_window.h"
+
+#include <variant>
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFutureWatcher>
+#include <QMenu>
+#include <QMimeData>
+#include <QProgressBar>
+#include <QSettings>
+#include <QStatusBar>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include "core/io/mesh_export.h"
+#include "render/scene_view.h"
+#include "ui/document/document_loader.h"
+#include "ui/document/editor_document.h"
+
+namespace mq::ui {
+namespace {
+
+constexpr int kMaxRecentFiles = 8;
+const char* kRecentFilesKey = "recentFiles";
+
+// What a worker thread hands back: the result or the error text.
+template <typename T>
+using Outcome = std::variant<T, QString>;
+
+template <typename T, typename Work>
+Outcome<T> runCatching(Work work) {
+  try {
+    return work();
+  } catch (const std::exception& e) {
+    return QString::fromUtf8(e.what());
+  }
+}
+
+}  // namespace
+
+// --- files -----------------------------------------------------------------------------
+
+bool MainWindow::maybeDiscardChanges() {
+  return !document_->isModified() || !confirmDiscardChanges || confirmDiscardChanges();
+}
+
+void MainWindow::newDocument() {
+  if (maybeDiscardChanges()) openFile("default");
+}
+
+void MainWindow::openWithDialog() {
+  QSettings settings;
+  const QString start = settings.value("lastDirectory").toString();
+  const QString path = QFileDialog::getOpenFileName(this, tr("Open"), start, openFileFilter());
+  if (path.isEmpty()) return;
+  settings.setValue("lastDirectory", QFileInfo(path).absolutePath());
+  if (isMotionFile(path) || maybeDiscardChanges()) openFile(path);
+}
+
+void MainWindow::setBusy(bool busy, const QString& message) {
+  busy_ = busy;
+  progress_->setRange(0, 0);  // busy indicator: the loaders report no fraction
+  progress_->setVisible(busy);
+  for (QAction* a : {newAction_, openAction_, applyMotionAction_, saveAction_, saveAsAction_, exportAction_})
+    a->setEnabled(!busy);
+  recentMenu_->setEnabled(!busy);
+  if (busy) QApplication::setOverrideCursor(Qt::BusyCursor);
+  else QApplication::restoreOverrideCursor();
+  statusBar()->showMessage(message, busy ? 0 : 8000);
+}
+
+void MainWindow::showProgress(const QString& message, int percent) {
+  if (percent < 0) progress_->setRange(0, 0);
+  else {
+    progress_->setRange(0, 100);
+    progress_->setValue(percent);
+  }
+  progress_->setVisible(true);
+  statusBar()->showMessage(message);
+}
+
+void MainWindow::hideProgress(const QString& message) {
+  progress_->setVisible(busy_);
+  if (message.isEmpty()) statusBar()->clearMessage();
+  else statusBar()->showMessage(message, 8000);
+}
+
+void MainWindow::openFile(const QString& fileOrDefault) {
+  if (busy_) return;
+  if (isMotionFile(fileOrDefault)) {
+    applyMotion(fileOrDefault);
+    return;
+  }
+  const QString shown = fileOrDefault == "default" ? tr("the default mannequin") : QFileInfo(fileOrDefault).fileName();
+  setBusy(true, tr("Opening %1...").arg(shown));
+  auto clock = std::make_shared<QElapsedTimer>();
+  clock->start();
+
+  auto* watcher = new QFutureWatcher<Outcome<LoadedDocument>>(this);
+  connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, fileOrDefault, clock] {
+    Outcome<LoadedDocument> outcome = watcher->future().takeResult();
+    watcher->deleteLater();
+    setBusy(false, QString());
+    if (auto* error = std::get_if<QString>(&outcome)) {
+      statusBar()->showMessage(tr("Could not open %1").arg(fileOrDefault), 8000);
+      if (reportError) reportError(tr("Could not open the file"), *error);
+      emit loadFinished(false);
+      return;
+    }
+    if (fileOrDefault != "default") addRecentFile(fileOrDefault);
+    adoptLoaded(std::move(std::get<LoadedDocument>(outcome)), clock->elapsed() / 1000.0);
+    emit loadFinished(true);
+  });
+  watcher->setFuture(QtConcurrent::run([fileOrDefault] {
+    return runCatching<LoadedDocument>([&] { return loadDocument(fileOrDefault); });
+  }));
+}
+
+void MainWindow::applyMotion(const QString& bvhPath, const QString& nameMapPath) {
+  if (busy_) return;
+  setBusy(true, tr("Applying %1...").arg(QFileInfo(bvhPath).fileName()));
+  auto clock = std::make_shared<QElapsedTimer>();
+  clock->start();
+  auto* watcher = new QFutureWatcher<Outcome<Clip>>(this);
+  connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, bvhPath, nameMapPath, clock] {
+    Outcome<Clip> outcome = watcher->future().takeResult();
+    watcher->deleteLater();
+    setBusy(false, QString());
+    if (auto* error = std::get_if<QString>(&outcome)) {
+      statusBar()->showMessage(tr("Could not apply %1").arg(bvhPath), 8000);
+      if (reportError) reportError(tr("Could not apply the motion"), *error);
+      emit loadFinished(false);
+      return;
+    }
+    Clip clip = std::move(std::get<Clip>(outcome));
+    const QString name = QString::fromStdString(clip.name);
+    // The document records the motion so a saved scene re-applies it.
+    SceneDocument& scene = document_->sceneSections();
+    scene.motionFile = QFileInfo(bvhPath).absoluteFilePath().toStdString();
+    scene.motionMapFile = nameMapPath.isEmpty() ? std::string() : QFileInfo(nameMapPath).absoluteFilePath().toStdString();
+    document_->addClip(std::move(clip));
+    addRecentFile(bvhPath);
+    statusBar()->showMessage(tr("Applied motion %1 (%2 s)").arg(name).arg(clock->elapsed() / 1000.0, 0, 'f', 2), 8000);
+    emit loadFinished(true);
+  });
+  const Character target = document_->character();
+  watcher->setFuture(QtConcurrent::run([bvhPath, nameMapPath, target] {
+    return runCatching<Clip>([&] { return loadMotion(bvhPath, target, nameMapPath); });
+  }));
+}
+
+void MainWindow::applyMotionWithDialog() {
+  QSettings settings;
+  const QString bvh = QFileDialog::getOpenFileName(this, tr("Apply Motion"), settings.value("lastDirectory").toString(),
+                                                   motionFilter());
+  if (bvh.isEmpty()) return;
+  settings.setValue("lastDirectory", QFileInfo(bvh).absolutePath());
+  const QString map = QFileDialog::getOpenFileName(
+      this, tr("Bone-name map for %1 (cancel: match names as they are)").arg(QFileInfo(bvh).fileName()),
+      QFileInfo(bvh).absolutePath(), nameMapFilter());
+  applyMotion(bvh, map);
+}
+
+bool MainWindow::openFileNow(const QString& fileOrDefault, QString* error) {
+  QElapsedTimer clock;
+  clock.start();
+  try {
+    if (isMotionFile(fileOrDefault)) {
+      Clip clip = loadMotion(fileOrDefault, document_->character());
+      document_->sceneSections().motionFile = QFileInfo(fileOrDefault).absoluteFilePath().toStdString();
+      document_->addClip(std::move(clip));
+    } else {
+      adoptLoaded(loadDocument(fileOrDefault), clock.elapsed() / 1000.0);
+    }
+    emit loadFinished(true);
+    return true;
+  } catch (const std::exception& e) {
+    if (error) *error = QString::fromUtf8(e.what());
+    emit loadFinished(false);
+    return false;
+  }
+}
+
+void MainWindow::adoptLoaded(LoadedDocument loaded, double seconds) {
+  // A new character shows its skeleton so it can be posed at once.
+  if (loaded.documentPath.isEmpty()) loaded.scene.view.showSkeleton = true;
+  const QString name = loaded.displayName;
+  document_->replace(std::move(loaded));
+  statusBar()->showMessage(tr("Opened %1: %2 (%3 s)")
+                               .arg(name, document_->summary())
+                               .arg(seconds, 0, 'f', 2),
+                           8000);
+}
+
+bool MainWindow::saveDocument(const QString& path, QString* error) {
+  storeCamera();
+  SceneDocument scene = document_->sceneDocument();
+  // Files the document refers to are stored relative to it.
+  const QDir folder = QFileInfo(path).absoluteDir();
+  const QDir oldFolder = document_->documentPath().isEmpty() ? QDir::current()
+                                                              : QFileInfo(document_->documentPath()).absoluteDir();
+  auto relative = [&](std::string& stored) {
+    if (stored.empty() || stored == "default") return;
+    const QString absolute = oldFolder.absoluteFilePath(QString::fromStdString(stored));
+    stored = folder.relativeFilePath(absolute).toStdString();
+  };
+  relative(scene.character);
+  relative(scene.motionFile);
+  relative(scene.motionMapFile);
+  try {
+    saveSceneDocument(scene, path.toStdString());
+  } catch (const std::exception& e) {
+    if (error) *error = QString::fromUtf8(e.what());
+    return false;
+  }
+  document_->setDocumentPath(QFileInfo(path).absoluteFilePath());
+  document_->markSaved();
+  addRecentFile(path);
+  updateTitle();
+  statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
+  return true;
+}
+
+bool MainWindow::save() {
+  if (document_->documentPath().isEmpty()) return saveAs();
+  QString error;
+  if (saveDocument(document_->documentPath(), &error)) return true;
+  if (reportError) reportError(tr("Could not save"), error);
+  return false;
+}
+
+bool MainWindow::saveAs() {
+  QString path = QFileDialog::getSaveFileName(this, tr("Save Scene"), document_->documentPath(), saveSceneFilter());
+  if (path.isEmpty()) return false;
+  if (QFileInfo(path).suffix().isEmpty()) path += ".mqscene";
+  QString error;
+  if (saveDocument(path, &error)) return true;
+  if (reportError) reportError(tr("Could not save"), error);
+  return false;
+}
+
+bool MainWindow::exportPosedMesh(const QString& path, QString* error) {
+  const Character& character = document_->character();
+  std::vector<const Mesh*> meshes;
+  for (const Mesh& m : character.meshes) meshes.push_back(&m);
+  try {
+    mq::exportPosedMesh(meshes, document_->posed().meshes(), path.toStdString());
+  } catch (const std::exception& e) {
+    if (error) *error = QString::fromUtf8(e.what());
+    return false;
+  }
+  statusBar()->showMessage(tr("Exported %1").arg(path), 5000);
+  return true;
+}
+
+void MainWindow::exportWithDialog() {
+  QString filter;
+  QString path = QFileDialog::getSaveFileName(this, tr("Export Posed Mesh"), QString(), exportMeshFilter(), &filter);
+  if (path.isEmpty()) return;
+  if (QFileInfo(path).suffix().isEmpty()) path += filter.contains("ply") ? ".ply" : ".obj";
+  QString error;
+  if (!exportPosedMesh(path, &error) && reportError) reportError(tr("Could not export"), error);
+}
+
+void MainWindow::addRecentFile(const QString& path) {
+  QSettings settings;
+  QStringList files = settings.value(kRecentFilesKey).toStringList();
+  const QString absolute = QFileInfo(path).absoluteFilePath();
+  files.removeAll(absolute);
+  files.prepend(absolute);
+  while (files.size() > kMaxRecentFiles) files.removeLast();
+  settings.setValue(kRecentFilesKey, files);
+  rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu() {
+  recentMenu_->clear();
+  const QStringList files = QSettings().value(kRecentFilesKey).toStringList();
+  for (const QString& file : files) {
+    QAction* action = recentMenu_->addAction(QFileInfo(file).fileName());
+    action->setToolTip(file);
+    connect(action, &QAction::triggered, this, [this, file] {
+      if (isMotionFile(file) || maybeDiscardChanges()) openFile(file);
+    });
+  }
+  recentMenu_->setEnabled(!files.isEmpty() && !busy_);
+}
+
+// --- window events ------------------------------------------------------------------
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  if (busy_ || !maybeDiscardChanges()) {
+    event->ignore();
+    return;
+  }
+  QSettings settings;
+  settings.setValue("window/geometry", saveGeometry());
+  settings.setValue("window/state", saveState());
+  event->accept();
+}
+
+void MainWindow::restoreWindowState() {
+  QSettings settings;
+  restoreGeometry(settings.value("window/geometry").toByteArray());
+  restoreState(settings.value("window/state").toByteArray());
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+  const QMimeData* mime = event->mimeData();
+  if (!mime->hasUrls()) return;
+  for (const QUrl& url : mime->urls())
+    if (url.isLocalFile() && isOpenableFile(url.toLocalFile())) {
+      event->acceptProposedAction();
+      return;
+    }
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+  for (const QUrl& url : event->mimeData()->urls()) {
+    const QString path = url.toLocalFile();
+    if (!isOpenableFile(path)) continue;
+    event->acceptProposedAction();
+    if (isMotionFile(path) || maybeDiscardChanges()) openFile(path);
+    return;
+  }
+}
+
+}  // namespace mq::ui
