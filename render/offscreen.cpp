@@ -105,8 +105,11 @@ OffscreenRenderer::OffscreenRenderer(SceneView& view, int width, int height) : i
     throw Error("the scene view is already shown in a window; render it there");
   ensureDisplay();
   // Multisampling varies between drivers; without it images are reproducible.
+  // The global is read when a window is made: restore it for the editor's windows.
+  const int previousSamples = vtkOpenGLRenderWindow::GetGlobalMaximumNumberOfMultiSamples();
   vtkOpenGLRenderWindow::SetGlobalMaximumNumberOfMultiSamples(0);
   impl_->window = vtkSmartPointer<vtkRenderWindow>::New();
+  vtkOpenGLRenderWindow::SetGlobalMaximumNumberOfMultiSamples(previousSamples);
   impl_->window->SetMultiSamples(0);
   impl_->window->SetOffScreenRendering(1);
   impl_->window->SetSize(width, height);
