@@ -13,7 +13,7 @@ namespace mq {
 
 // ---- PosedHairColliders: hot per-particle queries ----
 
-bool PosedHairColliders::pushOut(glm::vec3& p, glm::vec3& normal) const {
+bool PosedHairColliders::pushOutOnce(glm::vec3& p, glm::vec3& normal) const {
   bool moved = false;
   for (const Capsule& c : capsules) {
     const float t = glm::clamp(glm::dot(p - c.a, c.ab) * c.invLengthSquared, 0.0f, 1.0f);
@@ -38,6 +38,17 @@ bool PosedHairColliders::pushOut(glm::vec3& p, glm::vec3& normal) const {
     p = glm::vec3(e.worldFromUnit * glm::vec4(onSphere, 1.0f));
     // The gradient of |unitFromWorld p|^2 is the surface normal.
     normal = glm::normalize(glm::transpose(glm::mat3(e.unitFromWorld)) * onSphere);
+    moved = true;
+  }
+  return moved;
+}
+
+// Where shapes overlap (head and neck, neck and shoulders) leaving one can
+// enter the next: a few rounds settle the point outside all of them.
+bool PosedHairColliders::pushOut(glm::vec3& p, glm::vec3& normal) const {
+  bool moved = false;
+  for (int round = 0; round < 4; ++round) {
+    if (!pushOutOnce(p, normal)) break;
     moved = true;
   }
   return moved;

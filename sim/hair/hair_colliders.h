@@ -54,6 +54,9 @@ class PosedHairColliders {
   bool pushOut(glm::vec3& p, glm::vec3& normal) const;
   // True when p lies deeper than `tolerance` inside any proxy.
   bool contains(const glm::vec3& p, float tolerance = 0.0f) const;
+
+ private:
+  bool pushOutOnce(glm::vec3& p, glm::vec3& normal) const;
 };
 
 class HairColliders {

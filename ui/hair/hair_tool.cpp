@@ -305,12 +305,14 @@ bool HairTool::bake() {
   callbacks.progress = [&](int done, int total) {
     progress.setMaximum(total);
     progress.setValue(done);
+    window_->showProgress(tr("Baking hair"), total > 0 ? 100 * done / total : -1);
     QCoreApplication::processEvents();
   };
   callbacks.cancelled = [&] { return progress.wasCanceled(); };
   HairBake result = bakeHair(document->character(), document->clipIndex(),
                              leadingStrands(groom_->strands(), groom_->guideCount()), HairSimParams{}, {}, callbacks,
                              rig_.get());
+  window_->hideProgress(result.cancelled ? tr("Hair bake cancelled") : tr("Hair baked"));
   if (result.cancelled) return false;
   simulating_ = false;
   bake_ = std::move(result);
