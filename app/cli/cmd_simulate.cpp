@@ -5,11 +5,12 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "app/cli/command.h"
+#include "core/character/posed_character.h"
+#include "core/scene/open_scene.h"
 #include "core/util/error.h"
 #include "core/util/thread_pool.h"
 #include "sim/cloth/baked_cloth.h"
@@ -21,20 +22,28 @@ namespace {
 using nlohmann::json;
 using namespace mq;
 
-json readSceneJson(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw FileError(path, "cannot open the scene");
-  std::stringstream text;
-  text << in.rdbuf();
-  json doc;
-  try {
-    doc = json::parse(text.str());
-  } catch (const json::parse_error& e) {
-    throw FileError(path, std::string("not valid JSON (truncated or malformed): ") + e.what());
+// The body the cloth collides with: all of the character's meshes, posed.
+class PosedBody {
+ public:
+  PosedBody(const LoadedScene& scene) : scene_(scene) {}
+  bool empty() const { return scene_.character.meshes.empty(); }
+  void pose(float time, std::vector<float>& positions, std::vector<uint32_t>* triangles) {
+    posed_.evaluate(scene_.character, scene_.clipIndex, time, &scene_.edits, &ThreadPool::shared());
+    positions.clear();
+    if (triangles) triangles->clear();
+    for (size_t m = 0; m < posed_.meshes().size(); ++m) {
+      const uint32_t offset = uint32_t(positions.size() / 3);
+      const auto& p = posed_.meshes()[m].positions;
+      positions.insert(positions.end(), p.begin(), p.end());
+      if (triangles)
+        for (uint32_t t : scene_.character.meshes[m].triangles) triangles->push_back(t + offset);
+    }
   }
-  if (!doc.is_object()) throw FileError(path, "a scene document must be a JSON object");
-  return doc;
-}
+
+ private:
+  const LoadedScene& scene_;
+  PosedCharacter posed_;
+};
 
 json vec3Json(const glm::vec3& v) { return json::array({v.x, v.y, v.z}); }
 
@@ -45,11 +54,16 @@ struct RunResult {
   int substeps = 0;
 };
 
-RunResult run(cloth::ClothSimulator& sim, int frames, float fps, const std::string& exportDir) {
+RunResult run(cloth::ClothSimulator& sim, PosedBody& body, float startTime, bool animateBody, int frames, float fps,
+               const std::string& exportDir) {
   RunResult r;
-  cloth::BakedCloth baked(sim.triangles(), fps);
+  std::vector<float> bodyPositions;
   for (int f = 0; f < frames; ++f) {
     const auto t0 = std::chrono::steady_clock::now();
+    if (!body.empty() && animateBody) {
+      body.pose(startTime + float(f + 1) / fps, bodyPositions, nullptr);
+      sim.updateBody(bodyPositions);
+    }
     sim.step(1.0f / fps);
     r.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     r.maxStretch = std::max(r.maxStretch, sim.stats().maxStretch);
@@ -69,11 +83,14 @@ int runSimulate(const std::vector<std::string>& argv) {
   const std::string path = args.positional()[0];
   const double framesArg = args.number("--frames", 120);
   if (!(framesArg >= 1) || framesArg != std::floor(framesArg)) throw Error("--frames expects a positive integer");
-  const json doc = readSceneJson(path);
-  if (doc.contains("character") && !doc["character"].is_null())
-    throw FileError(path, "scenes with a character are not simulated by this command yet; set \"character\": null");
-  const cloth::ClothSceneSpec spec =
-      cloth::parseClothScene(doc.value("cloth", json()), doc.value("colliders", json()), path);
+  if (!isSceneDocumentPath(path)) throw FileError(path, "simulate needs a scene document (.mqscene or .json)");
+  LoadedScene scene;
+  try {
+    scene = openScene(path);  // FileError for unreadable, truncated or invalid documents
+  } catch (const json::exception& e) {
+    throw FileError(path, std::string("not a valid scene document: ") + e.what());
+  }
+  const cloth::ClothSceneSpec spec = cloth::parseClothScene(scene.document.cloth, scene.document.colliders, path);
   const float fps = float(args.number("--fps", spec.fps));
   if (!(fps > 0.0f) || !std::isfinite(fps)) throw Error("--fps expects a positive number");
 
@@ -81,6 +98,13 @@ int runSimulate(const std::vector<std::string>& argv) {
   cloth::ClothSimulator sim(cloth::buildClothMesh(spec, pinned), spec.fabric, spec.settings);
   for (const auto& c : spec.colliders) sim.addCollider(c);
   for (uint32_t v : pinned) sim.pinVertex(v);
+  PosedBody body(scene);
+  if (!body.empty()) {
+    std::vector<float> positions;
+    std::vector<uint32_t> triangles;
+    body.pose(scene.document.time, positions, &triangles);
+    sim.setBody(positions, triangles);
+  }
 
   const std::string exportDir = args.option("--export-dir");
   if (!exportDir.empty()) {
@@ -89,7 +113,7 @@ int runSimulate(const std::vector<std::string>& argv) {
     if (ec) throw FileError(exportDir, "cannot create the directory: " + ec.message());
   }
   const int frames = int(framesArg);
-  const RunResult r = run(sim, frames, fps, exportDir);
+  const RunResult r = run(sim, body, scene.document.time, spec.animateBody, frames, fps, exportDir);
   const cloth::ClothStats& st = sim.stats();
   json stats = {{"scene", path},
                 {"frames", frames},

@@ -234,6 +234,7 @@ ClothSceneSpec parseClothScene(const json& cloth, const json& colliders, const s
     if (v >= uint32_t(spec.sheet.rows * spec.sheet.columns))
       r.fail("pins.vertices", "vertex " + std::to_string(v) + " is beyond the sheet's vertices");
   spec.fps = r.positive("fps", spec.fps);
+  spec.animateBody = r.boolean("animate_body", spec.animateBody);
   return spec;
 }
 
@@ -267,6 +268,7 @@ void writeClothScene(const ClothSceneSpec& spec, json& cloth, json& colliders) {
   cloth["cg_tolerance"] = s.cgTolerance;
   cloth["pins"] = {{"rows", spec.pinnedRows}, {"vertices", spec.pinnedVertices}};
   cloth["fps"] = spec.fps;
+  cloth["animate_body"] = spec.animateBody;
   colliders = json::array();
   for (const PrimitiveCollider& c : spec.colliders) {
     json j = {{"type", shapeName(c.shape)}};

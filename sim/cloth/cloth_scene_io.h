@@ -17,7 +17,7 @@
 //     "stretch_iterations": 100, "self_collisions": false, "thickness": 0.005,
 //     "self_thickness": 0.004, "friction": 0.3, "cg_max_iterations": 100, "cg_tolerance": 0.001,
 //     "pins": {"rows": [0], "vertices": [12, 13]},   sheet rows (0 = first row) and/or vertex indices
-//     "fps": 24 },
+//     "fps": 24, "animate_body": true },
 //   "colliders": [ {"type": "sphere", "center": [0, 0, 0], "radius": 0.3},
 //                  {"type": "capsule", "a": [..], "b": [..], "radius": 0.1},
 //                  {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "friction": 0.5} ]
@@ -56,6 +56,7 @@ struct ClothSceneSpec {
   std::vector<uint32_t> pinnedVertices;
   std::vector<PrimitiveCollider> colliders;
   float fps = 24.0f;
+  bool animateBody = true;  // the character (if any) plays its clip while the cloth runs
 };
 
 // Throws FileError(pathForErrors, "cloth.<key>: <problem>") for bad sections.
