@@ -6,6 +6,8 @@
 #include <cmath>
 
 #include "cloth_test_scenes.h"
+#include "core/character/default_mannequin.h"
+#include "core/character/posed_character.h"
 
 namespace mq::cloth {
 namespace {
@@ -58,6 +60,28 @@ TEST(ClothCollision, SheetDroppedOnATriangleMeshBodySettlesOutsideIt) {
   // Inside the polygonal sphere means closer to the centre than its flat faces.
   const float inscribed = 0.3f * std::cos(3.14159265f / 16) * std::cos(3.14159265f / 32);
   for (const glm::vec3& x : sim.positions()) EXPECT_GE(glm::length(x), inscribed);
+}
+
+TEST(ClothCollision, SheetDroppedOnTheDefaultMannequinSettlesOutsideIt) {
+  const Character mannequin = makeDefaultMannequin();
+  PosedCharacter posed;
+  posed.evaluate(mannequin, -1, 0.0f, nullptr, nullptr);  // rest pose
+  std::vector<float> body;
+  std::vector<uint32_t> triangles;
+  for (size_t m = 0; m < posed.meshes().size(); ++m) {
+    const uint32_t offset = uint32_t(body.size() / 3);
+    body.insert(body.end(), posed.meshes()[m].positions.begin(), posed.meshes()[m].positions.end());
+    for (uint32_t t : mannequin.meshes[m].triangles) triangles.push_back(t + offset);
+  }
+  ASSERT_FALSE(triangles.empty());
+  ClothSimulator sim(test::horizontalSheetMesh(32, 1.0f, {0, 1.85f, 0}), fabricPreset("cotton"), ClothSettings{});
+  sim.setBody(body, triangles);
+  for (int frame = 0; frame < 48; ++frame) sim.step(1.0f / 24.0f);
+  EXPECT_TRUE(test::allFinite(sim));
+  EXPECT_EQ(sim.countPenetrating(), 0);
+  EXPECT_LT(sim.stats().boundsMin.y, 1.45f);  // hangs down over the shoulders
+  EXPECT_GT(sim.stats().boundsMax.y, 1.6f);   // rests on the head
+  EXPECT_LE(sim.stats().maxStretchEver, 1.1f);
 }
 
 TEST(ClothCollision, AMovingBodyCarriesTheClothWithoutPenetration) {
