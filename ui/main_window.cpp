@@ -12,6 +12,7 @@
 #include <QStyle>
 #include <QToolBar>
 #include <QUndoStack>
+#include <QUndoView>
 
 #include "render/scene_view.h"
 #include "ui/document/editor_document.h"
@@ -90,6 +91,14 @@ void MainWindow::createDocks() {
   timelineDock_->setWidget(timeline_);
   timelineDock_->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetClosable);
   addDockWidget(Qt::BottomDockWidgetArea, timelineDock_);
+
+  // The undo history, below the scene tree: click an entry to go back to it.
+  auto* history = new QUndoView(document_->undoStack(), this);
+  history->setEmptyLabel(tr("<opened>"));
+  historyDock_ = new QDockWidget(tr("History"), this);
+  historyDock_->setObjectName("historyDock");
+  historyDock_->setWidget(history);
+  splitDockWidget(treeDock_, historyDock_, Qt::Vertical);
 
   // Side docks run the full height; the timeline spans only the viewport.
   setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
@@ -219,7 +228,8 @@ void MainWindow::createMenus() {
   viewMenu_->addAction(frameAllAction_);
   viewMenu_->addSeparator();
   panelsMenu_ = viewMenu_->addMenu(tr("&Panels"));
-  for (QDockWidget* dock : {treeDock_, propertiesDock_, timelineDock_}) panelsMenu_->addAction(dock->toggleViewAction());
+  for (QDockWidget* dock : {treeDock_, historyDock_, propertiesDock_, timelineDock_})
+    panelsMenu_->addAction(dock->toggleViewAction());
 
   QMenu* animation = menuBar()->addMenu(tr("&Animation"));
   animation->addAction(playAction_);
@@ -269,6 +279,7 @@ void MainWindow::createStatusBar() {
 void MainWindow::restoreLayout() {
   resizeDocks({treeDock_, propertiesDock_}, {270, 300}, Qt::Horizontal);
   resizeDocks({timelineDock_}, {timeline_->sizeHint().height()}, Qt::Vertical);
+  resizeDocks({treeDock_, historyDock_}, {620, 200}, Qt::Vertical);
 }
 
 void MainWindow::addToolDock(QDockWidget* dock, Qt::DockWidgetArea area) {

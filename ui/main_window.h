@@ -133,6 +133,7 @@ class MainWindow : public QMainWindow {
   QDockWidget* treeDock_ = nullptr;
   QDockWidget* propertiesDock_ = nullptr;
   QDockWidget* timelineDock_ = nullptr;
+  QDockWidget* historyDock_ = nullptr;
 
   QAction* newAction_ = nullptr;
   QAction* openAction_ = nullptr;
