@@ -4,9 +4,12 @@
 // straight line of edges i-k-j, the segment k-j is a cantilever clamped at k
 // in the direction of i-k. A cantilever of length L and bending rigidity B w
 // (B per unit width, w the width of cloth the line stands for) answers a
-// deflection angle theta with the moment M = 2 B w theta / L, i.e. the
-// rotational stiffness k_c = 2 B w / L. We write it as an energy so the
-// implicit solver gets a consistent Jacobian:
+// deflection angle theta with the moment M = 2 B w theta / L (tip load).
+// Along a chain of such hinges, one every L, that doubles the bending
+// stiffness of the continuous beam (M = B w kappa, theta = kappa L gives
+// k_c = B w / L), so we use k_c = B w / L and a fabric's measured B gives the
+// droop of an elastic beam (tests/sim/cloth_bending_test.cpp). We write it as
+// an energy so the implicit solver gets a consistent Jacobian:
 //
 //   E = 1/2 k_c |r|^2,  r = t_1 - t_0,  t_0 = (x_k - x_i)/|x_k - x_i|,  t_1 = (x_j - x_k)/|x_j - x_k|
 //
@@ -25,7 +28,7 @@ namespace mq::cloth {
 
 struct CantileverLine {
   uint32_t i, k, j;
-  float kc;  // N m: rotational stiffness 2 B w / L
+  float kc;  // N m: rotational stiffness B w / L
   float kd;  // N m s: damping of the rotation rate
 };
 

@@ -24,10 +24,12 @@ std::vector<Spring> makeSprings(const ClothTopology& topo, const ClothMesh& mesh
   for (const auto& t : topo.shear) add(t, 4.0f * fabric.shearStiffness * t.area / (t.restLength * t.restLength));
   if (settings.bending == BendingModel::Springs) {
     // A bend spring of length L = 2 d is as stiff along its length as the
-    // cantilever of length d is across: k = (2 B w / d) / d^2 = 16 B w / L^3.
+    // cantilever hinge is across its segment d: k = (B w / d) / d^2 = 8 B w / L^3.
+    // (Provot's bend springs resist bending only to second order, through
+    // the compression of the spring, so they are weak at small angles.)
     for (size_t n = 0; n < topo.bend.size(); ++n) {
       const float L = topo.bend[n].restLength;
-      add(topo.bend[n], 16.0f * fabric.bendStiffness * topo.bendLines[n].width / (L * L * L));
+      add(topo.bend[n], 8.0f * fabric.bendStiffness * topo.bendLines[n].width / (L * L * L));
     }
   }
   // Seams: zero rest length, as stiff as the stiffest structural spring.
@@ -40,7 +42,7 @@ std::vector<Spring> makeSprings(const ClothTopology& topo, const ClothMesh& mesh
 std::vector<CantileverLine> makeCantilevers(const ClothTopology& topo, const Fabric& fabric) {
   std::vector<CantileverLine> lines;
   for (const BendLine& b : topo.bendLines) {
-    const float kc = 2.0f * fabric.bendStiffness * b.width / (0.5f * (b.length0 + b.length1));
+    const float kc = fabric.bendStiffness * b.width / (0.5f * (b.length0 + b.length1));
     lines.push_back({b.i, b.k, b.j, kc, fabric.damping * kc});
   }
   return lines;
