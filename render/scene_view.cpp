@@ -40,13 +40,19 @@ struct MeshActor {
   std::vector<uint32_t> triangles;  // for normals when the posed mesh has none
 };
 
-// Meshes without a colour of their own (the default grey) get the mannequin's wood.
-SurfaceLook defaultLookFor(const Mesh& mesh) {
+// The built-in mannequin, and meshes without a colour of their own (the
+// default grey), get the mannequin's wood (in the mesh's colour if it has
+// one); other meshes keep their colour with plain shading.
+SurfaceLook defaultLookFor(const Mesh& mesh, bool builtInMannequin) {
   const glm::vec3& c = mesh.baseColor;
-  return c == glm::vec3(0.8f) ? SurfaceLook::mannequin() : SurfaceLook::plain(c);
+  const bool defaultGrey = c == glm::vec3(0.8f);
+  if (!builtInMannequin && !defaultGrey) return SurfaceLook::plain(c);
+  SurfaceLook look = SurfaceLook::mannequin();
+  if (!defaultGrey) look.albedo = c;
+  return look;
 }
 
-MeshActor makeMeshActor(const Mesh& mesh) {
+MeshActor makeMeshActor(const Mesh& mesh, const SurfaceLook& look) {
   MeshActor m;
   m.triangles = mesh.triangles;
   m.positions = vtkSmartPointer<vtkFloatArray>::New();
@@ -68,13 +74,20 @@ MeshActor makeMeshActor(const Mesh& mesh) {
   m.polyData->SetPoints(points);
   m.polyData->SetPolys(cells);
   m.polyData->GetPointData()->SetNormals(m.normals);
+  vtkNew<vtkFloatArray> rest;  // pattern coordinates for the surface shader
+  rest->SetName(kRestPositionArray);
+  rest->SetNumberOfComponents(3);
+  rest->SetNumberOfTuples(static_cast<vtkIdType>(mesh.vertexCount()));
+  if (!mesh.positions.empty())
+    std::memcpy(rest->GetPointer(0), mesh.positions.data(), mesh.positions.size() * sizeof(float));
+  m.polyData->GetPointData()->AddArray(rest);
 
   vtkSmartPointer<vtkOpenGLPolyDataMapper> mapper = vtkSmartPointer<vtkOpenGLPolyDataMapper>::Take(newSurfaceMapper());
   mapper->SetInputData(m.polyData);
   mapper->ScalarVisibilityOff();
   m.actor = vtkSmartPointer<vtkActor>::New();
   m.actor->SetMapper(mapper);
-  applySurfaceLook(m.actor, defaultLookFor(mesh));
+  applySurfaceLook(m.actor, look);
   return m;
 }
 
@@ -139,7 +152,7 @@ void SceneView::setCharacter(const Character& character) {
   for (MeshActor& mesh : m.meshes) m.renderer->RemoveActor(mesh.actor);
   m.meshes.clear();
   for (const Mesh& mesh : character.meshes) {
-    m.meshes.push_back(makeMeshActor(mesh));
+    m.meshes.push_back(makeMeshActor(mesh, defaultLookFor(mesh, character.sourcePath == "default")));
     m.renderer->AddActor(m.meshes.back().actor);
   }
   PosedCharacter rest;

@@ -1,6 +1,7 @@
 #include "render/surface_shading.h"
 
 #include <vtkActor.h>
+#include <vtkDataObject.h>
 #include <vtkObjectFactory.h>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkProperty.h>
@@ -13,13 +14,47 @@
 namespace mq::render {
 namespace {
 
+// The rest (bind) position rides along as a vertex attribute, so surface
+// patterns stay fixed on the body while it moves.
+const char* kVertexDec = R"(//VTK::Normal::Dec
+in vec3 mqRestMC;
+out vec3 mqRest;
+)";
+const char* kVertexImpl = R"(//VTK::Normal::Impl
+  mqRest = mqRestMC;
+)";
+const char* kFragmentDec = R"(//VTK::Normal::Dec
+in vec3 mqRest;
+// Value noise from a hash: smooth, cheap, no texture.
+float mqHash(vec3 p) { return fract(sin(dot(p, vec3(127.1, 311.7, 74.7))) * 43758.5453); }
+float mqNoise(vec3 p) {
+  vec3 i = floor(p), f = fract(p);
+  f = f * f * (3.0 - 2.0 * f);
+  return mix(mix(mix(mqHash(i), mqHash(i + vec3(1, 0, 0)), f.x),
+                 mix(mqHash(i + vec3(0, 1, 0)), mqHash(i + vec3(1, 1, 0)), f.x), f.y),
+             mix(mix(mqHash(i + vec3(0, 0, 1)), mqHash(i + vec3(1, 0, 1)), f.x),
+                 mix(mqHash(i + vec3(0, 1, 1)), mqHash(i + vec3(1, 1, 1)), f.x), f.y), f.z);
+}
+// Wood grain: fine streaks along the body's long axis (y), wavering.
+float mqGrain(vec3 p) {
+  vec3 q = p * vec3(1.0, 0.08, 1.0) * mqGrainScale;
+  float waver = mqNoise(q * 0.3) * 14.0 + mqNoise(q * 1.3) * 2.0;
+  float streaks = 0.5 + 0.5 * sin(q.x * 7.0 + q.z * 5.0 + waver);
+  return pow(streaks, 6.0) * 0.65 + mqNoise(q * vec3(3.0, 1.0, 3.0)) * 0.35;
+}
+)";
+
 // Runs after VTK's own lighting (the tag stays first) and replaces its result.
 const char* kSurfaceLight = R"(//VTK::Light::Impl
   {
     vec3 N = normalize(normalVCVSOutput);
     vec3 V = normalize(-vertexVC.xyz);
     float NdV = clamp(dot(N, V), 0.0, 1.0);
-    vec3 albedo = pow(mqAlbedo, vec3(2.2));
+    // Grain shows close up and fades out before streaks come closer than
+    // about 4 pixels (seen from afar they would read as pinstripes or alias).
+    float streaksPerPixel = length(fwidth(mqRest.xz)) * mqGrainScale * 7.0 / 6.2832;
+    float grainAmount = mqGrainStrength * clamp((0.25 - streaksPerPixel) / 0.15, 0.0, 1.0);
+    vec3 albedo = pow(mqAlbedo, vec3(2.2)) * (1.0 - grainAmount * mqGrain(mqRest));
     vec3 scatterTint = pow(mqScatterColour, vec3(2.2));
     // Hemisphere ambient: cool sky above, warm floor bounce below.
     float skyward = 0.5 + 0.5 * dot(N, mqUpVC);
@@ -87,6 +122,7 @@ SurfaceLook SurfaceLook::skin(const glm::vec3& albedo) {
   look.scatterColour = {1.0f, 0.5f, 0.38f};
   look.scatter = 0.5f;
   look.translucency = 0.35f;
+  look.grain = 0.0f;
   look.specular = 0.18f;
   look.glossiness = 40.0f;
   look.rim = 1.0f;
@@ -99,17 +135,25 @@ SurfaceLook SurfaceLook::plain(const glm::vec3& albedo) {
   look.albedo = albedo;
   look.wrap = 0.0f;
   look.scatter = 0.0f;
+  look.grain = 0.0f;
   return look;
 }
 
-vtkOpenGLPolyDataMapper* newSurfaceMapper() { return SurfaceMapper::New(); }
+vtkOpenGLPolyDataMapper* newSurfaceMapper() {
+  SurfaceMapper* mapper = SurfaceMapper::New();
+  mapper->MapDataArrayToVertexAttribute("mqRestMC", kRestPositionArray, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+  return mapper;
+}
 
 void applySurfaceLook(vtkActor* actor, const SurfaceLook& look) {
   vtkProperty* p = actor->GetProperty();
   p->SetInterpolationToPhong();
   p->SetColor(look.albedo.x, look.albedo.y, look.albedo.z);  // for renderers without the shader
   vtkShaderProperty* sp = actor->GetShaderProperty();
-  sp->ClearAllFragmentShaderReplacements();
+  sp->ClearAllShaderReplacements();
+  sp->AddVertexShaderReplacement("//VTK::Normal::Dec", true, kVertexDec, false);
+  sp->AddVertexShaderReplacement("//VTK::Normal::Impl", true, kVertexImpl, false);
+  sp->AddFragmentShaderReplacement("//VTK::Normal::Dec", true, kFragmentDec, false);
   sp->AddFragmentShaderReplacement("//VTK::Light::Impl", true, kSurfaceLight, false);
   vtkUniforms* u = sp->GetFragmentCustomUniforms();
   setUniform3(u, "mqAlbedo", look.albedo);
@@ -123,6 +167,8 @@ void applySurfaceLook(vtkActor* actor, const SurfaceLook& look) {
   u->SetUniformf("mqRim", look.rim);
   u->SetUniformf("mqRimPower", look.rimPower);
   u->SetUniformf("mqExposure", look.exposure);
+  u->SetUniformf("mqGrainStrength", look.grain);
+  u->SetUniformf("mqGrainScale", look.grainScale);
   // Declared before the first frame so the first shader compiles with them.
   const ViewLights none;
   u->SetUniformi("mqLightCount", 0);

@@ -33,11 +33,17 @@ struct SurfaceLook {
   float rim = 2.0f;            // rim light strength
   float rimPower = 3.5f;       // higher: a thinner rim
   float exposure = 0.75f;      // scales the linear result before sRGB encoding
+  float grain = 0.14f;         // wood grain: how much it darkens the albedo (0 = none)
+  float grainScale = 60.0f;    // streaks per metre, about
 
   static SurfaceLook mannequin();                     // satin, light warm wood
   static SurfaceLook skin(const glm::vec3& albedo);   // soft, scattering, low gloss
   static SurfaceLook plain(const glm::vec3& albedo);  // no scattering (imported materials)
 };
+
+// Point-data array the surface shader reads the rest (bind) positions from:
+// 3 floats per point, set once; patterns stay fixed on the skin.
+inline constexpr const char* kRestPositionArray = "mqRestPosition";
 
 // A polydata mapper that feeds the view's lights to the surface shader each frame.
 vtkOpenGLPolyDataMapper* newSurfaceMapper();
