@@ -79,12 +79,12 @@ void HairHandles::clear() {
   handles_.clear();
 }
 
-void HairHandles::update(const HairStyle& style, const glm::vec3& headCenter, const PrimitiveRef& selected) {
+void HairHandles::update(const HairStyle& style, const glm::mat4& worldFromHead, const PrimitiveRef& selected) {
   clear();
   for (const PrimitiveRef& ref : primitivesOf(style)) {
     Handle h;
     h.ref = ref;
-    h.world = headCenter + handlePosition(style, ref);
+    h.world = glm::vec3(worldFromHead * glm::vec4(handlePosition(style, ref), 1.0f));
     const bool isSelected = ref == selected;
     const glm::vec3 color = isSelected ? glm::vec3(1.0f, 0.95f, 0.2f) : kindColor(ref.kind);
     vtkNew<vtkSphereSource> sphere;
@@ -96,7 +96,7 @@ void HairHandles::update(const HairStyle& style, const glm::vec3& headCenter, co
     glm::vec3 along(0.0f);
     if (ref.kind == PrimitiveRef::Stream) along = style.primitives.streams[ref.index].direction;
     if (ref.kind == PrimitiveRef::Vortex) along = style.primitives.vortices[ref.index].axis;
-    if (glm::length(along) > 1e-6f) along = glm::normalize(along) * kLineLength;
+    if (glm::length(along) > 1e-6f) along = glm::normalize(glm::mat3(worldFromHead) * along) * kLineLength;
     vtkNew<vtkLineSource> line;
     line->SetPoint1(h.world.x, h.world.y, h.world.z);
     line->SetPoint2(h.world.x + along.x, h.world.y + along.y, h.world.z + along.z);

@@ -38,7 +38,9 @@ class HairHandles {
   explicit HairHandles(vtkRenderer* renderer);
   ~HairHandles();
 
-  void update(const HairStyle& style, const glm::vec3& headCenter, const PrimitiveRef& selected);
+  // worldFromHead: head space to world (the rest head centre, carried by
+  // the head's current pose).
+  void update(const HairStyle& style, const glm::mat4& worldFromHead, const PrimitiveRef& selected);
   void setVisible(bool visible);
   bool visible() const { return visible_; }
   // The primitive whose handle is within `radiusPixels` of display point

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <QCoreApplication>
 #include <QDockWidget>
 #include <QMouseEvent>
@@ -152,7 +154,7 @@ void HairTool::applyStyle(const std::optional<HairStyle>& style, bool live) {
   invalidateDynamics();
   if (!style_) {
     actor_->setVisible(false);
-    handles_->update(HairStyle{}, glm::vec3(0.0f), {});
+    handles_->update(HairStyle{}, glm::mat4(1.0f), {});
     selected_ = {};
   } else if (groom_ || makeGroom()) {
     if (before && groom_->strands().strandCount() > 0)
@@ -193,10 +195,16 @@ void HairTool::setHandlesVisible(bool visible) {
 }
 
 void HairTool::updateHandles() {
-  if (style_ && groom_) handles_->update(*style_, headCenter(), selected_);
+  if (style_ && groom_) handles_->update(*style_, worldFromHead(), selected_);
 }
 
 glm::vec3 HairTool::headCenter() const { return groom_ ? groom_->proxy().headCenter() : glm::vec3(0.0f); }
+
+glm::mat4 HairTool::worldFromHead() const {
+  glm::mat4 posedFromRest(1.0f);
+  if (rig_) posedFromRest = rig_->posedFromRest(window_->document()->posed().worldFromBone());
+  return posedFromRest * glm::translate(glm::mat4(1.0f), headCenter());
+}
 
 // ---- Display ----
 
@@ -291,6 +299,7 @@ void HairTool::onPoseChanged() {
     if (dt > 0.0f) simulator_->step(std::min(dt, 1.0f / 15.0f), rig_->posedFromRest(worldFromBone), &body);
   }
   showPosedStrands();
+  updateHandles();
   window_->viewport()->requestRender();
 }
 
@@ -348,7 +357,8 @@ bool HairTool::onPress(QMouseEvent* event) {
   dragging_ = ref;
   dragKey_ = HairStyleCommand::nextMergeKey();
   dragBefore_ = *style_;
-  dragWorld_ = headCenter() + handlePosition(*style_, ref);
+  dragWorldFromHead_ = worldFromHead();
+  dragWorld_ = glm::vec3(dragWorldFromHead_ * glm::vec4(handlePosition(*style_, ref), 1.0f));
   dragMoved_ = false;
   return true;
 }
@@ -357,7 +367,8 @@ bool HairTool::onMove(QMouseEvent* event) {
   if (!dragging_.valid()) return false;
   const QPoint display = toDisplay(event->position());
   HairStyle after = *style_;
-  moveHandle(after, dragging_, handles_->displayToWorld(display.x(), display.y(), dragWorld_) - headCenter());
+  const glm::vec3 world = handles_->displayToWorld(display.x(), display.y(), dragWorld_);
+  moveHandle(after, dragging_, glm::vec3(glm::inverse(dragWorldFromHead_) * glm::vec4(world, 1.0f)));
   editStyle(after, tr("Move hair primitive"), dragKey_, true);
   dragMoved_ = true;
   return true;

@@ -97,6 +97,8 @@ class HairTool : public QObject {
   void updateHandles();
   void invalidateDynamics();
   glm::vec3 headCenter() const;
+  // Head space (rest head centre, world axes) to the world as posed now.
+  glm::mat4 worldFromHead() const;
   QPoint toDisplay(const QPointF& position) const;
   bool onPress(QMouseEvent* event);
   bool onMove(QMouseEvent* event);
@@ -128,6 +130,7 @@ class HairTool : public QObject {
   int dragKey_ = 0;
   HairStyle dragBefore_;
   glm::vec3 dragWorld_{0.0f};
+  glm::mat4 dragWorldFromHead_{1.0f};
   bool dragMoved_ = false;
 };
 
