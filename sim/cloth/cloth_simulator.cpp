@@ -177,6 +177,7 @@ void ClothSimulator::substep(float h, float bodyFraction) {
   stepStart_ = state_.x;
   touched_.assign(state_.size(), 0);
   stats_.solverIterations += integrator_->step(state_, h, *forces_).solverIterations;
+  applyRestingFriction(h);
   const auto& springs = forces_->springs().springs();
   const size_t structural = forces_->structuralCount();
   collideWithColliders(h);
@@ -221,6 +222,7 @@ void ClothSimulator::preparePins(float h) {
 void ClothSimulator::findRestingContacts() {
   state_.contactNormal.assign(state_.size(), glm::vec3(0.0f));
   state_.contactSpeed.assign(state_.size(), 0.0f);
+  restingSurfaceVelocity_.assign(state_.size(), glm::vec3(0.0f));
   if (colliders_.empty() && body_.empty()) return;
   // A vertex resting on a surface: within twice the thickness, not moving
   // away, and pressed onto it by gravity (so it can still fall off an overhang).
@@ -230,6 +232,7 @@ void ClothSimulator::findRestingContacts() {
       if (state_.invMass[i] == 0.0f) continue;
       glm::vec3 normal(0.0f);
       float speed = 0.0f;
+      glm::vec3 surfaceVelocity(0.0f);
       for (const PrimitiveCollider& c : colliders_) {
         glm::vec3 n;
         if (c.signedDistance(state_.x[i], n) < reach) normal = n;
@@ -238,11 +241,36 @@ void ClothSimulator::findRestingContacts() {
       if (!body_.empty() && body_.nearestContact(state_.x[i], contact) && contact.signedDistance < reach) {
         normal = contact.normal;
         speed = glm::dot(contact.velocity, normal);
+        surfaceVelocity = contact.velocity;
       }
       if (glm::dot(normal, settings_.gravity) < 0.0f && glm::dot(state_.v[i], normal) <= speed + 1e-3f) {
         state_.contactNormal[i] = normal;
         state_.contactSpeed[i] = speed;
+        restingSurfaceVelocity_[i] = surfaceVelocity;
       }
+    }
+  });
+}
+
+// Coulomb friction for vertices resting on a surface (their normal velocity
+// is held by the solver, so the contact response sees no approach): the
+// tangential velocity relative to the surface shrinks by mu times the normal
+// velocity change gravity would have caused in the step, and stops when smaller.
+void ClothSimulator::applyRestingFriction(float h) {
+  if (state_.contactNormal.empty()) return;
+  const float mu = settings_.friction;
+  forRange(state_.size(), [&](size_t b, size_t e) {
+    for (size_t i = b; i < e; ++i) {
+      const glm::vec3& n = state_.contactNormal[i];
+      if (n == glm::vec3(0.0f) || state_.invMass[i] == 0.0f) continue;
+      const glm::vec3 rel = state_.v[i] - restingSurfaceVelocity_[i];
+      const glm::vec3 tangential = rel - glm::dot(rel, n) * n;
+      const float speed = glm::length(tangential);
+      const float pressure = std::max(0.0f, -glm::dot(settings_.gravity, n)) * h;
+      const float kept = speed > 0.0f ? std::max(0.0f, 1.0f - mu * pressure / speed) : 0.0f;
+      state_.v[i] -= (1.0f - kept) * tangential;
+      // Re-integrate the position with the new velocity (x = x0 + h v).
+      state_.x[i] = stepStart_[i] + h * state_.v[i];
     }
   });
 }

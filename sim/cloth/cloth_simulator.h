@@ -103,6 +103,7 @@ class ClothSimulator {
   void preparePins(float h);
   void placePins();
   void findRestingContacts();
+  void applyRestingFriction(float h);
   void collideWithColliders(float h);
   void checkFinite(const char* where) const;
   void updateStats();
@@ -118,7 +119,8 @@ class ClothSimulator {
   ClothState state_;
   std::vector<float> freeInvMass_;
   std::vector<glm::vec3> stepStart_;
-  std::vector<uint8_t> touched_;  // vertices a collision moved in this substep
+  std::vector<uint8_t> touched_;
+  std::vector<glm::vec3> restingSurfaceVelocity_;  // vertices a collision moved in this substep
   std::vector<PrimitiveCollider> colliders_;
   BodyCollider body_;
   std::vector<float> pendingBody_;
