@@ -5,6 +5,7 @@
 #include <QDockWidget>
 #include <QFileInfo>
 #include <QLabel>
+#include <QLayout>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
@@ -62,10 +63,13 @@ MainWindow::MainWindow(QWidget* parent)
 }
 
 MainWindow::~MainWindow() {
-  // The viewport (a child widget) must release the scene's GL resources
-  // before the scene goes away.
-  delete poseTool_;
+  // Tools (the pose tool, hair, ...) hold actors and renderer pointers of the
+  // scene, and the viewport (a child widget) must release the scene's GL
+  // resources: all of them go before the scene does.
   poseTool_ = nullptr;
+  const QObjectList children = this->children();
+  for (QObject* child : children)
+    if (!child->isWidgetType() && !qobject_cast<QLayout*>(child) && child != document_) delete child;
   delete viewport_;
   viewport_ = nullptr;
 }
