@@ -22,29 +22,6 @@ void forRange(size_t count, Body&& body) {
   ThreadPool::shared().parallelFor(0, count, kParallelGrain, [&](size_t b, size_t e) { body(b, e); });
 }
 
-// Sum of term(i) for i in [0, count), in double, identical for any thread count.
-template <class Term>
-double deterministicSum(size_t count, Term&& term) {
-  constexpr size_t kBlocks = 64;
-  const size_t block = (count + kBlocks - 1) / kBlocks;
-  double partial[kBlocks] = {};
-  auto sumBlocks = [&](size_t b0, size_t b1) {
-    for (size_t b = b0; b < b1; ++b) {
-      double s = 0.0;
-      const size_t end = std::min(count, (b + 1) * block);
-      for (size_t i = b * block; i < end; ++i) s += term(i);
-      partial[b] = s;
-    }
-  };
-  if (count < 2 * kParallelGrain)
-    sumBlocks(0, kBlocks);
-  else
-    ThreadPool::shared().parallelFor(0, kBlocks, 1, sumBlocks);
-  double total = 0.0;
-  for (double p : partial) total += p;
-  return total;
-}
-
 // Runs body(begin, end) -> double over [0, count) in 64 fixed blocks (in
 // parallel when large) and returns the sum of the blocks' results in block
 // order: a fused loop + reduction, identical for any thread count.
@@ -66,6 +43,16 @@ double blockReduce(size_t count, Body&& body) {
   double total = 0.0;
   for (double p : partial) total += p;
   return total;
+}
+
+// Sum of term(i) for i in [0, count), in double, identical for any thread count.
+template <class Term>
+double deterministicSum(size_t count, Term&& term) {
+  return blockReduce(count, [&](size_t begin, size_t end) {
+    double s = 0.0;
+    for (size_t i = begin; i < end; ++i) s += term(i);
+    return s;
+  });
 }
 
 }  // namespace mq::cloth
