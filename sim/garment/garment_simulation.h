@@ -1,0 +1,66 @@
+#pragma once
+// One garment simulated on an animated body, as the CLI, the editor and the
+// benchmarks run it: the pattern's panels start placed around the body, seam
+// springs sew them during the first frames, then the seams are welded and the
+// welded cloth goes on (see garment_sewing.h for the pieces).
+//
+// Everything a caller sees is in the garment mesh's vertex order (the
+// unwelded GarmentMesh), before and after welding, so a viewer keeps one
+// triangle list and pins saved in a scene document stay valid.
+//
+//   GarmentSimulation sim(buildGarmentMesh(shirt), settings, bodyRest, bodyTriangles);
+//   sim.pinToBody(v);                        // optional
+//   for each frame: sim.step(1 / 30.f, &posedBody); show sim.positions();
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "core/garment/fabric.h"
+#include "core/garment/garment.h"
+#include "sim/cloth/cloth_settings.h"
+#include "sim/cloth/cloth_simulator.h"
+#include "sim/cloth/collision/primitive_collider.h"
+
+namespace mq::cloth {
+
+struct GarmentSimulationSettings {
+  ClothSettings cloth;
+  Fabric fabric;
+  float weldGap = 0.004f;          // m: seams weld once every seam pair is this close
+  float maxSewingSeconds = 2.0f;   // simulated time after which the seams weld regardless
+};
+
+class GarmentSimulation {
+ public:
+  // bodyPositions (3 per vertex) and bodyTriangles may be empty: no body.
+  GarmentSimulation(const GarmentMesh& garment, const GarmentSimulationSettings& settings,
+                    const std::vector<float>& bodyPositions, const std::vector<uint32_t>& bodyTriangles);
+  ~GarmentSimulation();
+
+  void addCollider(const PrimitiveCollider& collider);
+  // Pins, in garment-mesh vertex indices; kept across the weld.
+  void pin(uint32_t garmentVertex);         // fixed in space where it is now
+  void pinToBody(uint32_t garmentVertex);   // follows the nearest body vertex
+  const std::vector<uint32_t>& pinnedVertices() const;
+
+  // Advances dt seconds. posedBody (same vertices as the body given at
+  // construction) is the body at the end of the step; null: it stays put.
+  // Throws ClothDiverged when the state stops being finite.
+  void step(float dt, const std::vector<float>* posedBody = nullptr);
+
+  bool welded() const;
+  float seamGap() const;                         // largest open seam gap now (0 once welded)
+  std::vector<float> positions() const;          // 3 per garment-mesh vertex
+  std::vector<float> vertexStretch() const;      // per garment-mesh vertex: largest length / rest of its structural springs
+  const std::vector<uint32_t>& triangles() const;  // the garment mesh's
+  size_t vertexCount() const;                    // garment-mesh vertices
+  const ClothStats& stats() const;               // of the running solver
+  const ClothSimulator& simulator() const;       // sewing solver, then the welded one
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace mq::cloth
