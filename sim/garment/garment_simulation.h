@@ -29,6 +29,7 @@ struct GarmentSimulationSettings {
   Fabric fabric;
   float weldGap = 0.004f;          // m: seams weld once every seam pair is this close
   float maxSewingSeconds = 2.0f;   // simulated time after which the seams weld regardless
+  float sewingSpeed = 0.5f;        // m/s: how fast a seam gap may shrink while sewing
 };
 
 class GarmentSimulation {
