@@ -301,6 +301,7 @@ Garment rebuildParametricGarment(const Garment& garment, const Character& body) 
   Garment rebuilt = makeParametricGarment(garment.recipe.type, body, garment.recipe.parameters);
   rebuilt.name = garment.name;
   rebuilt.fabric = garment.fabric;
+  rebuilt.customFabric = garment.customFabric;
   rebuilt.targetEdgeLength = garment.targetEdgeLength;
   return rebuilt;
 }
