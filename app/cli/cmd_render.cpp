@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "app/cli/command.h"
+#include "app/cli/render_garments.h"
 #include "core/character/posed_character.h"
 #include "core/scene/open_scene.h"
 #include "core/util/error.h"
@@ -73,13 +74,14 @@ int runRender(const std::vector<std::string>& argv) {
   // A motion file alone (no meshes) shows its skeleton.
   view.setSkeletonVisible(args.has("--skeleton") || scene.document.view.showSkeleton ||
                           scene.character.meshes.empty());
+  const RenderedGarments garments = addSceneGarments(view, scene, clip, time, file);
   view.setAmbientOcclusion(true);
   placeCamera(view, scene.document.view, size);
   render::renderToPng(view, out, size.width, size.height);
   std::cout << "wrote " << out << " (" << size.width << "x" << size.height << ", "
             << (clip >= 0 ? "clip '" + scene.character.clips[clip].name + "' at t=" + std::to_string(time)
                           : std::string("rest pose"))
-            << ")\n";
+            << ")" << (garments.summary.empty() ? "" : ", garments: " + garments.summary) << "\n";
   return 0;
 }
 

@@ -90,6 +90,7 @@ class GarmentToolTest : public QObject {
     QVERIFY(tool_ != nullptr);
     QCOMPARE(tool_->garmentCount(), 0);
     tool_->dock()->raise();
+    doc()->setClip(-1);  // the rest pose: the placed panels are shown as built
   }
 
   void cleanupTestCase() {
@@ -107,6 +108,12 @@ class GarmentToolTest : public QObject {
     QCOMPARE(panel()->garmentList()->count(), 1);
     const GarmentMesh* mesh = tool_->garmentMesh(0);
     QVERIFY(mesh && mesh->vertexCount() > 500);
+    QCOMPARE(tool_->shownPositions(0), mesh->positions);
+    // On a posed body the unsimulated panels follow the body.
+    doc()->setClip(0);
+    doc()->setTime(doc()->clipStart() + 0.5f);
+    QVERIFY(maxDifference(tool_->shownPositions(0), mesh->positions) > 0.01f);
+    doc()->setClip(-1);
     QCOMPARE(tool_->shownPositions(0), mesh->positions);
     // Stored in the document, which now has unsaved changes.
     QVERIFY(doc()->sceneSections().garments.is_array());

@@ -347,6 +347,10 @@ void GarmentPanel::refreshStatus() {
     const QSignalBlocker block(select_);
     select_->setChecked(tool_->selectMode());
   }
+  {
+    const QSignalBlocker block(stretch_);
+    stretch_->setChecked(tool_->stretchVisible());
+  }
   simulate_->setEnabled(any);
   bake_->setEnabled(any);
   clearBake_->setEnabled(tool_->hasBake());

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 #include <QDockWidget>
 #include <QEventLoop>
@@ -25,6 +26,7 @@
 #include "render/garment_overlay.h"
 #include "render/scene_view.h"
 #include "sim/cloth/baked_cloth.h"
+#include "sim/garment/drape_schedule.h"
 #include "sim/garment/garment_scene.h"
 #include "sim/garment/garment_simulation.h"
 #include "ui/document/editor_document.h"
@@ -37,36 +39,38 @@ namespace mq::ui {
 
 namespace {
 
-// A garment starts around the body in its rest pose: the body stays there
-// while the seams sew (at least kMinSewingSeconds, until they weld), then
-// moves to the pose of the timeline over kBlendSeconds, so a clip that starts
-// far from the rest pose does not jump through the cloth.
-constexpr float kMinSewingSeconds = 0.5f;
-constexpr float kBlendSeconds = 0.5f;
-
-struct Drape {
-  float sewing = 0.0f;    // seconds simulated with the body at rest
-  float blending = 0.0f;  // seconds since the body started moving
-  // The weight of the target pose for the next step of dt seconds.
-  float advance(const cloth::GarmentSimulation& simulation, float dt, float maxSewingSeconds) {
-    const bool sewn = simulation.welded() || sewing >= maxSewingSeconds + 0.25f;
-    if (blending == 0.0f && (!sewn || sewing < kMinSewingSeconds)) {
-      sewing += dt;
-      return 0.0f;
+// For each garment vertex, the nearest body vertex (a uniform grid over the
+// body; garments sit a few centimetres off the skin).
+std::vector<uint32_t> nearestBodyVertices(const std::vector<float>& garment, const std::vector<float>& body) {
+  constexpr float kCell = 0.04f;
+  std::unordered_map<int64_t, std::vector<uint32_t>> grid;
+  auto cellOf = [](float x) { return int64_t(std::floor(x / kCell)); };
+  auto key = [](int64_t x, int64_t y, int64_t z) { return (x & 0x1fffff) | ((y & 0x1fffff) << 21) | ((z & 0x1fffff) << 42); };
+  for (size_t v = 0; v < body.size() / 3; ++v)
+    grid[key(cellOf(body[3 * v]), cellOf(body[3 * v + 1]), cellOf(body[3 * v + 2]))].push_back(uint32_t(v));
+  std::vector<uint32_t> nearest(garment.size() / 3, 0);
+  if (body.empty()) return nearest;
+  for (size_t g = 0; g < nearest.size(); ++g) {
+    const glm::vec3 p(garment[3 * g], garment[3 * g + 1], garment[3 * g + 2]);
+    const int64_t cx = cellOf(p.x), cy = cellOf(p.y), cz = cellOf(p.z);
+    float best = INFINITY;
+    for (int64_t ring = 0; ring < 16; ++ring) {
+      for (int64_t x = cx - ring; x <= cx + ring; ++x)
+        for (int64_t y = cy - ring; y <= cy + ring; ++y)
+          for (int64_t z = cz - ring; z <= cz + ring; ++z) {
+            if (std::max({std::abs(x - cx), std::abs(y - cy), std::abs(z - cz)}) != ring) continue;
+            const auto cell = grid.find(key(x, y, z));
+            if (cell == grid.end()) continue;
+            for (uint32_t b : cell->second) {
+              const glm::vec3 d = glm::vec3(body[3 * b], body[3 * b + 1], body[3 * b + 2]) - p;
+              const float d2 = glm::dot(d, d);
+              if (d2 < best) best = d2, nearest[g] = b;
+            }
+          }
+      if (best < (ring * kCell) * (ring * kCell)) break;  // nothing in a further ring can be nearer
     }
-    blending += dt;
-    return std::min(1.0f, blending / kBlendSeconds);
   }
-};
-
-void blendBody(const std::vector<float>& rest, const std::vector<float>& target, float weight,
-               std::vector<float>& out) {
-  out.resize(rest.size());
-  if (target.size() != rest.size() || weight <= 0.0f) {
-    out = rest;
-    return;
-  }
-  for (size_t i = 0; i < rest.size(); ++i) out[i] = rest[i] + weight * (target[i] - rest[i]);
+  return nearest;
 }
 
 std::vector<float> concatenated(const std::vector<PosedMesh>& meshes) {
@@ -113,8 +117,9 @@ struct GarmentTool::View {
   render::ClothActor actor;
   render::GarmentOverlay overlay;
   std::unique_ptr<cloth::GarmentSimulation> simulation;
-  Drape drape;
+  cloth::DrapeSchedule drape;
   std::vector<float> positions, stretch;  // what is shown
+  std::vector<uint32_t> nearestBody;     // per garment vertex, for the unsimulated preview
 
   explicit View(render::SceneView* sceneView) : scene(sceneView) {
     scene->addProp(actor.actor());
@@ -129,8 +134,9 @@ struct GarmentTool::View {
     scene->removeProp(overlay.selectionActor());
   }
 
-  void build(const Garment& garment) {
+  void build(const Garment& garment, const std::vector<float>& restBody) {
     mesh = buildGarmentMesh(garment);
+    nearestBody = nearestBodyVertices(mesh.positions, restBody);
     builtFrom = geometryOf(garment);
     actor.setMesh(mesh.positions, mesh.triangles, mesh.restUvs);
     overlay.setTriangles(mesh.triangles);
@@ -370,7 +376,7 @@ void GarmentTool::rebuildViews(const GarmentScene& before) {
     if (!view) {
       view = std::make_unique<View>(window_->sceneView());
       try {
-        view->build(scene_.garments[i]);
+        view->build(scene_.garments[i], restBody_);
       } catch (const Error& e) {
         lastError_ = QString::fromStdString(e.what());
       }
@@ -407,6 +413,7 @@ const std::vector<float>& GarmentTool::shownStretch(int garment) const { return 
 // live simulation, or as placed around the rest body.
 void GarmentTool::showGarments() {
   const float time = window_->document()->time();
+  std::vector<float> posed;
   for (size_t i = 0; i < views_.size(); ++i) {
     View& view = *views_[i];
     if (bake_ && bake_->clip == window_->document()->clipIndex()) {
@@ -417,7 +424,16 @@ void GarmentTool::showGarments() {
       view.positions = view.simulation->positions();
       view.stretch = view.simulation->vertexStretch();
     } else {
+      // Not simulated: the placed panels, carried by the body's nearest
+      // vertices from the rest pose to the pose shown.
+      if (posed.empty()) posed = posedBody();
       view.positions = view.mesh.positions;
+      if (posed.size() == restBody_.size() && view.nearestBody.size() == view.mesh.vertexCount())
+        for (size_t v = 0; v < view.nearestBody.size(); ++v)
+          for (int k = 0; k < 3; ++k) {
+            const size_t b = 3 * size_t(view.nearestBody[v]) + k;
+            view.positions[3 * v + k] += posed[b] - restBody_[b];
+          }
       view.stretch.assign(view.mesh.vertexCount(), 1.0f);
     }
     view.actor.updatePositions(view.positions);
@@ -435,6 +451,7 @@ void GarmentTool::showGarments() {
 void GarmentTool::setStretchVisible(bool visible) {
   stretchVisible_ = visible;
   showGarments();
+  emit simulationChanged();  // the panel's checkbox follows
 }
 
 void GarmentTool::setPinsVisible(bool visible) {
@@ -473,7 +490,7 @@ void GarmentTool::restartSimulation() {
   try {
     for (size_t i = 0; i < views_.size(); ++i) {
       views_[i]->simulation = makeSimulation(scene_, i, restBody_, bodyTriangles_);
-      views_[i]->drape = Drape{};
+      views_[i]->drape = cloth::DrapeSchedule{};
     }
   } catch (const Error& e) {
     lastError_ = QString::fromStdString(e.what());
@@ -506,19 +523,18 @@ void GarmentTool::startStep() {
   if (!simulating_ || stepWatcher_.isRunning()) return;
   struct Job {
     cloth::GarmentSimulation* simulation;
-    Drape* drape;
+    cloth::DrapeSchedule* drape;
   };
   std::vector<Job> jobs;
   for (auto& view : views_)
     if (view->simulation) jobs.push_back({view->simulation.get(), &view->drape});
   if (jobs.empty()) return;
   const float dt = 1.0f / scene_.cloth.fps;
-  const float maxSewing = cloth::GarmentSimulationSettings{}.maxSewingSeconds;
-  stepWatcher_.setFuture(QtConcurrent::run([jobs, dt, maxSewing, rest = restBody_, target = posedBody()]() -> QString {
+  stepWatcher_.setFuture(QtConcurrent::run([jobs, dt, rest = restBody_, target = posedBody()]() -> QString {
     try {
       std::vector<float> body;
       for (const Job& job : jobs) {
-        blendBody(rest, target, job.drape->advance(*job.simulation, dt, maxSewing), body);
+        cloth::blendBody(rest, target, job.drape->advance(*job.simulation, dt), body);
         job.simulation->step(dt, &body);
       }
       return QString();
@@ -582,8 +598,7 @@ bool GarmentTool::bake(float from, float to) {
     return false;
   }
 
-  const float maxSewing = cloth::GarmentSimulationSettings{}.maxSewingSeconds;
-  const int settleSteps = int(std::ceil((maxSewing + 0.25f + kBlendSeconds) * fps)) + 1;
+  const int settleSteps = cloth::DrapeSchedule{}.maxSteps(1.0f / fps);
   const int total = int(simulations.size()) * (settleSteps + frames);
   std::atomic<int> done{0};
   cancelBake_ = false;
@@ -598,10 +613,10 @@ bool GarmentTool::bake(float from, float to) {
       for (size_t g = 0; g < simulations.size(); ++g) {
         cloth::GarmentSimulation& simulation = *simulations[g];
         const int base = int(g) * (settleSteps + frames);
-        Drape drape;
-        for (int s = 0; s < settleSteps * 4 && drape.blending < kBlendSeconds; ++s) {
+        cloth::DrapeSchedule drape;
+        for (int s = 0; s < settleSteps && !drape.draped(); ++s) {
           if (cancelBake_) return QString();
-          blendBody(restBody_, bodies[0], drape.advance(simulation, 1.0f / fps, maxSewing), body);
+          cloth::blendBody(restBody_, bodies[0], drape.advance(simulation, 1.0f / fps), body);
           simulation.step(1.0f / fps, &body);
           done = base + std::min(s + 1, settleSteps);
         }
