@@ -109,7 +109,23 @@ GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent)
   measurementForm_ = new QFormLayout(measurements_);
   measurementForm_->setContentsMargins(0, 0, 0, 0);
   measurementLayout->addWidget(measurements_);
+  auto* resolutionForm = new QFormLayout;
+  particleDistance_ = new QDoubleSpinBox;
+  particleDistance_->setRange(5.0, 100.0);
+  particleDistance_->setDecimals(1);
+  particleDistance_->setSingleStep(1.0);
+  particleDistance_->setSuffix(tr(" mm"));
+  particleDistance_->setKeyboardTracking(false);
+  particleDistance_->setToolTip(tr("Edge length of the cloth mesh: smaller is finer and slower (clears the pins)"));
+  resolutionForm->addRow(tr("Particle distance"), particleDistance_);
+  measurementLayout->addLayout(resolutionForm);
   layout->addWidget(measurementBox);
+  connect(particleDistance_, &QDoubleSpinBox::valueChanged, this, [this](double mm) {
+    if (refreshing_) return;
+    if (lastField_ != 50) lastMergeKey_ = GarmentEditCommand::nextMergeKey();
+    lastField_ = 50;
+    tool_->setParticleDistance(tool_->currentGarment(), float(mm / 1000.0), lastMergeKey_);
+  });
 
   // Fabric
   auto* fabricBox = new QGroupBox(tr("Fabric"));
@@ -242,6 +258,11 @@ void GarmentPanel::refresh() {
     list_->setCurrentRow(current);
   }
   remove_->setEnabled(current >= 0);
+  particleDistance_->setEnabled(current >= 0);
+  if (current >= 0) {
+    const QSignalBlocker block(particleDistance_);
+    particleDistance_->setValue(scene.garments[current].targetEdgeLength * 1000.0);
+  }
   rebuildMeasurements();
   refreshFabric();
   {

@@ -42,6 +42,7 @@ class GarmentPanel : public QWidget {
   QComboBox* integratorCombo() const { return integratorCombo_; }
   // The measurement field named `name` of the current garment, or null.
   QDoubleSpinBox* measurementField(const QString& name) const;
+  QDoubleSpinBox* particleDistanceField() const { return particleDistance_; }
   QPushButton* simulateButton() const { return simulate_; }
   QPushButton* bakeButton() const { return bake_; }
   QPushButton* selectButton() const { return select_; }
@@ -65,6 +66,7 @@ class GarmentPanel : public QWidget {
   std::vector<QDoubleSpinBox*> measurementFields_;
   QString measuredType_;
   int measuredGarment_ = -2;
+  QDoubleSpinBox* particleDistance_;
   QComboBox* fabricCombo_;
   std::vector<QDoubleSpinBox*> fabricFields_;
   QComboBox* integratorCombo_;

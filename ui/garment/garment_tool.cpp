@@ -270,6 +270,15 @@ void GarmentTool::setMeasurement(int garment, const std::string& name, float val
   }
 }
 
+void GarmentTool::setParticleDistance(int garment, float metres, int mergeKey) {
+  if (garment < 0 || garment >= garmentCount() || scene_.garments[garment].targetEdgeLength == metres) return;
+  GarmentScene after = scene_;
+  Garment& g = after.garments[garment];
+  g.targetEdgeLength = metres;
+  g.pins.vertices.clear();  // a new mesh: the old vertex indices mean nothing
+  edit(after, tr("%1 particle distance").arg(QString::fromStdString(g.name)), mergeKey);
+}
+
 void GarmentTool::setFabricPreset(int garment, const std::string& preset) {
   if (garment < 0 || garment >= garmentCount() || !hasFabricPreset(preset)) return;
   GarmentScene after = scene_;

@@ -69,6 +69,8 @@ class GarmentTool : public QObject {
   void addGarment(const std::string& type);  // "tshirt", "skirt", "trousers"
   void removeGarment(int index);
   void setMeasurement(int garment, const std::string& name, float value, int mergeKey = 0);
+  // The cloth resolution: the target edge length of the garment's mesh (metres).
+  void setParticleDistance(int garment, float metres, int mergeKey = 0);
   void setFabricPreset(int garment, const std::string& preset);
   void setFabric(int garment, const Fabric& fabric, int mergeKey = 0);
   void setIntegrator(cloth::IntegratorKind integrator);
