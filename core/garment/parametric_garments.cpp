@@ -122,11 +122,13 @@ Seam seam(const std::string& panelA, const std::string& edgeA, const std::string
 
 // Front or back of a T-shirt: hem at v = 0, shoulders at v = length. `plusSide`
 // names the body side at +u ("l" on the front, "r" on the back).
+constexpr float kShoulderSlope = 0.025f;  // shoulder seams drop this much from neck to shoulder
+
 Panel shirtBody(const std::string& name, const std::string& plusSide, const std::string& minusSide, float halfWidth,
                 float length, float armholeDepth, float shoulderHalf, float neckHalf, float neckDrop) {
   Panel p;
   p.name = name;
-  float armpit = length - armholeDepth, slope = 0.025f;
+  float armpit = length - armholeDepth, slope = kShoulderSlope;
   p.addLine("hem", {-halfWidth, 0.0f});
   p.addLine("side_" + plusSide, {halfWidth, 0.0f});
   p.addQuadratic("armhole_" + plusSide, {halfWidth, armpit}, {shoulderHalf, armpit + 0.25f * armholeDepth});
@@ -157,10 +159,14 @@ Garment makeTShirt(const BodyMeasurements& body, const Params& p) {
   g.name = "T-shirt";
   float offset = p.at("offset");
   float shoulderY = 0.5f * (body.shoulder[0].y + body.shoulder[1].y);
-  float topY = shoulderY + 0.05f;  // the top of the shoulder, above the joint
+  float topY = shoulderY + 0.05f;  // at least: the top of the shoulder, above the joint
   float halfWidth = 0.25f * (body.chestGirth + p.at("ease"));
   float shoulderHalf = std::min(std::abs(body.shoulder[0].x - body.torsoAxisAt(0).x), halfWidth - 0.03f);
   float neckHalf = std::min(0.5f * p.at("neckWidth"), shoulderHalf - 0.04f);
+  // Sewing closes the gap between the front and back shoulder edges along
+  // straight lines: they must start above the shoulders, or the seams stop
+  // at the body instead of sliding over it.
+  topY = std::max(topY, std::max(body.shoulderTop[0], body.shoulderTop[1]) + kShoulderSlope + offset);
   float length = p.at("length"), armholeDepth = std::min(0.2f * topY / 1.5f, 0.5f * length);
   g.panels.push_back(shirtBody("front", "l", "r", halfWidth, length, armholeDepth, shoulderHalf, neckHalf, 0.08f));
   g.panels.push_back(shirtBody("back", "r", "l", halfWidth, length, armholeDepth, shoulderHalf, neckHalf, 0.02f));
