@@ -54,7 +54,7 @@ struct GarmentSimulation::Impl {
 
   void sewAll() {
     allSeams = true;
-    sim->sewSeams(mesh.seams, settings.sewingSpeed);
+    sim->sewSeams(mesh.seams, settings.sewingSpeed, settings.sewingStretchRelief);
     bestGap = 1e30f, bestGapTime = sewingTime;
   }
 
@@ -124,7 +124,7 @@ GarmentSimulation::GarmentSimulation(const GarmentMesh& garment, const GarmentSi
   else if (m.firstStage.empty())
     m.sewAll();
   else
-    m.sim->sewSeams(m.firstStage, settings.sewingSpeed);
+    m.sim->sewSeams(m.firstStage, settings.sewingSpeed, settings.sewingStretchRelief);
 }
 
 GarmentSimulation::~GarmentSimulation() = default;
