@@ -203,17 +203,20 @@ void ClothSimulator::substep(float h, float bodyFraction) {
     for (size_t i = 0; i < state_.size(); ++i)
       if (touched_[i]) state_.invMass[i] *= 0.05f;
     const StretchLimitResult r =
-        limitStretchByPositions(state_, springs, structural, settings_.maxStretch, passBudget_, h);
+        limitStretchByPositions(state_, springs, structural, activeMaxStretch(), passBudget_, h);
     state_.invMass = freeInvMass;
     stats_.stretchPasses += r.passes;
-    held = r.maxStretchAfter <= settings_.maxStretch;
+    held = r.maxStretchAfter <= activeMaxStretch();
   }
   limitHeld_ = limitHeld_ && held;
   placePins();
   checkFinite("after a solver step");
 }
 
-void ClothSimulator::sewSeams(const std::vector<std::pair<uint32_t, uint32_t>>& seams, float closingSpeed) {
+void ClothSimulator::sewSeams(const std::vector<std::pair<uint32_t, uint32_t>>& seams, float closingSpeed,
+                              float stretchRelief) {
+  if (!(stretchRelief >= 1.0f) || !std::isfinite(stretchRelief)) throw Error("sewing stretch relief must be >= 1");
+  sewingStretchRelief_ = stretchRelief;
   for (const auto& [a, b] : seams)
     if (a >= state_.size() || b >= state_.size()) throw Error("cloth seam vertex out of range");
   if (!(closingSpeed > 0.0f) || !std::isfinite(closingSpeed)) throw Error("seam closing speed must be positive");
@@ -253,11 +256,11 @@ bool ClothSimulator::limitStretchWhileSewing(float h) {
     }
     if (!limit) continue;
     state_.invMass = heavy;
-    const StretchLimitResult r = limitStretchByPositions(state_, springs, structural, settings_.maxStretch,
+    const StretchLimitResult r = limitStretchByPositions(state_, springs, structural, activeMaxStretch(),
                                                          std::max(1, passBudget_ / kRounds), h);
     state_.invMass = freeInvMass;
     stats_.stretchPasses += r.passes;
-    held = r.maxStretchAfter <= settings_.maxStretch;
+    held = r.maxStretchAfter <= activeMaxStretch();
   }
   return held;
 }

@@ -78,7 +78,10 @@ class ClothSimulator {
   // pass (the seam vertices made heavier there, so the panels follow their
   // seams rather than the seams being pulled back). Unlike the zero-length
   // seam springs of ClothMesh::seams, a wide gap cannot close in one step.
-  void sewSeams(const std::vector<std::pair<uint32_t, uint32_t>>& seams, float closingSpeed);
+  // While sewing, the elongation limit is maxStretch * stretchRelief (panels
+  // bent around the body may need a little more before the seams meet).
+  void sewSeams(const std::vector<std::pair<uint32_t, uint32_t>>& seams, float closingSpeed,
+                float stretchRelief = 1.0f);
   void stopSewing() { sewing_.clear(); }
 
   // Stepping; throws ClothDiverged when the state is not finite.
@@ -136,6 +139,8 @@ class ClothSimulator {
   std::vector<Pin> pins_;
   std::vector<std::pair<uint32_t, uint32_t>> sewing_;
   float sewingSpeed_ = 0.0f;  // m/s
+  float sewingStretchRelief_ = 1.0f;
+  float activeMaxStretch() const { return sewing_.empty() ? settings_.maxStretch : settings_.maxStretch * sewingStretchRelief_; }
   ClothStats stats_;
   bool limitHeld_ = true;
   int passBudget_ = 100;   // elongation-limit passes per call in this try  // the elongation limit held in every substep of this try

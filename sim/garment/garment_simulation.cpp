@@ -13,6 +13,7 @@ namespace {
 // While sewing, velocities decay with this time constant: the cloth creeps
 // into place instead of swinging from the seams' pull.
 constexpr float kSewingVelocityDecaySeconds = 0.05f;
+constexpr float kStallSeconds = 0.5f;
 
 uint32_t nearestVertex(const std::vector<float>& positions, glm::vec3 p) {
   uint32_t best = 0;
@@ -42,6 +43,27 @@ struct GarmentSimulation::Impl {
   };
   std::vector<Pin> pins;
   std::vector<uint32_t> pinned;    // garment-mesh indices, in pin order
+  // Sewing in two stages: first the seams within a panel (a sleeve or a
+  // trouser leg closing into a tube around its limb), then all of them. A
+  // sleeve sewn to the armhole first would be turned level by the armhole's
+  // shape and let the arm out through its open underside.
+  std::vector<std::pair<uint32_t, uint32_t>> firstStage;
+  bool allSeams = false;
+  float sewingTime = 0.0f;
+  float bestGap = 1e30f, bestGapTime = 0.0f;  // for stall detection
+
+  void sewAll() {
+    allSeams = true;
+    sim->sewSeams(mesh.seams, settings.sewingSpeed, settings.sewingStretchRelief);
+    bestGap = 1e30f, bestGapTime = sewingTime;
+  }
+
+  // The seams being sewn are as closed as they will get: closed, or the gap
+  // has not shrunk by a millimetre for kStallSeconds (the body holds them).
+  bool stageDone(float gap) {
+    if (gap < bestGap - 1e-3f) bestGap = gap, bestGapTime = sewingTime;
+    return gap <= settings.weldGap || sewingTime - bestGapTime > kStallSeconds;
+  }
 
   uint32_t running(uint32_t garmentVertex) const { return welded ? weld.newIndex[garmentVertex] : garmentVertex; }
 
@@ -83,6 +105,9 @@ GarmentSimulation::GarmentSimulation(const GarmentMesh& garment, const GarmentSi
   if (bodyPositions.size() % 3 != 0 || bodyTriangles.size() % 3 != 0)
     throw Error("garment body needs 3 floats per vertex and 3 indices per triangle");
   m.mesh = clothMeshFromGarment(garment);
+  for (const auto& [a, b] : m.mesh.seams)
+    if (a < garment.panelIds.size() && b < garment.panelIds.size() && garment.panelIds[a] == garment.panelIds[b])
+      m.firstStage.push_back({a, b});
   m.triangles = garment.triangles;
   // The sewing solver gets no seam springs: the seams close in its position pass.
   ClothMesh unsewn = m.mesh;
@@ -96,8 +121,10 @@ GarmentSimulation::GarmentSimulation(const GarmentMesh& garment, const GarmentSi
   }
   if (m.mesh.seams.empty())
     m.weldNow();  // nothing to sew: the same mesh, welded state from the start
+  else if (m.firstStage.empty())
+    m.sewAll();
   else
-    m.sim->sewSeams(m.mesh.seams, settings.sewingSpeed);
+    m.sim->sewSeams(m.firstStage, settings.sewingSpeed, settings.sewingStretchRelief);
 }
 
 GarmentSimulation::~GarmentSimulation() = default;
@@ -145,8 +172,13 @@ void GarmentSimulation::step(float dt, const std::vector<float>* posedBody) {
   if (m.welded) return;
   const float keep = std::exp(-dt / kSewingVelocityDecaySeconds);
   for (glm::vec3& v : m.sim->mutableState().v) v *= keep;
-  const bool closed = maxSeamGap(m.sim->positions(), m.mesh.seams) <= m.settings.weldGap;
-  if (closed || m.sim->stats().simulatedTime >= m.settings.maxSewingSeconds) m.weldNow();
+  m.sewingTime += dt;
+  const bool outOfTime = m.sewingTime >= m.settings.maxSewingSeconds;
+  if (!m.allSeams) {
+    if (m.stageDone(maxSeamGap(m.sim->positions(), m.firstStage)) || outOfTime) m.sewAll();
+    if (!outOfTime) return;
+  }
+  if (m.stageDone(maxSeamGap(m.sim->positions(), m.mesh.seams)) || outOfTime) m.weldNow();
 }
 
 bool GarmentSimulation::welded() const { return impl_->welded; }
