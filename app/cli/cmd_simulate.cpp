@@ -1,6 +1,8 @@
 // mannequin-cli simulate SCENE --frames N [--fps F] [--stats-json OUT] [--export-dir DIR]
-// Runs the cloth simulation of a scene document headless and reports what
-// the benchmarks compare: wall time, stretch, penetrations, bounds.
+// Runs the cloth of a scene document headless (the "cloth" section's sheet
+// and the "garments", sewn then welded, on the character playing its clip)
+// and reports what the benchmarks compare: wall time, stretch, penetrations,
+// bounds over all cloth, and per garment in "garments".
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -9,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/command.h"
+#include "app/cli/simulate_garments.h"
 #include "core/character/posed_character.h"
 #include "core/scene/open_scene.h"
 #include "core/util/error.h"
@@ -47,6 +50,18 @@ class PosedBody {
 
 json vec3Json(const glm::vec3& v) { return json::array({v.x, v.y, v.z}); }
 
+// The sheet of the document's "cloth" section (when it has one).
+std::unique_ptr<cloth::ClothSimulator> makeSheet(const cloth::ClothSceneSpec& spec, const std::vector<float>& body,
+                                                 const std::vector<uint32_t>& bodyTriangles) {
+  if (!spec.hasSheet) return nullptr;
+  std::vector<uint32_t> pinned;
+  auto sim = std::make_unique<cloth::ClothSimulator>(cloth::buildClothMesh(spec, pinned), spec.fabric, spec.settings);
+  for (const auto& c : spec.colliders) sim->addCollider(c);
+  for (uint32_t v : pinned) sim->pinVertex(v);
+  if (!bodyTriangles.empty()) sim->setBody(body, bodyTriangles);
+  return sim;
+}
+
 struct RunResult {
   double seconds = 0.0;
   float maxStretch = 1.0f;
@@ -54,24 +69,41 @@ struct RunResult {
   int substeps = 0;
 };
 
-RunResult run(cloth::ClothSimulator& sim, PosedBody& body, float startTime, bool animateBody, int frames, float fps,
-               const std::string& exportDir) {
+// All cloth of the scene, stepped frame by frame on the (animated) body.
+struct SceneCloth {
+  std::unique_ptr<cloth::ClothSimulator> sheet;
+  std::unique_ptr<cli::SimulatedGarments> garments;
+
+  cli::ClothNow now() const {
+    cli::ClothNow n;
+    if (sheet) n.add(sheet->stats(), sheet->positions().size());
+    if (garments) garments->addTo(n);
+    return n;
+  }
+};
+
+RunResult run(SceneCloth& cloth, PosedBody& body, float startTime, bool animateBody, int frames, float fps,
+              const std::string& exportDir) {
   RunResult r;
   std::vector<float> bodyPositions;
   for (int f = 0; f < frames; ++f) {
     const auto t0 = std::chrono::steady_clock::now();
-    if (!body.empty() && animateBody) {
-      body.pose(startTime + float(f + 1) / fps, bodyPositions, nullptr);
-      sim.updateBody(bodyPositions);
+    const bool posed = !body.empty() && animateBody;
+    if (posed) body.pose(startTime + float(f + 1) / fps, bodyPositions, nullptr);
+    if (cloth.sheet) {
+      if (posed) cloth.sheet->updateBody(bodyPositions);
+      cloth.sheet->step(1.0f / fps);
+      r.solverIterations += cloth.sheet->stats().solverIterations;
+      r.substeps = cloth.sheet->stats().substeps;
     }
-    sim.step(1.0f / fps);
+    if (cloth.garments) cloth.garments->step(1.0f / fps, posed ? &bodyPositions : nullptr);
     r.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    r.maxStretch = std::max(r.maxStretch, sim.stats().maxStretch);
-    r.solverIterations += sim.stats().solverIterations;
-    r.substeps = sim.stats().substeps;
-    if (!exportDir.empty())
+    r.maxStretch = std::max(r.maxStretch, cloth.now().maxStretch);
+    if (exportDir.empty()) continue;
+    if (cloth.sheet)
       cloth::writeObj((std::filesystem::path(exportDir) / cloth::objFrameName("cloth", f + 1)).string(),
-                      sim.flatPositions(), sim.triangles());
+                      cloth.sheet->flatPositions(), cloth.sheet->triangles());
+    if (cloth.garments) cloth.garments->exportFrame(exportDir, f + 1);
   }
   return r;
 }
@@ -90,21 +122,21 @@ int runSimulate(const std::vector<std::string>& argv) {
   } catch (const json::exception& e) {
     throw FileError(path, std::string("not a valid scene document: ") + e.what());
   }
-  const cloth::ClothSceneSpec spec = cloth::parseClothScene(scene.document.cloth, scene.document.colliders, path);
+  const json& garmentsSection = scene.document.garments;
+  const bool hasGarments = garmentsSection.is_array() && !garmentsSection.empty();
+  const cloth::ClothSceneSpec spec =
+      cloth::parseClothScene(scene.document.cloth, scene.document.colliders, path, hasGarments);
   const float fps = float(args.number("--fps", spec.fps));
   if (!(fps > 0.0f) || !std::isfinite(fps)) throw Error("--fps expects a positive number");
 
-  std::vector<uint32_t> pinned;
-  cloth::ClothSimulator sim(cloth::buildClothMesh(spec, pinned), spec.fabric, spec.settings);
-  for (const auto& c : spec.colliders) sim.addCollider(c);
-  for (uint32_t v : pinned) sim.pinVertex(v);
   PosedBody body(scene);
-  if (!body.empty()) {
-    std::vector<float> positions;
-    std::vector<uint32_t> triangles;
-    body.pose(scene.document.time, positions, &triangles);
-    sim.setBody(positions, triangles);
-  }
+  std::vector<float> bodyPositions;
+  std::vector<uint32_t> bodyTriangles;
+  if (!body.empty()) body.pose(scene.document.time, bodyPositions, &bodyTriangles);
+  SceneCloth cloth;
+  cloth.sheet = makeSheet(spec, bodyPositions, bodyTriangles);
+  if (!garmentsSection.is_null())
+    cloth.garments = std::make_unique<cli::SimulatedGarments>(garmentsSection, spec, bodyPositions, bodyTriangles, path);
 
   const std::string exportDir = args.option("--export-dir");
   if (!exportDir.empty()) {
@@ -113,36 +145,37 @@ int runSimulate(const std::vector<std::string>& argv) {
     if (ec) throw FileError(exportDir, "cannot create the directory: " + ec.message());
   }
   const int frames = int(framesArg);
-  const RunResult r = run(sim, body, scene.document.time, spec.animateBody, frames, fps, exportDir);
-  const cloth::ClothStats& st = sim.stats();
+  const RunResult r = run(cloth, body, scene.document.time, spec.animateBody, frames, fps, exportDir);
+  const cli::ClothNow now = cloth.now();
   json stats = {{"scene", path},
                 {"frames", frames},
                 {"fps", fps},
                 {"seconds", r.seconds},
                 {"ms_per_frame", 1000.0 * r.seconds / frames},
                 {"max_stretch", r.maxStretch},
-                {"final_max_stretch", st.maxStretch},
-                {"penetrating_vertices", st.penetratingVertices},
-                {"bbox_min", vec3Json(st.boundsMin)},
-                {"bbox_max", vec3Json(st.boundsMax)},
-                {"vertices", sim.positions().size()},
+                {"final_max_stretch", now.maxStretch},
+                {"penetrating_vertices", now.penetratingVertices},
+                {"bbox_min", vec3Json(now.boundsMin)},
+                {"bbox_max", vec3Json(now.boundsMax)},
+                {"vertices", now.vertices},
                 {"integrator", cloth::integratorName(spec.settings.integrator)},
                 {"substeps_per_frame", r.substeps},
                 {"cg_iterations_per_frame", double(r.solverIterations) / frames},
                 {"threads", ThreadPool::shared().threadCount()}};
+  if (cloth.garments) stats["garments"] = cloth.garments->stats();
   const std::string statsPath = args.option("--stats-json");
   if (!statsPath.empty()) {
     std::ofstream out(statsPath);
     if (!out) throw FileError(statsPath, "cannot open for writing");
     out << stats.dump(2) << "\n";
   }
-  std::cout << "simulated " << frames << " frames of " << sim.positions().size() << " vertices in " << r.seconds
+  std::cout << "simulated " << frames << " frames of " << now.vertices << " cloth vertices in " << r.seconds
             << " s (" << 1000.0 * r.seconds / frames << " ms/frame), max stretch " << r.maxStretch
-            << ", penetrating vertices " << st.penetratingVertices << "\n";
+            << ", penetrating vertices " << now.penetratingVertices << "\n";
   return 0;
 }
 
 const cli::Registration reg({"simulate", "SCENE --frames N [--fps F] [--stats-json OUT] [--export-dir DIR]",
-                             "run the scene's cloth simulation headless; stats as JSON, frames as OBJ", runSimulate});
+                             "run the scene's cloth (sheet and garments) headless; stats as JSON, frames as OBJ", runSimulate});
 
 }  // namespace

@@ -145,6 +145,16 @@ BodyMeasurements measureBody(const Character& character) {
   m.upperArmGirth = girth(body, {upperArm[0]}, glm::mix(m.shoulder[0], m.elbow[0], 0.3f), armAxis, {0, 0, 1});
   glm::vec3 legAxis = glm::normalize(m.knee[0] - m.hip[0]);
   m.thighGirth = girth(body, {thigh[0]}, glm::mix(m.hip[0], m.knee[0], 0.25f), legAxis, {1, 0, 0});
+  for (int s = 0; s < 2; ++s) {
+    const glm::vec3 axis = m.torsoAxisAt(m.shoulder[s].y);
+    const float inner = 0.5f * std::abs(m.shoulder[s].x - axis.x), outer = 2.0f * inner;
+    m.shoulderTop[s] = m.shoulder[s].y;
+    for (const glm::vec3& p : body.positions) {
+      const float across = (p.x - axis.x) * (m.shoulder[s].x > axis.x ? 1.0f : -1.0f);
+      if (across >= inner && across <= outer && std::abs(p.z - axis.z) < 0.05f && p.y < m.shoulder[s].y + 0.3f)
+        m.shoulderTop[s] = std::max(m.shoulderTop[s], p.y);
+    }
+  }
   // A skeleton without skin: proportions of the stature (ISO 8559 averages).
   float stature = std::max(m.neck.y / 0.82f, 1.0f);
   if (m.chestGirth <= 0.0f) m.chestGirth = 0.55f * stature;

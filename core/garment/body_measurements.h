@@ -20,6 +20,9 @@ struct BodyMeasurements {
   glm::vec3 hip[2]{}, knee[2]{}, ankle[2]{};
   float chestGirth = 0.0f, waistGirth = 0.0f, hipGirth = 0.0f;
   float upperArmGirth = 0.0f, thighGirth = 0.0f;
+  // Top of the shoulders: the highest skin point over the torso axis's
+  // depth, between halfway to the shoulder joint and the joint (left, right).
+  float shoulderTop[2]{};
   std::vector<BodyCapsule> capsules;
 
   // The vertical torso axis (through pelvis and chest), as a point at height y.

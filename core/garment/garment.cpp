@@ -36,6 +36,12 @@ int Garment::findPanel(const std::string& panelName) const {
   return -1;
 }
 
+Fabric Garment::solverFabric() const {
+  if (customFabric) return *customFabric;
+  if (!hasFabricPreset(fabric)) throw Error("garment '" + name + "': unknown fabric preset '" + fabric + "'");
+  return fabricPreset(fabric);
+}
+
 void Garment::validate() const {
   auto fail = [&](const std::string& problem) { throw Error("garment '" + name + "': " + problem); };
   if (panels.empty()) fail("has no panels");

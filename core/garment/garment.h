@@ -5,9 +5,11 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/garment/fabric.h"
 #include "core/garment/panel.h"
 #include "core/garment/seam.h"
 #include "core/mesh/mesh.h"
@@ -21,15 +23,29 @@ struct ParametricRecipe {
   std::map<std::string, float> parameters;
 };
 
+// Garment vertices held by the simulation: fixed in space, or following the
+// nearest body vertex. Indices are garment-mesh vertices (buildGarmentMesh).
+struct GarmentPins {
+  enum class Attach { Body, Space };
+  std::vector<uint32_t> vertices;
+  Attach attach = Attach::Body;
+};
+
 struct Garment {
   std::string name;
   std::vector<Panel> panels;
   std::vector<Seam> seams;
-  std::string fabric = "cotton";    // a fabric preset name
+  std::string fabric = "cotton";    // the fabric preset ("" = custom: customFabric alone)
+  // Values of a document's own fabric ("fabric": {"preset": .., "stretch": ..});
+  // none: the preset's.
+  std::optional<Fabric> customFabric;
+  GarmentPins pins;
   float targetEdgeLength = 0.02f;   // metres
   ParametricRecipe recipe;
 
   int findPanel(const std::string& panelName) const;  // -1 if absent
+  // The fabric the solver uses: customFabric, else the preset (mq::Error if unknown).
+  Fabric solverFabric() const;
   // Throws mq::Error naming the garment and the problem: invalid panels,
   // duplicate panel names, seams naming unknown panels or edges, an edge in
   // two seams, a seam sewing an edge to itself.

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/garment/fabric_json.h"
 #include "core/util/error.h"
 
 namespace mq {
@@ -157,6 +158,32 @@ std::pair<std::string, std::string> seamSide(const json& j, const std::string& p
   return {j[0].get<std::string>(), j[1].get<std::string>()};
 }
 
+// "pins": {"vertices": [garment-mesh vertex indices], "attach": "body" | "space"}.
+// (Indices are checked against the mesh where it is built: the simulation.)
+GarmentPins pinsFromJson(const json& j, const std::string& path) {
+  GarmentPins pins;
+  if (!j.is_object()) fail(path, "expected {\"vertices\": [...], \"attach\": \"body\" | \"space\"}");
+  for (auto it = j.begin(); it != j.end(); ++it)
+    if (it.key() != "vertices" && it.key() != "attach") fail(at(path, it.key().c_str()), "unknown pins key");
+  if (const json* vertices = optionalMember(j, "vertices")) {
+    const std::string verticesPath = at(path, "vertices");
+    array(*vertices, verticesPath);
+    for (size_t i = 0; i < vertices->size(); ++i) {
+      const json& v = (*vertices)[i];
+      if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() > 0xffffffffLL)
+        fail(at(verticesPath, i), "expected a garment vertex index (an integer >= 0)");
+      pins.vertices.push_back(uint32_t(v.get<long long>()));
+    }
+  }
+  if (const json* attach = optionalMember(j, "attach")) {
+    const std::string name = text(*attach, at(path, "attach"));
+    if (name == "body") pins.attach = GarmentPins::Attach::Body;
+    else if (name == "space") pins.attach = GarmentPins::Attach::Space;
+    else fail(at(path, "attach"), "unknown attach '" + name + "' (body or space)");
+  }
+  return pins;
+}
+
 }  // namespace
 
 json garmentToJson(const Garment& garment) {
@@ -165,10 +192,13 @@ json garmentToJson(const Garment& garment) {
   for (const Seam& s : garment.seams)
     seams.push_back({{"a", {s.panelA, s.edgeA}}, {"b", {s.panelB, s.edgeB}}, {"reversed", s.reversed}});
   json out = {{"name", garment.name},
-              {"fabric", garment.fabric},
+              {"fabric", garment.customFabric ? fabricToJson(*garment.customFabric, garment.fabric) : json(garment.fabric)},
               {"targetEdgeLength", garment.targetEdgeLength},
               {"panels", panels},
               {"seams", seams}};
+  if (!garment.pins.vertices.empty())
+    out["pins"] = {{"vertices", garment.pins.vertices},
+                   {"attach", garment.pins.attach == GarmentPins::Attach::Body ? "body" : "space"}};
   if (!garment.recipe.type.empty())
     out["recipe"] = {{"type", garment.recipe.type}, {"parameters", garment.recipe.parameters}};
   return out;
@@ -184,7 +214,11 @@ Garment garmentFromJson(const json& j, const std::string& path) {
   Garment g;
   if (!j.is_object()) fail(path, "expected a garment object");
   if (const json* name = optionalMember(j, "name")) g.name = text(*name, at(path, "name"));
-  if (const json* fabric = optionalMember(j, "fabric")) g.fabric = text(*fabric, at(path, "fabric"));
+  if (const json* fabric = optionalMember(j, "fabric")) {
+    Fabric values = fabricFromJson(*fabric, at(path, "fabric"), g.fabric);
+    if (!fabric->is_string()) g.customFabric = values;
+  }
+  if (const json* pins = optionalMember(j, "pins")) g.pins = pinsFromJson(*pins, at(path, "pins"));
   if (const json* target = optionalMember(j, "targetEdgeLength")) {
     g.targetEdgeLength = number(*target, at(path, "targetEdgeLength"));
     if (!(g.targetEdgeLength >= 0.002f && g.targetEdgeLength <= 1.0f))

@@ -11,6 +11,11 @@
 //                                  "anchor": [u, v] } }, ... ],
 //     "seams": [ { "a": ["front", "side_l"], "b": ["back", "side_l"], "reversed": true }, ... ] }
 // Pattern coordinates are metres. "recipe" is optional (hand-made panels).
+// "fabric" is a preset name or an object of its own values (core/garment/
+// fabric_json.h): {"preset": "cotton", "mass_per_area": .., "stretch": .., "shear": ..,
+// "bend": .., "damping": .., "friction": .., "thickness": ..}.
+// Optional "pins": {"vertices": [garment-mesh vertex indices], "attach": "body" | "space"}
+// (body: each follows its nearest body vertex; space: fixed where it starts).
 
 #include <string>
 #include <vector>

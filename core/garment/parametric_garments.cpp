@@ -120,13 +120,17 @@ Seam seam(const std::string& panelA, const std::string& edgeA, const std::string
 
 // ---- T-shirt --------------------------------------------------------------------
 
+constexpr float kShoulderSlope = 0.025f;  // shoulder seams drop this much from neck to shoulder
+constexpr float kSleeveDrop = 0.08f;      // m down the arm from the shoulder joint, at least
+
 // Front or back of a T-shirt: hem at v = 0, shoulders at v = length. `plusSide`
 // names the body side at +u ("l" on the front, "r" on the back).
+
 Panel shirtBody(const std::string& name, const std::string& plusSide, const std::string& minusSide, float halfWidth,
                 float length, float armholeDepth, float shoulderHalf, float neckHalf, float neckDrop) {
   Panel p;
   p.name = name;
-  float armpit = length - armholeDepth, slope = 0.025f;
+  float armpit = length - armholeDepth, slope = kShoulderSlope;
   p.addLine("hem", {-halfWidth, 0.0f});
   p.addLine("side_" + plusSide, {halfWidth, 0.0f});
   p.addQuadratic("armhole_" + plusSide, {halfWidth, armpit}, {shoulderHalf, armpit + 0.25f * armholeDepth});
@@ -157,11 +161,17 @@ Garment makeTShirt(const BodyMeasurements& body, const Params& p) {
   g.name = "T-shirt";
   float offset = p.at("offset");
   float shoulderY = 0.5f * (body.shoulder[0].y + body.shoulder[1].y);
-  float topY = shoulderY + 0.05f;  // the top of the shoulder, above the joint
+  float topY = shoulderY + 0.05f;  // at least: the top of the shoulder, above the joint
   float halfWidth = 0.25f * (body.chestGirth + p.at("ease"));
   float shoulderHalf = std::min(std::abs(body.shoulder[0].x - body.torsoAxisAt(0).x), halfWidth - 0.03f);
   float neckHalf = std::min(0.5f * p.at("neckWidth"), shoulderHalf - 0.04f);
-  float length = p.at("length"), armholeDepth = std::min(0.2f * topY / 1.5f, 0.5f * length);
+  // Sewing closes the gap between the front and back shoulder edges along
+  // straight lines: they must start above the shoulders, or the seams stop
+  // at the body instead of sliding over it.
+  topY = std::max(topY, std::max(body.shoulderTop[0], body.shoulderTop[1]) + kShoulderSlope + offset);
+  // A roomy armhole: the armpit corners of front, back and sleeve must meet
+  // under the arm of an A-pose body without stretching past the limit.
+  float length = p.at("length"), armholeDepth = std::min(0.25f * topY / 1.5f, 0.5f * length);
   g.panels.push_back(shirtBody("front", "l", "r", halfWidth, length, armholeDepth, shoulderHalf, neckHalf, 0.08f));
   g.panels.push_back(shirtBody("back", "r", "l", halfWidth, length, armholeDepth, shoulderHalf, neckHalf, 0.02f));
   wrapTorso(body, g.panels[0], g.panels[1], topY, length, offset);
@@ -175,8 +185,15 @@ Garment makeTShirt(const BodyMeasurements& body, const Params& p) {
     float radius = std::max(circumference / (2.0f * kPi), (arm ? arm->radius : 0.05f) + offset + kCoverSpacing);
     sleeve.placement = cylinder("upperarm_" + side, body.shoulder[s], axis, kUp, radius, {0.0f, p.at("sleeveLength")});
     glm::vec3 shoulder = body.shoulder[s];
-    growUntilClear(body.capsules, {&sleeve}, offset, 0.0f, 0.4f,
-                   [&](Panel& panel, float shift) { panel.placement.center = shoulder - shift * axis; });
+    // Starts a little down the arm: a sleeve tube closing right at the
+    // shoulder joint would have to pass where the arm meets the torso. (A
+    // long sleeve moved down may meet the forearm: then from the joint.)
+    auto moveDown = [&](Panel& panel, float shift) { panel.placement.center = shoulder - shift * axis; };
+    try {
+      growUntilClear(body.capsules, {&sleeve}, offset, kSleeveDrop, 0.4f, moveDown);
+    } catch (const Error&) {
+      growUntilClear(body.capsules, {&sleeve}, offset, 0.0f, 0.4f, moveDown);
+    }
     g.panels.push_back(sleeve);
   }
   // Sleeve u runs axis x up: towards the back on the left arm, the front on the right.
@@ -267,9 +284,9 @@ std::vector<GarmentParameter> garmentParameters(const std::string& type) {
   GarmentParameter offset{"offset", 0.02f, 0.005f, 0.1f, "distance kept from the body when placed"};
   if (type == "tshirt")
     return {{"length", 0.66f, 0.35f, 1.1f, "shoulder to hem"},
-            {"ease", 0.12f, 0.0f, 0.5f, "chest circumference added to the body's"},
+            {"ease", 0.2f, 0.0f, 0.5f, "chest circumference added to the body's"},
             {"sleeveLength", 0.2f, 0.05f, 0.6f, "armhole to cuff, under the arm"},
-            {"sleeveEase", 0.1f, 0.0f, 0.3f, "sleeve circumference added to the upper arm's"},
+            {"sleeveEase", 0.12f, 0.0f, 0.3f, "sleeve circumference added to the upper arm's"},
             {"neckWidth", 0.17f, 0.08f, 0.3f, "width of the neck opening"},
             offset};
   if (type == "skirt")
@@ -301,6 +318,7 @@ Garment rebuildParametricGarment(const Garment& garment, const Character& body) 
   Garment rebuilt = makeParametricGarment(garment.recipe.type, body, garment.recipe.parameters);
   rebuilt.name = garment.name;
   rebuilt.fabric = garment.fabric;
+  rebuilt.customFabric = garment.customFabric;
   rebuilt.targetEdgeLength = garment.targetEdgeLength;
   return rebuilt;
 }

@@ -35,7 +35,8 @@ Garment makeParametricGarment(const std::string& type, const Character& body,
                               const std::map<std::string, float>& parameters = {});
 
 // Rebuilds a garment from its recipe for `body`, keeping its name, fabric and
-// target edge length. Throws mq::Error when the garment has no recipe.
+// target edge length (not its pins: they index the old mesh's vertices).
+// Throws mq::Error when the garment has no recipe.
 Garment rebuildParametricGarment(const Garment& garment, const Character& body);
 
 }  // namespace mq

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/garment/fabric_json.h"
 #include "core/util/error.h"
 
 namespace mq::cloth {
@@ -118,31 +119,11 @@ SheetGarmentSpec parseGarment(const SectionReader& r) {
 void parseFabric(const SectionReader& r, ClothSceneSpec& spec) {
   spec.fabric = fabricPreset("cotton");
   if (!r.has("fabric")) return;
-  const json& f = r.raw("fabric");
-  if (f.is_string()) {
-    spec.fabricPreset = f.get<std::string>();
-    if (!hasFabricPreset(spec.fabricPreset))
-      r.fail("fabric", "unknown fabric preset '" + spec.fabricPreset + "' " +
-                           knownNames({"cotton", "silk", "denim", "wool", "leather"}));
-    spec.fabric = fabricPreset(spec.fabricPreset);
-    return;
+  try {
+    spec.fabric = fabricFromJson(r.raw("fabric"), r.section() + ".fabric", spec.fabricPreset);
+  } catch (const Error& e) {
+    throw FileError(r.path(), e.what());
   }
-  const SectionReader s(f, r.section() + ".fabric", r.path());
-  spec.fabricPreset = s.string("preset", "");
-  if (!spec.fabricPreset.empty()) {
-    if (!hasFabricPreset(spec.fabricPreset)) s.fail("preset", "unknown fabric preset '" + spec.fabricPreset + "'");
-    spec.fabric = fabricPreset(spec.fabricPreset);
-  } else {
-    spec.fabric.name = "custom";
-  }
-  Fabric& fb = spec.fabric;
-  fb.massPerArea = s.positive("mass_per_area", fb.massPerArea);
-  fb.stretchStiffness = s.positive("stretch", fb.stretchStiffness);
-  fb.shearStiffness = s.nonNegative("shear", fb.shearStiffness);
-  fb.bendStiffness = s.nonNegative("bend", fb.bendStiffness);
-  fb.damping = s.nonNegative("damping", fb.damping);
-  fb.friction = s.nonNegative("friction", fb.friction);
-  fb.thickness = s.nonNegative("thickness", fb.thickness);
 }
 
 void parseSettings(const SectionReader& r, ClothSettings& st) {
@@ -210,14 +191,20 @@ json vec3Json(const glm::vec3& v) { return json::array({v.x, v.y, v.z}); }
 
 }  // namespace
 
-ClothSceneSpec parseClothScene(const json& cloth, const json& colliders, const std::string& path) {
+ClothSceneSpec parseClothScene(const json& cloth, const json& colliders, const std::string& path, bool hasGarments) {
   ClothSceneSpec spec;
   if (!colliders.is_null()) {
     if (!colliders.is_array()) throw FileError(path, "colliders: must be an array");
     for (size_t i = 0; i < colliders.size(); ++i) spec.colliders.push_back(parseCollider(colliders[i], i, path));
   }
-  if (cloth.is_null()) throw FileError(path, "the scene has no cloth section");
+  if (cloth.is_null() && hasGarments) {
+    spec.hasSheet = false;
+    spec.fabric = fabricPreset("cotton");
+    return spec;
+  }
+  if (cloth.is_null()) throw FileError(path, "the scene has no cloth section (and no garments)");
   const SectionReader r(cloth, "cloth", path);
+  spec.hasSheet = !hasGarments || r.has("garment");
   spec.sheet = parseGarment(r);
   parseFabric(r, spec);
   try {
@@ -228,6 +215,8 @@ ClothSceneSpec parseClothScene(const json& cloth, const json& colliders, const s
   spec.massPerVertex = r.has("mass_per_vertex") ? r.positive("mass_per_vertex", 0.0f) : 0.0f;
   parseSettings(r, spec.settings);
   parsePins(r, spec);
+  if (!spec.hasSheet && (!spec.pinnedRows.empty() || !spec.pinnedVertices.empty()))
+    r.fail("pins", "pins the sheet, but there is no \"garment\" sheet (garments have their own \"pins\")");
   for (int row : spec.pinnedRows)
     if (row >= spec.sheet.rows) r.fail("pins.rows", "row " + std::to_string(row) + " is beyond the sheet's rows");
   for (uint32_t v : spec.pinnedVertices)
@@ -243,13 +232,11 @@ void writeClothScene(const ClothSceneSpec& spec, json& cloth, json& colliders) {
   const Fabric& f = spec.fabric;
   const ClothSettings& s = spec.settings;
   cloth = json::object();
-  cloth["garment"] = {{"type", "sheet"}, {"columns", g.columns}, {"rows", g.rows}, {"width", g.width},
+  if (spec.hasSheet)
+    cloth["garment"] = {{"type", "sheet"}, {"columns", g.columns}, {"rows", g.rows}, {"width", g.width},
                       {"height", g.height}, {"center", vec3Json(g.center)},
                       {"orientation", g.vertical ? "vertical" : "horizontal"}, {"tilt_degrees", g.tiltDegrees}};
-  cloth["fabric"] = {{"mass_per_area", f.massPerArea}, {"stretch", f.stretchStiffness}, {"shear", f.shearStiffness},
-                     {"bend", f.bendStiffness}, {"damping", f.damping}, {"friction", f.friction},
-                     {"thickness", f.thickness}};
-  if (!spec.fabricPreset.empty()) cloth["fabric"]["preset"] = spec.fabricPreset;
+  cloth["fabric"] = fabricToJson(f, spec.fabricPreset);
   if (spec.massPerVertex > 0.0f) cloth["mass_per_vertex"] = spec.massPerVertex;
   cloth["integrator"] = integratorName(s.integrator);
   cloth["substeps"] = s.substeps;

@@ -1,6 +1,9 @@
 #pragma once
-// The cloth part of a scene document: the `cloth` section (garment, fabric,
-// solver settings, pins) and the primitive `colliders` section.
+// The cloth part of a scene document: the `cloth` section (sheet garment,
+// fabric, solver settings, pins) and the primitive `colliders` section. The
+// solver settings also apply to the document's "garments" (core/garment/
+// garment_json.h), which carry their own fabric and pins; the fabric's JSON
+// is core/garment/fabric_json.h.
 //
 //   "cloth": {
 //     "garment": {"type": "sheet", "columns": 64, "rows": 64, "width": 1, "height": 1,
@@ -47,6 +50,7 @@ struct SheetGarmentSpec {
 };
 
 struct ClothSceneSpec {
+  bool hasSheet = true;  // false: only the document's garments (no "garment" key)
   SheetGarmentSpec sheet;
   std::string fabricPreset = "cotton";  // the preset the fabric started from ("" = custom)
   Fabric fabric;
@@ -60,8 +64,11 @@ struct ClothSceneSpec {
 };
 
 // Throws FileError(pathForErrors, "cloth.<key>: <problem>") for bad sections.
+// With hasGarments (the document has a "garments" section) the section may be
+// null and its "garment" sheet is optional: the solver settings, fps and
+// animate_body then apply to the garments.
 ClothSceneSpec parseClothScene(const nlohmann::json& cloth, const nlohmann::json& colliders,
-                               const std::string& pathForErrors);
+                               const std::string& pathForErrors, bool hasGarments = false);
 void writeClothScene(const ClothSceneSpec& spec, nlohmann::json& cloth, nlohmann::json& colliders);
 
 // The sheet's mesh (with masses when massPerVertex > 0) and the vertices to pin.

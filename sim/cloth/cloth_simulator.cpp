@@ -182,7 +182,9 @@ void ClothSimulator::substep(float h, float bodyFraction) {
   const size_t structural = forces_->structuralCount();
   collideWithColliders(h);
   bool held = true;
-  if (settings_.stretchLimit == StretchLimitMode::PositionCorrection) {
+  if (!sewing_.empty()) {
+    held = limitStretchWhileSewing(h);
+  } else if (settings_.stretchLimit == StretchLimitMode::PositionCorrection) {
     const StretchLimitResult r =
         limitStretchByPositions(state_, springs, structural, settings_.maxStretch, passBudget_, h);
     stats_.stretchPasses += r.passes;
@@ -201,14 +203,66 @@ void ClothSimulator::substep(float h, float bodyFraction) {
     for (size_t i = 0; i < state_.size(); ++i)
       if (touched_[i]) state_.invMass[i] *= 0.05f;
     const StretchLimitResult r =
-        limitStretchByPositions(state_, springs, structural, settings_.maxStretch, passBudget_, h);
+        limitStretchByPositions(state_, springs, structural, activeMaxStretch(), passBudget_, h);
     state_.invMass = freeInvMass;
     stats_.stretchPasses += r.passes;
-    held = r.maxStretchAfter <= settings_.maxStretch;
+    held = r.maxStretchAfter <= activeMaxStretch();
   }
   limitHeld_ = limitHeld_ && held;
   placePins();
   checkFinite("after a solver step");
+}
+
+void ClothSimulator::sewSeams(const std::vector<std::pair<uint32_t, uint32_t>>& seams, float closingSpeed,
+                              float stretchRelief) {
+  if (!(stretchRelief >= 1.0f) || !std::isfinite(stretchRelief)) throw Error("sewing stretch relief must be >= 1");
+  sewingStretchRelief_ = stretchRelief;
+  for (const auto& [a, b] : seams)
+    if (a >= state_.size() || b >= state_.size()) throw Error("cloth seam vertex out of range");
+  if (!(closingSpeed > 0.0f) || !std::isfinite(closingSpeed)) throw Error("seam closing speed must be positive");
+  sewing_ = seams;
+  sewingSpeed_ = closingSpeed;
+}
+
+// Gauss-Seidel over two kinds of constraints: every seam pair no farther
+// apart than its distance at the start of the step minus the closing
+// distance, and the elongation limit with the seam vertices 20 times heavier
+// (so the panel behind a seam is dragged along instead of the seam giving
+// way). Positions only: the velocities keep no memory of the pull.
+bool ClothSimulator::limitStretchWhileSewing(float h) {
+  const float closing = sewingSpeed_ * h;
+  std::vector<float> target(sewing_.size());
+  for (size_t k = 0; k < sewing_.size(); ++k) {
+    const auto [a, b] = sewing_[k];
+    target[k] = std::max(0.0f, glm::length(stepStart_[a] - stepStart_[b]) - closing);
+  }
+  const auto& springs = forces_->springs().springs();
+  const size_t structural = forces_->structuralCount();
+  const bool limit = settings_.stretchLimit == StretchLimitMode::PositionCorrection;
+  const std::vector<float> freeInvMass = state_.invMass;
+  std::vector<float> heavy = state_.invMass;
+  for (const auto& [a, b] : sewing_) heavy[a] = 0.05f * freeInvMass[a], heavy[b] = 0.05f * freeInvMass[b];
+  bool held = true;
+  constexpr int kRounds = 4;
+  for (int round = 0; round < kRounds; ++round) {
+    for (size_t k = 0; k < sewing_.size(); ++k) {
+      const auto [a, b] = sewing_[k];
+      const glm::vec3 d = state_.x[a] - state_.x[b];
+      const float length = glm::length(d), wa = freeInvMass[a], wb = freeInvMass[b];
+      if (length <= target[k] || wa + wb == 0.0f) continue;
+      const glm::vec3 correction = (length - target[k]) / (length * (wa + wb)) * d;
+      state_.x[a] -= wa * correction;
+      state_.x[b] += wb * correction;
+    }
+    if (!limit) continue;
+    state_.invMass = heavy;
+    const StretchLimitResult r = limitStretchByPositions(state_, springs, structural, activeMaxStretch(),
+                                                         std::max(1, passBudget_ / kRounds), h);
+    state_.invMass = freeInvMass;
+    stats_.stretchPasses += r.passes;
+    held = r.maxStretchAfter <= activeMaxStretch();
+  }
+  return held;
 }
 
 void ClothSimulator::preparePins(float h) {

@@ -73,6 +73,17 @@ class ClothSimulator {
   void unpin(uint32_t vertex);
   size_t pinCount() const { return pins_.size(); }
 
+  // Sewing: the distance of each pair shrinks by at most closingSpeed * h per
+  // solver step, solved together with the elongation limit in the position
+  // pass (the seam vertices made heavier there, so the panels follow their
+  // seams rather than the seams being pulled back). Unlike the zero-length
+  // seam springs of ClothMesh::seams, a wide gap cannot close in one step.
+  // While sewing, the elongation limit is maxStretch * stretchRelief (panels
+  // bent around the body may need a little more before the seams meet).
+  void sewSeams(const std::vector<std::pair<uint32_t, uint32_t>>& seams, float closingSpeed,
+                float stretchRelief = 1.0f);
+  void stopSewing() { sewing_.clear(); }
+
   // Stepping; throws ClothDiverged when the state is not finite.
   void step(float dt);
 
@@ -105,6 +116,7 @@ class ClothSimulator {
   void findRestingContacts();
   void applyRestingFriction(float h);
   void collideWithColliders(float h);
+  bool limitStretchWhileSewing(float h);
   void checkFinite(const char* where) const;
   void updateStats();
   Pin* findPin(uint32_t vertex);
@@ -125,6 +137,10 @@ class ClothSimulator {
   BodyCollider body_;
   std::vector<float> pendingBody_;
   std::vector<Pin> pins_;
+  std::vector<std::pair<uint32_t, uint32_t>> sewing_;
+  float sewingSpeed_ = 0.0f;  // m/s
+  float sewingStretchRelief_ = 1.0f;
+  float activeMaxStretch() const { return sewing_.empty() ? settings_.maxStretch : settings_.maxStretch * sewingStretchRelief_; }
   ClothStats stats_;
   bool limitHeld_ = true;
   int passBudget_ = 100;   // elongation-limit passes per call in this try  // the elongation limit held in every substep of this try

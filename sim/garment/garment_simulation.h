@@ -29,6 +29,8 @@ struct GarmentSimulationSettings {
   Fabric fabric;
   float weldGap = 0.004f;          // m: seams weld once every seam pair is this close
   float maxSewingSeconds = 2.0f;   // simulated time after which the seams weld regardless
+  float sewingSpeed = 0.5f;        // m/s: how fast a seam gap may shrink while sewing
+  float sewingStretchRelief = 1.0f; // the elongation limit is this much looser while sewing
 };
 
 class GarmentSimulation {

@@ -1,6 +1,8 @@
 // Garments in the scene document's "garments" section.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 #include "core/garment/garment_json.h"
@@ -107,6 +109,90 @@ TEST(GarmentJson, MalformedGarmentsGiveErrorsNamingThePlace) {
   j[0]["panels"][0]["placement"]["radius"] = -1;
   EXPECT_EQ(errorOf(j), "garments[0].panels[0].placement.radius: must be positive");
   EXPECT_EQ(errorOf(nlohmann::json::object()), "garments: expected an array");
+}
+
+}  // namespace
+}  // namespace mq
+
+namespace mq {
+namespace {
+
+// Round trip through text, as the scene document stores it.
+Garment throughText(const Garment& g) {
+  const std::string text = garmentsToJson({g}).dump();
+  return garmentsFromJson(nlohmann::json::parse(text)).at(0);
+}
+
+TEST(GarmentJson, PresetFabricStaysAName) {
+  Garment g = sample();
+  EXPECT_TRUE(garmentToJson(g)["fabric"].is_string());
+  const Garment back = throughText(g);
+  EXPECT_EQ(back.fabric, "denim");
+  EXPECT_FALSE(back.customFabric.has_value());
+  EXPECT_FLOAT_EQ(back.solverFabric().stretchStiffness, fabricPreset("denim").stretchStiffness);
+}
+
+TEST(GarmentJson, CustomFabricAndPinsRoundTrip) {
+  Garment g = sample();
+  Fabric f = fabricPreset("silk");
+  f.stretchStiffness = 1234.5f;
+  f.damping = 0.02f;
+  g.fabric = "silk";
+  g.customFabric = f;
+  g.pins.vertices = {3, 7, 11};
+  g.pins.attach = GarmentPins::Attach::Space;
+  const nlohmann::json j = garmentToJson(g);
+  EXPECT_EQ(j["fabric"]["preset"], "silk");
+  EXPECT_EQ(j["pins"]["attach"], "space");
+  const Garment back = throughText(g);
+  EXPECT_EQ(back.fabric, "silk");
+  ASSERT_TRUE(back.customFabric.has_value());
+  EXPECT_FLOAT_EQ(back.solverFabric().stretchStiffness, 1234.5f);
+  EXPECT_FLOAT_EQ(back.solverFabric().damping, 0.02f);
+  EXPECT_FLOAT_EQ(back.solverFabric().massPerArea, fabricPreset("silk").massPerArea);
+  EXPECT_EQ(back.pins.vertices, (std::vector<uint32_t>{3, 7, 11}));
+  EXPECT_EQ(back.pins.attach, GarmentPins::Attach::Space);
+  // Written again, the same JSON.
+  EXPECT_EQ(garmentToJson(back).dump(), j.dump());
+}
+
+TEST(GarmentJson, FabricObjectOverridesOnlyTheKeysGiven) {
+  nlohmann::json j = garmentToJson(sample());
+  j["fabric"] = {{"preset", "wool"}, {"bend", 2e-5}};
+  j["pins"] = {{"vertices", {0, 1}}};
+  const Garment g = garmentFromJson(j);
+  EXPECT_EQ(g.fabric, "wool");
+  EXPECT_FLOAT_EQ(g.solverFabric().bendStiffness, 2e-5f);
+  EXPECT_FLOAT_EQ(g.solverFabric().stretchStiffness, fabricPreset("wool").stretchStiffness);
+  EXPECT_EQ(g.pins.attach, GarmentPins::Attach::Body);  // the default
+}
+
+TEST(GarmentJson, BadFabricAndPinsNameTheJsonPath) {
+  auto errorFor = [](const char* key, const nlohmann::json& value) {
+    nlohmann::json section = garmentsToJson({sample()});
+    section[0][key] = value;
+    try {
+      garmentsFromJson(section);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(errorFor("fabric", "velvet").find("garments[0].fabric: unknown fabric preset 'velvet'"), std::string::npos);
+  EXPECT_NE(errorFor("fabric", {{"preset", "velvet"}}).find("garments[0].fabric.preset: unknown fabric preset"),
+            std::string::npos);
+  // JSON text has no NaN; an editor's in-memory document can.
+  EXPECT_NE(errorFor("fabric", {{"stretch", std::nan("")}}).find("garments[0].fabric.stretch: must be a finite number"),
+            std::string::npos);
+  EXPECT_NE(errorFor("fabric", {{"stretch", "stiff"}}).find("garments[0].fabric.stretch: must be a number"),
+            std::string::npos);
+  EXPECT_NE(errorFor("fabric", {{"stretch", -3}}).find("garments[0].fabric.stretch: must be positive"),
+            std::string::npos);
+  EXPECT_NE(errorFor("fabric", {{"strech", 3}}).find("garments[0].fabric.strech: unknown fabric key"),
+            std::string::npos);
+  EXPECT_NE(errorFor("pins", {{"vertices", {1, -2}}}).find("garments[0].pins.vertices[1]"), std::string::npos);
+  EXPECT_NE(errorFor("pins", {{"attach", "glue"}}).find("garments[0].pins.attach: unknown attach 'glue'"),
+            std::string::npos);
 }
 
 }  // namespace

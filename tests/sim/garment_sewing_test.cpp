@@ -8,6 +8,7 @@
 #include "core/character/posed_character.h"
 #include "core/garment/parametric_garments.h"
 #include "sim/garment/garment_sewing.h"
+#include "sim/garment/garment_simulation.h"
 
 namespace mq {
 namespace {
@@ -68,63 +69,67 @@ TEST(GarmentSewing, WeldRemapsSpringsAndKeepsRestLengths) {
   for (const SpringTopology& s : welded.topology.structural) EXPECT_LE(s.restLength, 0.05f * 1.0001f);
 }
 
-// DISABLED: with the current solver (implicit Euler, one step per frame) the
-// stiff zero-length seam springs close the 0.4 m shoulder gap in one or two
-// steps, the body contact pushes the shoulder seams up and the elongation
-// limit drags the whole shirt after them: the shirt rides up to the head
-// (bounds y 1.41..1.75 m here; 2.2..2.9 m, above the head, for 4 cm edges
-// after 40 frames) instead of settling on the shoulders.
-// Seams do close and weld, and nothing penetrates, but only because the shirt
-// has left the body, which the bounds checks below catch. Zeroing velocities
-// after every sewing frame does not help (the jump happens inside a step);
-// rate-limited seam pulling is too slow against the stretch limit. Enable
-// once sewing is gentle (ramped seam stiffness or seams in the constraint
-// solve).
-TEST(GarmentSewing, DISABLED_TShirtOnMannequinClosesSeamsWeldsAndSettlesOutsideTheBody) {
+// A garment sewn on the default mannequin in its rest pose through
+// GarmentSimulation (seams closing at a limited speed, velocities damped
+// while sewing, then the weld) and left to settle.
+struct SewnGarment {
+  size_t vertices = 0;
+  float initialGap = 0.0f;
+  bool welded = false;
+  int sewingFrames = 0;
+  float finalStretch = 0.0f;
+  int penetrating = 0;
+  int insideBody = 0;
+  Aabb bounds;
+};
+
+SewnGarment sewOnMannequin(const std::string& type, float edge, int settleFrames) {
   const Character body = makeDefaultMannequin();
   PosedCharacter rest;
   rest.evaluate(body, -1, 0.0f, nullptr, nullptr);
   const std::vector<float>& bodyPositions = rest.meshes()[0].positions;
   const std::vector<uint32_t>& bodyTriangles = body.meshes[0].triangles;
-
-  Garment shirt = makeParametricGarment("tshirt", body);
-  shirt.targetEdgeLength = 0.035f;
-  ClothMesh mesh = clothMeshFromGarment(buildGarmentMesh(shirt));
-  const Fabric fabric = fabricPreset("cotton");
-  ClothSettings settings;
-  settings.collisionThickness = 0.004f;
-  auto sim = std::make_unique<ClothSimulator>(mesh, fabric, settings);
-  sim->setBody(bodyPositions, bodyTriangles);
-
+  Garment garment = makeParametricGarment(type, body);
+  garment.targetEdgeLength = edge;
+  GarmentSimulationSettings settings;
+  settings.fabric = fabricPreset("cotton");
+  settings.cloth.collisionThickness = 0.004f;
+  GarmentSimulation sim(buildGarmentMesh(garment), settings, bodyPositions, bodyTriangles);
+  SewnGarment out;
+  out.vertices = sim.vertexCount();
+  out.initialGap = sim.seamGap();
   const float dt = 1.0f / 30.0f;
-  const float initialGap = maxSeamGap(sim->positions(), mesh.seams);
-  int frame = 0;
-  for (; frame < 120 && maxSeamGap(sim->positions(), mesh.seams) > 0.004f; ++frame) sim->step(dt);
-  const float sewnGap = maxSeamGap(sim->positions(), mesh.seams);
-  std::printf("T-shirt: %zu vertices, seam gap %.3f m -> %.4f m after %d frames\n", mesh.vertexCount(), initialGap,
-              sewnGap, frame);
-  EXPECT_GT(initialGap, 0.05f);  // the panels really started apart
-  EXPECT_LT(sewnGap, 0.01f);     // the seam springs pulled them together
+  for (; out.sewingFrames < 120 && !sim.welded(); ++out.sewingFrames) sim.step(dt);
+  out.welded = sim.welded();
+  for (int f = 0; f < settleFrames; ++f) sim.step(dt);
+  const std::vector<float> x = sim.positions();
+  for (size_t i = 0; i < sim.vertexCount(); ++i)
+    out.insideBody += insideClosedMesh(bodyPositions, bodyTriangles, vec3At(x, i)) ? 1 : 0;
+  out.penetrating = sim.stats().penetratingVertices;
+  out.finalStretch = sim.stats().maxStretch;
+  out.bounds = boundsOf(x);
+  std::printf("%s: %zu vertices, seam gap %.3f m, welded after %d frames, bounds y %.3f..%.3f, stretch %.3f\n",
+              type.c_str(), out.vertices, out.initialGap, out.sewingFrames, out.bounds.min.y, out.bounds.max.y,
+              out.finalStretch);
+  return out;
+}
 
-  WeldedCloth welded = weldClothSeams(mesh, buildClothTopology(mesh));
-  sim = continueWelded(*sim, welded, fabric);
-  sim->setBody(bodyPositions, bodyTriangles);
-  // Welded vertices coincide: every seam pair is one vertex now.
-  for (auto [a, b] : mesh.seams) ASSERT_EQ(welded.weld.newIndex[a], welded.weld.newIndex[b]);
-  for (int settle = 0; settle < 60; ++settle) sim->step(dt);
-
-  EXPECT_EQ(sim->countPenetrating(), 0);
-  const std::vector<glm::vec3>& x = sim->positions();
-  int inside = 0;
-  for (const glm::vec3& p : x) inside += insideClosedMesh(bodyPositions, bodyTriangles, p) ? 1 : 0;
-  EXPECT_EQ(inside, 0) << "settled shirt vertices inside the body mesh";
-  EXPECT_LE(sim->stats().maxStretch, 1.1f + 1e-3f);
+// Stiff zero-length seam springs used to close the 0.4 m shoulder gap in one
+// or two implicit steps; body contact pushed the shoulder seams up and the
+// elongation limit dragged the shirt after them, up to the head.
+TEST(GarmentSewing, TShirtOnMannequinClosesSeamsWeldsAndSettlesOutsideTheBody) {
+  const SewnGarment shirt = sewOnMannequin("tshirt", 0.035f, 60);
+  EXPECT_GT(shirt.initialGap, 0.05f);  // the panels really started apart
+  EXPECT_TRUE(shirt.welded);
+  EXPECT_LT(shirt.sewingFrames, 60);   // the seams closed before the time limit forced the weld
+  EXPECT_EQ(shirt.penetrating, 0);
+  EXPECT_EQ(shirt.insideBody, 0) << "settled shirt vertices inside the body mesh";
+  EXPECT_LE(shirt.finalStretch, 1.1f + 1e-3f);
   // The shirt hangs on the shoulders: it neither fell to the floor nor rode
   // up over the head, and it still covers the waist.
-  Aabb bounds = boundsOf(sim->flatPositions());
-  EXPECT_GT(bounds.min.y, 0.6f);
-  EXPECT_LT(bounds.min.y, 1.0f);
-  EXPECT_LT(bounds.max.y, 1.6f);
+  EXPECT_GT(shirt.bounds.min.y, 0.6f);
+  EXPECT_LT(shirt.bounds.min.y, 1.0f);
+  EXPECT_LT(shirt.bounds.max.y, 1.6f);
 }
 
 }  // namespace

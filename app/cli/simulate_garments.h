@@ -1,0 +1,50 @@
+#pragma once
+// The garments of a scene document as `mannequin-cli simulate` steps them:
+// sewn, welded, then playing with the body (the sheet of the "cloth"
+// section stays in cmd_simulate.cpp).
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "core/garment/garment.h"
+#include "sim/cloth/cloth_scene_io.h"
+#include "sim/garment/garment_simulation.h"
+
+namespace mq::cli {
+
+// What the stats report over all cloth of a run, now.
+struct ClothNow {
+  float maxStretch = 1.0f;
+  int penetratingVertices = 0;
+  size_t vertices = 0;
+  glm::vec3 boundsMin{1e30f}, boundsMax{-1e30f};
+  void add(const cloth::ClothStats& stats, size_t vertexCount);
+};
+
+class SimulatedGarments {
+ public:
+  // Throws FileError(documentPath, "garments[i]...: problem") for bad garments.
+  SimulatedGarments(const nlohmann::json& garmentsSection, const cloth::ClothSceneSpec& spec,
+                    const std::vector<float>& bodyPositions, const std::vector<uint32_t>& bodyTriangles,
+                    const std::string& documentPath);
+  ~SimulatedGarments();
+
+  bool empty() const { return sims_.empty(); }
+  // posedBody: the body at the end of the step (null: it stays put).
+  void step(float dt, const std::vector<float>* posedBody);
+  // <dir>/garment<i>_<name>_<frame>.obj, one per garment, in garment-mesh order.
+  void exportFrame(const std::string& dir, int frame) const;
+  void addTo(ClothNow& now) const;
+  nlohmann::json stats() const;  // per garment: name, vertices, welded, seam_gap, max_stretch, penetrating_vertices
+
+ private:
+  std::vector<Garment> garments_;
+  std::vector<std::unique_ptr<cloth::GarmentSimulation>> sims_;
+  std::vector<int> weldFrame_;  // per garment: the step after which it welded (-1: not yet)
+  int steps_ = 0;
+};
+
+}  // namespace mq::cli
