@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/command.h"
+#include "app/cli/simulate_hair.h"
 #include "core/character/posed_character.h"
 #include "core/scene/open_scene.h"
 #include "core/util/error.h"
@@ -90,6 +91,8 @@ int runSimulate(const std::vector<std::string>& argv) {
   } catch (const json::exception& e) {
     throw FileError(path, std::string("not a valid scene document: ") + e.what());
   }
+  if (scene.document.cloth.is_null() && !scene.document.hair.is_null())
+    return cli::simulateHairOnly(scene, path, int(framesArg), args);
   const cloth::ClothSceneSpec spec = cloth::parseClothScene(scene.document.cloth, scene.document.colliders, path);
   const float fps = float(args.number("--fps", spec.fps));
   if (!(fps > 0.0f) || !std::isfinite(fps)) throw Error("--fps expects a positive number");
@@ -130,6 +133,7 @@ int runSimulate(const std::vector<std::string>& argv) {
                 {"substeps_per_frame", r.substeps},
                 {"cg_iterations_per_frame", double(r.solverIterations) / frames},
                 {"threads", ThreadPool::shared().threadCount()}};
+  if (!scene.document.hair.is_null()) cli::simulateSceneHair(scene, frames, fps, exportDir, stats);
   const std::string statsPath = args.option("--stats-json");
   if (!statsPath.empty()) {
     std::ofstream out(statsPath);
@@ -143,6 +147,6 @@ int runSimulate(const std::vector<std::string>& argv) {
 }
 
 const cli::Registration reg({"simulate", "SCENE --frames N [--fps F] [--stats-json OUT] [--export-dir DIR]",
-                             "run the scene's cloth simulation headless; stats as JSON, frames as OBJ", runSimulate});
+                             "run the scene's cloth and hair simulation headless; stats as JSON, frames as OBJ/PLY", runSimulate});
 
 }  // namespace
