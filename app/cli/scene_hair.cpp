@@ -86,7 +86,7 @@ HairSection sceneHairSection(const LoadedScene& scene) {
 SceneHair::SceneHair(const LoadedScene& scene, const HairSection& section) : scene_(scene), clip_(scene.clipIndex), section_(section) {
   const auto start = std::chrono::steady_clock::now();
   try {
-    groom_ = makeCharacterGroom(scene.character, section_.scalp);
+    groom_ = makeSectionGroom(scene.character, section_);
   } catch (const FileError&) {
     throw;
   } catch (const Error& e) {
@@ -95,6 +95,13 @@ SceneHair::SceneHair(const LoadedScene& scene, const HairSection& section) : sce
   groom_->grow(section_.style, section_.strands);
   groomSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   rig_ = HairRig::fromProxy(scene.character, groom_->proxy());
+  const int head = scene.character.skeleton.findBone(section_.scalp.bone);
+  if (head >= 0 && head != rig_.headBone) {
+    // The groom's head bone (e.g. found by height on an imported character).
+    rig_.headBone = head;
+    rig_.restWorldFromHead = scene.character.skeleton.worldTransforms(scene.character.skeleton.restPose())[head];
+    rig_.body = HairColliders::attachToSkeleton(groom_->proxy(), scene.character.skeleton, head);
+  }
   simulator_.setParams(sceneHairParams());
   simulator_.setRest(leadingStrands(groom_->strands(), groom_->guideCount()));
   anchorRoots();
