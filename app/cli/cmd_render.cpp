@@ -53,7 +53,7 @@ void placeCamera(render::SceneView& view, const ViewSettings& settings, const Im
 
 int runRender(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--out", "--time", "--clip", "--size", "--skeleton", "--look", "--hair"});
+  args.allowOnly({"--out", "--time", "--clip", "--size", "--skeleton", "--look", "--hair", "--hair-shadow"});
   if (args.positional().size() != 1) throw Error("expects one FILE (or 'default'); see mannequin-cli --help");
   const std::string file = args.positional()[0];
   const std::string out = args.option("--out");
@@ -78,7 +78,9 @@ int runRender(const std::vector<std::string>& argv) {
   view.setAmbientOcclusion(true);
   placeCamera(view, scene.document.view, size);
   std::string hairSummary;
-  const auto hair = addSceneHair(view, scene, clip, time, parseHairRenderMode(args.option("--hair", "auto")), hairSummary);
+  const auto hair = addSceneHair(view, scene, clip, time,
+                                 parseHairRenderOptions(args.option("--hair", "auto"), args.option("--hair-shadow", "count")),
+                                 hairSummary);
   render::renderToPng(view, out, size.width, size.height);
   std::cout << "wrote " << out << " (" << size.width << "x" << size.height << ", "
             << (clip >= 0 ? "clip '" + scene.character.clips[clip].name + "' at t=" + std::to_string(time)
@@ -88,7 +90,8 @@ int runRender(const std::vector<std::string>& argv) {
 }
 
 Registration reg({"render", "FILE --out OUT.png [--time T] [--clip NAME|INDEX] [--size WxH] [--skeleton]\n"
-                  "         [--look mannequin|skin|plain] [--hair auto|simulate|rigid|off]",
+                  "         [--look mannequin|skin|plain] [--hair auto|simulate|rigid|off]\n"
+                  "         [--hair-shadow count|maps]",
                   "renders an image offscreen (starts a private Xvfb when there is no X display)", runRender});
 
 }  // namespace

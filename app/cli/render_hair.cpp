@@ -36,8 +36,17 @@ HairRenderMode parseHairRenderMode(const std::string& name) {
   throw Error("--hair expects auto, simulate, rigid or off, got '" + name + "'");
 }
 
+HairRenderOptions parseHairRenderOptions(const std::string& mode, const std::string& shadow) {
+  HairRenderOptions options;
+  options.mode = parseHairRenderMode(mode);
+  if (shadow != "count" && shadow != "maps") throw Error("--hair-shadow expects count or maps, got '" + shadow + "'");
+  options.opacityShadowMaps = shadow == "maps";
+  return options;
+}
+
 std::unique_ptr<render::HairActor> addSceneHair(render::SceneView& view, const LoadedScene& scene, int clip,
-                                                float time, HairRenderMode mode, std::string& summary) {
+                                                float time, const HairRenderOptions& options, std::string& summary) {
+  HairRenderMode mode = options.mode;
   if (mode == HairRenderMode::Off || !sceneHasHair(scene)) return nullptr;
   const bool hasClip = clip >= 0 && clip < int(scene.character.clips.size());
   if (mode == HairRenderMode::Auto) mode = hasClip ? HairRenderMode::Simulate : HairRenderMode::Rigid;
@@ -46,6 +55,11 @@ std::unique_ptr<render::HairActor> addSceneHair(render::SceneView& view, const L
   auto actor = std::make_unique<render::HairActor>();
   actor->setStrands(hair.groom().strands());
   actor->setColors(hair.style().rootColor, hair.style().tipColor);
+  if (options.opacityShadowMaps) {
+    render::HairShading shading = actor->shading();
+    shading.shadowMethod = render::HairShadowMethod::OpacityMaps;
+    actor->setShading(shading);
+  }
   const bool simulate = mode == HairRenderMode::Simulate;
   actor->updatePositions(simulate ? simulateTo(hair, hasClip ? scene.character.clips[clip].startTime() : time, time)
                                   : hair.rigidStrands(time));

@@ -23,10 +23,19 @@ namespace mq::cli {
 enum class HairRenderMode { Auto, Simulate, Rigid, Off };
 HairRenderMode parseHairRenderMode(const std::string& name);  // throws mq::Error
 
+// --hair-shadow count|maps: the self-shadowing term (render/hair_actor.h),
+// the exact per-column count or opacity shadow maps.
+struct HairRenderOptions {
+  HairRenderMode mode = HairRenderMode::Auto;
+  bool opacityShadowMaps = false;
+};
+HairRenderOptions parseHairRenderOptions(const std::string& mode, const std::string& shadow);  // throws mq::Error
+
 // Adds the hair of `scene` (none without a "hair" section) to `view` for
 // clip `clip` at `time`. Returns the actor, which must outlive the
 // rendering, or null; `summary` gets a short description for the user.
 std::unique_ptr<render::HairActor> addSceneHair(render::SceneView& view, const LoadedScene& scene, int clip,
-                                                float time, HairRenderMode mode, std::string& summary);
+                                                float time, const HairRenderOptions& options,
+                                                std::string& summary);
 
 }  // namespace mq::cli
