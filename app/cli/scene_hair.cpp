@@ -254,12 +254,4 @@ float SceneHair::maxGuideLengthError() const {
   return worst;
 }
 
-float SceneHair::maxRootDrift() const {
-  const std::vector<float>& now = simulator_.positions();
-  float worst = 0.0f;
-  for (size_t s = 0; s < rootPositions_.size(); ++s)
-    worst = std::max(worst, glm::length(vertexOf(now, uint32_t(s * simulator_.pointsPerStrand())) - rootPositions_[s]));
-  return worst;
-}
-
 }  // namespace mq::cli

@@ -61,9 +61,6 @@ class SceneHair {
   size_t pointsInsideBody() const;
   // Largest relative change of a guide segment's length from its rest length.
   float maxGuideLengthError() const;
-  // Largest distance from a simulated guide root to its anchor on the posed
-  // skinned mesh (metres): how well the roots follow the scalp.
-  float maxRootDrift() const;
 
  private:
   struct RootAnchor {

@@ -48,7 +48,7 @@ void simulateSceneHair(const LoadedScene& scene, int frames, float fps, const st
 
   Strands exported = hair.groom().strands();  // topology for the PLY frames
   double guideSeconds = 0.0, childSeconds = 0.0;
-  float maxLengthError = 0.0f, maxRootDrift = 0.0f;
+  float maxLengthError = 0.0f;
   size_t maxInside = 0;
   for (int f = 0; f < frames; ++f) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -58,7 +58,6 @@ void simulateSceneHair(const LoadedScene& scene, int frames, float fps, const st
     guideSeconds += std::chrono::duration<double>(t1 - t0).count();
     childSeconds += secondsSince(t1);
     maxLengthError = std::max(maxLengthError, hair.maxGuideLengthError());
-    maxRootDrift = std::max(maxRootDrift, hair.maxRootDrift());
     maxInside = std::max(maxInside, hair.pointsInsideBody());
     if (!exportDir.empty()) {
       exported.points = hair.allStrands();
@@ -77,7 +76,6 @@ void simulateSceneHair(const LoadedScene& scene, int frames, float fps, const st
   stats["hair_guides_ms_per_frame"] = 1000.0 * guideSeconds / frames;
   stats["hair_children_ms_per_frame"] = 1000.0 * childSeconds / frames;
   stats["hair_max_length_error"] = maxLengthError;
-  stats["hair_max_root_drift_mm"] = 1000.0f * maxRootDrift;
   stats["hair_points_inside_body"] = maxInside;
   stats["hair_final_points_inside_body"] = hair.pointsInsideBody();
   stats["hair_bbox_min"] = boundsJson(hair.allStrands(), false);
