@@ -22,6 +22,7 @@
 #include "ui/panels/properties_panel.h"
 #include "ui/panels/scene_tree_panel.h"
 #include "ui/panels/timeline_panel.h"
+#include "ui/garment/garment_tool.h"
 #include "ui/hair/hair_tool.h"
 #include "ui/viewport/pose_tool.h"
 #include "ui/viewport/vtk_viewport_widget.h"
@@ -58,6 +59,7 @@ MainWindow::MainWindow(QWidget* parent)
   createStatusBar();
   connectDocument();
   new HairTool(this);  // the hair dock and viewport handles (ui/hair)
+  new GarmentTool(this);  // the garments dock, pins and cloth (ui/garment)
   restoreLayout();
   updateTitle();
 }

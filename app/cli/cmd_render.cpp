@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "app/cli/command.h"
+#include "app/cli/render_garments.h"
 #include "app/cli/render_hair.h"
 #include "core/character/posed_character.h"
 #include "core/scene/open_scene.h"
@@ -75,6 +76,7 @@ int runRender(const std::vector<std::string>& argv) {
   // A motion file alone (no meshes) shows its skeleton.
   view.setSkeletonVisible(args.has("--skeleton") || scene.document.view.showSkeleton ||
                           scene.character.meshes.empty());
+  const RenderedGarments garments = addSceneGarments(view, scene, clip, time, file);
   view.setAmbientOcclusion(true);
   placeCamera(view, scene.document.view, size);
   std::string hairSummary;
@@ -85,7 +87,8 @@ int runRender(const std::vector<std::string>& argv) {
   std::cout << "wrote " << out << " (" << size.width << "x" << size.height << ", "
             << (clip >= 0 ? "clip '" + scene.character.clips[clip].name + "' at t=" + std::to_string(time)
                           : std::string("rest pose"))
-            << (hairSummary.empty() ? "" : "; " + hairSummary) << ")\n";
+            << (hairSummary.empty() ? "" : "; " + hairSummary) << ")"
+            << (garments.summary.empty() ? "" : ", garments: " + garments.summary) << "\n";
   return 0;
 }
 

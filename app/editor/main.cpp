@@ -4,16 +4,20 @@
 // scene document. --screenshot renders the window once the file is open,
 // saves it as a PNG and quits (exit code 1 if the file could not be opened).
 // --select BONE, --clip NAME and --time SECONDS set up the view first;
-// --map MAP names the bone-name map of a BVH FILE.
+// --map MAP names the bone-name map of a BVH FILE. --add-garment TYPE,
+// --bake-garments, --garment-stretch and --save-as script the garment tool
+// (documentation pictures, test scenes).
 #include <cstdio>
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QDockWidget>
 #include <QSurfaceFormat>
 #include <QTimer>
 
 #include "ui/document/document_loader.h"
 #include "ui/document/editor_document.h"
+#include "ui/garment/garment_tool.h"
 #include "ui/main_window.h"
 #include "ui/theme.h"
 #include "ui/viewport/vtk_viewport_widget.h"
@@ -50,6 +54,15 @@ int main(int argc, char** argv) {
   const QCommandLineOption clip("clip", "Show clip NAME (or index; rest: the rest pose).", "NAME");
   const QCommandLineOption timeOption("time", "Go to SECONDS into the clip.", "SECONDS");
   const QCommandLineOption map("map", "Bone-name map for a BVH FILE (see core/io/bvh_import.h).", "MAP");
+  const QCommandLineOption addGarment("add-garment", "Add a built-in garment: tshirt, skirt or trousers (repeatable).",
+                                      "TYPE");
+  const QCommandLineOption bakeGarments("bake-garments", "Bake the garments over the clip before the screenshot.");
+  const QCommandLineOption garmentStretch("garment-stretch", "Show the garments' stretch overlay.");
+  const QCommandLineOption saveAs("save-as", "Save the scene document to FILE once set up.", "FILE");
+  parser.addOption(addGarment);
+  parser.addOption(bakeGarments);
+  parser.addOption(garmentStretch);
+  parser.addOption(saveAs);
   parser.addOption(map);
   parser.addOption(screenshot);
   parser.addOption(select);
@@ -80,14 +93,28 @@ int main(int argc, char** argv) {
   const QString selectBone = parser.value(select), clipName = parser.value(clip);
   const double time = parser.value(timeOption).toDouble();
   const bool setTime = parser.isSet(timeOption);
-  auto afterLoad = [&window, takeScreenshot, screenshotPath, selectBone, clipName, time, setTime] {
+  const QStringList garments = parser.values(addGarment);
+  const bool bake = parser.isSet(bakeGarments), stretch = parser.isSet(garmentStretch);
+  const QString savePath = parser.value(saveAs);
+  auto afterLoad = [&window, takeScreenshot, screenshotPath, selectBone, clipName, time, setTime, garments, bake,
+                    stretch, savePath] {
     QObject::connect(&window, &mq::ui::MainWindow::loadFinished, &window,
-        [&window, takeScreenshot, screenshotPath, selectBone, clipName, time, setTime](bool ok) {
+        [&window, takeScreenshot, screenshotPath, selectBone, clipName, time, setTime, garments, bake, stretch,
+         savePath](bool ok) {
           mq::ui::EditorDocument* doc = window.document();
           if (clipName == "rest") doc->setClip(-1);
           else if (!clipName.isEmpty()) doc->setClip(doc->character().findClip(clipName.toStdString()));
+          auto* garmentTool = window.findChild<mq::ui::GarmentTool*>();
+          for (const QString& type : garments) garmentTool->addGarment(type.toStdString());
+          if (!garments.isEmpty() || bake || stretch) garmentTool->dock()->raise();
+          if (bake && !garmentTool->bake())
+            std::fprintf(stderr, "mannequin: bake: %s\n", qPrintable(garmentTool->lastError()));
+          if (stretch) garmentTool->setStretchVisible(true);
           if (setTime) doc->setTime(doc->clipStart() + float(time));
           if (!selectBone.isEmpty()) doc->selectBone(doc->character().skeleton.findBone(selectBone.toStdString()));
+          QString error;
+          if (!savePath.isEmpty() && !window.saveDocument(savePath, &error))
+            std::fprintf(stderr, "mannequin: %s\n", qPrintable(error));
           if (!takeScreenshot) return;
           QTimer::singleShot(400, &window, [&window, screenshotPath, ok] { saveScreenshotAndQuit(window, screenshotPath, ok); });
         },

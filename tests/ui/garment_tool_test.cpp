@@ -1,0 +1,346 @@
+// GUI test of the garment tool (needs X: run under xvfb-run). Drives the
+// real main window: adds a T-shirt from the panel, changes a measurement and
+// undoes it, edits the fabric and the integrator, pins vertices picked with a
+// rubber-band drag in the viewport, simulates live, bakes a few frames (and
+// cancels a bake), scrubs them, then saves and reopens the document.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <thread>
+
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QListWidget>
+#include <QMouseEvent>
+#include <QPushButton>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+#include <QUndoStack>
+
+#include "core/garment/fabric.h"
+#include "core/garment/garment.h"
+#include "core/garment/parametric_garments.h"
+#include "core/mesh/mesh.h"
+#include "render/scene_view.h"
+#include "ui/document/editor_document.h"
+#include "ui/garment/garment_panel.h"
+#include "ui/garment/garment_tool.h"
+#include "ui/main_window.h"
+#include "ui/viewport/vtk_viewport_widget.h"
+
+using namespace mq;
+using namespace mq::ui;
+
+namespace {
+
+float maxDifference(const std::vector<float>& a, const std::vector<float>& b) {
+  if (a.size() != b.size()) return INFINITY;
+  float d = 0.0f;
+  for (size_t i = 0; i < a.size(); ++i) d = std::max(d, std::abs(a[i] - b[i]));
+  return d;
+}
+
+bool allFinite(const std::vector<float>& p) {
+  return std::all_of(p.begin(), p.end(), [](float x) { return std::isfinite(x); });
+}
+
+void sendMouse(QWidget* w, QEvent::Type type, QPoint pos, Qt::MouseButton button, Qt::MouseButtons buttons,
+               Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+  QMouseEvent event(type, QPointF(pos), w->mapToGlobal(QPointF(pos)), button, buttons, modifiers);
+  QApplication::sendEvent(w, &event);
+}
+
+}  // namespace
+
+class GarmentToolTest : public QObject {
+  Q_OBJECT
+
+ private:
+  MainWindow* window_ = nullptr;
+  GarmentTool* tool_ = nullptr;
+  EditorDocument* doc() { return window_->document(); }
+  GarmentPanel* panel() { return tool_->panel(); }
+  QUndoStack* undo() { return doc()->undoStack(); }
+
+  void renderNow() {
+    window_->viewport()->grabFramebuffer();
+    QApplication::processEvents();
+  }
+
+ private slots:
+  void initTestCase() {
+    window_ = new MainWindow;
+    window_->reportError = [](const QString& title, const QString& message) {
+      QFAIL(qPrintable("unexpected error dialog: " + title + ": " + message));
+    };
+    window_->confirmDiscardChanges = [] { return true; };
+    window_->resize(1280, 800);
+    window_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window_));
+    QString error;
+    QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));
+    tool_ = window_->findChild<GarmentTool*>();
+    QVERIFY(tool_ != nullptr);
+    QCOMPARE(tool_->garmentCount(), 0);
+    tool_->dock()->raise();
+    doc()->setClip(-1);  // the rest pose: the placed panels are shown as built
+  }
+
+  void cleanupTestCase() {
+    delete window_;
+    window_ = nullptr;
+  }
+
+  void addTshirtFromThePanel() {
+    const int tshirt = panel()->typeCombo()->findData("tshirt");
+    QVERIFY(tshirt >= 0);
+    panel()->typeCombo()->setCurrentIndex(tshirt);
+    QTest::mouseClick(panel()->addButton(), Qt::LeftButton);
+    QCOMPARE(tool_->garmentCount(), 1);
+    QCOMPARE(tool_->currentGarment(), 0);
+    QCOMPARE(panel()->garmentList()->count(), 1);
+    const GarmentMesh* mesh = tool_->garmentMesh(0);
+    QVERIFY(mesh && mesh->vertexCount() > 500);
+    QCOMPARE(tool_->shownPositions(0), mesh->positions);
+    // On a posed body the unsimulated panels follow the body.
+    doc()->setClip(0);
+    doc()->setTime(doc()->clipStart() + 0.5f);
+    QVERIFY(maxDifference(tool_->shownPositions(0), mesh->positions) > 0.01f);
+    doc()->setClip(-1);
+    QCOMPARE(tool_->shownPositions(0), mesh->positions);
+    // Stored in the document, which now has unsaved changes.
+    QVERIFY(doc()->sceneSections().garments.is_array());
+    QCOMPARE(doc()->sceneSections().garments.size(), size_t(1));
+    QVERIFY(window_->isWindowModified());
+    // The shirt is drawn: the viewport changes where it is.
+    renderNow();
+    const QImage with = window_->viewport()->grabFramebuffer();
+    undo()->undo();
+    QCOMPARE(tool_->garmentCount(), 0);
+    const QImage without = window_->viewport()->grabFramebuffer();
+    undo()->redo();
+    QCOMPARE(tool_->garmentCount(), 1);
+    int differing = 0;
+    for (int y = 0; y < with.height(); y += 2)
+      for (int x = 0; x < with.width(); x += 2)
+        if (with.pixel(x, y) != without.pixel(x, y)) ++differing;
+    QVERIFY2(differing > 500, qPrintable(QString("the shirt changed only %1 pixels").arg(differing)));
+  }
+
+  void measurementRebuildsAndUndoes() {
+    const std::vector<GarmentParameter> parameters = garmentParameters("tshirt");
+    QVERIFY(!parameters.empty());
+    // The length measurement (or the first one) as typed in the panel.
+    const GarmentParameter* chosen = &parameters[0];
+    for (const GarmentParameter& p : parameters)
+      if (p.name.find("length") != std::string::npos) chosen = &p;
+    QDoubleSpinBox* field = panel()->measurementField(QString::fromStdString(chosen->name));
+    QVERIFY(field != nullptr);
+    QVERIFY(std::abs(field->minimum() - chosen->min) < 1e-3 && std::abs(field->maximum() - chosen->max) < 1e-3);
+
+    const std::vector<float> before = tool_->garmentMesh(0)->positions;
+    const Aabb boxBefore = boundsOf(before);
+    const int commands = undo()->index();
+    const double changed = std::clamp(field->value() + 0.1 * (chosen->max - chosen->min), double(chosen->min),
+                                      double(chosen->max));
+    field->setValue(changed);
+    QCOMPARE(undo()->index(), commands + 1);
+    const std::vector<float> after = tool_->garmentMesh(0)->positions;
+    const Aabb boxAfter = boundsOf(after);
+    QVERIFY2(after.size() != before.size() || glm::length(boxAfter.max - boxBefore.max) +
+                                                      glm::length(boxAfter.min - boxBefore.min) > 0.01f,
+             "changing a measurement did not change the garment");
+    QCOMPARE(tool_->scene().garments[0].recipe.parameters.at(chosen->name), float(changed));
+
+    undo()->undo();
+    QCOMPARE(tool_->garmentMesh(0)->positions, before);  // exactly the old panels
+    QCOMPARE(field->value(), double(tool_->scene().garments[0].recipe.parameters.count(chosen->name)
+                                        ? tool_->scene().garments[0].recipe.parameters.at(chosen->name)
+                                        : chosen->value));
+    undo()->redo();
+    QCOMPARE(tool_->garmentMesh(0)->positions, after);
+    undo()->undo();
+  }
+
+  void fabricAndIntegratorAreUndoable() {
+    QComboBox* fabric = panel()->fabricCombo();
+    const int silk = fabric->findText("silk");
+    QVERIFY(silk >= 0);
+    emit fabric->activated(silk);  // as the user's pick
+    QCOMPARE(tool_->scene().garments[0].fabric, std::string("silk"));
+    QCOMPARE(tool_->scene().garments[0].solverFabric().massPerArea, fabricPreset("silk").massPerArea);
+    undo()->undo();
+    QCOMPARE(tool_->scene().garments[0].fabric, std::string("cotton"));
+
+    // A typed value makes a custom fabric based on the preset.
+    tool_->setFabric(0, [] {
+      Fabric f = fabricPreset("cotton");
+      f.bendStiffness *= 4.0f;
+      return f;
+    }());
+    QVERIFY(!fabricIsPreset(tool_->scene().garments[0]));
+    QCOMPARE(panel()->fabricCombo()->currentIndex(), panel()->fabricCombo()->count() - 1);  // "(custom)"
+    undo()->undo();
+    QVERIFY(fabricIsPreset(tool_->scene().garments[0]));
+
+    emit panel()->integratorCombo()->activated(2);  // Verlet
+    QCOMPARE(tool_->scene().cloth.settings.integrator, cloth::IntegratorKind::Verlet);
+    QCOMPARE(doc()->sceneSections().cloth["integrator"].get<std::string>(), std::string("verlet"));
+    undo()->undo();
+    QCOMPARE(tool_->scene().cloth.settings.integrator, cloth::IntegratorKind::ImplicitEuler);
+  }
+
+  void rubberBandSelectsAndPins() {
+    window_->frameAll();
+    renderNow();
+    const std::vector<float>& p = tool_->shownPositions(0);
+    // A rectangle around the upper tenth of the shirt on screen (the shoulders).
+    QRectF onScreen;
+    float top = -INFINITY, bottom = INFINITY;
+    for (size_t i = 1; i < p.size(); i += 3) top = std::max(top, p[i]), bottom = std::min(bottom, p[i]);
+    const float shoulders = top - 0.1f * (top - bottom);
+    for (size_t v = 0; v < p.size() / 3; ++v) {
+      if (p[3 * v + 1] < shoulders) continue;
+      const QPointF w = tool_->toWidget({p[3 * v], p[3 * v + 1], p[3 * v + 2]});
+      onScreen = onScreen.isNull() ? QRectF(w, QSizeF(1, 1)) : onScreen.united(QRectF(w, QSizeF(1, 1)));
+    }
+    QVERIFY(!onScreen.isNull());
+    const QRect band = onScreen.toAlignedRect().adjusted(-3, -3, 3, 3);
+    QVERIFY(window_->viewport()->rect().contains(band));
+
+    QTest::mouseClick(panel()->selectButton(), Qt::LeftButton);
+    QVERIFY(tool_->selectMode());
+    QWidget* vp = window_->viewport();
+    const glm::vec3 cameraBefore = window_->sceneView()->cameraPosition();
+    sendMouse(vp, QEvent::MouseButtonPress, band.topLeft(), Qt::LeftButton, Qt::LeftButton);
+    sendMouse(vp, QEvent::MouseMove, band.center(), Qt::NoButton, Qt::LeftButton);
+    sendMouse(vp, QEvent::MouseMove, band.bottomRight(), Qt::NoButton, Qt::LeftButton);
+    sendMouse(vp, QEvent::MouseButtonRelease, band.bottomRight(), Qt::LeftButton, Qt::NoButton);
+    QCOMPARE(window_->sceneView()->cameraPosition(), cameraBefore);  // the drag did not orbit
+    const std::vector<uint32_t> selected = tool_->selectedVertices();
+    QVERIFY2(selected.size() > 5, qPrintable(QString("selected %1 vertices").arg(selected.size())));
+    const QRectF inside = QRectF(band).adjusted(-1, -1, 1, 1);
+    for (uint32_t v : selected) QVERIFY(inside.contains(tool_->toWidget({p[3 * v], p[3 * v + 1], p[3 * v + 2]})));
+    // Only the front: the back of the shoulders faces away from the camera.
+    size_t upper = 0;
+    for (size_t v = 0; v < p.size() / 3; ++v) upper += p[3 * v + 1] >= shoulders;
+    QVERIFY2(selected.size() < upper, "the rubber band also selected vertices facing away");
+
+    QTest::mouseClick(panel()->pinButton(), Qt::LeftButton);
+    QCOMPARE(tool_->scene().garments[0].pins.vertices, selected);
+    QCOMPARE(doc()->sceneSections().garments[0]["pins"]["vertices"].size(), selected.size());
+    undo()->undo();
+    QVERIFY(tool_->scene().garments[0].pins.vertices.empty());
+    undo()->redo();
+    QCOMPARE(tool_->scene().garments[0].pins.vertices, selected);
+
+    // Shift+drag over half the band adds nothing new outside it; Unpin removes a subset.
+    tool_->setSelectedVertices({selected.begin(), selected.begin() + selected.size() / 2});
+    QTest::mouseClick(panel()->unpinButton(), Qt::LeftButton);
+    QCOMPARE(tool_->scene().garments[0].pins.vertices.size(), selected.size() - selected.size() / 2);
+    undo()->undo();
+    QCOMPARE(tool_->scene().garments[0].pins.vertices, selected);
+    QTest::mouseClick(panel()->selectButton(), Qt::LeftButton);
+    QVERIFY(!tool_->selectMode());
+  }
+
+  void liveSimulationStepsWithoutBlocking() {
+    const std::vector<float> rest = tool_->garmentMesh(0)->positions;
+    QTest::mouseClick(panel()->simulateButton(), Qt::LeftButton);
+    QVERIFY(tool_->simulating());
+    // The event loop keeps running (QTRY spins it) while steps complete on the worker.
+    QTRY_VERIFY_WITH_TIMEOUT(tool_->simulatedSteps() >= 3, 60000);
+    QTest::mouseClick(panel()->simulateButton(), Qt::LeftButton);
+    QVERIFY(!tool_->simulating());
+    const std::vector<float>& shown = tool_->shownPositions(0);
+    QVERIFY(allFinite(shown));
+    QVERIFY2(maxDifference(shown, rest) > 1e-4f, "the live simulation did not move the cloth");
+    QVERIFY(maxDifference(shown, rest) < 0.5f);
+    QCOMPARE(tool_->shownStretch(0).size(), tool_->garmentMesh(0)->vertexCount());
+  }
+
+  void bakeCancelsThenBakesAndScrubs() {
+    QVERIFY(doc()->character().clips.size() > 0);
+    doc()->setClip(0);
+    const float start = doc()->clipStart();
+    // Cancel: the dialog's Cancel as the user would press it, shortly after the bake starts.
+    QTimer::singleShot(300, tool_, [this] { tool_->cancelBake(); });
+    QVERIFY(!tool_->bake(start, start + 2.0f));
+    QVERIFY(!tool_->hasBake());
+    QVERIFY(!tool_->baking());
+
+    QVERIFY2(tool_->bake(start, start + 0.25f), qPrintable(tool_->lastError()));
+    QVERIFY(tool_->hasBake());
+    const int frames = tool_->bakedFrameCount();
+    QCOMPARE(frames, int(std::floor(0.25f * tool_->scene().cloth.fps + 1e-3f)) + 1);
+
+    doc()->setTime(start);
+    const std::vector<float> first = tool_->shownPositions(0);
+    doc()->setTime(start + 0.25f);
+    const std::vector<float> last = tool_->shownPositions(0);
+    QVERIFY(allFinite(first) && allFinite(last));
+    QVERIFY2(maxDifference(first, last) > 1e-5f, "scrubbing the bake shows the same frame");
+    QVERIFY(maxDifference(first, tool_->garmentMesh(0)->positions) > 1e-3f);  // simulated, not the rest panels
+    // Pinned vertices stay with the body: they barely move between frames.
+    for (uint32_t v : tool_->scene().garments[0].pins.vertices)
+      QVERIFY(std::abs(first[3 * v + 1] - last[3 * v + 1]) < 0.05f);
+
+    // The stretch overlay has a value per vertex.
+    QTest::mouseClick(panel()->stretchCheck(), Qt::LeftButton);
+    QVERIFY(tool_->stretchVisible());
+    const std::vector<float>& stretch = tool_->shownStretch(0);
+    QCOMPARE(stretch.size(), tool_->garmentMesh(0)->vertexCount());
+    QVERIFY(*std::max_element(stretch.begin(), stretch.end()) >= 1.0f);
+    renderNow();
+    QTest::mouseClick(panel()->stretchCheck(), Qt::LeftButton);
+
+    // Editing the fabric invalidates the bake.
+    tool_->setFabricPreset(0, "denim");
+    QVERIFY(!tool_->hasBake());
+    undo()->undo();
+    doc()->setClip(-1);
+  }
+
+  void savedDocumentReopensIntact() {
+    const GarmentScene saved = tool_->scene();
+    QVERIFY(!saved.garments.empty() && !saved.garments[0].pins.vertices.empty());
+    const size_t vertices = tool_->garmentMesh(0)->vertexCount();
+    QTemporaryDir dir;
+    const QString path = dir.filePath("garments.mqscene");
+    QString error;
+    QVERIFY2(window_->saveDocument(path, &error), qPrintable(error));
+    QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));
+    QCOMPARE(tool_->garmentCount(), 0);
+    QVERIFY2(window_->openFileNow(path, &error), qPrintable(error));
+    QCOMPARE(tool_->garmentCount(), 1);
+    QVERIFY(tool_->scene() == saved);
+    QCOMPARE(tool_->scene().garments[0].pins.vertices, saved.garments[0].pins.vertices);
+    QCOMPARE(tool_->garmentMesh(0)->vertexCount(), vertices);
+    QCOMPARE(panel()->garmentList()->count(), 1);
+    QVERIFY(!window_->isWindowModified());
+  }
+};
+
+int main(int argc, char** argv) {
+  QSurfaceFormat::setDefaultFormat(VtkViewportWidget::defaultFormat());
+  QApplication app(argc, argv);
+  QApplication::setOrganizationName("MannequinTests");
+  QApplication::setApplicationName("gui_garments");
+  // Never hang: give up after five minutes (the bakes run real simulations).
+  std::thread([] {
+    std::this_thread::sleep_for(std::chrono::seconds(300));
+    std::fprintf(stderr, "gui_garments: timed out\n");
+    std::_Exit(2);
+  }).detach();
+  GarmentToolTest test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "garment_tool_test.moc"

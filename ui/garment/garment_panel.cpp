@@ -1,0 +1,378 @@
+#include "ui/garment/garment_panel.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
+
+#include "core/garment/fabric.h"
+#include "core/garment/garment.h"
+#include "core/garment/parametric_garments.h"
+#include "ui/garment/garment_edit_command.h"
+#include "ui/garment/garment_tool.h"
+
+namespace mq::ui {
+
+namespace {
+
+// Fabric values as the panel shows them: in units that keep the numbers readable.
+struct FabricField {
+  const char* label;
+  float Fabric::*member;
+  double scale;  // shown = value * scale
+  double min, max, step;
+  int decimals;
+  const char* help;
+};
+
+const FabricField kFabricFields[] = {
+    {"Mass (kg/m²)", &Fabric::massPerArea, 1.0, 0.01, 3.0, 0.01, 3, "Mass per unit area"},
+    {"Stretch (kN/m)", &Fabric::stretchStiffness, 1e-3, 0.01, 1000.0, 1.0, 2,
+     "Membrane tension per unit strain"},
+    {"Shear (N/m)", &Fabric::shearStiffness, 1.0, 0.01, 10000.0, 5.0, 2, "In-plane shear stiffness per radian"},
+    {"Bend (µN·m)", &Fabric::bendStiffness, 1e6, 0.001, 100000.0, 1.0, 3,
+     "Bending moment per unit width per unit curvature"},
+    {"Damping (ms)", &Fabric::damping, 1e3, 0.0, 100.0, 0.5, 3, "Rayleigh damping: spring damping = damping x stiffness"},
+    {"Friction", &Fabric::friction, 1.0, 0.0, 2.0, 0.05, 2, "Coulomb coefficient against the body"},
+    {"Thickness (mm)", &Fabric::thickness, 1e3, 0.01, 10.0, 0.05, 2, "Cloth thickness"},
+};
+
+const cloth::IntegratorKind kIntegrators[] = {cloth::IntegratorKind::ImplicitEuler,
+                                              cloth::IntegratorKind::SymplecticEuler, cloth::IntegratorKind::Verlet,
+                                              cloth::IntegratorKind::RK4};
+
+QString integratorLabel(cloth::IntegratorKind kind) {
+  switch (kind) {
+    case cloth::IntegratorKind::ImplicitEuler: return QObject::tr("Implicit Euler (stable, default)");
+    case cloth::IntegratorKind::SymplecticEuler: return QObject::tr("Symplectic Euler");
+    case cloth::IntegratorKind::Verlet: return QObject::tr("Verlet");
+    default: return QObject::tr("Runge-Kutta 4");
+  }
+}
+
+QString typeLabel(const std::string& type) {
+  if (type == "tshirt") return QObject::tr("T-shirt");
+  if (type == "skirt") return QObject::tr("Skirt");
+  if (type == "trousers") return QObject::tr("Trousers");
+  return QString::fromStdString(type);
+}
+
+}  // namespace
+
+GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent), tool_(tool) {
+  auto* outer = new QVBoxLayout(this);
+  outer->setContentsMargins(0, 0, 0, 0);
+  auto* scroll = new QScrollArea;
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  auto* content = new QWidget;
+  auto* layout = new QVBoxLayout(content);
+  scroll->setWidget(content);
+  outer->addWidget(scroll);
+
+  // Garments
+  auto* garments = new QGroupBox(tr("Garments"));
+  auto* garmentLayout = new QVBoxLayout(garments);
+  list_ = new QListWidget;
+  list_->setMaximumHeight(90);
+  garmentLayout->addWidget(list_);
+  auto* addRow = new QHBoxLayout;
+  typeCombo_ = new QComboBox;
+  for (const std::string& type : parametricGarmentTypes()) typeCombo_->addItem(typeLabel(type), QString::fromStdString(type));
+  add_ = new QPushButton(tr("Add"));
+  add_->setToolTip(tr("Add a built-in garment sized to the character"));
+  remove_ = new QPushButton(tr("Remove"));
+  addRow->addWidget(typeCombo_, 1);
+  addRow->addWidget(add_);
+  addRow->addWidget(remove_);
+  garmentLayout->addLayout(addRow);
+  layout->addWidget(garments);
+  connect(add_, &QPushButton::clicked, this,
+          [this] { tool_->addGarment(typeCombo_->currentData().toString().toStdString()); });
+  connect(remove_, &QPushButton::clicked, this, [this] { tool_->removeGarment(tool_->currentGarment()); });
+  connect(list_, &QListWidget::currentRowChanged, this, [this](int row) {
+    if (!refreshing_) tool_->setCurrentGarment(row);
+  });
+
+  // Measurements (rebuilt per garment type)
+  auto* measurementBox = new QGroupBox(tr("Measurements"));
+  auto* measurementLayout = new QVBoxLayout(measurementBox);
+  measurements_ = new QWidget;
+  measurementForm_ = new QFormLayout(measurements_);
+  measurementForm_->setContentsMargins(0, 0, 0, 0);
+  measurementLayout->addWidget(measurements_);
+  layout->addWidget(measurementBox);
+
+  // Fabric
+  auto* fabricBox = new QGroupBox(tr("Fabric"));
+  auto* fabricForm = new QFormLayout(fabricBox);
+  fabricCombo_ = new QComboBox;
+  for (const std::string& name : fabricPresetNames()) fabricCombo_->addItem(QString::fromStdString(name));
+  fabricCombo_->addItem(tr("(custom)"));
+  fabricForm->addRow(tr("Preset"), fabricCombo_);
+  connect(fabricCombo_, &QComboBox::activated, this, [this](int index) {
+    if (index < fabricCombo_->count() - 1)
+      tool_->setFabricPreset(tool_->currentGarment(), fabricCombo_->itemText(index).toStdString());
+  });
+  for (size_t f = 0; f < std::size(kFabricFields); ++f) {
+    const FabricField& field = kFabricFields[f];
+    auto* spin = new QDoubleSpinBox;
+    spin->setRange(field.min, field.max);
+    spin->setSingleStep(field.step);
+    spin->setDecimals(field.decimals);
+    spin->setKeyboardTracking(false);
+    spin->setToolTip(tr(field.help));
+    fabricForm->addRow(tr(field.label), spin);
+    fabricFields_.push_back(spin);
+    connect(spin, &QDoubleSpinBox::valueChanged, this, [this, f](double shown) {
+      editFabric(int(f) + 100,
+                 [f](Fabric& fabric, double v) { fabric.*(kFabricFields[f].member) = float(v / kFabricFields[f].scale); },
+                 shown);
+    });
+  }
+  layout->addWidget(fabricBox);
+
+  // Simulation
+  auto* simBox = new QGroupBox(tr("Simulation"));
+  auto* simLayout = new QVBoxLayout(simBox);
+  auto* simForm = new QFormLayout;
+  integratorCombo_ = new QComboBox;
+  for (cloth::IntegratorKind kind : kIntegrators) integratorCombo_->addItem(integratorLabel(kind));
+  simForm->addRow(tr("Integrator"), integratorCombo_);
+  selfCollisions_ = new QCheckBox(tr("Self collisions"));
+  simForm->addRow(QString(), selfCollisions_);
+  simLayout->addLayout(simForm);
+  connect(integratorCombo_, &QComboBox::activated, this,
+          [this](int index) { tool_->setIntegrator(kIntegrators[index]); });
+  connect(selfCollisions_, &QCheckBox::toggled, this, [this](bool on) {
+    if (!refreshing_) tool_->setSelfCollisions(on);
+  });
+  auto* simButtons = new QHBoxLayout;
+  simulate_ = new QPushButton(tr("Simulate"));
+  simulate_->setCheckable(true);
+  simulate_->setToolTip(tr("Simulate live while the clip plays (press Space to play)"));
+  bake_ = new QPushButton(tr("Bake clip"));
+  bake_->setToolTip(tr("Simulate the whole clip; the timeline then scrubs the baked frames"));
+  clearBake_ = new QPushButton(tr("Clear bake"));
+  for (QPushButton* b : {simulate_, bake_, clearBake_}) simButtons->addWidget(b);
+  simLayout->addLayout(simButtons);
+  connect(simulate_, &QPushButton::toggled, this, [this](bool on) {
+    if (!refreshing_) tool_->setSimulating(on);
+  });
+  connect(bake_, &QPushButton::clicked, this, [this] { tool_->bake(); });
+  connect(clearBake_, &QPushButton::clicked, this, [this] { tool_->clearBake(); });
+  layout->addWidget(simBox);
+
+  // Pins
+  auto* pinBox = new QGroupBox(tr("Pins"));
+  auto* pinLayout = new QVBoxLayout(pinBox);
+  select_ = new QPushButton(tr("Select vertices"));
+  select_->setCheckable(true);
+  select_->setToolTip(tr("Drag a rectangle in the viewport: Shift adds, Ctrl removes.\n"
+                         "Ctrl+Alt+drag selects without this mode."));
+  pin_ = new QPushButton(tr("Pin selected"));
+  unpin_ = new QPushButton(tr("Unpin"));
+  clearPins_ = new QPushButton(tr("Clear"));
+  auto* pinButtons = new QHBoxLayout;
+  for (QPushButton* b : {pin_, unpin_, clearPins_}) pinButtons->addWidget(b);
+  pinLayout->addWidget(select_);
+  pinLayout->addLayout(pinButtons);
+  attach_ = new QComboBox;
+  attach_->addItem(tr("Follow the body"));
+  attach_->addItem(tr("Fixed in space"));
+  auto* attachForm = new QFormLayout;
+  attachForm->addRow(tr("Pins"), attach_);
+  pinLayout->addLayout(attachForm);
+  pinStatus_ = new QLabel;
+  pinLayout->addWidget(pinStatus_);
+  connect(select_, &QPushButton::toggled, this, [this](bool on) { tool_->setSelectMode(on); });
+  connect(pin_, &QPushButton::clicked, this, [this] { tool_->pinSelected(); });
+  connect(unpin_, &QPushButton::clicked, this, [this] { tool_->unpinSelected(); });
+  connect(clearPins_, &QPushButton::clicked, this, [this] { tool_->clearPins(); });
+  connect(attach_, &QComboBox::activated, this,
+          [this](int index) { tool_->setPinsFollowBody(tool_->currentGarment(), index == 0); });
+  layout->addWidget(pinBox);
+
+  // Display
+  auto* displayBox = new QGroupBox(tr("Display"));
+  auto* displayLayout = new QVBoxLayout(displayBox);
+  stretch_ = new QCheckBox(tr("Stretch overlay (grey 1.0 to red 1.1)"));
+  showPins_ = new QCheckBox(tr("Show pins and selection"));
+  showPins_->setChecked(true);
+  displayLayout->addWidget(stretch_);
+  displayLayout->addWidget(showPins_);
+  connect(stretch_, &QCheckBox::toggled, tool_, &GarmentTool::setStretchVisible);
+  connect(showPins_, &QCheckBox::toggled, tool_, &GarmentTool::setPinsVisible);
+  layout->addWidget(displayBox);
+
+  status_ = new QLabel;
+  status_->setWordWrap(true);
+  layout->addWidget(status_);
+  layout->addStretch(1);
+
+  connect(tool_, &GarmentTool::sceneChanged, this, &GarmentPanel::refresh);
+  connect(tool_, &GarmentTool::currentGarmentChanged, this, &GarmentPanel::refresh);
+  connect(tool_, &GarmentTool::selectionChanged, this, &GarmentPanel::refreshStatus);
+  connect(tool_, &GarmentTool::simulationChanged, this, &GarmentPanel::refreshStatus);
+  refresh();
+}
+
+QDoubleSpinBox* GarmentPanel::measurementField(const QString& name) const {
+  for (QDoubleSpinBox* spin : measurementFields_)
+    if (spin->objectName() == name) return spin;
+  return nullptr;
+}
+
+void GarmentPanel::refresh() {
+  refreshing_ = true;
+  const GarmentScene& scene = tool_->scene();
+  const int current = tool_->currentGarment();
+  {
+    const QSignalBlocker block(list_);
+    list_->clear();
+    for (const Garment& g : scene.garments) list_->addItem(QString::fromStdString(g.name));
+    list_->setCurrentRow(current);
+  }
+  remove_->setEnabled(current >= 0);
+  rebuildMeasurements();
+  refreshFabric();
+  {
+    const QSignalBlocker block(integratorCombo_);
+    for (int i = 0; i < int(std::size(kIntegrators)); ++i)
+      if (kIntegrators[i] == scene.cloth.settings.integrator) integratorCombo_->setCurrentIndex(i);
+  }
+  selfCollisions_->setChecked(scene.cloth.settings.selfCollisions);
+  {
+    const QSignalBlocker block(attach_);
+    attach_->setCurrentIndex(current >= 0 && scene.garments[current].pins.attach == GarmentPins::Attach::Space ? 1 : 0);
+  }
+  refreshing_ = false;
+  refreshStatus();
+}
+
+// One field per measurement of the current garment's type; the fields are
+// rebuilt when the garment (or its type) changes, else only their values.
+void GarmentPanel::rebuildMeasurements() {
+  const int current = tool_->currentGarment();
+  const GarmentScene& scene = tool_->scene();
+  const QString type =
+      current >= 0 ? QString::fromStdString(scene.garments[current].recipe.type) : QString();
+  if (current != measuredGarment_ || type != measuredType_) {
+    while (measurementForm_->rowCount() > 0) measurementForm_->removeRow(0);
+    measurementFields_.clear();
+    measuredGarment_ = current;
+    measuredType_ = type;
+    if (!type.isEmpty()) {
+      for (const GarmentParameter& p : garmentParameters(type.toStdString())) {
+        auto* spin = new QDoubleSpinBox;
+        spin->setObjectName(QString::fromStdString(p.name));
+        spin->setRange(p.min, p.max);
+        spin->setDecimals(3);
+        spin->setSingleStep(0.01);
+        spin->setSuffix(tr(" m"));
+        spin->setKeyboardTracking(false);
+        spin->setToolTip(QString::fromStdString(p.help));
+        const std::string name = p.name;
+        connect(spin, &QDoubleSpinBox::valueChanged, this, [this, name, index = int(measurementFields_.size())](double v) {
+          if (refreshing_) return;
+          if (lastField_ != index + 1) lastMergeKey_ = GarmentEditCommand::nextMergeKey();
+          lastField_ = index + 1;
+          tool_->setMeasurement(tool_->currentGarment(), name, float(v), lastMergeKey_);
+        });
+        auto* label = new QLabel(QString::fromStdString(p.name).replace('_', ' '));
+        label->setToolTip(QString::fromStdString(p.help));
+        measurementForm_->addRow(label, spin);
+        measurementFields_.push_back(spin);
+      }
+    } else if (current >= 0) {
+      measurementForm_->addRow(new QLabel(tr("Hand-made panels: no measurements")));
+    } else {
+      measurementForm_->addRow(new QLabel(tr("Add a garment to edit it")));
+    }
+  }
+  if (current < 0 || type.isEmpty()) return;
+  const auto& values = scene.garments[current].recipe.parameters;
+  const auto parameters = garmentParameters(type.toStdString());
+  for (size_t i = 0; i < parameters.size() && i < measurementFields_.size(); ++i) {
+    const auto found = values.find(parameters[i].name);
+    const QSignalBlocker block(measurementFields_[i]);
+    measurementFields_[i]->setValue(found != values.end() ? found->second : parameters[i].value);
+  }
+}
+
+void GarmentPanel::refreshFabric() {
+  const int current = tool_->currentGarment();
+  fabricCombo_->setEnabled(current >= 0);
+  for (QDoubleSpinBox* spin : fabricFields_) spin->setEnabled(current >= 0);
+  if (current < 0) return;
+  const Garment& g = tool_->scene().garments[current];
+  const Fabric values = g.solverFabric();
+  {
+    const QSignalBlocker block(fabricCombo_);
+    const int preset = fabricCombo_->findText(QString::fromStdString(g.fabric));
+    fabricCombo_->setCurrentIndex(fabricIsPreset(g) && preset >= 0 ? preset : fabricCombo_->count() - 1);
+  }
+  for (size_t f = 0; f < fabricFields_.size(); ++f) {
+    const QSignalBlocker block(fabricFields_[f]);
+    fabricFields_[f]->setValue(values.*(kFabricFields[f].member) * kFabricFields[f].scale);
+  }
+}
+
+void GarmentPanel::editFabric(int field, const std::function<void(Fabric&, double)>& change, double value) {
+  const int current = tool_->currentGarment();
+  if (refreshing_ || current < 0) return;
+  Fabric fabric = tool_->scene().garments[current].solverFabric();
+  change(fabric, value);
+  if (lastField_ != field) lastMergeKey_ = GarmentEditCommand::nextMergeKey();
+  lastField_ = field;
+  tool_->setFabric(current, fabric, lastMergeKey_);
+}
+
+void GarmentPanel::refreshStatus() {
+  const int current = tool_->currentGarment();
+  const bool any = tool_->garmentCount() > 0;
+  {
+    const QSignalBlocker block(simulate_);
+    simulate_->setChecked(tool_->simulating());
+  }
+  {
+    const QSignalBlocker block(select_);
+    select_->setChecked(tool_->selectMode());
+  }
+  {
+    const QSignalBlocker block(stretch_);
+    stretch_->setChecked(tool_->stretchVisible());
+  }
+  simulate_->setEnabled(any);
+  bake_->setEnabled(any);
+  clearBake_->setEnabled(tool_->hasBake());
+  const size_t selected = tool_->selectedVertices().size();
+  const size_t pinned = current >= 0 ? tool_->scene().garments[current].pins.vertices.size() : 0;
+  pin_->setEnabled(selected > 0);
+  unpin_->setEnabled(selected > 0 && pinned > 0);
+  clearPins_->setEnabled(pinned > 0);
+  pinStatus_->setText(tr("%1 pinned, %2 selected").arg(pinned).arg(selected));
+
+  QStringList lines;
+  if (const GarmentMesh* mesh = tool_->garmentMesh(current))
+    lines << tr("%1 vertices, %2 triangles").arg(mesh->vertexCount()).arg(mesh->triangleCount());
+  if (tool_->hasBake()) lines << tr("Baked: %1 frames (scrub the timeline)").arg(tool_->bakedFrameCount());
+  if (tool_->simulating()) lines << tr("Simulating: %1 steps").arg(tool_->simulatedSteps());
+  if (current >= 0 && !tool_->shownStretch(current).empty()) {
+    float worst = 1.0f;
+    for (float s : tool_->shownStretch(current)) worst = std::max(worst, s);
+    if (tool_->simulating() || tool_->hasBake()) lines << tr("Largest stretch: %1").arg(worst, 0, 'f', 3);
+  }
+  if (!tool_->lastError().isEmpty()) lines << tool_->lastError();
+  status_->setText(lines.join('\n'));
+}
+
+}  // namespace mq::ui

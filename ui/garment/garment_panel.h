@@ -1,0 +1,82 @@
+#pragma once
+// The garment tool's dock: the garments (list, add a built-in one, remove),
+// the current garment's measurements (one field per parameter the garment
+// type declares, rebuilt when the type changes), its fabric (preset or
+// values), the simulation (integrator, self collisions, Simulate, Bake clip),
+// the pins (vertex-select mode, Pin selected, Unpin, attach to body or space)
+// and the display (stretch overlay, pin dots). Every change goes to the
+// GarmentTool as an undoable edit; the panel refreshes from its signals.
+
+#include <functional>
+#include <vector>
+
+#include <QWidget>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QFormLayout;
+class QLabel;
+class QListWidget;
+class QPushButton;
+
+namespace mq {
+struct Fabric;
+}
+
+namespace mq::ui {
+
+class GarmentTool;
+
+class GarmentPanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit GarmentPanel(GarmentTool* tool, QWidget* parent = nullptr);
+
+  // For tests and scripts.
+  QListWidget* garmentList() const { return list_; }
+  QComboBox* typeCombo() const { return typeCombo_; }
+  QPushButton* addButton() const { return add_; }
+  QComboBox* fabricCombo() const { return fabricCombo_; }
+  QComboBox* integratorCombo() const { return integratorCombo_; }
+  // The measurement field named `name` of the current garment, or null.
+  QDoubleSpinBox* measurementField(const QString& name) const;
+  QPushButton* simulateButton() const { return simulate_; }
+  QPushButton* bakeButton() const { return bake_; }
+  QPushButton* selectButton() const { return select_; }
+  QPushButton* pinButton() const { return pin_; }
+  QPushButton* unpinButton() const { return unpin_; }
+  QCheckBox* stretchCheck() const { return stretch_; }
+
+ private:
+  void refresh();
+  void rebuildMeasurements();
+  void refreshFabric();
+  void refreshStatus();
+  void editFabric(int field, const std::function<void(Fabric&, double)>& change, double value);
+
+  GarmentTool* tool_;
+  QListWidget* list_;
+  QComboBox* typeCombo_;
+  QPushButton *add_, *remove_;
+  QWidget* measurements_;
+  QFormLayout* measurementForm_;
+  std::vector<QDoubleSpinBox*> measurementFields_;
+  QString measuredType_;
+  int measuredGarment_ = -2;
+  QComboBox* fabricCombo_;
+  std::vector<QDoubleSpinBox*> fabricFields_;
+  QComboBox* integratorCombo_;
+  QCheckBox* selfCollisions_;
+  QPushButton *simulate_, *bake_, *clearBake_;
+  QPushButton *select_, *pin_, *unpin_, *clearPins_;
+  QComboBox* attach_;
+  QCheckBox *stretch_, *showPins_;
+  QLabel* pinStatus_;
+  QLabel* status_;
+  bool refreshing_ = false;
+  int lastField_ = 0, lastMergeKey_ = 0;
+};
+
+}  // namespace mq::ui

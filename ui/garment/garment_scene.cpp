@@ -1,0 +1,56 @@
+#include "ui/garment/garment_scene.h"
+
+#include "core/garment/fabric_json.h"
+#include "core/garment/garment_json.h"
+
+namespace mq::ui {
+
+using nlohmann::json;
+
+bool fabricIsPreset(const Garment& garment) {
+  return !garment.customFabric ||
+         (hasFabricPreset(garment.fabric) && sameFabricValues(*garment.customFabric, fabricPreset(garment.fabric)));
+}
+
+void setFabricValues(Garment& garment, const Fabric& fabric) {
+  if (hasFabricPreset(garment.fabric) && sameFabricValues(fabric, fabricPreset(garment.fabric)))
+    garment.customFabric.reset();
+  else
+    garment.customFabric = fabric;
+}
+
+GarmentScene garmentSceneFromSections(const json& garments, const json& cloth, const json& colliders,
+                                      const std::string& pathForErrors) {
+  GarmentScene scene;
+  scene.garments = garmentsFromJson(garments);
+  scene.writeCloth = !cloth.is_null();
+  if (cloth.is_null() && scene.garments.empty()) {
+    scene.cloth = cloth::parseClothScene(json(), colliders, pathForErrors, true);  // defaults, no sheet
+  } else {
+    scene.cloth = cloth::parseClothScene(cloth, colliders, pathForErrors, !scene.garments.empty());
+  }
+  return scene;
+}
+
+void garmentSceneToSections(const GarmentScene& scene, json& garments, json& cloth, json& colliders) {
+  garments = scene.garments.empty() ? json() : garmentsToJson(scene.garments);
+  // Without garments and without a sheet the cloth section would describe a
+  // default sheet: leave it out.
+  if (!scene.writeCloth || (scene.garments.empty() && !scene.cloth.hasSheet)) {
+    cloth = json();
+    return;
+  }
+  json written, writtenColliders;
+  cloth::writeClothScene(scene.cloth, written, writtenColliders);
+  cloth = written;
+  if (!scene.cloth.colliders.empty() || !colliders.is_null()) colliders = writtenColliders;
+}
+
+bool GarmentScene::operator==(const GarmentScene& other) const {
+  json ga, ca, la, gb, cb, lb;
+  garmentSceneToSections(*this, ga, ca, la);
+  garmentSceneToSections(other, gb, cb, lb);
+  return ga == gb && ca == cb && la == lb;
+}
+
+}  // namespace mq::ui

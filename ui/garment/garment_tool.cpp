@@ -1,0 +1,781 @@
+#include "ui/garment/garment_tool.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include <QDockWidget>
+#include <QEventLoop>
+#include <QMouseEvent>
+#include <QProgressDialog>
+#include <QRubberBand>
+#include <QTimer>
+#include <QUndoStack>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include <vtkCamera.h>
+#include <vtkMatrix4x4.h>
+#include <vtkRenderer.h>
+
+#include "core/character/posed_character.h"
+#include "core/garment/garment_json.h"
+#include "core/garment/parametric_garments.h"
+#include "core/util/error.h"
+#include "core/util/thread_pool.h"
+#include "render/cloth_shading.h"
+#include "render/garment_overlay.h"
+#include "render/scene_view.h"
+#include "sim/cloth/baked_cloth.h"
+#include "sim/garment/drape_schedule.h"
+#include "sim/garment/garment_scene.h"
+#include "sim/garment/garment_simulation.h"
+#include "ui/document/editor_document.h"
+#include "ui/garment/garment_edit_command.h"
+#include "ui/garment/garment_panel.h"
+#include "ui/main_window.h"
+#include "ui/viewport/vtk_viewport_widget.h"
+
+namespace mq::ui {
+
+namespace {
+
+// For each garment vertex, the nearest body vertex (a uniform grid over the
+// body; garments sit a few centimetres off the skin).
+std::vector<uint32_t> nearestBodyVertices(const std::vector<float>& garment, const std::vector<float>& body) {
+  constexpr float kCell = 0.04f;
+  std::unordered_map<int64_t, std::vector<uint32_t>> grid;
+  auto cellOf = [](float x) { return int64_t(std::floor(x / kCell)); };
+  auto key = [](int64_t x, int64_t y, int64_t z) { return (x & 0x1fffff) | ((y & 0x1fffff) << 21) | ((z & 0x1fffff) << 42); };
+  for (size_t v = 0; v < body.size() / 3; ++v)
+    grid[key(cellOf(body[3 * v]), cellOf(body[3 * v + 1]), cellOf(body[3 * v + 2]))].push_back(uint32_t(v));
+  std::vector<uint32_t> nearest(garment.size() / 3, 0);
+  if (body.empty()) return nearest;
+  for (size_t g = 0; g < nearest.size(); ++g) {
+    const glm::vec3 p(garment[3 * g], garment[3 * g + 1], garment[3 * g + 2]);
+    const int64_t cx = cellOf(p.x), cy = cellOf(p.y), cz = cellOf(p.z);
+    float best = INFINITY;
+    for (int64_t ring = 0; ring < 16; ++ring) {
+      for (int64_t x = cx - ring; x <= cx + ring; ++x)
+        for (int64_t y = cy - ring; y <= cy + ring; ++y)
+          for (int64_t z = cz - ring; z <= cz + ring; ++z) {
+            if (std::max({std::abs(x - cx), std::abs(y - cy), std::abs(z - cz)}) != ring) continue;
+            const auto cell = grid.find(key(x, y, z));
+            if (cell == grid.end()) continue;
+            for (uint32_t b : cell->second) {
+              const glm::vec3 d = glm::vec3(body[3 * b], body[3 * b + 1], body[3 * b + 2]) - p;
+              const float d2 = glm::dot(d, d);
+              if (d2 < best) best = d2, nearest[g] = b;
+            }
+          }
+      if (best < (ring * kCell) * (ring * kCell)) break;  // nothing in a further ring can be nearer
+    }
+  }
+  return nearest;
+}
+
+std::vector<float> concatenated(const std::vector<PosedMesh>& meshes) {
+  std::vector<float> out;
+  for (const PosedMesh& m : meshes) out.insert(out.end(), m.positions.begin(), m.positions.end());
+  return out;
+}
+
+std::unique_ptr<cloth::GarmentSimulation> makeSimulation(const GarmentScene& scene, size_t garment,
+                                                         const std::vector<float>& body,
+                                                         const std::vector<uint32_t>& bodyTriangles) {
+  return cloth::makeGarmentSimulation(scene.garments[garment], scene.cloth, body, bodyTriangles,
+                                      "garments[" + std::to_string(garment) + "]");
+}
+
+// What the mesh depends on: the garment without its name, fabric and pins.
+nlohmann::json geometryOf(const Garment& garment) {
+  nlohmann::json json = garmentToJson(garment);
+  for (const char* key : {"name", "fabric", "pins"}) json.erase(key);
+  return json;
+}
+
+std::vector<uint32_t> sortedUnique(std::vector<uint32_t> v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  return v;
+}
+
+QString displayName(const std::string& type) {
+  if (type == "tshirt") return QObject::tr("T-shirt");
+  if (type == "skirt") return QObject::tr("Skirt");
+  if (type == "trousers") return QObject::tr("Trousers");
+  return QString::fromStdString(type);
+}
+
+}  // namespace
+
+// ---- Per-garment display and simulation ----
+
+struct GarmentTool::View {
+  render::SceneView* scene;
+  GarmentMesh mesh;
+  nlohmann::json builtFrom;  // garmentToJson of the garment the mesh was built from
+  render::ClothActor actor;
+  render::GarmentOverlay overlay;
+  std::unique_ptr<cloth::GarmentSimulation> simulation;
+  cloth::DrapeSchedule drape;
+  std::vector<float> positions, stretch;  // what is shown
+  std::vector<uint32_t> nearestBody;     // per garment vertex, for the unsimulated preview
+
+  explicit View(render::SceneView* sceneView) : scene(sceneView) {
+    scene->addProp(actor.actor());
+    scene->addProp(overlay.stretchActor());
+    scene->addProp(overlay.pinActor());
+    scene->addProp(overlay.selectionActor());
+  }
+  ~View() {
+    scene->removeProp(actor.actor());
+    scene->removeProp(overlay.stretchActor());
+    scene->removeProp(overlay.pinActor());
+    scene->removeProp(overlay.selectionActor());
+  }
+
+  void build(const Garment& garment, const std::vector<float>& restBody) {
+    mesh = buildGarmentMesh(garment);
+    nearestBody = nearestBodyVertices(mesh.positions, restBody);
+    builtFrom = geometryOf(garment);
+    actor.setMesh(mesh.positions, mesh.triangles, mesh.restUvs);
+    overlay.setTriangles(mesh.triangles);
+    simulation.reset();
+  }
+};
+
+struct GarmentTool::Bake {
+  int clip = -1;
+  float start = 0.0f;
+  std::vector<cloth::BakedCloth> garments;
+  std::vector<std::vector<std::vector<float>>> stretch;  // [garment][frame]
+
+  size_t frameIndex(float time) const {
+    if (garments.empty() || garments[0].frameCount() == 0) return 0;
+    const double f = std::floor((time - start) * garments[0].fps() + 1e-4);
+    return size_t(std::clamp(f, 0.0, double(garments[0].frameCount() - 1)));
+  }
+};
+
+GarmentTool::GarmentTool(MainWindow* window) : QObject(window), window_(window) {
+  panel_ = new GarmentPanel(this);
+  dock_ = new QDockWidget(tr("Garments"), window);
+  dock_->setObjectName("GarmentToolDock");
+  dock_->setWidget(panel_);
+  window->addToolDock(dock_);
+  rubberBand_ = new QRubberBand(QRubberBand::Rectangle, window->viewport());
+  window->viewport()->installEventFilter(this);
+  connect(&stepWatcher_, &QFutureWatcher<QString>::finished, this, &GarmentTool::onStepFinished);
+  connect(window->document(), &EditorDocument::characterReplaced, this, &GarmentTool::onCharacterReplaced);
+  connect(window->document(), &EditorDocument::poseChanged, this, &GarmentTool::showGarments);
+  connect(window->document(), &EditorDocument::clipChanged, this, [this] {
+    if (bake_ && bake_->clip != window_->document()->clipIndex()) clearBake();
+  });
+  onCharacterReplaced();
+}
+
+GarmentTool::~GarmentTool() {
+  simulating_ = false;
+  cancelBake_ = true;
+  waitForStep();
+}
+
+// ---- Document ----
+
+void GarmentTool::onCharacterReplaced() {
+  setSimulating(false);
+  waitForStep();
+  const Character& character = window_->document()->character();
+  PosedCharacter rest;
+  rest.evaluate(character, -1, 0.0f, nullptr, &ThreadPool::shared());
+  restBody_ = concatenated(rest.meshes());
+  bodyTriangles_.clear();
+  uint32_t offset = 0;
+  for (const Mesh& m : character.meshes) {
+    for (uint32_t index : m.triangles) bodyTriangles_.push_back(index + offset);
+    offset += uint32_t(m.vertexCount());
+  }
+  lastError_.clear();
+  selection_.clear();
+  views_.clear();
+  scene_ = GarmentScene{};
+  loadSections();
+  emit selectionChanged();
+}
+
+void GarmentTool::loadSections() {
+  SceneDocument& sections = window_->document()->sceneSections();
+  GarmentScene loaded;
+  try {
+    loaded = garmentSceneFromSections(sections.garments, sections.cloth, sections.colliders,
+                                      window_->document()->documentPath().toStdString());
+  } catch (const Error& e) {
+    lastError_ = tr("The document's garments could not be read: %1").arg(e.what());
+    window_->reportError(tr("Garments"), lastError_);
+  }
+  loading_ = true;
+  applyScene(loaded);
+  loading_ = false;
+}
+
+void GarmentTool::storeSections() {
+  if (loading_) return;
+  SceneDocument& sections = window_->document()->sceneSections();
+  garmentSceneToSections(scene_, sections.garments, sections.cloth, sections.colliders);
+  window_->document()->notifyChanged();
+}
+
+// ---- Editing ----
+
+void GarmentTool::edit(const GarmentScene& after, const QString& text, int mergeKey) {
+  window_->document()->undoStack()->push(new GarmentEditCommand(this, scene_, after, text, mergeKey));
+}
+
+void GarmentTool::addGarment(const std::string& type) {
+  try {
+    GarmentScene after = scene_;
+    Garment added = makeParametricGarment(type, window_->document()->character());
+    added.name = displayName(type).toStdString();
+    after.garments.push_back(std::move(added));
+    edit(after, tr("Add %1").arg(displayName(type)));
+    setCurrentGarment(garmentCount() - 1);
+  } catch (const Error& e) {
+    lastError_ = QString::fromStdString(e.what());
+    emit sceneChanged();
+  }
+}
+
+void GarmentTool::removeGarment(int index) {
+  if (index < 0 || index >= garmentCount()) return;
+  GarmentScene after = scene_;
+  const QString name = QString::fromStdString(after.garments[index].name);
+  after.garments.erase(after.garments.begin() + index);
+  edit(after, tr("Remove %1").arg(name));
+}
+
+void GarmentTool::setMeasurement(int garment, const std::string& name, float value, int mergeKey) {
+  if (garment < 0 || garment >= garmentCount()) return;
+  try {
+    GarmentScene after = scene_;
+    Garment& g = after.garments[garment];
+    g.recipe.parameters[name] = value;
+    const GarmentPins pins = g.pins;
+    g = rebuildParametricGarment(g, window_->document()->character());
+    // Pins are vertex indices: they only survive a rebuild with the same vertices.
+    if (buildGarmentMesh(g).vertexCount() == views_[garment]->mesh.vertexCount()) g.pins = pins;
+    edit(after, tr("%1 %2").arg(QString::fromStdString(g.name), QString::fromStdString(name)), mergeKey);
+  } catch (const Error& e) {
+    lastError_ = QString::fromStdString(e.what());
+    emit sceneChanged();
+  }
+}
+
+void GarmentTool::setFabricPreset(int garment, const std::string& preset) {
+  if (garment < 0 || garment >= garmentCount() || !hasFabricPreset(preset)) return;
+  GarmentScene after = scene_;
+  after.garments[garment].fabric = preset;
+  after.garments[garment].customFabric.reset();
+  edit(after, tr("Fabric %1").arg(QString::fromStdString(preset)));
+}
+
+void GarmentTool::setFabric(int garment, const Fabric& fabric, int mergeKey) {
+  if (garment < 0 || garment >= garmentCount()) return;
+  try {
+    fabric.validate();
+  } catch (const Error& e) {
+    lastError_ = QString::fromStdString(e.what());
+    emit sceneChanged();
+    return;
+  }
+  GarmentScene after = scene_;
+  setFabricValues(after.garments[garment], fabric);
+  edit(after, tr("Fabric values"), mergeKey);
+}
+
+void GarmentTool::setIntegrator(cloth::IntegratorKind integrator) {
+  if (integrator == scene_.cloth.settings.integrator) return;
+  GarmentScene after = scene_;
+  after.cloth.settings.integrator = integrator;
+  after.writeCloth = true;
+  edit(after, tr("Integrator %1").arg(cloth::integratorName(integrator)));
+}
+
+void GarmentTool::setSelfCollisions(bool on) {
+  if (on == scene_.cloth.settings.selfCollisions) return;
+  GarmentScene after = scene_;
+  after.cloth.settings.selfCollisions = on;
+  after.writeCloth = true;
+  edit(after, on ? tr("Self collisions on") : tr("Self collisions off"));
+}
+
+void GarmentTool::setPinsFollowBody(int garment, bool followBody) {
+  const auto attach = followBody ? GarmentPins::Attach::Body : GarmentPins::Attach::Space;
+  if (garment < 0 || garment >= garmentCount() || scene_.garments[garment].pins.attach == attach) return;
+  GarmentScene after = scene_;
+  after.garments[garment].pins.attach = attach;
+  edit(after, followBody ? tr("Pins follow the body") : tr("Pins fixed in space"));
+}
+
+void GarmentTool::pinSelected() {
+  if (current_ < 0 || selection_.empty()) return;
+  GarmentScene after = scene_;
+  std::vector<uint32_t>& pins = after.garments[current_].pins.vertices;
+  pins.insert(pins.end(), selection_.begin(), selection_.end());
+  pins = sortedUnique(pins);
+  if (pins == scene_.garments[current_].pins.vertices) return;
+  edit(after, tr("Pin %n vertices", "", int(selection_.size())));
+}
+
+void GarmentTool::unpinSelected() {
+  if (current_ < 0 || selection_.empty()) return;
+  GarmentScene after = scene_;
+  std::vector<uint32_t>& pins = after.garments[current_].pins.vertices;
+  std::vector<uint32_t> kept;
+  std::set_difference(pins.begin(), pins.end(), selection_.begin(), selection_.end(), std::back_inserter(kept));
+  if (kept.size() == pins.size()) return;
+  pins = kept;
+  edit(after, tr("Unpin vertices"));
+}
+
+void GarmentTool::clearPins() {
+  if (current_ < 0 || scene_.garments[current_].pins.vertices.empty()) return;
+  GarmentScene after = scene_;
+  after.garments[current_].pins.vertices.clear();
+  edit(after, tr("Clear pins"));
+}
+
+void GarmentTool::applyScene(const GarmentScene& scene) {
+  waitForStep();
+  const GarmentScene before = scene_;
+  scene_ = scene;
+  rebuildViews(before);
+  dropDynamics();
+  if (current_ >= garmentCount()) current_ = garmentCount() - 1;
+  if (current_ < 0 && garmentCount() > 0) current_ = 0;
+  storeSections();
+  if (simulating_) restartSimulation();
+  showGarments();
+  emit sceneChanged();
+  emit simulationChanged();
+}
+
+// Rebuilds the meshes of the garments whose panels changed; keeps the others.
+void GarmentTool::rebuildViews(const GarmentScene& before) {
+  (void)before;
+  std::vector<std::unique_ptr<View>> old = std::move(views_);
+  views_.clear();
+  bool selectionValid = true;
+  for (size_t i = 0; i < scene_.garments.size(); ++i) {
+    const nlohmann::json wanted = geometryOf(scene_.garments[i]);
+    std::unique_ptr<View> view;
+    for (auto& candidate : old)
+      if (candidate && candidate->builtFrom == wanted) {
+        view = std::move(candidate);
+        break;
+      }
+    if (!view) {
+      view = std::make_unique<View>(window_->sceneView());
+      try {
+        view->build(scene_.garments[i], restBody_);
+      } catch (const Error& e) {
+        lastError_ = QString::fromStdString(e.what());
+      }
+      if (int(i) == current_) selectionValid = false;
+    }
+    view->actor.setShading(render::clothShadingForFabric(scene_.garments[i].fabric));
+    views_.push_back(std::move(view));
+  }
+  if (!selectionValid && !selection_.empty()) {
+    selection_.clear();
+    emit selectionChanged();
+  }
+}
+
+void GarmentTool::setCurrentGarment(int index) {
+  if (index < -1 || index >= garmentCount() || index == current_) return;
+  current_ = index;
+  selection_.clear();
+  showGarments();
+  emit currentGarmentChanged();
+  emit selectionChanged();
+}
+
+const GarmentMesh* GarmentTool::garmentMesh(int garment) const {
+  return garment >= 0 && garment < int(views_.size()) ? &views_[garment]->mesh : nullptr;
+}
+
+const std::vector<float>& GarmentTool::shownPositions(int garment) const { return views_.at(garment)->positions; }
+const std::vector<float>& GarmentTool::shownStretch(int garment) const { return views_.at(garment)->stretch; }
+
+// ---- Display ----
+
+// Each garment where it is now: the baked frame of the current time, the
+// live simulation, or as placed around the rest body.
+void GarmentTool::showGarments() {
+  const float time = window_->document()->time();
+  std::vector<float> posed;
+  for (size_t i = 0; i < views_.size(); ++i) {
+    View& view = *views_[i];
+    if (bake_ && bake_->clip == window_->document()->clipIndex()) {
+      const size_t frame = bake_->frameIndex(time);
+      view.positions = bake_->garments[i].frame(frame);
+      view.stretch = bake_->stretch[i][frame];
+    } else if (view.simulation) {
+      view.positions = view.simulation->positions();
+      view.stretch = view.simulation->vertexStretch();
+    } else {
+      // Not simulated: the placed panels, carried by the body's nearest
+      // vertices from the rest pose to the pose shown.
+      if (posed.empty()) posed = posedBody();
+      view.positions = view.mesh.positions;
+      if (posed.size() == restBody_.size() && view.nearestBody.size() == view.mesh.vertexCount())
+        for (size_t v = 0; v < view.nearestBody.size(); ++v)
+          for (int k = 0; k < 3; ++k) {
+            const size_t b = 3 * size_t(view.nearestBody[v]) + k;
+            view.positions[3 * v + k] += posed[b] - restBody_[b];
+          }
+      view.stretch.assign(view.mesh.vertexCount(), 1.0f);
+    }
+    view.actor.updatePositions(view.positions);
+    view.actor.setVisible(!stretchVisible_);
+    view.overlay.setPositions(view.positions);
+    view.overlay.setStretch(view.stretch);
+    view.overlay.setStretchVisible(stretchVisible_);
+    view.overlay.setPinned(scene_.garments[i].pins.vertices);
+    view.overlay.setSelected(int(i) == current_ ? selection_ : std::vector<uint32_t>{});
+    view.overlay.setDotsVisible(pinsVisible_);
+  }
+  window_->viewport()->requestRender();
+}
+
+void GarmentTool::setStretchVisible(bool visible) {
+  stretchVisible_ = visible;
+  showGarments();
+  emit simulationChanged();  // the panel's checkbox follows
+}
+
+void GarmentTool::setPinsVisible(bool visible) {
+  pinsVisible_ = visible;
+  showGarments();
+}
+
+// ---- Live simulation ----
+
+void GarmentTool::dropDynamics() {
+  waitForStep();
+  for (auto& view : views_) view->simulation.reset();
+  steps_ = 0;
+  simulatedSeconds_ = 0.0f;
+  bake_.reset();
+}
+
+void GarmentTool::clearBake() {
+  if (!bake_) return;
+  bake_.reset();
+  showGarments();
+  emit simulationChanged();
+}
+
+int GarmentTool::bakedFrameCount() const {
+  return bake_ && !bake_->garments.empty() ? int(bake_->garments[0].frameCount()) : 0;
+}
+
+std::vector<float> GarmentTool::posedBody() const { return concatenated(window_->document()->posed().meshes()); }
+
+void GarmentTool::restartSimulation() {
+  waitForStep();
+  steps_ = 0;
+  simulatedSeconds_ = 0.0f;
+  lastError_.clear();
+  try {
+    for (size_t i = 0; i < views_.size(); ++i) {
+      views_[i]->simulation = makeSimulation(scene_, i, restBody_, bodyTriangles_);
+      views_[i]->drape = cloth::DrapeSchedule{};
+    }
+  } catch (const Error& e) {
+    lastError_ = QString::fromStdString(e.what());
+    simulating_ = false;
+    for (auto& view : views_) view->simulation.reset();
+    return;
+  }
+  QTimer::singleShot(0, this, &GarmentTool::startStep);
+}
+
+void GarmentTool::setSimulating(bool on) {
+  on = on && !views_.empty();
+  if (on == simulating_) return;
+  simulating_ = on;
+  if (on) {
+    bake_.reset();
+    restartSimulation();
+  } else {
+    waitForStep();
+  }
+  showGarments();
+  emit simulationChanged();
+}
+
+void GarmentTool::waitForStep() { stepWatcher_.waitForFinished(); }
+
+// One step of every garment on a worker thread, with the body where the
+// timeline has it now; the next step starts when this one has been shown.
+void GarmentTool::startStep() {
+  if (!simulating_ || stepWatcher_.isRunning()) return;
+  struct Job {
+    cloth::GarmentSimulation* simulation;
+    cloth::DrapeSchedule* drape;
+  };
+  std::vector<Job> jobs;
+  for (auto& view : views_)
+    if (view->simulation) jobs.push_back({view->simulation.get(), &view->drape});
+  if (jobs.empty()) return;
+  const float dt = 1.0f / scene_.cloth.fps;
+  stepWatcher_.setFuture(QtConcurrent::run([jobs, dt, rest = restBody_, target = posedBody()]() -> QString {
+    try {
+      std::vector<float> body;
+      for (const Job& job : jobs) {
+        cloth::blendBody(rest, target, job.drape->advance(*job.simulation, dt), body);
+        job.simulation->step(dt, &body);
+      }
+      return QString();
+    } catch (const std::exception& e) {
+      return QString::fromStdString(e.what());
+    }
+  }));
+}
+
+void GarmentTool::onStepFinished() {
+  const QString error = stepWatcher_.future().resultCount() > 0 ? stepWatcher_.result() : QString();
+  if (!error.isEmpty()) {
+    lastError_ = tr("The simulation stopped: %1").arg(error);
+    simulating_ = false;
+    window_->hideProgress(lastError_);
+    emit simulationChanged();
+    return;
+  }
+  if (!simulating_) return;
+  ++steps_;
+  simulatedSeconds_ += 1.0f / scene_.cloth.fps;
+  showGarments();
+  emit simulationChanged();
+  QTimer::singleShot(0, this, &GarmentTool::startStep);
+}
+
+// ---- Bake ----
+
+bool GarmentTool::bake(float from, float to) {
+  if (baking_) return false;
+  EditorDocument* document = window_->document();
+  if (views_.empty()) {
+    lastError_ = tr("There are no garments to bake");
+    return false;
+  }
+  const int clip = document->clipIndex();
+  if (clip < 0) {
+    lastError_ = tr("Choose a clip to bake (the rest pose has no time axis)");
+    return false;
+  }
+  setSimulating(false);
+  bake_.reset();
+  const float fps = scene_.cloth.fps;
+  const float start = from >= 0.0f ? std::max(from, document->clipStart()) : document->clipStart();
+  const float end = to >= 0.0f ? std::min(to, document->clipEnd()) : document->clipEnd();
+  const int frames = std::max(1, int(std::floor((end - start) * fps + 1e-3f)) + 1);
+
+  // The body at every frame, posed here (the worker only simulates).
+  std::vector<std::vector<float>> bodies(frames);
+  PosedCharacter posed;
+  for (int f = 0; f < frames; ++f) {
+    posed.evaluate(document->character(), clip, start + f / fps, &document->poseEdits(), &ThreadPool::shared());
+    bodies[f] = concatenated(posed.meshes());
+  }
+  std::vector<std::unique_ptr<cloth::GarmentSimulation>> simulations;
+  try {
+    for (size_t i = 0; i < views_.size(); ++i)
+      simulations.push_back(makeSimulation(scene_, i, restBody_, bodyTriangles_));
+  } catch (const Error& e) {
+    lastError_ = QString::fromStdString(e.what());
+    return false;
+  }
+
+  const int settleSteps = cloth::DrapeSchedule{}.maxSteps(1.0f / fps);
+  const int total = int(simulations.size()) * (settleSteps + frames);
+  std::atomic<int> done{0};
+  cancelBake_ = false;
+  baking_ = true;
+  auto result = std::make_unique<Bake>();
+  result->clip = clip;
+  result->start = start;
+
+  auto work = [&]() -> QString {
+    try {
+      std::vector<float> body;
+      for (size_t g = 0; g < simulations.size(); ++g) {
+        cloth::GarmentSimulation& simulation = *simulations[g];
+        const int base = int(g) * (settleSteps + frames);
+        cloth::DrapeSchedule drape;
+        for (int s = 0; s < settleSteps && !drape.draped(); ++s) {
+          if (cancelBake_) return QString();
+          cloth::blendBody(restBody_, bodies[0], drape.advance(simulation, 1.0f / fps), body);
+          simulation.step(1.0f / fps, &body);
+          done = base + std::min(s + 1, settleSteps);
+        }
+        cloth::BakedCloth baked(simulation.triangles(), fps);
+        std::vector<std::vector<float>> stretch;
+        for (int f = 0; f < frames; ++f) {
+          if (cancelBake_) return QString();
+          if (f > 0) simulation.step(1.0f / fps, &bodies[f]);
+          baked.addFrame(simulation.positions());
+          stretch.push_back(simulation.vertexStretch());
+          done = base + settleSteps + f + 1;
+        }
+        result->garments.push_back(std::move(baked));
+        result->stretch.push_back(std::move(stretch));
+      }
+      return QString();
+    } catch (const std::exception& e) {
+      return QString::fromStdString(e.what());
+    }
+  };
+
+  QProgressDialog progress(tr("Simulating the garments over the clip..."), tr("Cancel"), 0, total, window_);
+  progress.setWindowModality(Qt::WindowModal);
+  progress.setMinimumDuration(0);
+  connect(&progress, &QProgressDialog::canceled, this, [this] { cancelBake_ = true; });
+  QFutureWatcher<QString> watcher;
+  QEventLoop loop;
+  connect(&watcher, &QFutureWatcher<QString>::finished, &loop, &QEventLoop::quit);
+  QTimer poll;
+  connect(&poll, &QTimer::timeout, this, [&] {
+    progress.setValue(done);
+    window_->showProgress(tr("Baking garments"), total > 0 ? 100 * done / total : -1);
+  });
+  poll.start(50);
+  watcher.setFuture(QtConcurrent::run(work));
+  if (!watcher.isFinished()) loop.exec();
+  poll.stop();
+  const QString error = watcher.result();
+  baking_ = false;
+  progress.reset();
+
+  if (!error.isEmpty()) {
+    lastError_ = tr("The bake stopped: %1").arg(error);
+    window_->hideProgress(lastError_);
+    emit simulationChanged();
+    return false;
+  }
+  if (cancelBake_) {
+    lastError_ = tr("Bake cancelled");
+    window_->hideProgress(tr("Garment bake cancelled"));
+    emit simulationChanged();
+    return false;
+  }
+  bake_ = std::move(result);
+  window_->hideProgress(tr("Garments baked: %1 frames").arg(frames));
+  showGarments();
+  emit simulationChanged();
+  return true;
+}
+
+// ---- Vertex selection ----
+
+QPointF GarmentTool::toWidget(const glm::vec3& world) const {
+  vtkRenderer* renderer = window_->sceneView()->renderer();
+  VtkViewportWidget* viewport = window_->viewport();
+  const double aspect = renderer->GetTiledAspectRatio();
+  vtkMatrix4x4* m = renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(aspect, -1, 1);
+  double in[4] = {world.x, world.y, world.z, 1.0}, out[4];
+  m->MultiplyPoint(in, out);
+  if (out[3] <= 0.0) return QPointF(-1e9, -1e9);
+  const double x = out[0] / out[3], y = out[1] / out[3];
+  return QPointF((x + 1.0) * 0.5 * viewport->width(), (1.0 - y) * 0.5 * viewport->height());
+}
+
+void GarmentTool::setSelectedVertices(std::vector<uint32_t> vertices) {
+  selection_ = sortedUnique(std::move(vertices));
+  showGarments();
+  emit selectionChanged();
+}
+
+void GarmentTool::selectInRect(const QRect& rect, SelectOp op) {
+  if (current_ < 0 || current_ >= int(views_.size())) return;
+  const View& view = *views_[current_];
+  const std::vector<float>& p = view.positions;
+  std::vector<float> normals;
+  computeVertexNormals(p, view.mesh.triangles, normals);
+  vtkCamera* camera = window_->sceneView()->renderer()->GetActiveCamera();
+  double eye[3];
+  camera->GetPosition(eye);
+  std::vector<uint32_t> hits;
+  const QRectF area = QRectF(rect).normalized();
+  for (size_t v = 0; v < p.size() / 3; ++v) {
+    const glm::vec3 x(p[3 * v], p[3 * v + 1], p[3 * v + 2]);
+    const glm::vec3 toEye = glm::vec3(eye[0], eye[1], eye[2]) - x;
+    const glm::vec3 n(normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]);
+    if (glm::dot(n, toEye) < 0.0f) continue;  // faces away: on the far side
+    if (area.contains(toWidget(x))) hits.push_back(uint32_t(v));
+  }
+  std::vector<uint32_t> result;
+  if (op == SelectOp::Replace) {
+    result = hits;
+  } else if (op == SelectOp::Add) {
+    result = selection_;
+    result.insert(result.end(), hits.begin(), hits.end());
+  } else {
+    std::set_difference(selection_.begin(), selection_.end(), hits.begin(), hits.end(), std::back_inserter(result));
+  }
+  setSelectedVertices(result);
+}
+
+void GarmentTool::setSelectMode(bool on) {
+  selectMode_ = on;
+  window_->viewport()->setCursor(on ? Qt::CrossCursor : Qt::ArrowCursor);
+  emit selectionChanged();
+}
+
+bool GarmentTool::eventFilter(QObject* watched, QEvent* event) {
+  if (watched != window_->viewport() || current_ < 0) return false;
+  switch (event->type()) {
+    case QEvent::MouseButtonPress: return onPress(static_cast<QMouseEvent*>(event));
+    case QEvent::MouseMove: return onMove(static_cast<QMouseEvent*>(event));
+    case QEvent::MouseButtonRelease: return onRelease(static_cast<QMouseEvent*>(event));
+    default: return false;
+  }
+}
+
+// Rubber band: a plain left drag in select mode, or Ctrl+Alt+left drag at
+// any time (Shift adds to the selection, Ctrl removes in select mode).
+bool GarmentTool::onPress(QMouseEvent* event) {
+  if (event->button() != Qt::LeftButton) return false;
+  const Qt::KeyboardModifiers mods = event->modifiers();
+  const bool chord = (mods & Qt::ControlModifier) && (mods & Qt::AltModifier);
+  if (!selectMode_ && !chord) return false;
+  dragging_ = true;
+  dragStart_ = event->position().toPoint();
+  rubberBand_->setGeometry(QRect(dragStart_, QSize()));
+  rubberBand_->show();
+  return true;
+}
+
+bool GarmentTool::onMove(QMouseEvent* event) {
+  if (!dragging_) return false;
+  rubberBand_->setGeometry(QRect(dragStart_, event->position().toPoint()).normalized());
+  return true;
+}
+
+bool GarmentTool::onRelease(QMouseEvent* event) {
+  if (!dragging_ || event->button() != Qt::LeftButton) return false;
+  dragging_ = false;
+  rubberBand_->hide();
+  QRect rect = QRect(dragStart_, event->position().toPoint()).normalized();
+  if (rect.width() < 4 && rect.height() < 4) rect = QRect(rect.center() - QPoint(6, 6), QSize(13, 13));  // a click
+  const Qt::KeyboardModifiers mods = event->modifiers();
+  const bool chord = (mods & Qt::ControlModifier) && (mods & Qt::AltModifier);
+  SelectOp op = SelectOp::Replace;
+  if (mods & Qt::ShiftModifier) op = SelectOp::Add;
+  else if ((mods & Qt::ControlModifier) && !chord) op = SelectOp::Remove;
+  selectInRect(rect, op);
+  return true;
+}
+
+}  // namespace mq::ui

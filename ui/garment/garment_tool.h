@@ -1,0 +1,180 @@
+#pragma once
+// The editor's garment tool: the document's garments (built-in T-shirt,
+// skirt, trousers sized from the character), their fabric and pins, and the
+// cloth settings, edited through undo commands (GarmentEditCommand) and
+// stored in the scene document's "garments" and "cloth" sections.
+//
+// The viewport shows each garment with the cloth shader (render::ClothActor):
+// as placed around the rest body, as the live simulation has it, or the baked
+// frame of the current time. Simulate steps every garment's GarmentSimulation
+// on a worker thread, one step in flight at a time, with the body where the
+// timeline has it, so the editor stays responsive while the clip plays. Bake
+// simulates the whole clip on a worker thread behind a progress dialog with
+// Cancel; the timeline then scrubs the baked frames. Any edit restarts the
+// simulation and drops the bake.
+//
+// Pins: in vertex-select mode a rubber-band drag in the viewport selects the
+// current garment's vertices that face the camera (Shift adds, Ctrl removes);
+// Pin selected / Unpin edit the pins. Pinned vertices are drawn as dots, and
+// the stretch overlay colours the garment by GarmentSimulation::vertexStretch.
+
+#include <atomic>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <QFutureWatcher>
+#include <QObject>
+#include <QPoint>
+#include <QRect>
+#include <QString>
+
+#include <glm/glm.hpp>
+
+#include "ui/garment/garment_scene.h"
+
+class QDockWidget;
+class QMouseEvent;
+class QRubberBand;
+
+namespace mq {
+struct GarmentMesh;
+}
+
+namespace mq::ui {
+
+class GarmentPanel;
+class MainWindow;
+
+class GarmentTool : public QObject {
+  Q_OBJECT
+
+ public:
+  explicit GarmentTool(MainWindow* window);
+  ~GarmentTool() override;
+
+  const GarmentScene& scene() const { return scene_; }
+  int garmentCount() const { return int(scene_.garments.size()); }
+  int currentGarment() const { return current_; }  // -1: none
+  void setCurrentGarment(int index);
+  // The meshed garment (unwelded GarmentMesh order), null when out of range.
+  const GarmentMesh* garmentMesh(int garment) const;
+  // What the viewport shows for a garment now (3 floats per vertex) and its stretch.
+  const std::vector<float>& shownPositions(int garment) const;
+  const std::vector<float>& shownStretch(int garment) const;
+  QString lastError() const { return lastError_; }
+
+  // Undoable edits. mergeKey: steps with the same non-zero key merge.
+  void edit(const GarmentScene& after, const QString& text, int mergeKey = 0);
+  void addGarment(const std::string& type);  // "tshirt", "skirt", "trousers"
+  void removeGarment(int index);
+  void setMeasurement(int garment, const std::string& name, float value, int mergeKey = 0);
+  void setFabricPreset(int garment, const std::string& preset);
+  void setFabric(int garment, const Fabric& fabric, int mergeKey = 0);
+  void setIntegrator(cloth::IntegratorKind integrator);
+  void setSelfCollisions(bool on);
+  void setPinsFollowBody(int garment, bool followBody);
+  void pinSelected();
+  void unpinSelected();
+  void clearPins();
+  // Replaces the state without undo (the commands call this).
+  void applyScene(const GarmentScene& scene);
+
+  // Vertex selection on the current garment.
+  enum class SelectOp { Replace, Add, Remove };
+  const std::vector<uint32_t>& selectedVertices() const { return selection_; }
+  void setSelectedVertices(std::vector<uint32_t> vertices);
+  // Selects the current garment's camera-facing vertices inside `rect` (viewport widget coordinates).
+  void selectInRect(const QRect& rect, SelectOp op);
+  void setSelectMode(bool on);
+  bool selectMode() const { return selectMode_; }
+  // Widget coordinates of a world point in the viewport (for tests and the rubber band).
+  QPointF toWidget(const glm::vec3& world) const;
+
+  // Live simulation.
+  void setSimulating(bool on);
+  bool simulating() const { return simulating_; }
+  int simulatedSteps() const { return steps_; }
+  // Blocks until the step in flight (if any) is done.
+  void waitForStep();
+
+  // Bake: simulates the current clip (or its part from `from` to `to`
+  // seconds, when given); false when cancelled or impossible (lastError says why).
+  bool bake(float from = -1.0f, float to = -1.0f);
+  void cancelBake() { cancelBake_ = true; }
+  bool baking() const { return baking_; }
+  bool hasBake() const { return bake_ != nullptr; }
+  int bakedFrameCount() const;
+  void clearBake();
+
+  // Display
+  void setStretchVisible(bool visible);
+  bool stretchVisible() const { return stretchVisible_; }
+  void setPinsVisible(bool visible);
+
+  GarmentPanel* panel() const { return panel_; }
+  QDockWidget* dock() const { return dock_; }
+
+ signals:
+  void sceneChanged();
+  void currentGarmentChanged();
+  void selectionChanged();
+  void simulationChanged();  // started, stopped, stepped, baked or dropped
+
+ protected:
+  bool eventFilter(QObject* watched, QEvent* event) override;
+
+ private:
+  struct View;
+  struct Bake;
+
+  void onCharacterReplaced();
+  void loadSections();
+  void storeSections();
+  void rebuildViews(const GarmentScene& before);
+  void dropDynamics();
+  void showGarments();
+  void restartSimulation();
+  void startStep();
+  void onStepFinished();
+  std::vector<float> posedBody() const;
+  GarmentScene withRebuilt(GarmentScene scene, int garment) const;
+  bool onPress(QMouseEvent* event);
+  bool onMove(QMouseEvent* event);
+  bool onRelease(QMouseEvent* event);
+
+  MainWindow* window_;
+  GarmentPanel* panel_ = nullptr;
+  QDockWidget* dock_ = nullptr;
+  GarmentScene scene_;
+  std::vector<std::unique_ptr<View>> views_;  // one per garment
+  int current_ = -1;
+  QString lastError_;
+  bool loading_ = false;
+
+  // The body the garments are draped on: the character in its rest pose.
+  std::vector<float> restBody_;
+  std::vector<uint32_t> bodyTriangles_;
+
+  // Live simulation
+  bool simulating_ = false;
+  int steps_ = 0;
+  float simulatedSeconds_ = 0.0f;
+  QFutureWatcher<QString> stepWatcher_;
+
+  // Bake
+  std::unique_ptr<Bake> bake_;  // null: no valid bake
+  std::atomic<bool> cancelBake_{false};
+  bool baking_ = false;
+
+  // Display and selection
+  bool stretchVisible_ = false;
+  bool pinsVisible_ = true;
+  bool selectMode_ = false;
+  std::vector<uint32_t> selection_;
+  QRubberBand* rubberBand_ = nullptr;
+  QPoint dragStart_;
+  bool dragging_ = false;
+};
+
+}  // namespace mq::ui
