@@ -8,9 +8,12 @@
 //    (optional);
 //  - colour blended from root to tip with a small per-strand variation;
 //  - transparency at the tips (screen-door, so it needs no sorting);
-//  - self-shadowing: a per-vertex term computed on the CPU, deep-opacity
-//    style: strand points between a vertex and the key light are counted in a
-//    light-aligned grid, and light falls off exponentially with the count.
+//  - self-shadowing: a per-vertex term computed on the CPU, light falling off
+//    exponentially with the hair between a vertex and the key light, counted
+//    either exactly per light-aligned column (deep-opacity style, the
+//    default) or with opacity shadow maps (Kim and Neumann 2001: a stack of
+//    opacity maps at regular depths along the light, each holding the hair
+//    in front of it, interpolated between the two maps around a vertex).
 // Tangents and the shadow term are custom vertex attributes; the scene's
 // lights (camera, head or scene lights) are read every frame.
 
@@ -24,6 +27,11 @@
 class vtkActor;
 
 namespace mq::render {
+
+enum class HairShadowMethod {
+  PointCount,   // exact: the points ahead of each vertex in its light column
+  OpacityMaps,  // opacity shadow maps: opacityMapCount slices, linear in depth
+};
 
 struct HairShading {
   glm::vec3 rootColor{0.10f, 0.06f, 0.035f};
@@ -44,6 +52,8 @@ struct HairShading {
   float shadowPerStrand = 0.05f;     // light lost per strand crossing (Beer-Lambert)
   float shadowCellSize = 0.004f;     // metres: light-aligned grid cell
   float minShadow = 0.25f;           // floor: light scattered in from around
+  HairShadowMethod shadowMethod = HairShadowMethod::PointCount;
+  int opacityMapCount = 32;          // OpacityMaps: slices from the hair's front to its back
 };
 
 class HairActor {
@@ -68,8 +78,12 @@ class HairActor {
 
   // The per-vertex shadow term (1 lit .. minShadow) for a light coming from
   // `towardLight` (world), as the actor uses it; exposed for tests.
+  // Uses shading.shadowMethod.
   static std::vector<float> computeSelfShadow(const Strands& strands, const glm::vec3& towardLight,
                                               const HairShading& shading);
+  // The OpacityMaps method alone (same units and floor as the exact count).
+  static std::vector<float> computeOpacityMapShadow(const Strands& strands, const glm::vec3& towardLight,
+                                                    const HairShading& shading);
 
  private:
   struct Impl;

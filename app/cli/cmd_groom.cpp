@@ -10,6 +10,7 @@
 #include "app/cli/command.h"
 #include "core/hair/character_groom.h"
 #include "core/hair/hairstyle_json.h"
+#include "core/hair/head_fit.h"
 #include "core/hair/strands_io.h"
 #include "core/scene/open_scene.h"
 #include "core/util/atomic_file.h"
@@ -23,6 +24,7 @@ HairSection hairSectionOf(const LoadedScene& scene) {
   if (hair.is_null()) {
     HairSection section;
     section.style = builtinHairStyle("long_straight");
+    section.fitToHead = true;
     return section;
   }
   try {
@@ -32,6 +34,15 @@ HairSection hairSectionOf(const LoadedScene& scene) {
   } catch (const Error& e) {
     throw FileError(scene.documentPath, e.what());
   }
+}
+
+nlohmann::json bounds(const std::vector<float>& points, bool upper) {
+  glm::vec3 v(upper ? -1e30f : 1e30f);
+  for (size_t k = 0; k + 2 < points.size(); k += 3) {
+    const glm::vec3 p(points[k], points[k + 1], points[k + 2]);
+    v = upper ? glm::max(v, p) : glm::min(v, p);
+  }
+  return nlohmann::json::array({v.x, v.y, v.z});
 }
 
 int countOption(const Args& args, const std::string& name, double fallback, double lo, double hi) {
@@ -49,13 +60,24 @@ int runGroom(const std::vector<std::string>& argv) {
   const auto start = std::chrono::steady_clock::now();
   const LoadedScene scene = openScene(args.positional()[0]);
   HairSection section = hairSectionOf(scene);
-  if (args.has("--style")) section.style = builtinHairStyle(args.option("--style"));
+  if (args.has("--style")) {
+    section.style = builtinHairStyle(args.option("--style"));
+    section.fitToHead = true;
+  }
   if (args.has("--points")) section.style.pointsPerStrand = countOption(args, "--points", 32, 2, 1024);
   if (args.has("--seed")) section.style.seed = uint32_t(countOption(args, "--seed", 1, 0, 2147483647));
   if (args.has("--strands")) section.strands = size_t(countOption(args, "--strands", 0, 1, double(HairGroom::kMaxStrands)));
 
   const auto groomStart = std::chrono::steady_clock::now();
-  std::unique_ptr<HairGroom> groom = makeCharacterGroom(scene.character, section.scalp);
+  const float unfittedLength = section.style.length;
+  std::unique_ptr<HairGroom> groom;
+  try {
+    groom = makeSectionGroom(scene.character, section);
+  } catch (const FileError&) {
+    throw;
+  } catch (const Error& e) {
+    throw FileError(args.positional()[0], e.what());
+  }
   const double setupSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - groomStart).count();
   groom->grow(section.style, section.strands);
   const double growSeconds =
@@ -79,6 +101,10 @@ int runGroom(const std::vector<std::string>& argv) {
                        {"panels", groom->flow().panels().size()},
                        {"scalp_area_cm2", groom->scalp().area() * 1e4},
                        {"min_root_distance_mm", groom->childRoots().size() ? groom->childRoots().minDistance * 1e3 : 0.0f},
+                       {"head_size_m", headSize(groom->proxy())},
+                       {"style_scale", section.style.length / unfittedLength},
+                       {"bbox_min", bounds(strands.points, false)},
+                       {"bbox_max", bounds(strands.points, true)},
                        {"points_inside_body", inside}};
   const std::string statsPath = args.option("--stats-json");
   if (!statsPath.empty())

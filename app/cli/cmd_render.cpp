@@ -4,10 +4,12 @@
 
 #include "app/cli/command.h"
 #include "app/cli/render_garments.h"
+#include "app/cli/render_hair.h"
 #include "core/character/posed_character.h"
 #include "core/scene/open_scene.h"
 #include "core/util/error.h"
 #include "core/util/thread_pool.h"
+#include "render/hair_actor.h"
 #include "render/offscreen.h"
 #include "render/scene_view.h"
 
@@ -52,7 +54,7 @@ void placeCamera(render::SceneView& view, const ViewSettings& settings, const Im
 
 int runRender(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--out", "--time", "--clip", "--size", "--skeleton", "--look"});
+  args.allowOnly({"--out", "--time", "--clip", "--size", "--skeleton", "--look", "--hair", "--hair-shadow"});
   if (args.positional().size() != 1) throw Error("expects one FILE (or 'default'); see mannequin-cli --help");
   const std::string file = args.positional()[0];
   const std::string out = args.option("--out");
@@ -77,16 +79,22 @@ int runRender(const std::vector<std::string>& argv) {
   const RenderedGarments garments = addSceneGarments(view, scene, clip, time, file);
   view.setAmbientOcclusion(true);
   placeCamera(view, scene.document.view, size);
+  std::string hairSummary;
+  const auto hair = addSceneHair(view, scene, clip, time,
+                                 parseHairRenderOptions(args.option("--hair", "auto"), args.option("--hair-shadow", "count")),
+                                 hairSummary);
   render::renderToPng(view, out, size.width, size.height);
   std::cout << "wrote " << out << " (" << size.width << "x" << size.height << ", "
             << (clip >= 0 ? "clip '" + scene.character.clips[clip].name + "' at t=" + std::to_string(time)
                           : std::string("rest pose"))
-            << ")" << (garments.summary.empty() ? "" : ", garments: " + garments.summary) << "\n";
+            << (hairSummary.empty() ? "" : "; " + hairSummary) << ")"
+            << (garments.summary.empty() ? "" : ", garments: " + garments.summary) << "\n";
   return 0;
 }
 
 Registration reg({"render", "FILE --out OUT.png [--time T] [--clip NAME|INDEX] [--size WxH] [--skeleton]\n"
-                  "         [--look mannequin|skin|plain]",
+                  "         [--look mannequin|skin|plain] [--hair auto|simulate|rigid|off]\n"
+                  "         [--hair-shadow count|maps]",
                   "renders an image offscreen (starts a private Xvfb when there is no X display)", runRender});
 
 }  // namespace

@@ -12,6 +12,7 @@
 
 #include "app/cli/command.h"
 #include "app/cli/simulate_garments.h"
+#include "app/cli/simulate_hair.h"
 #include "core/character/posed_character.h"
 #include "core/scene/open_scene.h"
 #include "core/util/error.h"
@@ -124,6 +125,8 @@ int runSimulate(const std::vector<std::string>& argv) {
   }
   const json& garmentsSection = scene.document.garments;
   const bool hasGarments = garmentsSection.is_array() && !garmentsSection.empty();
+  if (scene.document.cloth.is_null() && !hasGarments && !scene.document.hair.is_null())
+    return cli::simulateHairOnly(scene, path, int(framesArg), args);
   const cloth::ClothSceneSpec spec =
       cloth::parseClothScene(scene.document.cloth, scene.document.colliders, path, hasGarments);
   const float fps = float(args.number("--fps", spec.fps));
@@ -163,6 +166,7 @@ int runSimulate(const std::vector<std::string>& argv) {
                 {"cg_iterations_per_frame", double(r.solverIterations) / frames},
                 {"threads", ThreadPool::shared().threadCount()}};
   if (cloth.garments) stats["garments"] = cloth.garments->stats();
+  if (!scene.document.hair.is_null()) cli::simulateSceneHair(scene, frames, fps, exportDir, stats);
   const std::string statsPath = args.option("--stats-json");
   if (!statsPath.empty()) {
     std::ofstream out(statsPath);
@@ -176,6 +180,7 @@ int runSimulate(const std::vector<std::string>& argv) {
 }
 
 const cli::Registration reg({"simulate", "SCENE --frames N [--fps F] [--stats-json OUT] [--export-dir DIR]",
-                             "run the scene's cloth (sheet and garments) headless; stats as JSON, frames as OBJ", runSimulate});
+                             "run the scene's cloth (sheet and garments) and hair headless; stats as JSON, frames as OBJ/PLY",
+                             runSimulate});
 
 }  // namespace

@@ -154,8 +154,15 @@ HairSection hairSectionFromJson(const json& j) {
   HairSection section;
   if (j.is_null()) return section;
   if (!j.is_object()) throw Error("hair: the section must be an object");
-  if (j.contains("style")) section.style = hairStyleFromJson(j.at("style"));
-  if (j.contains("scalp")) section.scalp = scalpRegionFromJson(j.at("scalp"));
+  if (j.contains("style")) {
+    const json& style = j.at("style");
+    section.style = hairStyleFromJson(style);
+    section.fitToHead = style.is_string() || style.contains("preset");
+  }
+  if (j.contains("scalp")) {
+    section.scalp = scalpRegionFromJson(j.at("scalp"));
+    section.scalpGiven = true;
+  }
   read(j, "strands", section.strands);
   return section;
 }

@@ -25,6 +25,13 @@ struct HairSection {
   HairStyle style;
   ScalpRegion scalp;
   size_t strands = 0;
+  // The style is a built-in's numbers (a name, a "preset" with overrides, or
+  // no style at all), made for the default mannequin's head: fitted to the
+  // character's head when groomed (see head_fit.h). A full style object, as
+  // the editor saves it, is already in the character's metres.
+  bool fitToHead = true;
+  // The document names the scalp; else automaticScalpRegion() chooses it.
+  bool scalpGiven = false;
 };
 
 // Throw mq::Error saying which field is wrong.

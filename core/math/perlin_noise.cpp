@@ -12,12 +12,15 @@ namespace {
 inline float fade(float t) { return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f); }
 inline float lerp(float t, float a, float b) { return a + t * (b - a); }
 
-// Dot product of the offset with one of 12 edge-midpoint gradients.
+// Dot product of the offset with one of 12 edge-midpoint gradients (16
+// entries, four repeated, as in Perlin's reference): a table lookup, since
+// branches on a random hash mispredict.
+constexpr float kGradients[16][3] = {{1, 1, 0},  {-1, 1, 0}, {1, -1, 0}, {-1, -1, 0}, {1, 0, 1},  {-1, 0, 1},
+                                     {1, 0, -1}, {-1, 0, -1}, {0, 1, 1},  {0, -1, 1}, {0, 1, -1}, {0, -1, -1},
+                                     {1, 1, 0},  {0, -1, 1}, {-1, 1, 0}, {0, -1, -1}};
 inline float grad(int hash, float x, float y, float z) {
-  const int h = hash & 15;
-  const float u = h < 8 ? x : y;
-  const float v = h < 4 ? y : (h == 12 || h == 14 ? x : z);
-  return ((h & 1) ? -u : u) + ((h & 2) ? -v : v);
+  const float* g = kGradients[hash & 15];
+  return g[0] * x + g[1] * y + g[2] * z;
 }
 
 }  // namespace

@@ -6,31 +6,15 @@
 
 #include "core/character/character.h"
 #include "core/hair/body_proxy.h"
+#include "core/hair/head_fit.h"
 #include "core/hair/scalp.h"
 #include "core/util/error.h"
 
 namespace mq {
 
-namespace {
-
-int findHeadBone(const Skeleton& skeleton) {
-  int fallback = -1;
-  for (int b = 0; b < skeleton.boneCount(); ++b) {
-    std::string name = skeleton.bone(b).name;
-    for (char& c : name) c = char(std::tolower(static_cast<unsigned char>(c)));
-    if (name == "head") return b;
-    if (fallback < 0 && name.find("head") != std::string::npos && name.find("end") == std::string::npos &&
-        name.find("top") == std::string::npos)
-      fallback = b;
-  }
-  return fallback;
-}
-
-}  // namespace
-
 HairRig HairRig::fromProxy(const Character& character, const BodyProxy& restProxy) {
   HairRig rig;
-  rig.headBone = findHeadBone(character.skeleton);
+  rig.headBone = findHeadBone(character);
   if (rig.headBone >= 0)
     rig.restWorldFromHead = character.skeleton.worldTransforms(character.skeleton.restPose())[rig.headBone];
   rig.body = HairColliders::attachToSkeleton(restProxy, character.skeleton, rig.headBone);
@@ -38,7 +22,7 @@ HairRig HairRig::fromProxy(const Character& character, const BodyProxy& restProx
 }
 
 HairRig HairRig::fromCharacter(const Character& character) {
-  const int head = findHeadBone(character.skeleton);
+  const int head = findHeadBone(character);
   if (head < 0) return HairRig{};
   std::vector<glm::vec3> scalpPoints;
   try {

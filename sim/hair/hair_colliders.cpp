@@ -28,7 +28,11 @@ bool PosedHairColliders::pushOutOnce(glm::vec3& p, glm::vec3& normal) const {
     moved = true;
   }
   for (const Ellipsoid& e : ellipsoids) {
-    const glm::vec3 q = glm::vec3(e.unitFromWorld * glm::vec4(p, 1.0f));
+    const glm::vec3 fromCenter = p - e.boundCenter;
+    if (glm::dot(fromCenter, fromCenter) >= e.boundRadiusSquared) continue;
+    const glm::mat4& m = e.unitFromWorld;
+    // unitFromWorld * (p, 1), in glm's order of operations.
+    const glm::vec3 q = (glm::vec3(m[0]) * p.x + glm::vec3(m[1]) * p.y) + (glm::vec3(m[2]) * p.z + glm::vec3(m[3]));
     const float q2 = glm::dot(q, q);
     if (q2 >= 1.0f) continue;
     // Radial projection in the unit sphere's space: close to the nearest
@@ -89,7 +93,10 @@ PosedHairColliders HairColliders::posed(const std::vector<glm::mat4>& worldFromB
     const glm::mat4 boneFromUnit = glm::translate(glm::mat4(1.0f), e.center) * glm::mat4_cast(e.rotation) *
                                    glm::scale(glm::mat4(1.0f), e.radii + glm::vec3(margin));
     const glm::mat4 worldFromUnit = transformOf(e.bone) * boneFromUnit;
-    out.ellipsoids.push_back({worldFromUnit, glm::inverse(worldFromUnit)});
+    // The Frobenius norm bounds how far a unit vector can be stretched.
+    const glm::mat3 axes(worldFromUnit);
+    const float reach2 = (glm::dot(axes[0], axes[0]) + glm::dot(axes[1], axes[1]) + glm::dot(axes[2], axes[2])) * 1.002f;
+    out.ellipsoids.push_back({worldFromUnit, glm::inverse(worldFromUnit), glm::vec3(worldFromUnit[3]), reach2 + 1e-12f});
   }
   return out;
 }

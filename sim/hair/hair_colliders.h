@@ -43,6 +43,9 @@ class PosedHairColliders {
   };
   struct Ellipsoid {
     glm::mat4 worldFromUnit, unitFromWorld;
+    // A ball holding the ellipsoid: points outside it skip the transform.
+    glm::vec3 boundCenter{0.0f};
+    float boundRadiusSquared = 1e30f;
   };
 
   std::vector<Capsule> capsules;

@@ -193,14 +193,17 @@ void HairSimulator::stepStrand(size_t s, float h, const RootTarget& root, const 
     if (body) {
       // Push out and restore the length until both hold (a few passes
       // slide the point along the surface); end pushed out (never inside).
-      for (int pass = 0; pass < 6; ++pass) {
-        if (!body->pushOut(q, normal[i + 1])) break;
+      bool outside = false;
+      for (int pass = 0; pass < 6 && !outside; ++pass) {
+        outside = !body->pushOut(q, normal[i + 1]);
+        if (outside) break;
         contact[i + 1] = 1;
         const glm::vec3 d = q - p[i];
         const float dl = glm::length(d);
         if (dl > 1e-9f) q = p[i] + d * (length / dl);
       }
-      if (body->pushOut(q, normal[i + 1])) contact[i + 1] = 1;
+      // (q found outside and not moved since: nothing left to push.)
+      if (!outside && body->pushOut(q, normal[i + 1])) contact[i + 1] = 1;
     }
     correction[i + 1] = q - p[i + 1];
     p[i + 1] = q;

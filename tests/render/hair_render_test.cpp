@@ -195,5 +195,90 @@ TEST(HairSelfShadow, DarkensWithDepthIntoTheHair) {
   EXPECT_LT(fromBelow[(0 * 20 + 10) * 16 + 8], 0.5f);
 }
 
+// Opacity shadow maps: the same layered slab, the same darkening with depth.
+TEST(HairSelfShadow, OpacityMapsDarkenWithDepthLikeTheExactCount) {
+  Strands strands;
+  strands.pointsPerStrand = 16;
+  for (int layer = 0; layer < 10; ++layer)
+    for (int row = 0; row < 20; ++row)
+      for (int i = 0; i < 16; ++i)
+        strands.points.insert(strands.points.end(), {0.01f * float(i), -0.005f * float(layer), 0.002f * float(row)});
+  render::HairShading shading;
+  shading.minShadow = 0.0f;
+  shading.shadowPerStrand = 0.04f;
+  shading.shadowMethod = render::HairShadowMethod::OpacityMaps;
+  const std::vector<float> shadow = render::HairActor::computeSelfShadow(strands, {0.0f, 1.0f, 0.0f}, shading);
+  auto layerMean = [&](int layer) {
+    double sum = 0.0;
+    for (int row = 0; row < 20; ++row)
+      for (int i = 2; i < 14; ++i) sum += shadow[(layer * 20 + row) * 16 + i];
+    return sum / (20 * 12);
+  };
+  EXPECT_GT(layerMean(0), 0.95);
+  for (int layer = 1; layer < 10; ++layer) EXPECT_LT(layerMean(layer), layerMean(layer - 1) - 0.02) << layer;
+  EXPECT_LT(layerMean(9), 0.5);
+  const std::vector<float> fromBelow = render::HairActor::computeSelfShadow(strands, {0.0f, -1.0f, 0.0f}, shading);
+  EXPECT_GT(fromBelow[(9 * 20 + 10) * 16 + 8], 0.95f);
+  EXPECT_LT(fromBelow[(0 * 20 + 10) * 16 + 8], 0.5f);
+}
+
+// On a real groom the maps approach the exact count, closer with more maps.
+TEST(HairSelfShadow, OpacityMapsConvergeToTheExactCount) {
+  const Strands strands = combedStrands(6000, 24, 0.3f);
+  const glm::vec3 light = glm::normalize(glm::vec3(0.3f, 1.0f, 0.4f));
+  render::HairShading exact;
+  const std::vector<float> reference = render::HairActor::computeSelfShadow(strands, light, exact);
+  auto meanError = [&](int maps) {
+    render::HairShading osm = exact;
+    osm.shadowMethod = render::HairShadowMethod::OpacityMaps;
+    osm.opacityMapCount = maps;
+    const std::vector<float> s = render::HairActor::computeSelfShadow(strands, light, osm);
+    double sum = 0.0;
+    for (size_t k = 0; k < s.size(); ++k) sum += std::abs(s[k] - reference[k]);
+    return sum / double(s.size());
+  };
+  double spread = 0.0;  // how much the exact term varies: the errors must be small against it
+  double mean = 0.0;
+  for (float r : reference) mean += r / double(reference.size());
+  for (float r : reference) spread += std::abs(r - mean) / double(reference.size());
+  ASSERT_GT(spread, 0.05);
+  const double coarse = meanError(4), fine = meanError(64);
+  EXPECT_LT(fine, 0.25 * spread);
+  EXPECT_LT(fine, coarse);
+}
+
+TEST_F(HairRenderTest, OpacityShadowMapsShadeInnerStrands) {
+  const Strands strands = combedStrands(8000, 24, 0.3f);
+  render::OffscreenRenderer renderer(view, kWidth, kHeight);
+  const render::RgbImage bare = renderer.capture();
+  render::HairActor hair;
+  hair.setStrands(strands);
+  render::HairShading shading = hair.shading();
+  shading.shadowMethod = render::HairShadowMethod::OpacityMaps;
+  hair.setShading(shading);
+  view.addProp(hair.actor());
+  const render::RgbImage image = renderer.capture();
+  shading.selfShadowing = false;
+  hair.setShading(shading);
+  const render::RgbImage flat = renderer.capture();
+  shading.selfShadowing = true;
+  shading.shadowMethod = render::HairShadowMethod::PointCount;
+  hair.setShading(shading);
+  const render::RgbImage counted = renderer.capture();
+
+  EXPECT_GT(test::foregroundOf(image, bare).fraction, 0.10);
+  double sumMaps = 0.0, sumFlat = 0.0, sumCounted = 0.0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      sumMaps += luminance(image.at(x, y));
+      sumFlat += luminance(flat.at(x, y));
+      sumCounted += luminance(counted.at(x, y));
+    }
+  EXPECT_GT(sumFlat, sumMaps * 1.03);  // the maps shadow the hair
+  EXPECT_NEAR(sumMaps / sumCounted, 1.0, 0.05);  // about as much as the exact count
+  const std::string why = test::checkAgainstBaseline(image, "hair_draped_sphere_osm");
+  EXPECT_TRUE(why.empty()) << why;
+}
+
 }  // namespace
 }  // namespace mq

@@ -427,12 +427,16 @@ class EditorSmokeTest : public QObject {
 
 };
 
+int runHairToolTest(int argc, char** argv);  // hair_tool_test.cpp
+
 int main(int argc, char** argv) {
   // The viewport bridge needs its GL format before QApplication exists.
   QSurfaceFormat::setDefaultFormat(VtkViewportWidget::defaultFormat());
   QApplication app(argc, argv);
   QApplication::setOrganizationName("MannequinTests");  // keep the user's settings (recent files) apart
   QApplication::setApplicationName("gui_smoke");
+  // `mannequin_gui_tests hair [qtest options]`: the hair tool's test.
+  if (argc > 1 && std::string(argv[1]) == "hair") return runHairToolTest(argc - 1, argv + 1);
   // A widget test must never hang: give up after two minutes, even when
   // the event loop is stuck.
   std::thread([] {

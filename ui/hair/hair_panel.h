@@ -32,6 +32,10 @@ class HairPanel : public QWidget {
   // For tests and scripts.
   QListWidget* primitiveList() const { return list_; }
   QComboBox* styleCombo() const { return styleCombo_; }
+  QPushButton* addSourceButton() const { return addSource_; }
+  QPushButton* addVortexButton() const { return addVortex_; }
+  QDoubleSpinBox* strengthBox() const { return strength_; }
+  QDoubleSpinBox* positionBox(int axis) const { return position_[axis]; }
 
  private:
   void refresh();

@@ -13,6 +13,7 @@
 #include "core/hair/character_groom.h"
 #include "core/hair/hair_groom.h"
 #include "core/hair/hairstyle_json.h"
+#include "core/hair/head_fit.h"
 #include "core/util/error.h"
 #include "render/hair_actor.h"
 #include "render/scene_view.h"
@@ -78,6 +79,11 @@ void HairTool::onCharacterReplaced() {
   selected_ = {};
   invalidateDynamics();
   lastError_.clear();
+  try {
+    scalp_ = automaticScalpRegion(window_->document()->character());
+  } catch (const Error&) {
+    scalp_ = ScalpRegion{};  // no head: the groom reports why when hair is added
+  }
   loadSection();
   emit styleChanged();
   emit selectionChanged();
@@ -90,9 +96,10 @@ void HairTool::loadSection() {
     return;
   }
   try {
-    const HairSection parsed = hairSectionFromJson(section);
-    scalp_ = parsed.scalp;
+    HairSection parsed = hairSectionFromJson(section);
+    if (parsed.scalpGiven) scalp_ = parsed.scalp;
     requestedStrands_ = parsed.strands;
+    if (parsed.fitToHead && makeGroom()) parsed.style = fitHairStyleToHead(parsed.style, groom_->proxy());
     loading_ = true;
     applyStyle(parsed.style, false);
     loading_ = false;
@@ -126,6 +133,8 @@ void HairTool::editStyle(const HairStyle& after, const QString& text, int mergeK
 void HairTool::useBuiltinStyle(const QString& name) {
   try {
     HairStyle style = builtinHairStyle(name.toStdString());
+    // Built-ins are made for the default mannequin's head.
+    if (groom_ || makeGroom()) style = fitHairStyleToHead(style, groom_->proxy());
     window_->document()->undoStack()->push(
         new HairStyleCommand(this, style_, style, tr("Hairstyle %1").arg(name)));
   } catch (const Error& e) {

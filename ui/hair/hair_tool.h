@@ -50,6 +50,8 @@ class HairTool : public QObject {
   // The style being edited (valid when hasHair()).
   const HairStyle& style() const { return *style_; }
   size_t strandCount() const;
+  // The current groom (null without hair), for tests and exporters.
+  const HairGroom* groom() const { return groom_.get(); }
   QString lastError() const { return lastError_; }
 
   // Edits through the undo stack. mergeKey: steps with the same non-zero key

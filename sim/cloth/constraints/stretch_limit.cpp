@@ -1,12 +1,17 @@
 #include "sim/cloth/constraints/stretch_limit.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "sim/cloth/parallel.h"
 
 namespace mq::cloth {
 
-float maxStretchOf(const std::vector<glm::vec3>& x, const std::vector<Spring>& springs, size_t count) {
+namespace {
+
+// Largest (|x_a - x_b| / rest)^2 over the first `count` springs, in 64 fixed
+// blocks (in parallel when large): no square root per spring.
+float maxSquaredStretchOf(const std::vector<glm::vec3>& x, const std::vector<Spring>& springs, size_t count) {
   constexpr size_t kBlocks = 64;
   float partial[kBlocks];
   std::fill(partial, partial + kBlocks, 0.0f);
@@ -16,7 +21,9 @@ float maxStretchOf(const std::vector<glm::vec3>& x, const std::vector<Spring>& s
       float m = 0.0f;
       for (size_t i = b * block; i < std::min(count, (b + 1) * block); ++i) {
         const Spring& s = springs[i];
-        if (s.rest > 0.0f) m = std::max(m, glm::length(x[s.a] - x[s.b]) / s.rest);
+        const glm::vec3 d = x[s.a] - x[s.b];
+        const float rest2 = s.rest * s.rest;
+        if (rest2 > 0.0f) m = std::max(m, glm::dot(d, d) / rest2);
       }
       partial[b] = m;
     }
@@ -28,32 +35,42 @@ float maxStretchOf(const std::vector<glm::vec3>& x, const std::vector<Spring>& s
   return *std::max_element(partial, partial + kBlocks);
 }
 
+}  // namespace
+
+float maxStretchOf(const std::vector<glm::vec3>& x, const std::vector<Spring>& springs, size_t count) {
+  return std::sqrt(maxSquaredStretchOf(x, springs, count));
+}
+
 StretchLimitResult limitStretchByPositions(ClothState& s, const std::vector<Spring>& springs, size_t count,
                                            float maxStretch, int maxPasses, float h) {
   StretchLimitResult result;
-  result.maxStretchBefore = maxStretchOf(s.x, springs, count);
-  result.maxStretchAfter = result.maxStretchBefore;
-  if (result.maxStretchBefore <= maxStretch) return result;
+  const float maxSquared = maxStretch * maxStretch;
+  float worstSquared = maxSquaredStretchOf(s.x, springs, count);
+  result.maxStretchBefore = result.maxStretchAfter = std::sqrt(worstSquared);
+  if (worstSquared <= maxSquared) return result;
   const std::vector<glm::vec3> before = s.x;
   // Aim a hair below the limit so rounding leaves every spring within it.
   const float target = maxStretch * (1.0f - 1e-3f);
   // Symmetric Gauss-Seidel: forward and backward passes alternate, so a
-  // correction travels across the cloth in both directions.
-  for (; result.passes < maxPasses && result.maxStretchAfter > maxStretch; ++result.passes) {
+  // correction travels across the cloth in both directions. Most springs are
+  // within the limit: compared squared, they cost no square root.
+  for (; result.passes < maxPasses && worstSquared > maxSquared; ++result.passes) {
     const bool forward = result.passes % 2 == 0;
     for (size_t k = 0; k < count; ++k) {
       const Spring& sp = springs[forward ? k : count - 1 - k];
       const glm::vec3 d = s.x[sp.a] - s.x[sp.b];
-      const float l = glm::length(d), limit = target * sp.rest;
-      if (l <= limit) continue;
+      const float l2 = glm::dot(d, d), limit = target * sp.rest;
+      if (l2 <= limit * limit) continue;
       const float wa = s.invMass[sp.a], wb = s.invMass[sp.b];
       if (wa + wb == 0.0f) continue;
+      const float l = std::sqrt(l2);
       const glm::vec3 correction = ((l - limit) / (l * (wa + wb))) * d;
       s.x[sp.a] -= wa * correction;
       s.x[sp.b] += wb * correction;
     }
-    result.maxStretchAfter = maxStretchOf(s.x, springs, count);
+    worstSquared = maxSquaredStretchOf(s.x, springs, count);
   }
+  result.maxStretchAfter = std::sqrt(worstSquared);
   forRange(s.size(), [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) s.v[i] += (s.x[i] - before[i]) / h;
   });

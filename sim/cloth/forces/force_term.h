@@ -29,6 +29,11 @@ class ForceTerm {
                                std::vector<glm::mat3>& diagonal) = 0;
   virtual void productPass(const std::vector<glm::vec3>& p) const = 0;
   virtual glm::vec3 productAt(size_t vertex) const = 0;
+  // y[v] += productAt(v) for v in [begin, end) (after productPass); terms
+  // with a faster bulk form override it.
+  virtual void addProductRange(size_t begin, size_t end, glm::vec3* y) const {
+    for (size_t v = begin; v < end; ++v) y[v] += productAt(v);
+  }
   // Both passes: y += product (for tests and simple callers).
   void addProduct(const std::vector<glm::vec3>& p, std::vector<glm::vec3>& y) const {
     productPass(p);

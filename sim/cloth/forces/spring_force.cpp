@@ -1,6 +1,11 @@
 #include "sim/cloth/forces/spring_force.h"
 
+#include <algorithm>
 #include <cmath>
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#endif
 
 #include "sim/cloth/parallel.h"
 
@@ -44,6 +49,7 @@ SpringForce::SpringForce(std::vector<Spring> springs, size_t vertexCount) : spri
   }
   perSpring_.resize(springs_.size());
   blocks_.resize(springs_.size());
+  buildRows(vertexCount);
 }
 
 void SpringForce::gather(const std::vector<glm::vec3>& perSpring, std::vector<glm::vec3>& y) const {
@@ -78,23 +84,148 @@ void SpringForce::prepareImplicit(const ClothState& st, float h, std::vector<glm
     for (size_t i = b; i < e; ++i) {
       const Spring& s = springs_[i];
       const SpringFrame fr = frameOf(st.x[s.a], st.x[s.b]);
-      const glm::mat3 K = stiffness(s, fr, true);  // df_a/dx_a, negative semi-definite
-      blocks_[i] = -(h * h) * K + (h * s.kd) * glm::outerProduct(fr.d, fr.d);
-      perSpring_[i] = (h * h) * (K * (st.v[s.a] - st.v[s.b]));
+      // -h^2 K + h kd d d^T with K = -k [d d^T + lateral (I - d d^T)].
+      const float lateral = fr.length > 1e-12f ? std::max(0.0f, 1.0f - s.rest / fr.length) : 0.0f;
+      const float alpha = h * h * s.k * (1.0f - lateral) + h * s.kd, beta = h * h * s.k * lateral;
+      blocks_[i] = {fr.d, alpha, beta};
+      // h^2 K (v_a - v_b) = -h^2 k [(1 - lateral) (d . dv) d + lateral dv].
+      const glm::vec3 dv = st.v[s.a] - st.v[s.b];
+      perSpring_[i] = -(h * h * s.k) * ((1.0f - lateral) * glm::dot(fr.d, dv) * fr.d + lateral * dv);
     }
   });
   gather(perSpring_, hKv);
   forRange(diagonal.size(), [&](size_t b, size_t e) {
-    for (size_t v = b; v < e; ++v)
-      for (uint32_t k = incidenceStart_[v]; k < incidenceStart_[v + 1]; ++k)
-        diagonal[v] += blocks_[std::abs(incidence_[k]) - 1];
+    for (size_t v = b; v < e; ++v) {
+      glm::mat3 sum(0.0f);
+      for (uint32_t k = incidenceStart_[v]; k < incidenceStart_[v + 1]; ++k) {
+        const int32_t signedIndex = incidence_[k];
+        const uint32_t spring = uint32_t(std::abs(signedIndex) - 1);
+        const SpringBlock& block = blocks_[spring];
+        sum += block.alpha * glm::outerProduct(block.d, block.d) + glm::mat3(block.beta);
+      }
+      diagonal[v] += sum;
+    }
+  });
+  forRange(rowSpring_.size(), [&](size_t b, size_t e) {
+    for (size_t slot = b; slot < e; ++slot) {
+      const int32_t spring = rowSpring_[slot];
+      const SpringBlock block = spring >= 0 ? blocks_[spring] : SpringBlock{glm::vec3(0.0f), 0.0f, 0.0f};
+      rowDx_[slot] = block.d.x;
+      rowDy_[slot] = block.d.y;
+      rowDz_[slot] = block.d.z;
+      rowAlpha_[slot] = block.alpha;
+      rowBeta_[slot] = block.beta;
+    }
   });
 }
 
-void SpringForce::productPass(const std::vector<glm::vec3>& p) const {
-  forRange(springs_.size(), [&](size_t b, size_t e) {
-    for (size_t i = b; i < e; ++i) perSpring_[i] = blocks_[i] * (p[springs_[i].a] - p[springs_[i].b]);
-  });
+void SpringForce::buildRows(size_t vertexCount) {
+  const size_t blocks = (vertexCount + kLanes - 1) / kLanes;
+  rowStart_.assign(blocks + 1, 0);
+  rowWidth_.assign(blocks, 0);
+  for (size_t b = 0; b < blocks; ++b) {
+    uint32_t width = 0;
+    for (size_t v = b * kLanes; v < std::min(vertexCount, (b + 1) * kLanes); ++v)
+      width = std::max(width, incidenceStart_[v + 1] - incidenceStart_[v]);
+    rowWidth_[b] = width;
+    rowStart_[b + 1] = rowStart_[b] + uint32_t(kLanes) * width;
+  }
+  const size_t slots = rowStart_[blocks];
+  rowSpring_.assign(slots, -1);
+  rowOther_.assign(slots, 0);
+  for (size_t v = 0; v < blocks * kLanes; ++v) {
+    const size_t b = v / kLanes, lane = v % kLanes;
+    const uint32_t degree = v < vertexCount ? incidenceStart_[v + 1] - incidenceStart_[v] : 0;
+    for (uint32_t k = 0; k < rowWidth_[b]; ++k) {
+      const size_t slot = rowStart_[b] + k * kLanes + lane;
+      rowOther_[slot] = int32_t(std::min(v, vertexCount - 1));
+      if (k >= degree) continue;
+      const int32_t signedIndex = incidence_[incidenceStart_[v] + k];
+      const uint32_t spring = uint32_t(std::abs(signedIndex) - 1);
+      rowSpring_[slot] = int32_t(spring);
+      rowOther_[slot] = int32_t(signedIndex > 0 ? springs_[spring].b : springs_[spring].a);
+    }
+  }
+  for (auto* row : {&rowDx_, &rowDy_, &rowDz_, &rowAlpha_, &rowBeta_}) row->assign(slots, 0.0f);
+}
+
+glm::vec3 SpringForce::productAt(size_t v) const {
+  const glm::vec3* p = product_->data();
+  const glm::vec3 pv = p[v];
+  const size_t b = v / kLanes, lane = v % kLanes;
+  glm::vec3 sum(0.0f);
+  for (uint32_t k = 0; k < rowWidth_[b]; ++k) {
+    const size_t slot = rowStart_[b] + k * kLanes + lane;
+    const glm::vec3 d(rowDx_[slot], rowDy_[slot], rowDz_[slot]);
+    const glm::vec3 dp = pv - p[rowOther_[slot]];
+    sum += rowAlpha_[slot] * glm::dot(d, dp) * d + rowBeta_[slot] * dp;
+  }
+  return sum;
+}
+
+#if defined(__x86_64__) && defined(__GNUC__)
+namespace {
+
+// Eight vertices at once (one sliced-ELL block), AVX2 + FMA chosen at run
+// time: lane l accumulates vertex v0 + l's row, so no horizontal sums.
+__attribute__((target("avx2,fma"))) void blockProductAvx2(const float* p, size_t v0, uint32_t start, uint32_t width,
+                                                          const int32_t* other, const float* dx, const float* dy,
+                                                          const float* dz, const float* alpha, const float* beta,
+                                                          float* y) {
+  const __m256i lane3 = _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21);
+  const float* self = p + 3 * v0;
+  const __m256 px = _mm256_i32gather_ps(self, lane3, 4), py = _mm256_i32gather_ps(self + 1, lane3, 4),
+               pz = _mm256_i32gather_ps(self + 2, lane3, 4);
+  __m256 ax = _mm256_setzero_ps(), ay = _mm256_setzero_ps(), az = _mm256_setzero_ps();
+  for (uint32_t k = 0; k < width; ++k) {
+    const uint32_t s = start + 8 * k;
+    const __m256i o = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(other + s));
+    const __m256i o3 = _mm256_add_epi32(o, _mm256_add_epi32(o, o));
+    const __m256 qx = _mm256_sub_ps(px, _mm256_i32gather_ps(p, o3, 4));
+    const __m256 qy = _mm256_sub_ps(py, _mm256_i32gather_ps(p + 1, o3, 4));
+    const __m256 qz = _mm256_sub_ps(pz, _mm256_i32gather_ps(p + 2, o3, 4));
+    const __m256 ex = _mm256_loadu_ps(dx + s), ey = _mm256_loadu_ps(dy + s), ez = _mm256_loadu_ps(dz + s);
+    const __m256 t = _mm256_mul_ps(_mm256_loadu_ps(alpha + s),
+                                   _mm256_fmadd_ps(ex, qx, _mm256_fmadd_ps(ey, qy, _mm256_mul_ps(ez, qz))));
+    const __m256 b = _mm256_loadu_ps(beta + s);
+    ax = _mm256_fmadd_ps(t, ex, _mm256_fmadd_ps(b, qx, ax));
+    ay = _mm256_fmadd_ps(t, ey, _mm256_fmadd_ps(b, qy, ay));
+    az = _mm256_fmadd_ps(t, ez, _mm256_fmadd_ps(b, qz, az));
+  }
+  alignas(32) float lanes[3][8];
+  _mm256_store_ps(lanes[0], ax);
+  _mm256_store_ps(lanes[1], ay);
+  _mm256_store_ps(lanes[2], az);
+  for (int l = 0; l < 8; ++l) {
+    y[3 * l] += lanes[0][l];
+    y[3 * l + 1] += lanes[1][l];
+    y[3 * l + 2] += lanes[2][l];
+  }
+}
+
+bool hasAvx2() {
+  static const bool yes = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  return yes;
+}
+
+}  // namespace
+#endif
+
+void SpringForce::addProductRange(size_t begin, size_t end, glm::vec3* y) const {
+  size_t v = begin;
+#if defined(__x86_64__) && defined(__GNUC__)
+  static_assert(kLanes == 8 && sizeof(glm::vec3) == 3 * sizeof(float));
+  if (hasAvx2()) {
+    for (; v < end && v % kLanes != 0; ++v) y[v] += productAt(v);
+    const float* p = &product_->data()->x;
+    for (; v + kLanes <= end; v += kLanes) {
+      const size_t b = v / kLanes;
+      blockProductAvx2(p, v, rowStart_[b], rowWidth_[b], rowOther_.data(), rowDx_.data(), rowDy_.data(), rowDz_.data(),
+                       rowAlpha_.data(), rowBeta_.data(), &y[v].x);
+    }
+  }
+#endif
+  for (; v < end; ++v) y[v] += productAt(v);
 }
 
 glm::mat3 SpringForce::stiffnessBlock(size_t spring, const std::vector<glm::vec3>& x, bool filtered) const {

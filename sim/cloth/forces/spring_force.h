@@ -34,13 +34,20 @@ class SpringForce : public ForceTerm {
   double potentialEnergy(const ClothState& s) const override;
   void prepareImplicit(const ClothState& s, float h, std::vector<glm::vec3>& hKv,
                        std::vector<glm::mat3>& diagonal) override;
-  void productPass(const std::vector<glm::vec3>& p) const override;
-  glm::vec3 productAt(size_t vertex) const override { return gatherAt(vertex, perSpring_); }
+  // productPass() only keeps p: the product is then a sum over each
+  // vertex's row of the assembled matrix, kept as compact blocks in a
+  // sliced-ELL layout (8 vertices side by side) that vectorises.
+  void productPass(const std::vector<glm::vec3>& p) const override { product_ = &p; }
+  glm::vec3 productAt(size_t vertex) const override;
+  void addProductRange(size_t begin, size_t end, glm::vec3* y) const override;
 
   // df_a/dx_a of one spring (exact, or filtered as the solver uses it).
   glm::mat3 stiffnessBlock(size_t spring, const std::vector<glm::vec3>& x, bool filtered) const;
 
  private:
+  static constexpr size_t kLanes = 8;
+  void buildRows(size_t vertexCount);
+
   // For every vertex, y[v] += sum over its springs of sign * perSpring[s].
   void gather(const std::vector<glm::vec3>& perSpring, std::vector<glm::vec3>& y) const;
   glm::vec3 gatherAt(size_t v, const std::vector<glm::vec3>& perSpring) const {
@@ -55,8 +62,20 @@ class SpringForce : public ForceTerm {
   std::vector<Spring> springs_;
   std::vector<uint32_t> incidenceStart_;  // CSR over vertices
   std::vector<int32_t> incidence_;        // spring index + 1, negative when the vertex is b
-  std::vector<glm::mat3> blocks_;         // per spring: h^2 k S + h kd d d^T (implicit)
+  // Sliced ELL: vertex v = 8 b + lane has slots rowStart_[b] + 8 k + lane,
+  // k < rowWidth_[b] (the block's largest degree; spare slots have zero
+  // blocks and point at v itself). Per slot: the implicit block
+  // h^2 k S + h kd d d^T = alpha d d^T + beta I acting on p_v - p_other.
+  std::vector<uint32_t> rowStart_, rowWidth_;
+  std::vector<int32_t> rowSpring_, rowOther_;  // rowSpring_ -1: spare
+  std::vector<float> rowDx_, rowDy_, rowDz_, rowAlpha_, rowBeta_;
+  struct SpringBlock {
+    glm::vec3 d;
+    float alpha, beta;
+  };
+  std::vector<SpringBlock> blocks_;  // per spring, filled by prepareImplicit
   mutable std::vector<glm::vec3> perSpring_;
+  mutable const std::vector<glm::vec3>* product_ = nullptr;
 };
 
 }  // namespace mq::cloth

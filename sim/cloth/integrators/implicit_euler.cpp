@@ -30,11 +30,11 @@ double ImplicitEuler::multiplyFiltered(const ClothState& s, ClothForces& forces,
   const auto& terms = forces.terms();
   for (const ForceTerm* t : terms) t->productPass(p);
   return blockReduce(s.size(), [&](size_t b, size_t e) {
+    for (size_t i = b; i < e; ++i) y[i] = s.mass[i] * p[i];
+    for (const ForceTerm* t : terms) t->addProductRange(b, e, y.data());
     double dot = 0.0;
     for (size_t i = b; i < e; ++i) {
-      glm::vec3 sum = s.mass[i] * p[i];
-      for (const ForceTerm* t : terms) sum += t->productAt(i);
-      y[i] = filtered(s, i, sum);
+      y[i] = filtered(s, i, y[i]);
       dot += double(glm::dot(p[i], y[i]));
     }
     return dot;

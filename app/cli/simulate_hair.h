@@ -1,0 +1,27 @@
+#pragma once
+// The hair part of `mannequin-cli simulate`: when the scene document has a
+// "hair" section, its guides are simulated as the character plays its clip
+// (roots on the skinned scalp, collisions with the body proxies, children
+// following), alongside the cloth or alone.
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "app/cli/command.h"
+#include "core/scene/open_scene.h"
+
+namespace mq::cli {
+
+// Steps the hair for `frames` frames of 1/fps from the document's time (after
+// settling at that pose), adds the hair_* keys to `stats`, writes
+// hair_NNNN.ply polylines into exportDir (when not empty) and prints a line.
+void simulateSceneHair(const LoadedScene& scene, int frames, float fps, const std::string& exportDir,
+                       nlohmann::json& stats);
+
+// `simulate` for a scene with hair and no cloth: the same options (--fps,
+// default 60), the same stats file with the scene keys and the hair keys.
+int simulateHairOnly(const LoadedScene& scene, const std::string& path, int frames, const Args& args);
+
+}  // namespace mq::cli

@@ -1,0 +1,189 @@
+// GUI test of the hair tool (needs X: run under xvfb-run; `mannequin_gui_tests
+// hair`). Drives the real main window and hair dock: a scene with a groom is
+// opened, a flow primitive is added with the panel's button, its strength and
+// position are changed in the panel's fields, and each edit must regrow the
+// guides; undo and redo must give back exactly the strands before and after;
+// the document saved and reopened must hold the same hairstyle and grow the
+// same strands.
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <thread>
+
+#include <QApplication>
+#include <QDoubleSpinBox>
+#include <QListWidget>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QUndoStack>
+
+#include "core/hair/hair_groom.h"
+#include "core/hair/hairstyle_json.h"
+#include "ui/document/editor_document.h"
+#include "ui/hair/hair_panel.h"
+#include "ui/hair/hair_tool.h"
+#include "ui/main_window.h"
+
+using namespace mq;
+using namespace mq::ui;
+
+namespace {
+
+// The guides' points: what a primitive edit regrows.
+std::vector<float> guidePoints(const HairTool& tool) {
+  const HairGroom* groom = tool.groom();
+  if (!groom) return {};
+  const Strands& s = groom->strands();
+  return std::vector<float>(s.points.begin(), s.points.begin() + 3 * groom->guideCount() * size_t(s.pointsPerStrand));
+}
+
+float maxDifference(const std::vector<float>& a, const std::vector<float>& b) {
+  if (a.size() != b.size()) return INFINITY;
+  float d = 0.0f;
+  for (size_t i = 0; i < a.size(); ++i) d = std::max(d, std::abs(a[i] - b[i]));
+  return d;
+}
+
+std::string styleText(const HairTool& tool) { return toJson(tool.style()).dump(); }
+
+}  // namespace
+
+class HairToolTest : public QObject {
+  Q_OBJECT
+
+ private:
+  MainWindow* window_ = nullptr;
+  HairTool* tool_ = nullptr;
+  EditorDocument* doc() { return window_->document(); }
+  HairPanel* panel() { return tool_->panel(); }
+
+  // State after each step, compared by undo/redo and the reopen.
+  std::vector<float> opened_, added_, strengthened_, moved_;
+  std::string openedStyle_, movedStyle_;
+  QTemporaryDir dir_;
+
+ private slots:
+  void initTestCase() {
+    window_ = new MainWindow;
+    window_->reportError = [](const QString& title, const QString& message) {
+      QFAIL(qPrintable("unexpected error dialog: " + title + ": " + message));
+    };
+    window_->confirmDiscardChanges = [] { return true; };
+    window_->resize(1280, 800);
+    window_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window_));
+    tool_ = window_->findChild<HairTool*>();
+    QVERIFY(tool_ != nullptr);
+    QVERIFY(dir_.isValid());
+  }
+
+  void cleanupTestCase() {
+    delete window_;
+    window_ = nullptr;
+  }
+
+  void openingAHairSceneGrooms() {
+    QString error;
+    QVERIFY2(window_->openFileNow(MANNEQUIN_SOURCE_DIR "/resources/scenes/hair_bob.json", &error), qPrintable(error));
+    QVERIFY2(tool_->hasHair(), qPrintable(tool_->lastError()));
+    QCOMPARE(QString::fromStdString(tool_->style().name), QString("bob"));
+    QVERIFY(tool_->strandCount() > 1000);
+    QVERIFY(tool_->groom()->countPointsInside() == 0);
+    opened_ = guidePoints(*tool_);
+    openedStyle_ = styleText(*tool_);
+    QVERIFY(!opened_.empty());
+    QCOMPARE(panel()->primitiveList()->count(), int(tool_->style().primitives.streams.size() +
+                                                     tool_->style().primitives.sources.size() +
+                                                     tool_->style().primitives.vortices.size()));
+  }
+
+  void addingASourceRegrowsTheGuides() {
+    const size_t sources = tool_->style().primitives.sources.size();
+    const int rows = panel()->primitiveList()->count();
+    const int commands = doc()->undoStack()->index();
+    QSignalSpy regrown(tool_, &HairTool::hairRegrown);
+    QTest::mouseClick(panel()->addSourceButton(), Qt::LeftButton);
+    QCOMPARE(tool_->style().primitives.sources.size(), sources + 1);
+    QCOMPARE(panel()->primitiveList()->count(), rows + 1);
+    QCOMPARE(doc()->undoStack()->index(), commands + 1);
+    QCOMPARE(tool_->selectedPrimitive().kind, PrimitiveRef::Source);
+    QCOMPARE(tool_->selectedPrimitive().index, int(sources));
+    QVERIFY(regrown.count() >= 1);
+    added_ = guidePoints(*tool_);
+    QVERIFY2(maxDifference(opened_, added_) > 1e-3f, "a new source in front of the head did not move the guides");
+    QCOMPARE(tool_->groom()->countPointsInside(), size_t(0));
+    QVERIFY(window_->isWindowModified());
+  }
+
+  void strengthInThePanelRegrowsTheGuides() {
+    const int index = tool_->selectedPrimitive().index;
+    QDoubleSpinBox* strength = panel()->strengthBox();
+    QVERIFY(strength->isEnabled());
+    QVERIFY(std::abs(strength->value() - tool_->style().primitives.sources[index].strength) < 1e-3);
+    const int commands = doc()->undoStack()->index();
+    strength->setValue(2.5);  // as if typed + Enter
+    QCOMPARE(tool_->style().primitives.sources[index].strength, 2.5f);
+    QCOMPARE(doc()->undoStack()->index(), commands + 1);
+    strengthened_ = guidePoints(*tool_);
+    QVERIFY2(maxDifference(added_, strengthened_) > 1e-3f, "a stronger source did not move the guides");
+  }
+
+  void positionInThePanelMovesThePrimitive() {
+    const int index = tool_->selectedPrimitive().index;
+    const int commands = doc()->undoStack()->index();
+    panel()->positionBox(0)->setValue(0.08);  // to the character's left of the face
+    QCOMPARE(tool_->style().primitives.sources[index].position.x, 0.08f);
+    QCOMPARE(doc()->undoStack()->index(), commands + 1);
+    moved_ = guidePoints(*tool_);
+    movedStyle_ = styleText(*tool_);
+    QVERIFY2(maxDifference(strengthened_, moved_) > 1e-3f, "moving the source did not move the guides");
+    QCOMPARE(tool_->groom()->countPointsInside(), size_t(0));
+  }
+
+  void undoAndRedoGiveTheStrandsBack() {
+    QUndoStack* undo = doc()->undoStack();
+    undo->undo();  // position
+    QCOMPARE(guidePoints(*tool_), strengthened_);
+    undo->undo();  // strength
+    QCOMPARE(guidePoints(*tool_), added_);
+    QVERIFY(std::abs(panel()->strengthBox()->value() - 0.3) < 1e-3);  // the panel follows
+    undo->undo();  // the source
+    QCOMPARE(guidePoints(*tool_), opened_);
+    QCOMPARE(styleText(*tool_), openedStyle_);
+    undo->redo();
+    undo->redo();
+    undo->redo();
+    QCOMPARE(guidePoints(*tool_), moved_);
+    QCOMPARE(styleText(*tool_), movedStyle_);
+  }
+
+  void savedDocumentReopensWithTheHairstyle() {
+    const QString path = dir_.filePath("styled.mqscene");
+    QString error;
+    QVERIFY2(window_->saveDocument(path, &error), qPrintable(error));
+    QVERIFY(!window_->isWindowModified());
+    // Something else in between, so the reopen really reloads.
+    QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));
+    QVERIFY(!tool_->hasHair());
+    QVERIFY2(window_->openFileNow(path, &error), qPrintable(error));
+    QVERIFY2(tool_->hasHair(), qPrintable(tool_->lastError()));
+    QCOMPARE(styleText(*tool_), movedStyle_);
+    QCOMPARE(guidePoints(*tool_), moved_);  // deterministic groom from the saved style
+    QCOMPARE(doc()->undoStack()->count(), 0);
+  }
+};
+
+int runHairToolTest(int argc, char** argv) {
+  // A widget test must never hang.
+  std::thread([] {
+    std::this_thread::sleep_for(std::chrono::seconds(180));
+    std::fprintf(stderr, "gui_hair_tool: timed out\n");
+    std::_Exit(2);
+  }).detach();
+  HairToolTest test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "hair_tool_test.moc"
