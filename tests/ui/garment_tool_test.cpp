@@ -92,6 +92,12 @@ class GarmentToolTest : public QObject {
     QApplication::processEvents();
   }
 
+  // MANNEQUIN_TEST_SHOTS=DIR keeps pictures of the window for a person to look at.
+  void keepShot(const char* name) {
+    const QString dir = qEnvironmentVariable("MANNEQUIN_TEST_SHOTS");
+    if (!dir.isEmpty()) window_->grab().save(dir + "/" + name + ".png");
+  }
+
  private slots:
   void initTestCase() {
     window_ = new MainWindow;
@@ -264,8 +270,10 @@ class GarmentToolTest : public QObject {
     for (size_t v = 0; v < p.size() / 3; ++v) upper += p[3 * v + 1] >= shoulders;
     QVERIFY2(selected.size() < upper, "the rubber band also selected vertices facing away");
 
+    keepShot("garment_selected");
     QTest::mouseClick(panel()->pinButton(), Qt::LeftButton);
     QCOMPARE(tool_->scene().garments[0].pins.vertices, selected);
+    keepShot("garment_pinned");
     QCOMPARE(doc()->sceneSections().garments[0]["pins"]["vertices"].size(), selected.size());
     undo()->undo();
     QVERIFY(tool_->scene().garments[0].pins.vertices.empty());
@@ -330,6 +338,7 @@ class GarmentToolTest : public QObject {
     QCOMPARE(stretch.size(), tool_->garmentMesh(0)->vertexCount());
     QVERIFY(*std::max_element(stretch.begin(), stretch.end()) >= 1.0f);
     renderNow();
+    keepShot("garment_stretch");
     QTest::mouseClick(panel()->stretchCheck(), Qt::LeftButton);
 
     // Editing the fabric invalidates the bake.
