@@ -227,6 +227,12 @@ class GarmentToolTest : public QObject {
     undo()->undo();
     QVERIFY(fabricIsPreset(tool_->scene().garments[0]));
 
+    panel()->clothFpsField()->setValue(30);
+    QCOMPARE(tool_->scene().cloth.fps, 30.0f);
+    QCOMPARE(doc()->sceneSections().cloth["fps"].get<float>(), 30.0f);
+    undo()->undo();
+    QCOMPARE(tool_->scene().cloth.fps, 24.0f);
+
     emit panel()->integratorCombo()->activated(2);  // Verlet
     QCOMPARE(tool_->scene().cloth.settings.integrator, cloth::IntegratorKind::Verlet);
     QCOMPARE(doc()->sceneSections().cloth["integrator"].get<std::string>(), std::string("verlet"));

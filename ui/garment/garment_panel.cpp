@@ -1,5 +1,7 @@
 #include "ui/garment/garment_panel.h"
 
+#include <cmath>
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -11,6 +13,7 @@
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSignalBlocker>
+#include <QSpinBox>
 #include <QVBoxLayout>
 
 #include "core/garment/fabric.h"
@@ -165,6 +168,18 @@ GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent)
   simForm->addRow(tr("Integrator"), integratorCombo_);
   selfCollisions_ = new QCheckBox(tr("Self collisions"));
   simForm->addRow(QString(), selfCollisions_);
+  clothFps_ = new QSpinBox;
+  clothFps_->setRange(1, 240);
+  clothFps_->setSuffix(tr(" fps"));
+  clothFps_->setKeyboardTracking(false);
+  clothFps_->setToolTip(tr("Cloth steps per second of the clip (Simulate and Bake); baked frames at this rate"));
+  simForm->addRow(tr("Cloth frames"), clothFps_);
+  connect(clothFps_, &QSpinBox::valueChanged, this, [this](int fps) {
+    if (refreshing_) return;
+    if (lastField_ != 51) lastMergeKey_ = GarmentEditCommand::nextMergeKey();
+    lastField_ = 51;
+    tool_->setClothFps(float(fps), lastMergeKey_);
+  });
   simLayout->addLayout(simForm);
   connect(integratorCombo_, &QComboBox::activated, this,
           [this](int index) { tool_->setIntegrator(kIntegrators[index]); });
@@ -271,6 +286,10 @@ void GarmentPanel::refresh() {
       if (kIntegrators[i] == scene.cloth.settings.integrator) integratorCombo_->setCurrentIndex(i);
   }
   selfCollisions_->setChecked(scene.cloth.settings.selfCollisions);
+  {
+    const QSignalBlocker block(clothFps_);
+    clothFps_->setValue(int(std::lround(scene.cloth.fps)));
+  }
   {
     const QSignalBlocker block(attach_);
     attach_->setCurrentIndex(current >= 0 && scene.garments[current].pins.attach == GarmentPins::Attach::Space ? 1 : 0);

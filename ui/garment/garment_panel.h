@@ -19,6 +19,7 @@ class QFormLayout;
 class QLabel;
 class QListWidget;
 class QPushButton;
+class QSpinBox;
 
 namespace mq {
 struct Fabric;
@@ -40,6 +41,7 @@ class GarmentPanel : public QWidget {
   QPushButton* addButton() const { return add_; }
   QComboBox* fabricCombo() const { return fabricCombo_; }
   QComboBox* integratorCombo() const { return integratorCombo_; }
+  QSpinBox* clothFpsField() const { return clothFps_; }
   // The measurement field named `name` of the current garment, or null.
   QDoubleSpinBox* measurementField(const QString& name) const;
   QDoubleSpinBox* particleDistanceField() const { return particleDistance_; }
@@ -71,6 +73,7 @@ class GarmentPanel : public QWidget {
   std::vector<QDoubleSpinBox*> fabricFields_;
   QComboBox* integratorCombo_;
   QCheckBox* selfCollisions_;
+  QSpinBox* clothFps_;
   QPushButton *simulate_, *bake_, *clearBake_;
   QPushButton *select_, *pin_, *unpin_, *clearPins_;
   QComboBox* attach_;

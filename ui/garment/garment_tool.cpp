@@ -317,6 +317,14 @@ void GarmentTool::setSelfCollisions(bool on) {
   edit(after, on ? tr("Self collisions on") : tr("Self collisions off"));
 }
 
+void GarmentTool::setClothFps(float fps, int mergeKey) {
+  if (fps == scene_.cloth.fps || !(fps >= 1.0f && fps <= 240.0f)) return;
+  GarmentScene after = scene_;
+  after.cloth.fps = fps;
+  after.writeCloth = true;
+  edit(after, tr("Cloth %1 fps").arg(fps), mergeKey);
+}
+
 void GarmentTool::setPinsFollowBody(int garment, bool followBody) {
   const auto attach = followBody ? GarmentPins::Attach::Body : GarmentPins::Attach::Space;
   if (garment < 0 || garment >= garmentCount() || scene_.garments[garment].pins.attach == attach) return;

@@ -75,6 +75,8 @@ class GarmentTool : public QObject {
   void setFabric(int garment, const Fabric& fabric, int mergeKey = 0);
   void setIntegrator(cloth::IntegratorKind integrator);
   void setSelfCollisions(bool on);
+  // Simulation and bake frames per second (the "cloth" section's fps).
+  void setClothFps(float fps, int mergeKey = 0);
   void setPinsFollowBody(int garment, bool followBody);
   void pinSelected();
   void unpinSelected();
