@@ -231,11 +231,16 @@ const std::vector<float>& SceneHair::rigidStrands(float time) {
   return all_;
 }
 
-size_t SceneHair::pointsInsideBody() const {
+SceneHair::InsideCount SceneHair::pointsInsideBody() const {
   const PosedHairColliders exact = rig_.body.posed(posed_.worldFromBone(), 0.0f);
-  size_t inside = 0;
-  for (size_t k = 0; k + 2 < all_.size(); k += 3) inside += exact.contains({all_[k], all_[k + 1], all_[k + 2]});
-  return inside;
+  const size_t perStrand = size_t(std::max(1, groom_->strands().pointsPerStrand));
+  InsideCount count;
+  for (size_t k = 0; k + 2 < all_.size(); k += 3) {
+    if (!exact.contains({all_[k], all_[k + 1], all_[k + 2]})) continue;
+    if ((k / 3) % perStrand == 0) ++count.roots;
+    else ++count.points;
+  }
+  return count;
 }
 
 float SceneHair::maxGuideLengthError() const {

@@ -57,8 +57,15 @@ class SceneHair {
   const std::vector<float>& rigidStrands(float time);
   const std::vector<float>& allStrands() const { return all_; }
 
-  // Points of allStrands() inside the posed body proxies (no margin).
-  size_t pointsInsideBody() const;
+  // Points of allStrands() inside the posed body proxies (no margin). The
+  // roots are counted apart: they ride on the skinned scalp, which the rigid
+  // proxies only approximate (a root can dip into the neck's capsule when
+  // the head bends); every other point is pushed out of the proxies.
+  struct InsideCount {
+    size_t points = 0;  // roots excluded
+    size_t roots = 0;
+  };
+  InsideCount pointsInsideBody() const;
   // Largest relative change of a guide segment's length from its rest length.
   float maxGuideLengthError() const;
 
