@@ -62,15 +62,6 @@ bool degenerate(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
 
 }  // namespace
 
-HairSimParams sceneHairParams() {
-  HairSimParams params;
-  // Style memory over the whole strand (fading to the tip) rather than the
-  // root half: the groom keeps its shape where it rests on the shoulders
-  // instead of the ends sliding off and the children fanning out there.
-  params.globalRange = 1.0f;
-  return params;
-}
-
 bool sceneHasHair(const LoadedScene& scene) { return !scene.document.hair.is_null(); }
 
 HairSection sceneHairSection(const LoadedScene& scene) {
@@ -102,7 +93,7 @@ SceneHair::SceneHair(const LoadedScene& scene, const HairSection& section) : sce
     rig_.restWorldFromHead = scene.character.skeleton.worldTransforms(scene.character.skeleton.restPose())[head];
     rig_.body = HairColliders::attachToSkeleton(groom_->proxy(), scene.character.skeleton, head);
   }
-  simulator_.setParams(sceneHairParams());
+  simulator_.setParams(characterHairParams());
   simulator_.setRest(leadingStrands(groom_->strands(), groom_->guideCount()));
   anchorRoots();
 }

@@ -5,7 +5,7 @@
 // triangle of the skinned mesh (barycentric point plus an offset in the
 // triangle's frame), so the roots follow the skinned scalp; the guides'
 // dynamics (sim/hair) collide with the body proxies posed on the skeleton,
-// and the children follow their guides.
+// and the children follow their guides. Dynamics: characterHairParams().
 
 #include <memory>
 #include <string>
@@ -25,9 +25,6 @@ namespace mq::cli {
 
 bool sceneHasHair(const LoadedScene& scene);
 
-// The dynamics the headless commands use (HairSimParams defaults, with the
-// style memory reaching down the whole strand).
-HairSimParams sceneHairParams();
 
 // The document's hair section; FileError naming the document when invalid.
 HairSection sceneHairSection(const LoadedScene& scene);

@@ -272,7 +272,7 @@ void HairTool::ensureDynamics() {
   EditorDocument* document = window_->document();
   if (!rig_) rig_ = std::make_unique<HairRig>(HairRig::fromProxy(document->character(), groom_->proxy()));
   if (!simulator_) {
-    simulator_ = std::make_unique<HairSimulator>();
+    simulator_ = std::make_unique<HairSimulator>(characterHairParams());
     simulator_->setRest(leadingStrands(groom_->strands(), groom_->guideCount()));
     lastTime_ = document->time();
   }
@@ -328,7 +328,7 @@ bool HairTool::bake() {
   };
   callbacks.cancelled = [&] { return progress.wasCanceled(); };
   HairBake result = bakeHair(document->character(), document->clipIndex(),
-                             leadingStrands(groom_->strands(), groom_->guideCount()), HairSimParams{}, {}, callbacks,
+                             leadingStrands(groom_->strands(), groom_->guideCount()), characterHairParams(), {}, callbacks,
                              rig_.get());
   window_->hideProgress(result.cancelled ? tr("Hair bake cancelled") : tr("Hair baked"));
   if (result.cancelled) return false;
