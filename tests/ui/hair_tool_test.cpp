@@ -11,7 +11,9 @@
 #include <thread>
 
 #include <QApplication>
+#include <QCheckBox>
 #include <QDoubleSpinBox>
+#include <QImage>
 #include <QListWidget>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -25,6 +27,7 @@
 #include "ui/hair/hair_panel.h"
 #include "ui/hair/hair_tool.h"
 #include "ui/main_window.h"
+#include "ui/viewport/vtk_viewport_widget.h"
 
 using namespace mq;
 using namespace mq::ui;
@@ -157,6 +160,20 @@ class HairToolTest : public QObject {
     undo->redo();
     QCOMPARE(guidePoints(*tool_), moved_);
     QCOMPARE(styleText(*tool_), movedStyle_);
+  }
+
+  void opacityShadowMapsCheckboxSwitchesTheShadowing() {
+    QVERIFY(!tool_->opacityShadowMaps());
+    const QImage counted = window_->viewport()->grabFramebuffer();
+    panel()->shadowMapsBox()->setChecked(true);
+    QVERIFY(tool_->opacityShadowMaps());
+    const QImage mapped = window_->viewport()->grabFramebuffer();
+    int differing = 0;
+    for (int y = 0; y < counted.height(); ++y)
+      for (int x = 0; x < counted.width(); ++x) differing += counted.pixel(x, y) != mapped.pixel(x, y);
+    QVERIFY2(differing > 100, "the viewport looks the same with opacity shadow maps");
+    panel()->shadowMapsBox()->setChecked(false);
+    QVERIFY(!tool_->opacityShadowMaps());
   }
 
   void savedDocumentReopensWithTheHairstyle() {

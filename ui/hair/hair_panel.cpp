@@ -169,13 +169,18 @@ HairPanel::HairPanel(HairTool* tool, QWidget* parent) : QWidget(parent), tool_(t
   auto* dynamicsLayout = new QVBoxLayout(dynamics);
   handles_ = new QCheckBox(tr("Show primitive handles"));
   handles_->setChecked(true);
+  shadowMaps_ = new QCheckBox(tr("Opacity shadow maps"));
+  shadowMaps_->setToolTip(tr("Self-shadowing from a stack of opacity maps along the light (faster) "
+                             "instead of the exact count of the hair in front of each point"));
   simulate_ = new QCheckBox(tr("Simulate while playing"));
   bake_ = new QPushButton(tr("Bake clip"));
   dynamicsLayout->addWidget(handles_);
+  dynamicsLayout->addWidget(shadowMaps_);
   dynamicsLayout->addWidget(simulate_);
   dynamicsLayout->addWidget(bake_);
   layout->addWidget(dynamics);
   connect(handles_, &QCheckBox::toggled, tool_, &HairTool::setHandlesVisible);
+  connect(shadowMaps_, &QCheckBox::toggled, tool_, &HairTool::setOpacityShadowMaps);
   connect(simulate_, &QCheckBox::toggled, tool_, &HairTool::setSimulating);
   connect(bake_, &QPushButton::clicked, this, [this] {
     status_->setText(tool_->bake() ? tr("Baked: the clip plays the simulated hair.") : tr("Bake cancelled."));

@@ -203,6 +203,17 @@ void HairTool::setHandlesVisible(bool visible) {
   window_->viewport()->requestRender();
 }
 
+void HairTool::setOpacityShadowMaps(bool on) {
+  render::HairShading shading = actor_->shading();
+  shading.shadowMethod = on ? render::HairShadowMethod::OpacityMaps : render::HairShadowMethod::PointCount;
+  actor_->setShading(shading);
+  window_->viewport()->requestRender();
+}
+
+bool HairTool::opacityShadowMaps() const {
+  return actor_->shading().shadowMethod == render::HairShadowMethod::OpacityMaps;
+}
+
 void HairTool::updateHandles() {
   if (style_ && groom_) handles_->update(*style_, worldFromHead(), selected_);
 }

@@ -67,6 +67,9 @@ class HairTool : public QObject {
   PrimitiveRef selectedPrimitive() const { return selected_; }
   void selectPrimitive(const PrimitiveRef& ref);
   void setHandlesVisible(bool visible);
+  // Self-shadowing by opacity shadow maps instead of the exact count.
+  void setOpacityShadowMaps(bool on);
+  bool opacityShadowMaps() const;
 
   // Dynamics
   void setSimulating(bool on);
