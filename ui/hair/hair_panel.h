@@ -3,9 +3,8 @@
 // (list with add/delete and the selected one's fields), the strand
 // parameters (density, length, clumping, frizz, colours), the view (handles,
 // opacity shadow maps) and the dynamics (simulate while playing, bake the
-// clip). Every change goes to
-// HairTool::editStyle as an undoable edit; the panel refreshes from the
-// tool's signals.
+// clip). Every change goes to HairTool::editStyle as an undoable edit; the
+// panel refreshes from the tool's signals.
 
 #include <QWidget>
 
