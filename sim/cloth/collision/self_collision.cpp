@@ -59,6 +59,9 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     boxes[t].max += glm::vec3(thickness);
   }
   tree_.build(boxes);
+  // How far every vertex moved in the step, and every edge's swept box.
+  std::vector<float> motion(n);
+  for (size_t v = 0; v < n; ++v) motion[v] = glm::length(s.x[v] - x0[v]);
   auto sweptBox = [&](std::initializer_list<uint32_t> vertices) {
     Box b;
     for (uint32_t v : vertices) {
@@ -69,6 +72,8 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     b.max += glm::vec3(thickness);
     return b;
   };
+  std::vector<Box> edgeBoxes(edges_.size());
+  for (size_t e = 0; e < edges_.size(); ++e) edgeBoxes[e] = sweptBox({edges_[e].first, edges_[e].second});
   vertexTriangle_ = collectInBlocks<VertexTriangle>(n, [&](size_t v, std::vector<VertexTriangle>& out) {
     tree_.query(sweptBox({uint32_t(v)}), [&](uint32_t t) {
       const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
@@ -76,26 +81,27 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
       const glm::vec3 w = closestTriangleWeights(x0[v], x0[a], x0[b], x0[c]);
       const glm::vec3 normal = glm::cross(x0[b] - x0[a], x0[c] - x0[a]);
       const glm::vec3 offset = x0[v] - (w.x * x0[a] + w.y * x0[b] + w.z * x0[c]);
-      const float reach = thickness + glm::length(s.x[v] - x0[v]) +
-                          std::max({glm::length(s.x[a] - x0[a]), glm::length(s.x[b] - x0[b]), glm::length(s.x[c] - x0[c])});
-      if (glm::length(offset) > reach) return;
+      const float reach = thickness + motion[v] + std::max({motion[a], motion[b], motion[c]});
+      if (glm::dot(offset, offset) > reach * reach) return;
       const float side = glm::dot(offset, normal) >= 0.0f ? 1.0f : -1.0f;
       out.push_back({uint32_t(v), t, w, side});
     });
   });
   edgeEdge_ = collectInBlocks<EdgeEdge>(edges_.size(), [&](size_t e, std::vector<EdgeEdge>& out) {
     const auto [p0, p1] = edges_[e];
-    tree_.query(sweptBox({p0, p1}), [&](uint32_t t) {
+    const Box& box = edgeBoxes[e];
+    tree_.query(box, [&](uint32_t t) {
       for (int c = 0; c < 3; ++c) {
         const uint32_t f = triangleEdges_[3 * t + c];
-        if (f <= e) continue;
+        // Edges whose swept boxes stay apart never come within the
+        // thickness during the step.
+        if (f <= e || !box.overlaps(edgeBoxes[f])) continue;
         const auto [q0, q1] = edges_[f];
         if (sharesVertex(p0, p1, q0, q1)) continue;
         const glm::vec2 st = closestSegmentParameters(x0[p0], x0[p1], x0[q0], x0[q1]);
         const glm::vec3 d = glm::mix(x0[p0], x0[p1], st.x) - glm::mix(x0[q0], x0[q1], st.y);
         const float l = glm::length(d);
-        const float reach = thickness + std::max(glm::length(s.x[p0] - x0[p0]), glm::length(s.x[p1] - x0[p1])) +
-                            std::max(glm::length(s.x[q0] - x0[q0]), glm::length(s.x[q1] - x0[q1]));
+        const float reach = thickness + std::max(motion[p0], motion[p1]) + std::max(motion[q0], motion[q1]);
         if (l < 1e-9f || l > reach) continue;
         out.push_back({uint32_t(e), f, st, d / l});
       }
