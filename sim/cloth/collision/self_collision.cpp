@@ -1,6 +1,7 @@
 #include "sim/cloth/collision/self_collision.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "sim/cloth/collision/proximity.h"
@@ -26,7 +27,10 @@ std::vector<T> collectInBlocks(size_t count, Body&& body) {
     for (size_t b = b0; b < b1; ++b)
       for (size_t i = b * size; i < std::min(count, (b + 1) * size); ++i) body(i, blocks[b]);
   });
+  size_t total = 0;
+  for (const auto& b : blocks) total += b.size();
   std::vector<T> all;
+  all.reserve(total);
   for (auto& b : blocks) all.insert(all.end(), b.begin(), b.end());
   return all;
 }
@@ -59,9 +63,20 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     boxes[t].max += glm::vec3(thickness);
   }
   tree_.build(boxes);
-  // How far every vertex moved in the step, and every edge's swept box.
-  std::vector<float> motion(n);
-  for (size_t v = 0; v < n; ++v) motion[v] = glm::length(s.x[v] - x0[v]);
+  // How every vertex moved in the step, and every edge's swept box. Two
+  // elements can close their gap by at most the largest difference of their
+  // vertices' moves (a sheet falling as a whole closes none).
+  std::vector<glm::vec3> move(n);
+  for (size_t v = 0; v < n; ++v) move[v] = s.x[v] - x0[v];
+  auto closing = [&](std::initializer_list<uint32_t> first, std::initializer_list<uint32_t> second) {
+    float worst = 0.0f;
+    for (uint32_t a : first)
+      for (uint32_t b : second) {
+        const glm::vec3 d = move[a] - move[b];
+        worst = std::max(worst, glm::dot(d, d));
+      }
+    return std::sqrt(worst);
+  };
   auto sweptBox = [&](std::initializer_list<uint32_t> vertices) {
     Box b;
     for (uint32_t v : vertices) {
@@ -81,7 +96,7 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
       const glm::vec3 w = closestTriangleWeights(x0[v], x0[a], x0[b], x0[c]);
       const glm::vec3 normal = glm::cross(x0[b] - x0[a], x0[c] - x0[a]);
       const glm::vec3 offset = x0[v] - (w.x * x0[a] + w.y * x0[b] + w.z * x0[c]);
-      const float reach = thickness + motion[v] + std::max({motion[a], motion[b], motion[c]});
+      const float reach = thickness + closing({uint32_t(v)}, {a, b, c});
       if (glm::dot(offset, offset) > reach * reach) return;
       const float side = glm::dot(offset, normal) >= 0.0f ? 1.0f : -1.0f;
       out.push_back({uint32_t(v), t, w, side});
@@ -90,6 +105,7 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
   edgeEdge_ = collectInBlocks<EdgeEdge>(edges_.size(), [&](size_t e, std::vector<EdgeEdge>& out) {
     const auto [p0, p1] = edges_[e];
     const Box& box = edgeBoxes[e];
+    const size_t first = out.size();
     tree_.query(box, [&](uint32_t t) {
       for (int c = 0; c < 3; ++c) {
         const uint32_t f = triangleEdges_[3 * t + c];
@@ -101,18 +117,18 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
         const glm::vec2 st = closestSegmentParameters(x0[p0], x0[p1], x0[q0], x0[q1]);
         const glm::vec3 d = glm::mix(x0[p0], x0[p1], st.x) - glm::mix(x0[q0], x0[q1], st.y);
         const float l = glm::length(d);
-        const float reach = thickness + std::max(motion[p0], motion[p1]) + std::max(motion[q0], motion[q1]);
+        const float reach = thickness + closing({p0, p1}, {q0, q1});
         if (l < 1e-9f || l > reach) continue;
         out.push_back({uint32_t(e), f, st, d / l});
       }
     });
+    // In order of the other edge, each pair once (an edge pair can be
+    // reached through both triangles of the other edge).
+    std::sort(out.begin() + first, out.end(), [](const EdgeEdge& a, const EdgeEdge& b) { return a.e1 < b.e1; });
+    out.erase(std::unique(out.begin() + first, out.end(),
+                          [](const EdgeEdge& a, const EdgeEdge& b) { return a.e1 == b.e1; }),
+              out.end());
   });
-  // An edge pair can be reached through both triangles of an edge.
-  std::sort(edgeEdge_.begin(), edgeEdge_.end(),
-            [](const EdgeEdge& a, const EdgeEdge& b) { return a.e0 != b.e0 ? a.e0 < b.e0 : a.e1 < b.e1; });
-  edgeEdge_.erase(std::unique(edgeEdge_.begin(), edgeEdge_.end(),
-                              [](const EdgeEdge& a, const EdgeEdge& b) { return a.e0 == b.e0 && a.e1 == b.e1; }),
-                  edgeEdge_.end());
 }
 
 // Pushes the weighted point sum_k w_k x_k of a pair apart along n until its
