@@ -52,22 +52,21 @@ SelfCollision::SelfCollision(const std::vector<uint32_t>& triangles, size_t vert
 
 void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::vec3>& x0, float thickness) {
   const size_t n = s.size(), triangleCount = triangles_.size() / 3;
-  // Box of every triangle over the step (its corners at x0 and at x1).
-  std::vector<Box> boxes(triangleCount);
-  for (size_t t = 0; t < triangleCount; ++t) {
-    for (int c = 0; c < 3; ++c) {
-      boxes[t].extend(x0[triangles_[3 * t + c]]);
-      boxes[t].extend(s.x[triangles_[3 * t + c]]);
-    }
-    boxes[t].min -= glm::vec3(thickness);
-    boxes[t].max += glm::vec3(thickness);
-  }
-  tree_.build(boxes);
-  // How every vertex moved in the step, and every edge's swept box. Two
-  // elements can close their gap by at most the largest difference of their
-  // vertices' moves (a sheet falling as a whole closes none).
+  // How every vertex moved in the step. Two elements can close their gap by
+  // at most the largest difference of their vertices' moves (a sheet falling
+  // as a whole closes none).
   std::vector<glm::vec3> move(n);
-  for (size_t v = 0; v < n; ++v) move[v] = s.x[v] - x0[v];
+  glm::vec3 meanMove(0.0f);
+  float meanMotion = 0.0f;
+  for (size_t v = 0; v < n; ++v) {
+    move[v] = s.x[v] - x0[v];
+    meanMove += move[v];
+    meanMotion += glm::length(move[v]);
+  }
+  meanMove /= float(std::max<size_t>(n, 1));
+  meanMotion /= float(std::max<size_t>(n, 1));
+  float deviation = 0.0f;  // largest distance of a move from the mean move
+  for (size_t v = 0; v < n; ++v) deviation = std::max(deviation, glm::length(move[v] - meanMove));
   auto closing = [&](std::initializer_list<uint32_t> first, std::initializer_list<uint32_t> second) {
     float worst = 0.0f;
     for (uint32_t a : first)
@@ -77,16 +76,27 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
       }
     return std::sqrt(worst);
   };
+  // Element boxes for the broad phase, whichever is smaller: swept over the
+  // step (start and end, grown by the thickness), or at the start grown by
+  // half the thickness plus the deviation (any two elements closing by up to
+  // twice the deviation then still overlap). The second wins when the cloth
+  // moves mostly as a whole.
+  const bool relative = 2.0f * deviation < meanMotion + thickness;
+  const float grow = relative ? 0.5f * thickness + deviation : thickness;
   auto sweptBox = [&](std::initializer_list<uint32_t> vertices) {
     Box b;
     for (uint32_t v : vertices) {
       b.extend(x0[v]);
-      b.extend(s.x[v]);
+      if (!relative) b.extend(s.x[v]);
     }
-    b.min -= glm::vec3(thickness);
-    b.max += glm::vec3(thickness);
+    b.min -= glm::vec3(grow);
+    b.max += glm::vec3(grow);
     return b;
   };
+  std::vector<Box> boxes(triangleCount);
+  for (size_t t = 0; t < triangleCount; ++t)
+    boxes[t] = sweptBox({triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]});
+  tree_.build(boxes);
   std::vector<Box> edgeBoxes(edges_.size());
   for (size_t e = 0; e < edges_.size(); ++e) edgeBoxes[e] = sweptBox({edges_[e].first, edges_[e].second});
   vertexTriangle_ = collectInBlocks<VertexTriangle>(n, [&](size_t v, std::vector<VertexTriangle>& out) {
@@ -114,10 +124,15 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
         if (f <= e || !box.overlaps(edgeBoxes[f])) continue;
         const auto [q0, q1] = edges_[f];
         if (sharesVertex(p0, p1, q0, q1)) continue;
+        const float reach = thickness + closing({p0, p1}, {q0, q1});
+        // Bounding balls first: the segments' points lie within half their
+        // lengths of their midpoints.
+        const float apart = glm::length(0.5f * (x0[p0] + x0[p1] - x0[q0] - x0[q1])) -
+                            0.5f * (glm::length(x0[p0] - x0[p1]) + glm::length(x0[q0] - x0[q1]));
+        if (apart > reach) continue;
         const glm::vec2 st = closestSegmentParameters(x0[p0], x0[p1], x0[q0], x0[q1]);
         const glm::vec3 d = glm::mix(x0[p0], x0[p1], st.x) - glm::mix(x0[q0], x0[q1], st.y);
         const float l = glm::length(d);
-        const float reach = thickness + closing({p0, p1}, {q0, q1});
         if (l < 1e-9f || l > reach) continue;
         out.push_back({uint32_t(e), f, st, d / l});
       }
