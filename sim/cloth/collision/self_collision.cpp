@@ -99,6 +99,7 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
   tree_.build(boxes);
   std::vector<Box> edgeBoxes(edges_.size());
   for (size_t e = 0; e < edges_.size(); ++e) edgeBoxes[e] = sweptBox({edges_[e].first, edges_[e].second});
+  edgeTree_.build(edgeBoxes);
   vertexTriangle_ = collectInBlocks<VertexTriangle>(n, [&](size_t v, std::vector<VertexTriangle>& out) {
     tree_.query(sweptBox({uint32_t(v)}), [&](uint32_t t) {
       const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
@@ -116,33 +117,26 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     const auto [p0, p1] = edges_[e];
     const Box& box = edgeBoxes[e];
     const size_t first = out.size();
-    tree_.query(box, [&](uint32_t t) {
-      for (int c = 0; c < 3; ++c) {
-        const uint32_t f = triangleEdges_[3 * t + c];
-        // Edges whose swept boxes stay apart never come within the
-        // thickness during the step.
-        if (f <= e || !box.overlaps(edgeBoxes[f])) continue;
-        const auto [q0, q1] = edges_[f];
-        if (sharesVertex(p0, p1, q0, q1)) continue;
-        const float reach = thickness + closing({p0, p1}, {q0, q1});
-        // Bounding balls first: the segments' points lie within half their
-        // lengths of their midpoints.
-        const float apart = glm::length(0.5f * (x0[p0] + x0[p1] - x0[q0] - x0[q1])) -
-                            0.5f * (glm::length(x0[p0] - x0[p1]) + glm::length(x0[q0] - x0[q1]));
-        if (apart > reach) continue;
-        const glm::vec2 st = closestSegmentParameters(x0[p0], x0[p1], x0[q0], x0[q1]);
-        const glm::vec3 d = glm::mix(x0[p0], x0[p1], st.x) - glm::mix(x0[q0], x0[q1], st.y);
-        const float l = glm::length(d);
-        if (l < 1e-9f || l > reach) continue;
-        out.push_back({uint32_t(e), f, st, d / l});
-      }
+    edgeTree_.query(box, [&](uint32_t f) {
+      // (The tree only visits edges whose swept boxes meet this one's: the
+      // others never come within the thickness during the step.)
+      if (f <= e) return;
+      const auto [q0, q1] = edges_[f];
+      if (sharesVertex(p0, p1, q0, q1)) return;
+      const float reach = thickness + closing({p0, p1}, {q0, q1});
+      // Bounding balls first: the segments' points lie within half their
+      // lengths of their midpoints.
+      const float apart = glm::length(0.5f * (x0[p0] + x0[p1] - x0[q0] - x0[q1])) -
+                          0.5f * (glm::length(x0[p0] - x0[p1]) + glm::length(x0[q0] - x0[q1]));
+      if (apart > reach) return;
+      const glm::vec2 st = closestSegmentParameters(x0[p0], x0[p1], x0[q0], x0[q1]);
+      const glm::vec3 d = glm::mix(x0[p0], x0[p1], st.x) - glm::mix(x0[q0], x0[q1], st.y);
+      const float l = glm::length(d);
+      if (l < 1e-9f || l > reach) return;
+      out.push_back({uint32_t(e), f, st, d / l});
     });
-    // In order of the other edge, each pair once (an edge pair can be
-    // reached through both triangles of the other edge).
+    // In order of the other edge (the tree's order depends on the boxes).
     std::sort(out.begin() + first, out.end(), [](const EdgeEdge& a, const EdgeEdge& b) { return a.e1 < b.e1; });
-    out.erase(std::unique(out.begin() + first, out.end(),
-                          [](const EdgeEdge& a, const EdgeEdge& b) { return a.e1 == b.e1; }),
-              out.end());
   });
 }
 
