@@ -155,6 +155,16 @@ BodyMeasurements measureBody(const Character& character) {
         m.shoulderTop[s] = std::max(m.shoulderTop[s], p.y);
     }
   }
+  {
+    const float hipY = std::min(m.hip[0].y, m.hip[1].y), kneeY = std::max(m.knee[0].y, m.knee[1].y);
+    const glm::vec3 axis = m.torsoAxisAt(hipY);
+    m.crotchY = hipY;
+    bool found = false;
+    for (const glm::vec3& p : body.positions)
+      if (std::abs(p.x - axis.x) < 0.015f && p.y < hipY && p.y > kneeY && (!found || p.y < m.crotchY))
+        m.crotchY = p.y, found = true;
+    if (!found) m.crotchY = hipY - 0.07f;
+  }
   // A skeleton without skin: proportions of the stature (ISO 8559 averages).
   float stature = std::max(m.neck.y / 0.82f, 1.0f);
   if (m.chestGirth <= 0.0f) m.chestGirth = 0.55f * stature;

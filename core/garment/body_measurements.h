@@ -23,6 +23,9 @@ struct BodyMeasurements {
   // Top of the shoulders: the highest skin point over the torso axis's
   // depth, between halfway to the shoulder joint and the joint (left, right).
   float shoulderTop[2]{};
+  // Bottom of the crotch: the lowest skin point on the torso axis between the
+  // hips and the knees (the hips' height minus 7 cm without skin there).
+  float crotchY = 0.0f;
   std::vector<BodyCapsule> capsules;
 
   // The vertical torso axis (through pelvis and chest), as a point at height y.

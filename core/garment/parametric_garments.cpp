@@ -261,7 +261,9 @@ Garment makeTrousers(const BodyMeasurements& body, const Params& p) {
   Garment g;
   g.name = "Trousers";
   float length = p.at("length"), topY = body.waist.y;
-  float crotchY = std::min(body.hip[0].y, body.hip[1].y) - 0.07f;
+  // Below the body's crotch: the crotch seam closes front to back along
+  // straight lines, which must not pass through the body.
+  float crotchY = std::min(std::min(body.hip[0].y, body.hip[1].y) - 0.07f, body.crotchY - 2.0f * p.at("offset"));
   float rise = std::clamp(topY - crotchY, 0.1f, 0.6f * length);
   float waistHalf = 0.25f * (body.hipGirth + p.at("ease"));
   float legHalf = 0.25f * p.at("legOpening");

@@ -6,6 +6,7 @@
 
 #include "core/character/default_mannequin.h"
 #include "core/character/posed_character.h"
+#include "core/garment/body_measurements.h"
 #include "core/garment/parametric_garments.h"
 #include "sim/garment/garment_sewing.h"
 #include "sim/garment/garment_simulation.h"
@@ -130,6 +131,33 @@ TEST(GarmentSewing, TShirtOnMannequinClosesSeamsWeldsAndSettlesOutsideTheBody) {
   EXPECT_GT(shirt.bounds.min.y, 0.6f);
   EXPECT_LT(shirt.bounds.min.y, 1.0f);
   EXPECT_LT(shirt.bounds.max.y, 1.6f);
+}
+
+// A skirt and trousers stay where they are worn: the waistband between the
+// hips and a little above the waist joint, nothing inside the body.
+void expectWornAtTheWaist(const SewnGarment& g) {
+  const BodyMeasurements body = measureBody(makeDefaultMannequin());
+  EXPECT_GT(g.initialGap, 0.05f);
+  EXPECT_TRUE(g.welded);
+  EXPECT_LT(g.sewingFrames, 60);
+  EXPECT_EQ(g.penetrating, 0);
+  EXPECT_EQ(g.insideBody, 0);
+  EXPECT_LE(g.finalStretch, 1.1f + 1e-3f);
+  EXPECT_GT(g.bounds.max.y, std::min(body.hip[0].y, body.hip[1].y));
+  EXPECT_LT(g.bounds.max.y, body.waist.y + 0.1f);
+  EXPECT_GT(g.bounds.min.y, 0.05f);  // not down on the floor
+}
+
+TEST(GarmentSewing, SkirtSettlesOnTheHips) {
+  const SewnGarment skirt = sewOnMannequin("skirt", 0.035f, 40);
+  expectWornAtTheWaist(skirt);
+}
+
+TEST(GarmentSewing, TrousersSettleOnTheWaistWithTheCrotchSewnBelowTheBody) {
+  const SewnGarment trousers = sewOnMannequin("trousers", 0.035f, 40);
+  expectWornAtTheWaist(trousers);
+  const BodyMeasurements body = measureBody(makeDefaultMannequin());
+  EXPECT_LT(trousers.bounds.min.y, std::min(body.knee[0].y, body.knee[1].y));  // the legs cover the knees
 }
 
 }  // namespace
