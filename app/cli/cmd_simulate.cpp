@@ -31,8 +31,10 @@ class PosedBody {
  public:
   PosedBody(const LoadedScene& scene) : scene_(scene) {}
   bool empty() const { return scene_.character.meshes.empty(); }
-  void pose(float time, std::vector<float>& positions, std::vector<uint32_t>* triangles) {
-    posed_.evaluate(scene_.character, scene_.clipIndex, time, &scene_.edits, &ThreadPool::shared());
+  // rest: the rest pose without edits (where garment patterns are placed).
+  void pose(float time, std::vector<float>& positions, std::vector<uint32_t>* triangles, bool rest = false) {
+    posed_.evaluate(scene_.character, rest ? -1 : scene_.clipIndex, rest ? 0.0f : time, rest ? nullptr : &scene_.edits,
+                    &ThreadPool::shared());
     positions.clear();
     if (triangles) triangles->clear();
     for (size_t m = 0; m < posed_.meshes().size(); ++m) {
@@ -138,8 +140,15 @@ int runSimulate(const std::vector<std::string>& argv) {
   if (!body.empty()) body.pose(scene.document.time, bodyPositions, &bodyTriangles);
   SceneCloth cloth;
   cloth.sheet = makeSheet(spec, bodyPositions, bodyTriangles);
-  if (!garmentsSection.is_null())
-    cloth.garments = std::make_unique<cli::SimulatedGarments>(garmentsSection, spec, bodyPositions, bodyTriangles, path);
+  cli::DressingResult dressing;
+  if (!garmentsSection.is_null()) {
+    // Garments are sewn on the rest pose their patterns were placed around,
+    // then the body moves to the scene's pose; the frames start from there.
+    std::vector<float> restBody;
+    if (!body.empty()) body.pose(0.0f, restBody, nullptr, true);
+    cloth.garments = std::make_unique<cli::SimulatedGarments>(garmentsSection, spec, restBody, bodyTriangles, path);
+    dressing = cloth.garments->dress(restBody, bodyPositions, 1.0f / fps);
+  }
 
   const std::string exportDir = args.option("--export-dir");
   if (!exportDir.empty()) {
@@ -165,7 +174,11 @@ int runSimulate(const std::vector<std::string>& argv) {
                 {"substeps_per_frame", r.substeps},
                 {"cg_iterations_per_frame", double(r.solverIterations) / frames},
                 {"threads", ThreadPool::shared().threadCount()}};
-  if (cloth.garments) stats["garments"] = cloth.garments->stats();
+  if (cloth.garments) {
+    stats["garments"] = cloth.garments->stats();
+    stats["dressing_steps"] = dressing.steps;
+    stats["dressing_seconds"] = dressing.seconds;
+  }
   if (!scene.document.hair.is_null()) cli::simulateSceneHair(scene, frames, fps, exportDir, stats);
   const std::string statsPath = args.option("--stats-json");
   if (!statsPath.empty()) {

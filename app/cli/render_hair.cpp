@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "app/cli/scene_hair.h"
-#include "core/util/error.h"
 #include <vtkActor.h>
 
+#include "app/cli/scene_hair.h"
+#include "core/util/error.h"
 #include "render/hair_actor.h"
 #include "render/scene_view.h"
 

@@ -62,15 +62,6 @@ bool degenerate(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
 
 }  // namespace
 
-HairSimParams sceneHairParams() {
-  HairSimParams params;
-  // Style memory over the whole strand (fading to the tip) rather than the
-  // root half: the groom keeps its shape where it rests on the shoulders
-  // instead of the ends sliding off and the children fanning out there.
-  params.globalRange = 1.0f;
-  return params;
-}
-
 bool sceneHasHair(const LoadedScene& scene) { return !scene.document.hair.is_null(); }
 
 HairSection sceneHairSection(const LoadedScene& scene) {
@@ -102,7 +93,7 @@ SceneHair::SceneHair(const LoadedScene& scene, const HairSection& section) : sce
     rig_.restWorldFromHead = scene.character.skeleton.worldTransforms(scene.character.skeleton.restPose())[head];
     rig_.body = HairColliders::attachToSkeleton(groom_->proxy(), scene.character.skeleton, head);
   }
-  simulator_.setParams(sceneHairParams());
+  simulator_.setParams(characterHairParams());
   simulator_.setRest(leadingStrands(groom_->strands(), groom_->guideCount()));
   anchorRoots();
 }
@@ -231,11 +222,16 @@ const std::vector<float>& SceneHair::rigidStrands(float time) {
   return all_;
 }
 
-size_t SceneHair::pointsInsideBody() const {
+SceneHair::InsideCount SceneHair::pointsInsideBody() const {
   const PosedHairColliders exact = rig_.body.posed(posed_.worldFromBone(), 0.0f);
-  size_t inside = 0;
-  for (size_t k = 0; k + 2 < all_.size(); k += 3) inside += exact.contains({all_[k], all_[k + 1], all_[k + 2]});
-  return inside;
+  const size_t perStrand = size_t(std::max(1, groom_->strands().pointsPerStrand));
+  InsideCount count;
+  for (size_t k = 0; k + 2 < all_.size(); k += 3) {
+    if (!exact.contains({all_[k], all_[k + 1], all_[k + 2]})) continue;
+    if ((k / 3) % perStrand == 0) ++count.roots;
+    else ++count.points;
+  }
+  return count;
 }
 
 float SceneHair::maxGuideLengthError() const {

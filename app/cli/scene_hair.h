@@ -5,7 +5,7 @@
 // triangle of the skinned mesh (barycentric point plus an offset in the
 // triangle's frame), so the roots follow the skinned scalp; the guides'
 // dynamics (sim/hair) collide with the body proxies posed on the skeleton,
-// and the children follow their guides.
+// and the children follow their guides. Dynamics: characterHairParams().
 
 #include <memory>
 #include <string>
@@ -25,9 +25,6 @@ namespace mq::cli {
 
 bool sceneHasHair(const LoadedScene& scene);
 
-// The dynamics the headless commands use (HairSimParams defaults, with the
-// style memory reaching down the whole strand).
-HairSimParams sceneHairParams();
 
 // The document's hair section; FileError naming the document when invalid.
 HairSection sceneHairSection(const LoadedScene& scene);
@@ -57,8 +54,15 @@ class SceneHair {
   const std::vector<float>& rigidStrands(float time);
   const std::vector<float>& allStrands() const { return all_; }
 
-  // Points of allStrands() inside the posed body proxies (no margin).
-  size_t pointsInsideBody() const;
+  // Points of allStrands() inside the posed body proxies (no margin). The
+  // roots are counted apart: they ride on the skinned scalp, which the rigid
+  // proxies only approximate (a root can dip into the neck's capsule when
+  // the head bends); every other point is pushed out of the proxies.
+  struct InsideCount {
+    size_t points = 0;  // roots excluded
+    size_t roots = 0;
+  };
+  InsideCount pointsInsideBody() const;
   // Largest relative change of a guide segment's length from its rest length.
   float maxGuideLengthError() const;
 

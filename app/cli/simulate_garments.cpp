@@ -1,6 +1,8 @@
 #include "app/cli/simulate_garments.h"
 
 #include <cctype>
+#include <chrono>
+#include <cmath>
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
@@ -13,6 +15,8 @@
 namespace mq::cli {
 
 namespace {
+
+constexpr float kDressingMoveSeconds = 1.5f;
 
 std::string fileStem(const Garment& garment, size_t index) {
   std::string stem = "garment" + std::to_string(index);
@@ -44,16 +48,51 @@ SimulatedGarments::SimulatedGarments(const nlohmann::json& section, const cloth:
   } catch (const Error& e) {
     throw FileError(documentPath, e.what());
   }
-  weldFrame_.assign(sims_.size(), -1);
+  sewingSteps_.assign(sims_.size(), 0);
+  substeps_.assign(sims_.size(), 0);
+  stretchPasses_.assign(sims_.size(), 0);
 }
 
 SimulatedGarments::~SimulatedGarments() = default;
 
+DressingResult SimulatedGarments::dress(const std::vector<float>& restBody, const std::vector<float>& startBody,
+                                       float dt) {
+  const auto t0 = std::chrono::steady_clock::now();
+  DressingResult r;
+  auto allWelded = [&] {
+    for (const auto& sim : sims_)
+      if (!sim->welded()) return false;
+    return true;
+  };
+  // GarmentSimulation welds by its maxSewingSeconds at the latest.
+  while (!allWelded()) {
+    for (size_t i = 0; i < sims_.size(); ++i) {
+      if (sims_[i]->welded()) continue;
+      sims_[i]->step(dt);
+      if (sims_[i]->welded()) sewingSteps_[i] = r.steps + 1;
+    }
+    ++r.steps;
+  }
+  if (!restBody.empty() && restBody != startBody) {
+    const int moves = std::max(1, int(std::ceil(kDressingMoveSeconds / dt)));
+    std::vector<float> body(restBody.size());
+    for (int k = 1; k <= moves; ++k) {
+      const float t = float(k) / float(moves), smooth = t * t * (3.0f - 2.0f * t);
+      for (size_t i = 0; i < body.size(); ++i) body[i] = restBody[i] + smooth * (startBody[i] - restBody[i]);
+      for (const auto& sim : sims_) sim->step(dt, &body);
+      ++r.steps;
+    }
+  }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
 void SimulatedGarments::step(float dt, const std::vector<float>* posedBody) {
-  ++steps_;
+  ++frames_;
   for (size_t i = 0; i < sims_.size(); ++i) {
     sims_[i]->step(dt, posedBody);
-    if (weldFrame_[i] < 0 && sims_[i]->welded()) weldFrame_[i] = steps_;
+    substeps_[i] += sims_[i]->stats().substeps;
+    stretchPasses_[i] += sims_[i]->stats().stretchPasses;
   }
 }
 
@@ -75,7 +114,9 @@ nlohmann::json SimulatedGarments::stats() const {
     out.push_back({{"name", garments_[i].name},
                    {"vertices", sim.vertexCount()},
                    {"welded", sim.welded()},
-                   {"welded_after_frames", weldFrame_[i]},
+                   {"sewing_steps", sewingSteps_[i]},
+                   {"substeps_per_frame", frames_ ? double(substeps_[i]) / frames_ : 0.0},
+                   {"stretch_passes_per_frame", frames_ ? double(stretchPasses_[i]) / frames_ : 0.0},
                    {"seam_gap", sim.seamGap()},
                    {"max_stretch", st.maxStretch},
                    {"penetrating_vertices", st.penetratingVertices},

@@ -24,6 +24,11 @@ struct ClothNow {
   void add(const cloth::ClothStats& stats, size_t vertexCount);
 };
 
+struct DressingResult {
+  int steps = 0;
+  double seconds = 0.0;  // wall time
+};
+
 class SimulatedGarments {
  public:
   // Throws FileError(documentPath, "garments[i]...: problem") for bad garments.
@@ -33,18 +38,24 @@ class SimulatedGarments {
   ~SimulatedGarments();
 
   bool empty() const { return sims_.empty(); }
+  // Before the frames: sews and welds every garment on the still rest body
+  // (at most their sewing time), then moves the body from rest to the
+  // scene's first pose in kDressingMoveSeconds. Bodies: flat positions, may be empty.
+  DressingResult dress(const std::vector<float>& restBody, const std::vector<float>& startBody, float dt);
   // posedBody: the body at the end of the step (null: it stays put).
   void step(float dt, const std::vector<float>* posedBody);
   // <dir>/garment<i>_<name>_<frame>.obj, one per garment, in garment-mesh order.
   void exportFrame(const std::string& dir, int frame) const;
   void addTo(ClothNow& now) const;
-  nlohmann::json stats() const;  // per garment: name, vertices, welded, seam_gap, max_stretch, penetrating_vertices
+  // Per garment: name, vertices, welded, sewing_steps, seam_gap, max_stretch, penetrating_vertices, bbox.
+  nlohmann::json stats() const;
 
  private:
   std::vector<Garment> garments_;
   std::vector<std::unique_ptr<cloth::GarmentSimulation>> sims_;
-  std::vector<int> weldFrame_;  // per garment: the step after which it welded (-1: not yet)
-  int steps_ = 0;
+  std::vector<int> sewingSteps_;  // per garment: steps until the weld (in dress())
+  std::vector<long long> substeps_, stretchPasses_;  // per garment, summed over step()
+  int frames_ = 0;
 };
 
 }  // namespace mq::cli

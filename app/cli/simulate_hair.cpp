@@ -49,7 +49,7 @@ void simulateSceneHair(const LoadedScene& scene, int frames, float fps, const st
   Strands exported = hair.groom().strands();  // topology for the PLY frames
   double guideSeconds = 0.0, childSeconds = 0.0;
   float maxLengthError = 0.0f;
-  size_t maxInside = 0;
+  size_t maxInside = 0, maxRootsInside = 0;
   for (int f = 0; f < frames; ++f) {
     const auto t0 = std::chrono::steady_clock::now();
     hair.step(start + float(f + 1) / fps, 1.0f / fps);
@@ -58,7 +58,9 @@ void simulateSceneHair(const LoadedScene& scene, int frames, float fps, const st
     guideSeconds += std::chrono::duration<double>(t1 - t0).count();
     childSeconds += secondsSince(t1);
     maxLengthError = std::max(maxLengthError, hair.maxGuideLengthError());
-    maxInside = std::max(maxInside, hair.pointsInsideBody());
+    const SceneHair::InsideCount inside = hair.pointsInsideBody();
+    maxInside = std::max(maxInside, inside.points);
+    maxRootsInside = std::max(maxRootsInside, inside.roots);
     if (!exportDir.empty()) {
       exported.points = hair.allStrands();
       writeStrandsPly(exported, (std::filesystem::path(exportDir) / plyFrameName(f + 1)).string());
@@ -77,7 +79,8 @@ void simulateSceneHair(const LoadedScene& scene, int frames, float fps, const st
   stats["hair_children_ms_per_frame"] = 1000.0 * childSeconds / frames;
   stats["hair_max_length_error"] = maxLengthError;
   stats["hair_points_inside_body"] = maxInside;
-  stats["hair_final_points_inside_body"] = hair.pointsInsideBody();
+  stats["hair_final_points_inside_body"] = hair.pointsInsideBody().points;
+  stats["hair_roots_inside_proxies"] = maxRootsInside;
   stats["hair_bbox_min"] = boundsJson(hair.allStrands(), false);
   stats["hair_bbox_max"] = boundsJson(hair.allStrands(), true);
   std::cout << "simulated hair: " << hair.groom().strands().strandCount() << " strands (" << hair.groom().guideCount()

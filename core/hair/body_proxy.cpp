@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 #include <Eigen/Dense>
 
@@ -116,7 +117,8 @@ void addCapsulePanels(const Capsule& c, float spacing, SurfacePanels& out) {
 
 void BodyProxy::updateBounds() {
   const size_t shapes = ellipsoids.size() + capsules.size();
-  cellShapes_.clear();
+  cellMask_.clear();
+  maskPalette_.clear();
   gridShapeCount_ = 0;
   if (shapes == 0 || shapes > 64) return;
   glm::vec3 lo(1e30f), hi(-1e30f);
@@ -132,7 +134,8 @@ void BodyProxy::updateBounds() {
   cellSize_ = std::max({extent.x, extent.y, extent.z}) / 64.0f;
   gridDims_ = glm::max(glm::ivec3(glm::ceil(extent / cellSize_)), glm::ivec3(1));
   gridOrigin_ = lo;
-  cellShapes_.assign(size_t(gridDims_.x) * gridDims_.y * gridDims_.z, 0);
+  cellMask_.assign(size_t(gridDims_.x) * gridDims_.y * gridDims_.z, 0);
+  std::unordered_map<uint64_t, uint16_t> paletteIndex;
   // A cell may meet a shape grown by the margin only when its centre lies
   // within margin + half the cell diagonal of the shape. For an ellipsoid,
   // points within h of it have |scaled local| < 1 + h / (smallest radius)
@@ -147,7 +150,12 @@ void BodyProxy::updateBounds() {
           if (mayReachEllipsoid(ellipsoids[i], c, reach)) mask |= uint64_t(1) << i;
         for (size_t i = 0; i < capsules.size(); ++i)
           if (insideCapsule(capsules[i], c, reach)) mask |= uint64_t(1) << (ellipsoids.size() + i);
-        cellShapes_[(size_t(z) * gridDims_.y + y) * gridDims_.x + x] = mask;
+        auto [it, added] = paletteIndex.emplace(mask, uint16_t(maskPalette_.size()));
+        if (added) {
+          if (maskPalette_.size() > 0xFFFF) return;  // too many distinct masks: no grid
+          maskPalette_.push_back(mask);
+        }
+        cellMask_[(size_t(z) * gridDims_.y + y) * gridDims_.x + x] = it->second;
       }
   gridShapeCount_ = shapes;
 }
@@ -160,7 +168,7 @@ uint64_t BodyProxy::candidates(const glm::vec3& p, float margin) const {
   if (q.x < 0.0f || q.y < 0.0f || q.z < 0.0f) return 0;
   const glm::ivec3 c(q);
   if (c.x >= gridDims_.x || c.y >= gridDims_.y || c.z >= gridDims_.z) return 0;
-  return cellShapes_[(size_t(c.z) * gridDims_.y + c.y) * gridDims_.x + c.x];
+  return maskPalette_[cellMask_[(size_t(c.z) * gridDims_.y + c.y) * gridDims_.x + c.x]];
 }
 
 bool BodyProxy::contains(const glm::vec3& p, float margin) const {

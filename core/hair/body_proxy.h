@@ -59,7 +59,9 @@ class BodyProxy {
  private:
   // Bit i set: shape i (ellipsoids, then capsules) may hold p grown by margin.
   uint64_t candidates(const glm::vec3& p, float margin) const;
-  std::vector<uint64_t> cellShapes_;
+  // Per cell an index into the few distinct masks (a small grid stays in cache).
+  std::vector<uint16_t> cellMask_;
+  std::vector<uint64_t> maskPalette_;
   glm::vec3 gridOrigin_{0.0f};
   float cellSize_ = 1.0f;
   glm::ivec3 gridDims_{0};

@@ -108,6 +108,7 @@ ScalpRegion automaticScalpRegion(const Character& character) {
   const int head = findHeadBone(character);
   if (head >= 0) region.bone = character.skeleton.bone(head).name;
   if (hasTaggedScalp(character)) return region;
+  if (character.meshes.empty()) throw Error("there is no character mesh to grow hair on");
   if (head < 0) throw Error("character '" + character.name + "' has no head bone to grow hair on");
   PosedCharacter rest;
   rest.evaluate(character, -1, 0.0f, nullptr, nullptr);

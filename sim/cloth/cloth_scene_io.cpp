@@ -144,6 +144,7 @@ void parseSettings(const SectionReader& r, ClothSettings& st) {
   st.maxStretch = r.number("max_stretch", st.maxStretch);
   if (st.maxStretch < 1.0f) r.fail("max_stretch", "must be at least 1");
   st.stretchIterations = r.integer("stretch_iterations", st.stretchIterations, 1);
+  st.maxRefinement = r.integer("max_refinement", st.maxRefinement, 1);
   st.selfCollisions = r.boolean("self_collisions", st.selfCollisions);
   st.collisionThickness = r.nonNegative("thickness", st.collisionThickness);
   st.selfThickness = r.nonNegative("self_thickness", st.selfThickness);
@@ -247,6 +248,7 @@ void writeClothScene(const ClothSceneSpec& spec, json& cloth, json& colliders) {
   cloth["stretch_limit"] = stretchLimitName(s.stretchLimit);
   cloth["max_stretch"] = s.maxStretch;
   cloth["stretch_iterations"] = s.stretchIterations;
+  cloth["max_refinement"] = s.maxRefinement;
   cloth["self_collisions"] = s.selfCollisions;
   cloth["thickness"] = s.collisionThickness;
   cloth["self_thickness"] = s.selfThickness;

@@ -1,8 +1,18 @@
 #pragma once
 // One garment simulated on an animated body, as the CLI, the editor and the
-// benchmarks run it: the pattern's panels start placed around the body, seam
-// springs sew them during the first frames, then the seams are welded and the
-// welded cloth goes on (see garment_sewing.h for the pieces).
+// benchmarks run it: the pattern's panels start placed around the body (in
+// the pose they were placed for), the seams sew them during the first frames,
+// then the seams are welded and the welded cloth goes on (see
+// garment_sewing.h for the pieces).
+//
+// Sewing is gentle: no stiff seam springs; each seam pair's distance shrinks
+// by at most sewingSpeed per second in the solver's position pass, solved
+// with the elongation limit (ClothSimulator::sewSeams), and velocities decay
+// while sewing. Seams within one panel (sleeve and trouser-leg tubes) close
+// first, then all seams. The weld comes when every pair is within weldGap,
+// when the gap has stopped shrinking for half a second, or after
+// maxSewingSeconds. Keep the body still (step without posedBody) until
+// welded() for the best fit.
 //
 // Everything a caller sees is in the garment mesh's vertex order (the
 // unwelded GarmentMesh), before and after welding, so a viewer keeps one

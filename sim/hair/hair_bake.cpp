@@ -38,6 +38,12 @@ HairRig HairRig::fromCharacter(const Character& character) {
   }
 }
 
+HairSimParams characterHairParams() {
+  HairSimParams params;
+  params.globalRange = 1.0f;
+  return params;
+}
+
 glm::mat4 HairRig::posedFromRest(const std::vector<glm::mat4>& worldFromBone) const {
   if (headBone < 0 || headBone >= int(worldFromBone.size())) return glm::mat4(1.0f);
   return worldFromBone[headBone] * glm::inverse(restWorldFromHead);

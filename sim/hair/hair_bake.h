@@ -33,6 +33,13 @@ struct HairRig {
   glm::mat4 posedFromRest(const std::vector<glm::mat4>& worldFromBone) const;
 };
 
+// The dynamics for a groom on a character (the editor, mannequin-cli): the
+// HairSimParams defaults with the style memory reaching down the whole
+// strand (globalRange 1) instead of its root half, so the groom keeps its
+// shape where it rests on the shoulders instead of the ends sliding off and
+// the children, which follow their guide's bending, fanning out there.
+HairSimParams characterHairParams();
+
 struct HairBakeCallbacks {
   std::function<void(int done, int total)> progress;  // after each frame
   std::function<bool()> cancelled;                    // polled before each frame

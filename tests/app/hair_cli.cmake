@@ -1,6 +1,6 @@
 # Hair in mannequin-cli end to end: simulate a walking scene with hair and no
 # cloth (stats, PLY frames whose roots sit on the posed mesh), render it, and
-# groom an imported character with a built-in style.
+# groom an imported character with a built-in style and simulate it.
 #   -DCLI=<mannequin-cli> -DROOTS=<mannequin_hair_roots_check> -DSCENE=<hair scene>
 #   -DCHARACTER=<imported character> -DWORK=<dir> -DRENDER=ON|OFF
 file(REMOVE_RECURSE "${WORK}")
@@ -77,4 +77,15 @@ stat("${WORK}/groom.json" style_scale scale)
 stat("${WORK}/groom.json" strands strands)
 if(NOT inside EQUAL 0 OR NOT strands EQUAL 5000 OR NOT scale GREATER 1.2)
   message(FATAL_ERROR "imported groom: points inside ${inside}, strands ${strands}, style scale ${scale}")
+endif()
+
+# ... and a scene with that character playing its clip, the style by name.
+file(WRITE "${WORK}/imported.mqscene"
+  "{\"format\": \"mannequin-scene\", \"version\": 1, \"character\": \"${CHARACTER}\",\n"
+  " \"hair\": {\"style\": \"long_straight\", \"strands\": 3000}}\n")
+run(0 "${CLI}" simulate "${WORK}/imported.mqscene" --frames 20 --stats-json "${WORK}/imported.json")
+stat("${WORK}/imported.json" hair_points_inside_body inside)
+stat("${WORK}/imported.json" hair_max_length_error length_error)
+if(NOT inside EQUAL 0 OR length_error GREATER 0.02)
+  message(FATAL_ERROR "imported character's hair: points inside ${inside}, length error ${length_error}")
 endif()

@@ -27,9 +27,9 @@ struct DrapedShirt {
 };
 
 // The T-shirt as placed around the body before sewing (panels wrapped on
-// cylinders around the torso and the upper arms). A simulated drape would
-// be the better subject, but the cloth solver currently lifts the sewn shirt
-// off the shoulders (see the disabled test in tests/sim/garment_sewing_test.cpp).
+// cylinders around the torso and the upper arms): a fixed subject for the
+// shading, independent of the solver. (A sewn drape, GarmentSimulation,
+// would be the better one now that sewing settles on the shoulders.)
 DrapedShirt placedShirt(const Character& body) {
   Garment shirt = makeParametricGarment("tshirt", body);
   shirt.targetEdgeLength = 0.02f;

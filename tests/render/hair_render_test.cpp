@@ -17,6 +17,8 @@
 #include "core/character/posed_character.h"
 #include "core/hair/character_groom.h"
 #include "core/hair/hairstyle.h"
+#include "core/hair/head_fit.h"
+#include "core/io/character_import.h"
 #include "render/hair_actor.h"
 #include "render/image_checks.h"
 #include "render/offscreen.h"
@@ -278,6 +280,51 @@ TEST_F(HairRenderTest, OpacityShadowMapsShadeInnerStrands) {
   EXPECT_NEAR(sumMaps / sumCounted, 1.0, 0.05);  // about as much as the exact count
   const std::string why = test::checkAgainstBaseline(image, "hair_draped_sphere_osm");
   EXPECT_TRUE(why.empty()) << why;
+}
+
+// A built-in style on an imported character (CesiumMan: no scalp tags, no
+// "head" bone, a head about 1.5 times the mannequin's), fitted to its head.
+// Seen from the same place relative to the head (distances in head sizes),
+// the bob covers about as much of the picture as on the default mannequin:
+// it is proportional to the head, not a mannequin-sized cap.
+TEST(HairRenderImported, FittedBobOnCesiumManLooksLikeOnTheMannequin) {
+  test::useSoftwareRendering();
+  auto hairCoverage = [](const Character& character, const std::string& baseline) {
+    HairSection section;
+    section.style = builtinHairStyle("bob");
+    std::unique_ptr<HairGroom> groom = makeSectionGroom(character, section);
+    groom->grow(section.style, 20000);
+    EXPECT_EQ(groom->countPointsInside(), 0u) << character.name;
+    render::SceneView view;
+    view.setCharacter(character);
+    view.setGridVisible(false);
+    PosedCharacter posed;
+    posed.evaluate(character, -1, 0.0f, nullptr, nullptr);
+    view.updatePose(posed);
+    const glm::vec3 head = groom->proxy().headCenter();
+    const float size = headSize(groom->proxy());
+    view.setCamera(head + size * glm::vec3(-7.0f, 3.0f, -11.0f), head + size * glm::vec3(0.0f, -1.0f, 0.0f));
+    render::OffscreenRenderer renderer(view, kWidth, kHeight);
+    const render::RgbImage bare = renderer.capture();
+    render::HairActor hair;
+    hair.setStrands(groom->strands());
+    hair.setColors(section.style.rootColor, section.style.tipColor);
+    view.addProp(hair.actor());
+    const render::RgbImage image = renderer.capture();
+    if (!baseline.empty()) {
+      const std::string why = test::checkAgainstBaseline(image, baseline);
+      EXPECT_TRUE(why.empty()) << why;
+    }
+    return test::foregroundOf(image, bare);
+  };
+  const std::string path = std::string(MANNEQUIN_SHARED_DIR) + "/assets/characters/CesiumMan/glTF-Binary/CesiumMan.glb";
+  const test::Foreground cesium = hairCoverage(importCharacter(path), "hair_cesium_man_bob");
+  const test::Foreground mannequin = hairCoverage(makeDefaultMannequin(), "");
+  EXPECT_GT(cesium.fraction, 0.08);
+  EXPECT_GT(cesium.fraction / mannequin.fraction, 0.6);
+  EXPECT_LT(cesium.fraction / mannequin.fraction, 1.6);
+  // Centred on the head, as on the mannequin.
+  EXPECT_LT(glm::length(cesium.centre - mannequin.centre), 0.15);
 }
 
 }  // namespace

@@ -92,6 +92,61 @@ TEST(ClothForces, SpringDampingOpposesRelativeVelocity) {
   EXPECT_NEAR(glm::length(f[0] + f[1]), 0.0f, 1e-6f);  // momentum conserved
 }
 
+TEST(ClothForces, SpringImplicitProductMatchesTheAssembledMatrix) {
+  // The solver's product y = -(h df/dv + h^2 df/dx) p (compact blocks, the
+  // vectorised bulk form and the per-vertex form) against the sum of
+  // h^2 (-K) + h kd d d^T over the springs, with K from stiffnessBlock():
+  // an irregular spring set on 37 vertices (not whole 8-vertex blocks), some
+  // springs stretched and some compressed, so both paths and the padding run.
+  const size_t n = 37;
+  ClothState s = randomState(n, 21);
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<uint32_t> pick(0, n - 1);
+  std::uniform_real_distribution<float> scale(0.6f, 1.4f);
+  std::vector<Spring> list;
+  while (list.size() < 150) {
+    const uint32_t a = pick(rng), b = pick(rng);
+    if (a == b) continue;
+    list.push_back({a, b, scale(rng) * glm::length(s.x[a] - s.x[b]), 50.0f + 10.0f * float(list.size() % 7), 0.3f});
+  }
+  for (uint32_t v = 0; v < 3; ++v) list.push_back({v, v + 1, 0.0f, 400.0f, 1.0f});  // seam-like: zero rest length
+  SpringForce springs(list, n);
+  const float h = 0.02f;
+  std::vector<glm::vec3> hKv(n, glm::vec3(0.0f));
+  std::vector<glm::mat3> diagonal(n, glm::mat3(0.0f));
+  springs.prepareImplicit(s, h, hKv, diagonal);
+  std::vector<glm::vec3> p(n);
+  std::normal_distribution<float> g;
+  for (glm::vec3& q : p) q = glm::vec3(g(rng), g(rng), g(rng));
+  std::vector<glm::vec3> expected(n, glm::vec3(0.0f));
+  std::vector<glm::mat3> expectedDiagonal(n, glm::mat3(0.0f));
+  for (size_t k = 0; k < list.size(); ++k) {
+    const Spring& sp = list[k];
+    const glm::vec3 delta = s.x[sp.a] - s.x[sp.b];
+    const glm::vec3 d = glm::length(delta) > 1e-12f ? glm::normalize(delta) : glm::vec3(0.0f);
+    const glm::mat3 block = -(h * h) * springs.stiffnessBlock(k, s.x, true) + (h * sp.kd) * glm::outerProduct(d, d);
+    expected[sp.a] += block * (p[sp.a] - p[sp.b]);
+    expected[sp.b] += block * (p[sp.b] - p[sp.a]);
+    expectedDiagonal[sp.a] += block;
+    expectedDiagonal[sp.b] += block;
+  }
+  springs.productPass(p);
+  std::vector<glm::vec3> bulk(n, glm::vec3(0.0f));
+  springs.addProductRange(0, n, bulk.data());
+  std::vector<glm::vec3> split(n, glm::vec3(0.0f));  // ranges that start and end inside blocks
+  springs.addProductRange(0, 5, split.data());
+  springs.addProductRange(5, 29, split.data());
+  springs.addProductRange(29, n, split.data());
+  for (size_t v = 0; v < n; ++v) {
+    const float tolerance = 1e-4f * (1.0f + glm::length(expected[v]));
+    EXPECT_LT(glm::length(springs.productAt(v) - expected[v]), tolerance) << v;
+    EXPECT_LT(glm::length(bulk[v] - expected[v]), tolerance) << v;
+    EXPECT_LT(glm::length(split[v] - expected[v]), tolerance) << v;
+    for (int c = 0; c < 3; ++c)
+      EXPECT_LT(glm::length(diagonal[v][c] - expectedDiagonal[v][c]), 1e-4f * (1.0f + glm::length(expectedDiagonal[v][c])));
+  }
+}
+
 TEST(ClothForces, CantileverForceIsMinusEnergyGradient) {
   const ClothState s = randomState(5, 21);
   const CantileverBending bending({{0, 1, 2, 0.02f, 0.0f}, {1, 2, 3, 0.03f, 0.0f}, {2, 3, 4, 0.01f, 0.0f}}, 5);

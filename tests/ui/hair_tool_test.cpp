@@ -4,14 +4,18 @@
 // position are changed in the panel's fields, and each edit must regrow the
 // guides; undo and redo must give back exactly the strands before and after;
 // the document saved and reopened must hold the same hairstyle and grow the
-// same strands.
+// same strands. The source is also dragged by its handle in the viewport.
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <thread>
 
 #include <QApplication>
+#include <QCheckBox>
 #include <QDoubleSpinBox>
+#include <QDockWidget>
+#include <QImage>
+#include <QMouseEvent>
 #include <QListWidget>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -19,12 +23,16 @@
 #include <QTest>
 #include <QUndoStack>
 
+#include <vtkRenderer.h>
+
 #include "core/hair/hair_groom.h"
 #include "core/hair/hairstyle_json.h"
 #include "ui/document/editor_document.h"
+#include "render/scene_view.h"
 #include "ui/hair/hair_panel.h"
 #include "ui/hair/hair_tool.h"
 #include "ui/main_window.h"
+#include "ui/viewport/vtk_viewport_widget.h"
 
 using namespace mq;
 using namespace mq::ui;
@@ -58,6 +66,26 @@ class HairToolTest : public QObject {
   HairTool* tool_ = nullptr;
   EditorDocument* doc() { return window_->document(); }
   HairPanel* panel() { return tool_->panel(); }
+
+  // Widget coordinates of a world point in the viewport.
+  QPoint toWidget(const glm::vec3& world) {
+    vtkRenderer* renderer = window_->sceneView()->renderer();
+    renderer->SetWorldPoint(world.x, world.y, world.z, 1.0);
+    renderer->WorldToDisplay();
+    const double* d = renderer->GetDisplayPoint();
+    const double ratio = window_->viewport()->devicePixelRatioF();
+    return QPoint(int(d[0] / ratio), int((window_->viewport()->height() * ratio - 1 - d[1]) / ratio));
+  }
+
+  void renderNow() {
+    window_->viewport()->grabFramebuffer();
+    QApplication::processEvents();
+  }
+
+  static void sendMouse(QWidget* w, QEvent::Type type, QPoint pos, Qt::MouseButton button, Qt::MouseButtons buttons) {
+    QMouseEvent event(type, QPointF(pos), w->mapToGlobal(QPointF(pos)), button, buttons, Qt::NoModifier);
+    QApplication::sendEvent(w, &event);
+  }
 
   // State after each step, compared by undo/redo and the reopen.
   std::vector<float> opened_, added_, strengthened_, moved_;
@@ -157,6 +185,52 @@ class HairToolTest : public QObject {
     undo->redo();
     QCOMPARE(guidePoints(*tool_), moved_);
     QCOMPARE(styleText(*tool_), movedStyle_);
+  }
+
+  void opacityShadowMapsCheckboxSwitchesTheShadowing() {
+    QVERIFY(!tool_->opacityShadowMaps());
+    const QImage counted = window_->viewport()->grabFramebuffer();
+    panel()->shadowMapsBox()->setChecked(true);
+    QVERIFY(tool_->opacityShadowMaps());
+    const QImage mapped = window_->viewport()->grabFramebuffer();
+    int differing = 0;
+    for (int y = 0; y < counted.height(); ++y)
+      for (int x = 0; x < counted.width(); ++x) differing += counted.pixel(x, y) != mapped.pixel(x, y);
+    QVERIFY2(differing > 100, "the viewport looks the same with opacity shadow maps");
+    panel()->shadowMapsBox()->setChecked(false);
+    QVERIFY(!tool_->opacityShadowMaps());
+  }
+
+  // Dragging the source's handle in the viewport moves it: live guides
+  // during the drag, one undo step for the whole drag, children regrown at
+  // the release.
+  void draggingTheHandleMovesThePrimitive() {
+    tool_->dock()->show();
+    tool_->dock()->raise();
+    QApplication::processEvents();
+    renderNow();
+    const PrimitiveRef source{PrimitiveRef::Source, int(tool_->style().primitives.sources.size()) - 1};
+    QCOMPARE(tool_->style().primitives.sources[source.index].position.x, 0.08f);  // the one added and moved
+    const glm::vec3 before = tool_->style().primitives.sources[source.index].position;
+    const QPoint at = toWidget(glm::vec3(tool_->worldFromHead() * glm::vec4(before, 1.0f)));
+    const int commands = doc()->undoStack()->index();
+    QWidget* viewport = window_->viewport();
+    sendMouse(viewport, QEvent::MouseButtonPress, at, Qt::LeftButton, Qt::LeftButton);
+    for (int step = 1; step <= 4; ++step)
+      sendMouse(viewport, QEvent::MouseMove, at + QPoint(0, -8 * step), Qt::NoButton, Qt::LeftButton);
+    sendMouse(viewport, QEvent::MouseButtonRelease, at + QPoint(0, -32), Qt::LeftButton, Qt::NoButton);
+    QCOMPARE(doc()->undoStack()->index(), commands + 1);  // one step for the drag
+    const glm::vec3 after = tool_->style().primitives.sources[source.index].position;
+    QVERIFY2(after.y > before.y + 0.01f, "dragging the handle up did not raise the source");
+    const std::vector<float> dragged = guidePoints(*tool_);
+    QVERIFY2(maxDifference(moved_, dragged) > 1e-3f, "the guides did not follow the dragged source");
+    QCOMPARE(tool_->groom()->countPointsInside(), size_t(0));
+    doc()->undoStack()->undo();
+    QCOMPARE(guidePoints(*tool_), moved_);
+    doc()->undoStack()->redo();
+    QCOMPARE(guidePoints(*tool_), dragged);
+    moved_ = dragged;
+    movedStyle_ = styleText(*tool_);
   }
 
   void savedDocumentReopensWithTheHairstyle() {

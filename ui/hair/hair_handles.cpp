@@ -37,6 +37,12 @@ vtkSmartPointer<vtkActor> makeActor(vtkAlgorithm* source, const glm::vec3& color
   actor->PickableOff();
   return actor;
 }
+
+// A dragged value rounded to 1e-4 (0.1 mm for positions): the document
+// stores 6 significant digits, so the saved style reopens to the very same
+// floats and grows the very same strands as the one shown.
+glm::vec3 roundedForTheDocument(const glm::vec3& v) { return glm::round(v * 1e4f) / 1e4f; }
+
 }  // namespace
 
 std::vector<PrimitiveRef> primitivesOf(const HairStyle& style) {
@@ -61,10 +67,11 @@ glm::vec3 handlePosition(const HairStyle& style, const PrimitiveRef& ref) {
 void moveHandle(HairStyle& style, const PrimitiveRef& ref, const glm::vec3& headSpace) {
   switch (ref.kind) {
     case PrimitiveRef::Stream:
-      if (glm::length(headSpace) > 1e-4f) style.primitives.streams[ref.index].direction = glm::normalize(headSpace);
+      if (glm::length(headSpace) > 1e-4f)
+        style.primitives.streams[ref.index].direction = roundedForTheDocument(glm::normalize(headSpace));
       break;
-    case PrimitiveRef::Source: style.primitives.sources[ref.index].position = headSpace; break;
-    default: style.primitives.vortices[ref.index].position = headSpace; break;
+    case PrimitiveRef::Source: style.primitives.sources[ref.index].position = roundedForTheDocument(headSpace); break;
+    default: style.primitives.vortices[ref.index].position = roundedForTheDocument(headSpace); break;
   }
 }
 

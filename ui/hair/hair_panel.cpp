@@ -13,6 +13,8 @@
 #include <QSignalBlocker>
 #include <QVBoxLayout>
 
+#include "core/hair/hair_groom.h"
+#include "core/hair/head_fit.h"
 #include "ui/hair/hair_style_command.h"
 #include "ui/hair/hair_tool.h"
 
@@ -167,13 +169,18 @@ HairPanel::HairPanel(HairTool* tool, QWidget* parent) : QWidget(parent), tool_(t
   auto* dynamicsLayout = new QVBoxLayout(dynamics);
   handles_ = new QCheckBox(tr("Show primitive handles"));
   handles_->setChecked(true);
+  shadowMaps_ = new QCheckBox(tr("Opacity shadow maps"));
+  shadowMaps_->setToolTip(tr("Self-shadowing from a stack of opacity maps along the light (faster) "
+                             "instead of the exact count of the hair in front of each point"));
   simulate_ = new QCheckBox(tr("Simulate while playing"));
   bake_ = new QPushButton(tr("Bake clip"));
   dynamicsLayout->addWidget(handles_);
+  dynamicsLayout->addWidget(shadowMaps_);
   dynamicsLayout->addWidget(simulate_);
   dynamicsLayout->addWidget(bake_);
   layout->addWidget(dynamics);
   connect(handles_, &QCheckBox::toggled, tool_, &HairTool::setHandlesVisible);
+  connect(shadowMaps_, &QCheckBox::toggled, tool_, &HairTool::setOpacityShadowMaps);
   connect(simulate_, &QCheckBox::toggled, tool_, &HairTool::setSimulating);
   connect(bake_, &QPushButton::clicked, this, [this] {
     status_->setText(tool_->bake() ? tr("Baked: the clip plays the simulated hair.") : tr("Bake cancelled."));
@@ -218,14 +225,19 @@ void HairPanel::addPrimitive(int kind) {
   if (!tool_->hasHair()) return;
   HairStyle after = tool_->style();
   PrimitiveRef ref{PrimitiveRef::Kind(kind), 0};
+  // New primitives sit where they would on the default mannequin's head,
+  // scaled to this head.
+  const float k = tool_->groom() && headSize(tool_->groom()->proxy()) > 0.0f
+                      ? headSize(tool_->groom()->proxy()) / kReferenceHeadSize
+                      : 1.0f;
   if (kind == PrimitiveRef::Stream) {
     after.primitives.streams.push_back({});
     ref.index = int(after.primitives.streams.size()) - 1;
   } else if (kind == PrimitiveRef::Source) {
-    after.primitives.sources.push_back({glm::vec3(0.0f, 0.05f, 0.12f), 0.3f, 0.05f});
+    after.primitives.sources.push_back({k * glm::vec3(0.0f, 0.05f, 0.12f), 0.3f * k, 0.05f * k});
     ref.index = int(after.primitives.sources.size()) - 1;
   } else {
-    after.primitives.vortices.push_back({glm::vec3(0.0f, -0.15f, -0.12f), glm::vec3(0.0f, -1.0f, 0.0f), 0.5f, 0.05f});
+    after.primitives.vortices.push_back({k * glm::vec3(0.0f, -0.15f, -0.12f), glm::vec3(0.0f, -1.0f, 0.0f), 0.5f, 0.05f * k});
     ref.index = int(after.primitives.vortices.size()) - 1;
   }
   lastFieldKey_ = 0;

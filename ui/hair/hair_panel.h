@@ -1,10 +1,10 @@
 #pragma once
 // The hair tool's dock: the built-in style, the flow primitives of the style
 // (list with add/delete and the selected one's fields), the strand
-// parameters (density, length, clumping, frizz, colours) and the dynamics
-// (simulate while playing, bake the clip). Every change goes to
-// HairTool::editStyle as an undoable edit; the panel refreshes from the
-// tool's signals.
+// parameters (density, length, clumping, frizz, colours), the view (handles,
+// opacity shadow maps) and the dynamics (simulate while playing, bake the
+// clip). Every change goes to HairTool::editStyle as an undoable edit; the
+// panel refreshes from the tool's signals.
 
 #include <QWidget>
 
@@ -36,6 +36,7 @@ class HairPanel : public QWidget {
   QPushButton* addVortexButton() const { return addVortex_; }
   QDoubleSpinBox* strengthBox() const { return strength_; }
   QDoubleSpinBox* positionBox(int axis) const { return position_[axis]; }
+  QCheckBox* shadowMapsBox() const { return shadowMaps_; }
 
  private:
   void refresh();
@@ -59,7 +60,7 @@ class HairPanel : public QWidget {
   QDoubleSpinBox* position_[3];
   QDoubleSpinBox *density_, *length_, *clumping_, *frizz_;
   QPushButton *rootColor_, *tipColor_;
-  QCheckBox *handles_, *simulate_;
+  QCheckBox *handles_, *simulate_, *shadowMaps_;
   QPushButton* bake_;
   QLabel* status_;
   bool refreshing_ = false;

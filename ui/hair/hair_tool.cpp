@@ -203,6 +203,17 @@ void HairTool::setHandlesVisible(bool visible) {
   window_->viewport()->requestRender();
 }
 
+void HairTool::setOpacityShadowMaps(bool on) {
+  render::HairShading shading = actor_->shading();
+  shading.shadowMethod = on ? render::HairShadowMethod::OpacityMaps : render::HairShadowMethod::PointCount;
+  actor_->setShading(shading);
+  window_->viewport()->requestRender();
+}
+
+bool HairTool::opacityShadowMaps() const {
+  return actor_->shading().shadowMethod == render::HairShadowMethod::OpacityMaps;
+}
+
 void HairTool::updateHandles() {
   if (style_ && groom_) handles_->update(*style_, worldFromHead(), selected_);
 }
@@ -272,7 +283,7 @@ void HairTool::ensureDynamics() {
   EditorDocument* document = window_->document();
   if (!rig_) rig_ = std::make_unique<HairRig>(HairRig::fromProxy(document->character(), groom_->proxy()));
   if (!simulator_) {
-    simulator_ = std::make_unique<HairSimulator>();
+    simulator_ = std::make_unique<HairSimulator>(characterHairParams());
     simulator_->setRest(leadingStrands(groom_->strands(), groom_->guideCount()));
     lastTime_ = document->time();
   }
@@ -328,7 +339,7 @@ bool HairTool::bake() {
   };
   callbacks.cancelled = [&] { return progress.wasCanceled(); };
   HairBake result = bakeHair(document->character(), document->clipIndex(),
-                             leadingStrands(groom_->strands(), groom_->guideCount()), HairSimParams{}, {}, callbacks,
+                             leadingStrands(groom_->strands(), groom_->guideCount()), characterHairParams(), {}, callbacks,
                              rig_.get());
   window_->hideProgress(result.cancelled ? tr("Hair bake cancelled") : tr("Hair baked"));
   if (result.cancelled) return false;

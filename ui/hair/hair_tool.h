@@ -67,6 +67,12 @@ class HairTool : public QObject {
   PrimitiveRef selectedPrimitive() const { return selected_; }
   void selectPrimitive(const PrimitiveRef& ref);
   void setHandlesVisible(bool visible);
+  // Head space (rest head centre, world axes) to the world as posed now:
+  // where the handles are drawn.
+  glm::mat4 worldFromHead() const;
+  // Self-shadowing by opacity shadow maps instead of the exact count.
+  void setOpacityShadowMaps(bool on);
+  bool opacityShadowMaps() const;
 
   // Dynamics
   void setSimulating(bool on);
@@ -99,8 +105,6 @@ class HairTool : public QObject {
   void updateHandles();
   void invalidateDynamics();
   glm::vec3 headCenter() const;
-  // Head space (rest head centre, world axes) to the world as posed now.
-  glm::mat4 worldFromHead() const;
   QPoint toDisplay(const QPointF& position) const;
   bool onPress(QMouseEvent* event);
   bool onMove(QMouseEvent* event);

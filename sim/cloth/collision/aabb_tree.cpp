@@ -26,6 +26,12 @@ void AabbTree::build(const std::vector<Box>& boxes) {
   nodes_.clear();
   nodes_.reserve(2 * count / kLeafSize + 2);
   if (count > 0) buildNode(0, count, boxes);
+  gatherLeafBoxes(boxes);
+}
+
+void AabbTree::gatherLeafBoxes(const std::vector<Box>& boxes) {
+  leafBoxes_.resize(order_.size());
+  for (size_t k = 0; k < order_.size(); ++k) leafBoxes_[k] = boxes[order_[k]];
 }
 
 int32_t AabbTree::buildNode(uint32_t first, uint32_t count, const std::vector<Box>& boxes) {
@@ -65,6 +71,7 @@ void AabbTree::refit(const std::vector<Box>& boxes) {
     }
     n.box = box;
   }
+  gatherLeafBoxes(boxes);
 }
 
 }  // namespace mq::cloth

@@ -40,9 +40,11 @@ class AabbTree {
     uint32_t first = 0, count = 0;  // leaf: range in order_
   };
   int32_t buildNode(uint32_t first, uint32_t count, const std::vector<Box>& boxes);
+  void gatherLeafBoxes(const std::vector<Box>& boxes);
 
   std::vector<Node> nodes_;
   std::vector<uint32_t> order_;  // primitive indices, leaf ranges
+  std::vector<Box> leafBoxes_;   // the primitives' boxes in order_'s order
 };
 
 // Boxes of the triangles of `positions`, grown by `margin`.
@@ -59,7 +61,8 @@ void AabbTree::query(const Box& box, Visit&& visit) const {
     const Node& n = nodes_[stack[--top]];
     if (!n.box.overlaps(box)) continue;
     if (n.left < 0) {
-      for (uint32_t k = n.first; k < n.first + n.count; ++k) visit(order_[k]);
+      for (uint32_t k = n.first; k < n.first + n.count; ++k)
+        if (leafBoxes_[k].overlaps(box)) visit(order_[k]);
     } else {
       stack[top++] = n.left;
       stack[top++] = n.right;

@@ -1,6 +1,7 @@
 #include "sim/cloth/collision/self_collision.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "sim/cloth/collision/proximity.h"
@@ -26,7 +27,10 @@ std::vector<T> collectInBlocks(size_t count, Body&& body) {
     for (size_t b = b0; b < b1; ++b)
       for (size_t i = b * size; i < std::min(count, (b + 1) * size); ++i) body(i, blocks[b]);
   });
+  size_t total = 0;
+  for (const auto& b : blocks) total += b.size();
   std::vector<T> all;
+  all.reserve(total);
   for (auto& b : blocks) all.insert(all.end(), b.begin(), b.end());
   return all;
 }
@@ -48,27 +52,54 @@ SelfCollision::SelfCollision(const std::vector<uint32_t>& triangles, size_t vert
 
 void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::vec3>& x0, float thickness) {
   const size_t n = s.size(), triangleCount = triangles_.size() / 3;
-  // Box of every triangle over the step (its corners at x0 and at x1).
-  std::vector<Box> boxes(triangleCount);
-  for (size_t t = 0; t < triangleCount; ++t) {
-    for (int c = 0; c < 3; ++c) {
-      boxes[t].extend(x0[triangles_[3 * t + c]]);
-      boxes[t].extend(s.x[triangles_[3 * t + c]]);
-    }
-    boxes[t].min -= glm::vec3(thickness);
-    boxes[t].max += glm::vec3(thickness);
+  // How every vertex moved in the step. Two elements can close their gap by
+  // at most the largest difference of their vertices' moves (a sheet falling
+  // as a whole closes none).
+  std::vector<glm::vec3> move(n);
+  glm::vec3 meanMove(0.0f);
+  float meanMotion = 0.0f;
+  for (size_t v = 0; v < n; ++v) {
+    move[v] = s.x[v] - x0[v];
+    meanMove += move[v];
+    meanMotion += glm::length(move[v]);
   }
-  tree_.build(boxes);
+  meanMove /= float(std::max<size_t>(n, 1));
+  meanMotion /= float(std::max<size_t>(n, 1));
+  float deviation = 0.0f;  // largest distance of a move from the mean move
+  for (size_t v = 0; v < n; ++v) deviation = std::max(deviation, glm::length(move[v] - meanMove));
+  auto closing = [&](std::initializer_list<uint32_t> first, std::initializer_list<uint32_t> second) {
+    float worst = 0.0f;
+    for (uint32_t a : first)
+      for (uint32_t b : second) {
+        const glm::vec3 d = move[a] - move[b];
+        worst = std::max(worst, glm::dot(d, d));
+      }
+    return std::sqrt(worst);
+  };
+  // Element boxes for the broad phase, whichever is smaller: swept over the
+  // step (start and end, grown by the thickness), or at the start grown by
+  // half the thickness plus the deviation (any two elements closing by up to
+  // twice the deviation then still overlap). The second wins when the cloth
+  // moves mostly as a whole.
+  const bool relative = 2.0f * deviation < meanMotion + thickness;
+  const float grow = relative ? 0.5f * thickness + deviation : thickness;
   auto sweptBox = [&](std::initializer_list<uint32_t> vertices) {
     Box b;
     for (uint32_t v : vertices) {
       b.extend(x0[v]);
-      b.extend(s.x[v]);
+      if (!relative) b.extend(s.x[v]);
     }
-    b.min -= glm::vec3(thickness);
-    b.max += glm::vec3(thickness);
+    b.min -= glm::vec3(grow);
+    b.max += glm::vec3(grow);
     return b;
   };
+  std::vector<Box> boxes(triangleCount);
+  for (size_t t = 0; t < triangleCount; ++t)
+    boxes[t] = sweptBox({triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]});
+  tree_.build(boxes);
+  std::vector<Box> edgeBoxes(edges_.size());
+  for (size_t e = 0; e < edges_.size(); ++e) edgeBoxes[e] = sweptBox({edges_[e].first, edges_[e].second});
+  edgeTree_.build(edgeBoxes);
   vertexTriangle_ = collectInBlocks<VertexTriangle>(n, [&](size_t v, std::vector<VertexTriangle>& out) {
     tree_.query(sweptBox({uint32_t(v)}), [&](uint32_t t) {
       const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
@@ -76,37 +107,37 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
       const glm::vec3 w = closestTriangleWeights(x0[v], x0[a], x0[b], x0[c]);
       const glm::vec3 normal = glm::cross(x0[b] - x0[a], x0[c] - x0[a]);
       const glm::vec3 offset = x0[v] - (w.x * x0[a] + w.y * x0[b] + w.z * x0[c]);
-      const float reach = thickness + glm::length(s.x[v] - x0[v]) +
-                          std::max({glm::length(s.x[a] - x0[a]), glm::length(s.x[b] - x0[b]), glm::length(s.x[c] - x0[c])});
-      if (glm::length(offset) > reach) return;
+      const float reach = thickness + closing({uint32_t(v)}, {a, b, c});
+      if (glm::dot(offset, offset) > reach * reach) return;
       const float side = glm::dot(offset, normal) >= 0.0f ? 1.0f : -1.0f;
       out.push_back({uint32_t(v), t, w, side});
     });
   });
   edgeEdge_ = collectInBlocks<EdgeEdge>(edges_.size(), [&](size_t e, std::vector<EdgeEdge>& out) {
     const auto [p0, p1] = edges_[e];
-    tree_.query(sweptBox({p0, p1}), [&](uint32_t t) {
-      for (int c = 0; c < 3; ++c) {
-        const uint32_t f = triangleEdges_[3 * t + c];
-        if (f <= e) continue;
-        const auto [q0, q1] = edges_[f];
-        if (sharesVertex(p0, p1, q0, q1)) continue;
-        const glm::vec2 st = closestSegmentParameters(x0[p0], x0[p1], x0[q0], x0[q1]);
-        const glm::vec3 d = glm::mix(x0[p0], x0[p1], st.x) - glm::mix(x0[q0], x0[q1], st.y);
-        const float l = glm::length(d);
-        const float reach = thickness + std::max(glm::length(s.x[p0] - x0[p0]), glm::length(s.x[p1] - x0[p1])) +
-                            std::max(glm::length(s.x[q0] - x0[q0]), glm::length(s.x[q1] - x0[q1]));
-        if (l < 1e-9f || l > reach) continue;
-        out.push_back({uint32_t(e), f, st, d / l});
-      }
+    const Box& box = edgeBoxes[e];
+    const size_t first = out.size();
+    edgeTree_.query(box, [&](uint32_t f) {
+      // (The tree only visits edges whose swept boxes meet this one's: the
+      // others never come within the thickness during the step.)
+      if (f <= e) return;
+      const auto [q0, q1] = edges_[f];
+      if (sharesVertex(p0, p1, q0, q1)) return;
+      const float reach = thickness + closing({p0, p1}, {q0, q1});
+      // Bounding balls first: the segments' points lie within half their
+      // lengths of their midpoints.
+      const float apart = glm::length(0.5f * (x0[p0] + x0[p1] - x0[q0] - x0[q1])) -
+                          0.5f * (glm::length(x0[p0] - x0[p1]) + glm::length(x0[q0] - x0[q1]));
+      if (apart > reach) return;
+      const glm::vec2 st = closestSegmentParameters(x0[p0], x0[p1], x0[q0], x0[q1]);
+      const glm::vec3 d = glm::mix(x0[p0], x0[p1], st.x) - glm::mix(x0[q0], x0[q1], st.y);
+      const float l = glm::length(d);
+      if (l < 1e-9f || l > reach) return;
+      out.push_back({uint32_t(e), f, st, d / l});
     });
+    // In order of the other edge (the tree's order depends on the boxes).
+    std::sort(out.begin() + first, out.end(), [](const EdgeEdge& a, const EdgeEdge& b) { return a.e1 < b.e1; });
   });
-  // An edge pair can be reached through both triangles of an edge.
-  std::sort(edgeEdge_.begin(), edgeEdge_.end(),
-            [](const EdgeEdge& a, const EdgeEdge& b) { return a.e0 != b.e0 ? a.e0 < b.e0 : a.e1 < b.e1; });
-  edgeEdge_.erase(std::unique(edgeEdge_.begin(), edgeEdge_.end(),
-                              [](const EdgeEdge& a, const EdgeEdge& b) { return a.e0 == b.e0 && a.e1 == b.e1; }),
-                  edgeEdge_.end());
 }
 
 // Pushes the weighted point sum_k w_k x_k of a pair apart along n until its

@@ -41,7 +41,8 @@ class SelfCollision {
   std::vector<uint32_t> triangles_;
   std::vector<std::pair<uint32_t, uint32_t>> edges_;
   std::vector<uint32_t> triangleEdges_;  // 3 per triangle
-  AabbTree tree_;
+  AabbTree tree_;      // over the triangles' boxes
+  AabbTree edgeTree_;  // over the edges' boxes
   std::vector<VertexTriangle> vertexTriangle_;
   std::vector<EdgeEdge> edgeEdge_;
 };
