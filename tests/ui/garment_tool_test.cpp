@@ -238,6 +238,8 @@ class GarmentToolTest : public QObject {
     QCOMPARE(doc()->sceneSections().cloth["integrator"].get<std::string>(), std::string("verlet"));
     undo()->undo();
     QCOMPARE(tool_->scene().cloth.settings.integrator, cloth::IntegratorKind::ImplicitEuler);
+    // Back at the defaults: no cloth section is written (it would describe a sheet).
+    QVERIFY(doc()->sceneSections().cloth.is_null());
   }
 
   void rubberBandSelectsAndPins() {
