@@ -248,7 +248,9 @@ void MainWindow::createMenus() {
                                 "Zoom: wheel, right drag or Ctrl+left drag\n"
                                 "Select a bone: click it\n"
                                 "Rotate the selected bone: drag a ring of the gizmo\n"
-                                "Frame all: F in the viewport, or Home"));
+                                "Frame all: F in the viewport, or Home\n"
+                                "Select garment vertices: Garments > Select vertices, then drag a\n"
+                                "rectangle (Shift adds, Ctrl removes); Ctrl+Alt+drag at any time"));
   });
 }
 
