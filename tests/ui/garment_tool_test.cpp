@@ -380,9 +380,9 @@ class GarmentToolTest : public QObject {
     QCOMPARE(tool_->scene().garments[0].pins.vertices, saved.garments[0].pins.vertices);
     QCOMPARE(tool_->garmentMesh(0)->vertexCount(), vertices);
     QCOMPARE(panel()->garmentList()->count(), 1);
-    // Reopening pushes no edit. (The window's modified flag is not checked:
-    // the hair tool marks a freshly opened document without hair as changed.)
+    // Reopening pushes no edit and leaves the document unmodified.
     QVERIFY(doc()->undoStack()->isClean() && doc()->undoStack()->count() == 0);
+    QVERIFY(!window_->isWindowModified());
   }
 };
 

@@ -92,7 +92,9 @@ void HairTool::onCharacterReplaced() {
 void HairTool::loadSection() {
   const nlohmann::json& section = window_->document()->sceneSections().hair;
   if (section.is_null() || section.empty()) {
+    loading_ = true;  // clearing the old hair is part of opening, not an edit
     applyStyle(std::nullopt, false);
+    loading_ = false;
     return;
   }
   try {
