@@ -8,6 +8,7 @@
 #include "core/hair/character_groom.h"
 #include "core/util/error.h"
 #include "core/util/thread_pool.h"
+#include "sim/cloth/collision/proximity.h"
 #include "sim/hair/child_follow.h"
 
 namespace mq::cli {
@@ -15,38 +16,6 @@ namespace {
 
 glm::vec3 vertexOf(const std::vector<float>& positions, uint32_t v) {
   return {positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]};
-}
-
-// Closest point of triangle abc to p as barycentric weights (Ericson,
-// "Real-Time Collision Detection", 5.1.5).
-glm::vec3 closestBarycentric(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
-  const glm::vec3 ab = b - a, ac = c - a, ap = p - a;
-  const float d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
-  if (d1 <= 0.0f && d2 <= 0.0f) return {1, 0, 0};
-  const glm::vec3 bp = p - b;
-  const float d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
-  if (d3 >= 0.0f && d4 <= d3) return {0, 1, 0};
-  const float vc = d1 * d4 - d3 * d2;
-  if (vc <= 0.0f && d1 >= 0.0f && d3 <= 0.0f) {
-    const float v = d1 / (d1 - d3);
-    return {1 - v, v, 0};
-  }
-  const glm::vec3 cp = p - c;
-  const float d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
-  if (d6 >= 0.0f && d5 <= d6) return {0, 0, 1};
-  const float vb = d5 * d2 - d1 * d6;
-  if (vb <= 0.0f && d2 >= 0.0f && d6 <= 0.0f) {
-    const float w = d2 / (d2 - d6);
-    return {1 - w, 0, w};
-  }
-  const float va = d3 * d6 - d5 * d4;
-  if (va <= 0.0f && (d4 - d3) >= 0.0f && (d5 - d6) >= 0.0f) {
-    const float w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    return {0, 1 - w, w};
-  }
-  const float denom = 1.0f / (va + vb + vc);
-  const float v = vb * denom, w = vc * denom;
-  return {1 - v - w, v, w};
 }
 
 // Orthonormal frame of a triangle: first edge, in-plane perpendicular, normal.
@@ -140,7 +109,7 @@ void SceneHair::anchorRoots() {
         const auto& pos = rest.meshes()[c.mesh].positions;
         const uint32_t i0 = tris[3 * c.t], i1 = tris[3 * c.t + 1], i2 = tris[3 * c.t + 2];
         const glm::vec3 a = vertexOf(pos, i0), b = vertexOf(pos, i1), v2 = vertexOf(pos, i2);
-        const glm::vec3 w = closestBarycentric(p, a, b, v2);
+        const glm::vec3 w = cloth::closestTriangleWeights(p, a, b, v2);
         const glm::vec3 q = w.x * a + w.y * b + w.z * v2;
         const float d = glm::dot(p - q, p - q);
         if (d < best) {
