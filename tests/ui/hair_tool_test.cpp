@@ -12,13 +12,17 @@
 
 #include <QApplication>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QDockWidget>
 #include <QImage>
+#include <QLabel>
 #include <QMouseEvent>
 #include <QListWidget>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QStandardItemModel>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
@@ -56,6 +60,27 @@ float maxDifference(const std::vector<float>& a, const std::vector<float>& b) {
 
 std::string styleText(const HairTool& tool) { return toJson(tool.style()).dump(); }
 
+// Every strand's root: what a scalp change moves.
+std::vector<float> rootPoints(const HairTool& tool) {
+  std::vector<float> roots;
+  if (!tool.groom()) return roots;
+  const Strands& s = tool.groom()->strands();
+  for (size_t i = 0; i < s.strandCount(); ++i)
+    for (int d = 0; d < 3; ++d) roots.push_back(s.points[3 * i * size_t(s.pointsPerStrand) + d]);
+  return roots;
+}
+
+// Diagonal of the roots' bounding box (m).
+float rootSpread(const std::vector<float>& roots) {
+  glm::vec3 lo(INFINITY), hi(-INFINITY);
+  for (size_t k = 0; k + 2 < roots.size(); k += 3) {
+    const glm::vec3 p(roots[k], roots[k + 1], roots[k + 2]);
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  return roots.empty() ? 0.0f : glm::length(hi - lo);
+}
+
 }  // namespace
 
 class HairToolTest : public QObject {
@@ -90,6 +115,7 @@ class HairToolTest : public QObject {
   // State after each step, compared by undo/redo and the reopen.
   std::vector<float> opened_, added_, strengthened_, moved_;
   std::string openedStyle_, movedStyle_;
+  std::vector<float> taggedRoots_, wideConeRoots_, narrowConeRoots_;
   QTemporaryDir dir_;
 
  private slots:
@@ -246,6 +272,103 @@ class HairToolTest : public QObject {
     QCOMPARE(styleText(*tool_), movedStyle_);
     QCOMPARE(guidePoints(*tool_), moved_);  // deterministic groom from the saved style
     QCOMPARE(doc()->undoStack()->count(), 0);
+  }
+
+  // The Scalp group: the mannequin starts on its tagged scalp; a head-bone
+  // cone replaces it (one undo step each) and a narrower cone grows the hair
+  // on a smaller patch.
+  void narrowerBoneConeGrowsOnASmallerPatch() {
+    QComboBox* mode = panel()->scalpModeCombo();
+    QVERIFY(mode->isEnabled());
+    QCOMPARE(mode->currentIndex(), int(HairPanel::ScalpTagged));
+    auto* model = qobject_cast<QStandardItemModel*>(mode->model());
+    QVERIFY(model && model->item(HairPanel::ScalpTagged)->isEnabled());  // the mannequin has scalp tags
+    QVERIFY(!panel()->scalpAngleBox()->isEnabled());                     // no cone yet
+    // A low density, so the root count follows the scalp's area (the viewport
+    // grows at most 40,000 strands).
+    HairStyle sparse = tool_->style();
+    sparse.density = 20.0f;
+    tool_->editStyle(sparse, "Hair density");
+    taggedRoots_ = rootPoints(*tool_);
+    QVERIFY(taggedRoots_.size() / 3 < 30000);
+    const int commands = doc()->undoStack()->index();
+
+    mode->setCurrentIndex(HairPanel::ScalpBoneCone);
+    QCOMPARE(tool_->scalp().kind, ScalpRegion::Kind::BoneCone);
+    QCOMPARE(doc()->undoStack()->index(), commands + 1);
+    QCOMPARE(panel()->scalpBoneCombo()->currentText(), QString::fromStdString(tool_->scalp().bone));
+    QVERIFY(panel()->scalpBoneCombo()->count() > 10);  // the character's bones
+    QCOMPARE(panel()->scalpAxisPresetCombo()->currentIndex(), 1);  // up-back
+    QVERIFY(panel()->scalpAngleBox()->isEnabled());
+    wideConeRoots_ = rootPoints(*tool_);
+    QVERIFY(!wideConeRoots_.empty());
+    QVERIFY2(maxDifference(taggedRoots_, wideConeRoots_) > 1e-3f, "the cone did not move the roots");
+
+    const float wideAngle = tool_->scalp().angleDegrees;
+    panel()->scalpAngleBox()->setValue(wideAngle / 2);  // as if typed + Enter
+    QCOMPARE(tool_->scalp().angleDegrees, wideAngle / 2);
+    QCOMPARE(doc()->undoStack()->index(), commands + 2);
+    narrowConeRoots_ = rootPoints(*tool_);
+    qInfo("roots: tagged %zu (spread %.3f m), %.0f deg cone %zu (spread %.3f m), %.0f deg cone %zu (spread %.3f m)",
+          taggedRoots_.size() / 3, rootSpread(taggedRoots_), wideAngle, wideConeRoots_.size() / 3, rootSpread(wideConeRoots_), wideAngle / 2,
+          narrowConeRoots_.size() / 3, rootSpread(narrowConeRoots_));
+    QVERIFY2(narrowConeRoots_.size() < wideConeRoots_.size(), "a narrower cone grew as many roots");
+    QVERIFY2(rootSpread(narrowConeRoots_) < 0.9f * rootSpread(wideConeRoots_), "a narrower cone spread as wide");
+    QVERIFY(panel()->scalpStatusLabel()->text().contains(QString::number(tool_->strandCount())));
+    QCOMPARE(tool_->groom()->countPointsInside(), size_t(0));
+  }
+
+  void undoGivesThePreviousScalpBack() {
+    QUndoStack* undo = doc()->undoStack();
+    undo->undo();  // angle
+    QCOMPARE(rootPoints(*tool_), wideConeRoots_);
+    undo->undo();  // tagged -> cone
+    QCOMPARE(tool_->scalp().kind, ScalpRegion::Kind::Tagged);
+    QCOMPARE(panel()->scalpModeCombo()->currentIndex(), int(HairPanel::ScalpTagged));
+    QCOMPARE(rootPoints(*tool_), taggedRoots_);
+    undo->redo();
+    undo->redo();
+    QCOMPARE(rootPoints(*tool_), narrowConeRoots_);
+    QCOMPARE(panel()->scalpModeCombo()->currentIndex(), int(HairPanel::ScalpBoneCone));
+  }
+
+  // A region with no face (a cone pointing down from the head bone, into the
+  // neck the head does not drive) is refused: the scalp stays, a message says why.
+  void anEmptyRegionKeepsTheScalpAndReports() {
+    const ScalpRegion before = tool_->scalp();
+    const int commands = doc()->undoStack()->index();
+    ScalpRegion empty = before;
+    empty.axis = glm::vec3(0.0f, -1.0f, 0.0f);
+    empty.angleDegrees = 10.0f;
+    QVERIFY(!tool_->editScalp(empty, "Scalp axis"));
+    QCOMPARE(doc()->undoStack()->index(), commands);
+    QCOMPARE(tool_->scalp().axis, before.axis);
+    QCOMPARE(rootPoints(*tool_), narrowConeRoots_);
+    QVERIFY2(window_->statusBar()->currentMessage().contains("Scalp unchanged"),
+             qPrintable(window_->statusBar()->currentMessage()));
+    QVERIFY(panel()->scalpStatusLabel()->text().contains("Scalp unchanged"));
+    // The same from the panel: the smallest angle finds no face centre either.
+    panel()->scalpAxisBox(1)->setValue(-1.0);
+    QCOMPARE(doc()->undoStack()->index(), commands);
+    QCOMPARE(rootPoints(*tool_), narrowConeRoots_);
+    QVERIFY(std::abs(panel()->scalpAxisBox(1)->value() - before.axis.y) < 1e-3);  // the panel shows the scalp in use
+  }
+
+  void savedDocumentReopensWithTheScalp() {
+    const ScalpRegion saved = tool_->scalp();
+    const QString path = dir_.filePath("scalp.mqscene");
+    QString error;
+    QVERIFY2(window_->saveDocument(path, &error), qPrintable(error));
+    QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));
+    QVERIFY2(window_->openFileNow(path, &error), qPrintable(error));
+    QVERIFY2(tool_->hasHair(), qPrintable(tool_->lastError()));
+    QCOMPARE(tool_->scalp().kind, ScalpRegion::Kind::BoneCone);
+    QCOMPARE(tool_->scalp().bone, saved.bone);
+    QCOMPARE(tool_->scalp().angleDegrees, saved.angleDegrees);
+    QVERIFY(glm::length(tool_->scalp().axis - saved.axis) < 1e-5f);
+    QCOMPARE(panel()->scalpModeCombo()->currentIndex(), int(HairPanel::ScalpBoneCone));
+    QCOMPARE(float(panel()->scalpAngleBox()->value()), saved.angleDegrees);
+    QCOMPARE(rootPoints(*tool_), narrowConeRoots_);
   }
 };
 

@@ -11,6 +11,7 @@
 #include <QListWidget>
 #include <QPushButton>
 #include <QSignalBlocker>
+#include <QStandardItemModel>
 #include <QVBoxLayout>
 
 #include "core/hair/hair_groom.h"
@@ -24,8 +25,19 @@ namespace {
 
 enum FieldKey {
   kStrength = 1, kRadius, kAxisX, kAxisY, kAxisZ, kPosX, kPosY, kPosZ,
-  kDensity, kLength, kClumping, kFrizz, kRootColor, kTipColor
+  kDensity, kLength, kClumping, kFrizz, kRootColor, kTipColor,
+  kScalpAxisX, kScalpAxisY, kScalpAxisZ, kScalpAngle
 };
+
+// Scalp cone axes (world, rest pose; the character faces +Z).
+const glm::vec3 kAxisUp(0.0f, 1.0f, 0.0f);
+const glm::vec3 kAxisUpBack(0.0f, 0.906308f, -0.422618f);  // 25 degrees back from up
+// A new cone: the top and back of the head, seen from the head bone's origin.
+constexpr float kDefaultConeAngle = 60.0f;
+
+bool sameDirection(const glm::vec3& a, const glm::vec3& b) {
+  return glm::length(a) > 0.0f && glm::dot(glm::normalize(a), b) > 0.9999f;
+}
 
 QString kindName(PrimitiveRef::Kind kind) {
   switch (kind) {
@@ -186,6 +198,8 @@ HairPanel::HairPanel(HairTool* tool, QWidget* parent) : QWidget(parent), tool_(t
     status_->setText(tool_->bake() ? tr("Baked: the clip plays the simulated hair.") : tr("Bake cancelled."));
   });
 
+  layout->addWidget(makeScalpGroup());
+
   status_ = new QLabel;
   status_->setWordWrap(true);
   layout->addWidget(status_);
@@ -193,7 +207,148 @@ HairPanel::HairPanel(HairTool* tool, QWidget* parent) : QWidget(parent), tool_(t
 
   connect(tool_, &HairTool::styleChanged, this, &HairPanel::refresh);
   connect(tool_, &HairTool::selectionChanged, this, &HairPanel::refresh);
+  connect(tool_, &HairTool::scalpChanged, this, &HairPanel::refreshScalp);
   refresh();
+}
+
+QWidget* HairPanel::makeScalpGroup() {
+  auto* group = new QGroupBox(tr("Scalp"));
+  auto* form = new QFormLayout(group);
+  scalpMode_ = new QComboBox;
+  scalpMode_->addItem(tr("Tagged scalp"));
+  scalpMode_->addItem(tr("Head bone cone"));
+  scalpMode_->addItem(tr("Automatic"));
+  scalpMode_->setToolTip(tr("Tagged: the character's scalp vertices (the default mannequin). Head bone cone: the "
+                            "faces the bone drives within an angle of an axis. Automatic: the tagged scalp, else "
+                            "the top and back of the head."));
+  scalpBone_ = new QComboBox;
+  scalpAxisPreset_ = new QComboBox;
+  scalpAxisPreset_->addItem(tr("Up"));
+  scalpAxisPreset_->addItem(tr("Up-back"));
+  scalpAxisPreset_->addItem(tr("Custom"));
+  auto* axisRow = new QHBoxLayout;
+  for (int i = 0; i < 3; ++i) {
+    scalpAxis_[i] = addSpin(-1.0, 1.0, 0.05, 3);
+    axisRow->addWidget(scalpAxis_[i]);
+  }
+  scalpAngle_ = addSpin(1.0, 180.0, 5.0, 1);
+  scalpAngle_->setSuffix(QString::fromUtf8("°"));
+  scalpStatus_ = new QLabel;
+  form->addRow(tr("Region"), scalpMode_);
+  form->addRow(tr("Bone"), scalpBone_);
+  form->addRow(tr("Axis"), scalpAxisPreset_);
+  form->addRow(QString(), axisRow);
+  form->addRow(tr("Angle"), scalpAngle_);
+  form->addRow(scalpStatus_);
+
+  connect(scalpMode_, &QComboBox::currentIndexChanged, this, [this](int mode) {
+    if (!refreshing_) chooseScalpMode(mode);
+  });
+  connect(scalpBone_, &QComboBox::currentTextChanged, this, [this](const QString& name) {
+    lastFieldKey_ = 0;
+    editScalpField(tr("Scalp bone"), 0, [&](ScalpRegion& r) { r.bone = name.toStdString(); });
+  });
+  connect(scalpAxisPreset_, &QComboBox::currentIndexChanged, this, [this](int preset) {
+    if (preset > 1) return;  // Custom: the spin boxes
+    lastFieldKey_ = 0;
+    editScalpField(tr("Scalp axis"), 0, [&](ScalpRegion& r) { r.axis = preset == 0 ? kAxisUp : kAxisUpBack; });
+  });
+  for (int i = 0; i < 3; ++i)
+    connect(scalpAxis_[i], &QDoubleSpinBox::valueChanged, this, [this, i](double v) {
+      editScalpField(tr("Scalp axis"), kScalpAxisX + i, [&](ScalpRegion& r) { r.axis[i] = float(v); });
+    });
+  connect(scalpAngle_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+    editScalpField(tr("Scalp angle"), kScalpAngle, [&](ScalpRegion& r) { r.angleDegrees = float(v); });
+  });
+  return group;
+}
+
+void HairPanel::chooseScalpMode(int mode) {
+  if (!tool_->hasHair()) return;
+  ScalpRegion after = tool_->scalp();
+  const std::string head = tool_->headBoneName();
+  if (mode == ScalpTagged) {
+    after = ScalpRegion{};
+    if (!head.empty()) after.bone = head;
+  } else if (mode == ScalpBoneCone) {
+    if (after.kind != ScalpRegion::Kind::BoneCone) {
+      after = ScalpRegion{};
+      after.kind = ScalpRegion::Kind::BoneCone;
+      if (!head.empty()) after.bone = head;
+      after.axis = kAxisUpBack;
+      after.angleDegrees = kDefaultConeAngle;
+    }
+  } else {
+    after = tool_->automaticScalp();
+  }
+  lastFieldKey_ = 0;
+  tool_->editScalp(after, tr("Scalp region"));
+}
+
+void HairPanel::editScalpField(const QString& text, int fieldKey, const std::function<void(ScalpRegion&)>& change) {
+  if (refreshing_ || !tool_->hasHair() || tool_->scalp().kind != ScalpRegion::Kind::BoneCone) return;
+  ScalpRegion after = tool_->scalp();
+  change(after);
+  if (glm::length(after.axis) <= 0.0f) {
+    refreshScalp();  // a zero axis has no direction: keep the last one
+    return;
+  }
+  int mergeKey = 0;
+  if (fieldKey != 0) {
+    if (fieldKey != lastFieldKey_) {
+      lastFieldKey_ = fieldKey;
+      lastMergeKey_ = HairStyleCommand::nextMergeKey();
+    }
+    mergeKey = lastMergeKey_;
+  }
+  tool_->editScalp(after, text, mergeKey);
+}
+
+void HairPanel::refreshScalp() {
+  const bool wasRefreshing = refreshing_;
+  refreshing_ = true;
+  const ScalpRegion& scalp = tool_->scalp();
+  const bool hair = tool_->hasHair();
+  const bool cone = scalp.kind == ScalpRegion::Kind::BoneCone;
+  {
+    QSignalBlocker block(scalpMode_);
+    if (auto* model = qobject_cast<QStandardItemModel*>(scalpMode_->model()))
+      model->item(ScalpTagged)->setEnabled(tool_->characterHasTaggedScalp());
+    scalpMode_->setCurrentIndex(scalp.kind == ScalpRegion::Kind::Tagged ? ScalpTagged
+                                : cone                                  ? ScalpBoneCone
+                                                                        : ScalpAutomatic);
+  }
+  {
+    QSignalBlocker block(scalpBone_);
+    scalpBone_->clear();
+    for (const std::string& name : tool_->boneNames()) scalpBone_->addItem(QString::fromStdString(name));
+    scalpBone_->setCurrentIndex(scalpBone_->findText(QString::fromStdString(scalp.bone)));
+  }
+  {
+    QSignalBlocker block(scalpAxisPreset_);
+    scalpAxisPreset_->setCurrentIndex(sameDirection(scalp.axis, kAxisUp)       ? 0
+                                      : sameDirection(scalp.axis, kAxisUpBack) ? 1
+                                                                               : 2);
+  }
+  for (int i = 0; i < 3; ++i) {
+    QSignalBlocker block(scalpAxis_[i]);
+    scalpAxis_[i]->setValue(scalp.axis[i]);
+  }
+  {
+    QSignalBlocker block(scalpAngle_);
+    scalpAngle_->setValue(scalp.angleDegrees);
+  }
+  scalpMode_->setEnabled(hair);
+  for (QWidget* w : std::initializer_list<QWidget*>{scalpBone_, scalpAxisPreset_, scalpAxis_[0], scalpAxis_[1],
+                                                    scalpAxis_[2], scalpAngle_})
+    w->setEnabled(hair && cone);
+  if (!hair)
+    scalpStatus_->setText(tr("Pick a hairstyle first."));
+  else if (!tool_->lastError().isEmpty())
+    scalpStatus_->setText(tool_->lastError());
+  else
+    scalpStatus_->setText(tr("%1 roots on %2 cm²").arg(tool_->strandCount()).arg(tool_->scalpArea() * 1e4f, 0, 'f', 0));
+  refreshing_ = wasRefreshing;
 }
 
 QDoubleSpinBox* HairPanel::addSpin(double min, double max, double step, int decimals) {
@@ -309,6 +464,7 @@ void HairPanel::refresh() {
     status_->setText(tool_->lastError().isEmpty() ? tr("No hair: pick a hairstyle.") : tool_->lastError());
   }
   refreshPrimitiveFields();
+  refreshScalp();
   refreshing_ = false;
 }
 

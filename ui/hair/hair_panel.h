@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "core/hair/hairstyle.h"
+#include "core/hair/scalp.h"
 
 class QCheckBox;
 class QComboBox;
@@ -37,10 +38,24 @@ class HairPanel : public QWidget {
   QDoubleSpinBox* strengthBox() const { return strength_; }
   QDoubleSpinBox* positionBox(int axis) const { return position_[axis]; }
   QCheckBox* shadowMapsBox() const { return shadowMaps_; }
+  // Scalp group: mode (ScalpMode order), bone, axis preset, axis, angle.
+  enum ScalpMode { ScalpTagged, ScalpBoneCone, ScalpAutomatic };
+  QComboBox* scalpModeCombo() const { return scalpMode_; }
+  QComboBox* scalpBoneCombo() const { return scalpBone_; }
+  QComboBox* scalpAxisPresetCombo() const { return scalpAxisPreset_; }
+  QDoubleSpinBox* scalpAxisBox(int axis) const { return scalpAxis_[axis]; }
+  QDoubleSpinBox* scalpAngleBox() const { return scalpAngle_; }
+  QLabel* scalpStatusLabel() const { return scalpStatus_; }
 
  private:
   void refresh();
   void refreshPrimitiveFields();
+  void refreshScalp();
+  QWidget* makeScalpGroup();
+  void chooseScalpMode(int mode);
+  // Applies `change` to a copy of the scalp region and pushes it (merging
+  // with the previous change of the same field).
+  void editScalpField(const QString& text, int fieldKey, const std::function<void(ScalpRegion&)>& change);
   QDoubleSpinBox* addSpin(double min, double max, double step, int decimals);
   // Applies `change` to a copy of the style and pushes it (merging with the
   // previous change of the same field).
@@ -62,6 +77,10 @@ class HairPanel : public QWidget {
   QPushButton *rootColor_, *tipColor_;
   QCheckBox *handles_, *simulate_, *shadowMaps_;
   QPushButton* bake_;
+  QComboBox *scalpMode_, *scalpBone_, *scalpAxisPreset_;
+  QDoubleSpinBox* scalpAxis_[3];
+  QDoubleSpinBox* scalpAngle_;
+  QLabel* scalpStatus_;
   QLabel* status_;
   bool refreshing_ = false;
   int lastFieldKey_ = 0, lastMergeKey_ = 0;

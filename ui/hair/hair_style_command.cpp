@@ -25,4 +25,18 @@ int HairStyleCommand::nextMergeKey() {
   return ++key;
 }
 
+HairScalpCommand::HairScalpCommand(HairTool* tool, ScalpRegion before, ScalpRegion after, const QString& text,
+                                   int mergeKey)
+    : QUndoCommand(text), tool_(tool), before_(std::move(before)), after_(std::move(after)), mergeKey_(mergeKey) {}
+
+void HairScalpCommand::undo() { tool_->applyScalp(before_); }
+void HairScalpCommand::redo() { tool_->applyScalp(after_); }
+
+bool HairScalpCommand::mergeWith(const QUndoCommand* other) {
+  const auto* next = dynamic_cast<const HairScalpCommand*>(other);
+  if (!next || mergeKey_ == 0 || next->mergeKey_ != mergeKey_) return false;
+  after_ = next->after_;
+  return true;
+}
+
 }  // namespace mq::ui

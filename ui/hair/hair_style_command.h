@@ -9,6 +9,7 @@
 #include <QUndoCommand>
 
 #include "core/hair/hairstyle.h"
+#include "core/hair/scalp.h"
 
 namespace mq::ui {
 
@@ -34,6 +35,24 @@ class HairStyleCommand : public QUndoCommand {
   std::optional<HairStyle> before_, after_;
   int mergeKey_;
   bool live_;
+};
+
+// A change of the scalp region (the faces the hair grows from): the region
+// before and after; applying one re-extracts the scalp and regrows the hair.
+// Steps of one spin box merge (same non-zero merge key).
+class HairScalpCommand : public QUndoCommand {
+ public:
+  HairScalpCommand(HairTool* tool, ScalpRegion before, ScalpRegion after, const QString& text, int mergeKey = 0);
+
+  void undo() override;
+  void redo() override;
+  int id() const override { return 0x6862; }
+  bool mergeWith(const QUndoCommand* other) override;
+
+ private:
+  HairTool* tool_;
+  ScalpRegion before_, after_;
+  int mergeKey_;
 };
 
 }  // namespace mq::ui

@@ -8,12 +8,14 @@
 #include <QDockWidget>
 #include <QMouseEvent>
 #include <QProgressDialog>
+#include <QStatusBar>
 #include <QUndoStack>
 
 #include "core/hair/character_groom.h"
 #include "core/hair/hair_groom.h"
 #include "core/hair/hairstyle_json.h"
 #include "core/hair/head_fit.h"
+#include "core/hair/root_sampling.h"
 #include "core/util/error.h"
 #include "render/hair_actor.h"
 #include "render/scene_view.h"
@@ -79,12 +81,9 @@ void HairTool::onCharacterReplaced() {
   selected_ = {};
   invalidateDynamics();
   lastError_.clear();
-  try {
-    scalp_ = automaticScalpRegion(window_->document()->character());
-  } catch (const Error&) {
-    scalp_ = ScalpRegion{};  // no head: the groom reports why when hair is added
-  }
+  scalp_ = automaticScalp();  // no head: the groom reports why when hair is added
   loadSection();
+  emit scalpChanged();
   emit styleChanged();
   emit selectionChanged();
 }
@@ -105,6 +104,7 @@ void HairTool::loadSection() {
     loading_ = true;
     applyStyle(parsed.style, false);
     loading_ = false;
+    dock_->raise();  // a document with hair opens on its hair
   } catch (const Error& e) {
     loading_ = false;
     lastError_ = QString::fromStdString(e.what());
@@ -171,7 +171,7 @@ void HairTool::applyStyle(const std::optional<HairStyle>& style, bool live) {
     if (before && groom_->strands().strandCount() > 0)
       regrow(*before, *style_, live);
     else
-      groom_->grow(*style_, std::min(requestedStrands_ ? requestedStrands_ : kViewportMaxStrands, kViewportMaxStrands));
+      groom_->grow(*style_, viewportStrandCount(*style_));
     const auto all = primitivesOf(*style_);
     if (std::find(all.begin(), all.end(), selected_) == all.end()) selected_ = {};
     showStrands(live);
@@ -182,15 +182,89 @@ void HairTool::applyStyle(const std::optional<HairStyle>& style, bool live) {
   emit styleChanged();
 }
 
+// The document's count, else the style's density on this scalp (so a
+// smaller scalp grows fewer strands), at most kViewportMaxStrands.
+size_t HairTool::viewportStrandCount(const HairStyle& style) const {
+  const size_t wanted = requestedStrands_ ? requestedStrands_
+                                          : rootCountForDensity(groom_->scalp(), style.density,
+                                                                size_t(std::max(0, style.maxStrands)));
+  return std::clamp<size_t>(wanted, 1, kViewportMaxStrands);
+}
+
 void HairTool::regrow(const HairStyle& before, const HairStyle& after, bool live) {
   if (rootsDiffer(before, after)) {
-    groom_->grow(after, std::min(requestedStrands_ ? requestedStrands_ : kViewportMaxStrands, kViewportMaxStrands));
+    groom_->grow(after, viewportStrandCount(after));
   } else if (!onlyColorsDiffer(before, after) || !live) {
     groom_->regrowGuides(after);
     if (!live) groom_->growChildren(after);
   }
   emit hairRegrown();
 }
+
+// ---- Scalp ----
+
+bool HairTool::editScalp(const ScalpRegion& after, const QString& text, int mergeKey) {
+  try {
+    extractScalp(window_->document()->character(), after);  // refuses an empty region
+  } catch (const Error& e) {
+    lastError_ = tr("Scalp unchanged: %1").arg(QString::fromStdString(e.what()));
+    window_->statusBar()->showMessage(lastError_, 10000);
+    emit scalpChanged();  // the panel goes back to the scalp in use
+    return false;
+  }
+  lastError_.clear();
+  window_->document()->undoStack()->push(new HairScalpCommand(this, scalp_, after, text, mergeKey));
+  return true;
+}
+
+void HairTool::applyScalp(const ScalpRegion& region) {
+  scalp_ = region;
+  groom_.reset();
+  invalidateDynamics();
+  if (style_ && makeGroom()) {
+    groom_->grow(*style_, viewportStrandCount(*style_));
+    showStrands(false);
+    updateHandles();
+    window_->statusBar()->showMessage(
+        tr("Scalp: %1 roots on %2 cm²").arg(strandCount()).arg(scalpArea() * 1e4f, 0, 'f', 0), 10000);
+    emit hairRegrown();
+  }
+  storeSection();
+  window_->viewport()->requestRender();
+  emit scalpChanged();
+  emit styleChanged();
+}
+
+bool HairTool::characterHasTaggedScalp() const {
+  for (const Mesh& mesh : window_->document()->character().meshes)
+    if (mesh.vertexTags.size() == mesh.vertexCount() &&
+        std::find(mesh.vertexTags.begin(), mesh.vertexTags.end(), TagScalp) != mesh.vertexTags.end())
+      return true;
+  return false;
+}
+
+ScalpRegion HairTool::automaticScalp() const {
+  try {
+    return automaticScalpRegion(window_->document()->character());
+  } catch (const Error&) {
+    return ScalpRegion{};
+  }
+}
+
+std::string HairTool::headBoneName() const {
+  const Character& character = window_->document()->character();
+  const int head = findHeadBone(character);
+  return head >= 0 ? character.skeleton.bone(head).name : std::string();
+}
+
+std::vector<std::string> HairTool::boneNames() const {
+  const Skeleton& skeleton = window_->document()->character().skeleton;
+  std::vector<std::string> names;
+  for (int b = 0; b < skeleton.boneCount(); ++b) names.push_back(skeleton.bone(b).name);
+  return names;
+}
+
+float HairTool::scalpArea() const { return groom_ ? groom_->scalp().area() : 0.0f; }
 
 void HairTool::selectPrimitive(const PrimitiveRef& ref) {
   if (ref == selected_) return;

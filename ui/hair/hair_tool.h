@@ -63,6 +63,26 @@ class HairTool : public QObject {
   // Applies a style (nullopt: no hair) without undo (the commands call this).
   void applyStyle(const std::optional<HairStyle>& style, bool live);
 
+  // Scalp: the region the hair grows from (saved in the document's hair
+  // section). editScalp checks the region first: an empty one (a cone too
+  // narrow, a bone driving no face) is refused with a status-bar message and
+  // the current scalp stays; false then (lastError() says why).
+  const ScalpRegion& scalp() const { return scalp_; }
+  bool editScalp(const ScalpRegion& after, const QString& text, int mergeKey = 0);
+  // Applies a region without undo (the commands call this): re-extracts the
+  // scalp and regrows the hair on it.
+  void applyScalp(const ScalpRegion& region);
+  // The character has faces tagged as scalp (the default mannequin does).
+  bool characterHasTaggedScalp() const;
+  // The region automaticScalpRegion() picks (a tagged or bone-cone default
+  // when it cannot: the character has no head).
+  ScalpRegion automaticScalp() const;
+  // The head bone found on the character (empty when none).
+  std::string headBoneName() const;
+  std::vector<std::string> boneNames() const;
+  // The current scalp's area (m^2; 0 without a groom).
+  float scalpArea() const;
+
   // Primitive selection (shown by the panel and the handles).
   PrimitiveRef selectedPrimitive() const { return selected_; }
   void selectPrimitive(const PrimitiveRef& ref);
@@ -86,6 +106,7 @@ class HairTool : public QObject {
 
  signals:
   void styleChanged();
+  void scalpChanged();
   void selectionChanged();
   void hairRegrown();
 
@@ -98,6 +119,7 @@ class HairTool : public QObject {
   void loadSection();
   void storeSection();
   bool makeGroom();
+  size_t viewportStrandCount(const HairStyle& style) const;
   void regrow(const HairStyle& before, const HairStyle& after, bool live);
   void showStrands(bool guidesOnly);
   void showPosedStrands();
