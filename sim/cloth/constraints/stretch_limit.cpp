@@ -35,6 +35,11 @@ float maxSquaredStretchOf(const std::vector<glm::vec3>& x, const std::vector<Spr
   return *std::max_element(partial, partial + kBlocks);
 }
 
+// Every this many passes the limit checks its progress; it gives up when the
+// excess over the limit has not shrunk by at least 5% since the last check.
+constexpr int kStallCheckPasses = 16;
+constexpr float kStallProgress = 0.95f;
+
 }  // namespace
 
 float maxStretchOf(const std::vector<glm::vec3>& x, const std::vector<Spring>& springs, size_t count) {
@@ -54,8 +59,15 @@ StretchLimitResult limitStretchByPositions(ClothState& s, const std::vector<Spri
   // Symmetric Gauss-Seidel: forward and backward passes alternate, so a
   // correction travels across the cloth in both directions. Most springs are
   // within the limit: compared squared, they cost no square root.
-  for (; result.passes < maxPasses && worstSquared > maxSquared; ++result.passes) {
+  // Each pass tracks the worst spring it meets (before correcting it); the
+  // whole cloth is re-measured only when a pass met none beyond the limit
+  // (a later correction in that pass may still have stretched an earlier
+  // spring a little), not after every pass.
+  bool measured = true;
+  float lastMeasured = worstSquared;
+  while (result.passes < maxPasses && worstSquared > maxSquared) {
     const bool forward = result.passes % 2 == 0;
+    float passWorst = 0.0f;
     for (size_t k = 0; k < count; ++k) {
       const Spring& sp = springs[forward ? k : count - 1 - k];
       const glm::vec3 d = s.x[sp.a] - s.x[sp.b];
@@ -63,13 +75,28 @@ StretchLimitResult limitStretchByPositions(ClothState& s, const std::vector<Spri
       if (l2 <= limit * limit) continue;
       const float wa = s.invMass[sp.a], wb = s.invMass[sp.b];
       if (wa + wb == 0.0f) continue;
+      passWorst = std::max(passWorst, l2 / (sp.rest * sp.rest));
       const float l = std::sqrt(l2);
       const glm::vec3 correction = ((l - limit) / (l * (wa + wb))) * d;
       s.x[sp.a] -= wa * correction;
       s.x[sp.b] += wb * correction;
     }
-    worstSquared = maxSquaredStretchOf(s.x, springs, count);
+    ++result.passes;
+    measured = false;
+    worstSquared = passWorst;
+    if (worstSquared <= maxSquared || result.passes % kStallCheckPasses == 0) {
+      worstSquared = maxSquaredStretchOf(s.x, springs, count);
+      measured = true;
+      // Nearly no progress over the last passes: the limit is held against
+      // something (contacts, pins); more passes would not meet it.
+      if (result.passes % kStallCheckPasses == 0) {
+        const float excess = worstSquared - maxSquared, lastExcess = lastMeasured - maxSquared;
+        if (excess > 0.0f && excess > kStallProgress * lastExcess) break;
+        lastMeasured = worstSquared;
+      }
+    }
   }
+  if (!measured) worstSquared = maxSquaredStretchOf(s.x, springs, count);
   result.maxStretchAfter = std::sqrt(worstSquared);
   forRange(s.size(), [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) s.v[i] += (s.x[i] - before[i]) / h;
