@@ -226,8 +226,9 @@ bool ClothSimulator::limitStretchAfterContacts(float h) {
         state_.invMass[i] = 0.0f;
       else if (touched_[i])
         state_.invMass[i] = kContactInvMassScale * freeInvMass[i];
-    const StretchLimitResult r =
-        limitStretchByPositions(state_, springs, structural, activeMaxStretch(), passBudget_, h);
+    // The held try gets the plain budget: pinched cloth fails it whatever the passes.
+    const int passes = attempt == 0 ? std::min(passBudget_, settings_.stretchIterations) : passBudget_;
+    const StretchLimitResult r = limitStretchByPositions(state_, springs, structural, activeMaxStretch(), passes, h);
     state_.invMass = freeInvMass;
     stats_.stretchPasses += r.passes;
     if (r.maxStretchAfter <= activeMaxStretch()) return true;
@@ -378,7 +379,7 @@ void ClothSimulator::collideWithColliders(float h) {
       BodyContact contact;
       if (body_.firstHitAlong(stepStart_[i], state_.x[i], contact)) {
         state_.x[i] = contact.point;
-        touched_[i] = kSweptContact;
+        touched_[i] = body_.moved() ? kSweptContact : std::max(touched_[i], kContact);
       }
       if (body_.nearestContact(state_.x[i], contact) && contact.signedDistance < thickness) {
         touched_[i] = std::max(touched_[i], kContact);

@@ -47,6 +47,8 @@ class BodyCollider {
   std::vector<float> flatPositions() const;
   const std::vector<uint32_t>& triangles() const { return triangles_; }
   float searchRadius() const { return searchRadius_; }
+  // Whether the last moveTo() moved the body at all.
+  bool moved() const { return maxDisplacement_ > 0.0f; }
 
  private:
   std::vector<uint32_t> triangles_;

@@ -35,11 +35,6 @@ float maxSquaredStretchOf(const std::vector<glm::vec3>& x, const std::vector<Spr
   return *std::max_element(partial, partial + kBlocks);
 }
 
-// Every this many passes the limit checks its progress; it gives up when the
-// excess over the limit has not shrunk by at least 5% since the last check.
-constexpr int kStallCheckPasses = 16;
-constexpr float kStallProgress = 0.95f;
-
 }  // namespace
 
 float maxStretchOf(const std::vector<glm::vec3>& x, const std::vector<Spring>& springs, size_t count) {
@@ -64,7 +59,6 @@ StretchLimitResult limitStretchByPositions(ClothState& s, const std::vector<Spri
   // (a later correction in that pass may still have stretched an earlier
   // spring a little), not after every pass.
   bool measured = true;
-  float lastMeasured = worstSquared;
   while (result.passes < maxPasses && worstSquared > maxSquared) {
     const bool forward = result.passes % 2 == 0;
     float passWorst = 0.0f;
@@ -84,16 +78,9 @@ StretchLimitResult limitStretchByPositions(ClothState& s, const std::vector<Spri
     ++result.passes;
     measured = false;
     worstSquared = passWorst;
-    if (worstSquared <= maxSquared || result.passes % kStallCheckPasses == 0) {
+    if (worstSquared <= maxSquared) {
       worstSquared = maxSquaredStretchOf(s.x, springs, count);
       measured = true;
-      // Nearly no progress over the last passes: the limit is held against
-      // something (contacts, pins); more passes would not meet it.
-      if (result.passes % kStallCheckPasses == 0) {
-        const float excess = worstSquared - maxSquared, lastExcess = lastMeasured - maxSquared;
-        if (excess > 0.0f && excess > kStallProgress * lastExcess) break;
-        lastMeasured = worstSquared;
-      }
     }
   }
   if (!measured) worstSquared = maxSquaredStretchOf(s.x, springs, count);
