@@ -14,6 +14,9 @@ namespace mq::cloth {
 
 namespace {
 
+constexpr float kContactInvMassScale = 0.05f;
+constexpr uint8_t kContact = 1, kSweptContact = 2;  // touched_ values
+
 ClothState initialState(const ClothMesh& mesh, const ClothTopology& topology, const Fabric& fabric) {
   ClothState s;
   const size_t n = mesh.vertexCount();
@@ -196,21 +199,42 @@ void ClothSimulator::substep(float h, float bodyFraction) {
   if (selfCollision_) stats_.selfContacts += selfCollision_->resolve(state_, stepStart_, settings_.selfThickness, 20);
   collideWithColliders(h);
   if (settings_.stretchLimit == StretchLimitMode::PositionCorrection && (!colliders_.empty() || !body_.empty())) {
-    // Contacts moved vertices after the limit: limit again, with the
-    // vertices in contact made 20 times heavier so they move little (far less
-    // than the thickness they keep from the surface) and none goes back in.
-    const std::vector<float> freeInvMass = state_.invMass;
-    for (size_t i = 0; i < state_.size(); ++i)
-      if (touched_[i]) state_.invMass[i] *= 0.05f;
-    const StretchLimitResult r =
-        limitStretchByPositions(state_, springs, structural, activeMaxStretch(), passBudget_, h);
-    state_.invMass = freeInvMass;
-    stats_.stretchPasses += r.passes;
-    held = r.maxStretchAfter <= activeMaxStretch();
+    held = limitStretchAfterContacts(h);
   }
   limitHeld_ = limitHeld_ && held;
   placePins();
   checkFinite("after a solver step");
+}
+
+// Contacts moved vertices after the limit: limit again, with the vertices in
+// contact 20 times heavier (so they move little, far less than the thickness
+// they keep from the surface) and none goes back in. The vertices a moving
+// body part swept along in this substep are first held where it put them
+// (pulled back, they would cross the part and come out of its far side); when
+// the limit cannot hold that way (cloth pinched between two body parts), it
+// is redone with them merely heavy like the others.
+bool ClothSimulator::limitStretchAfterContacts(float h) {
+  const auto& springs = forces_->springs().springs();
+  const size_t structural = forces_->structuralCount();
+  const std::vector<float> freeInvMass = state_.invMass;
+  const bool anySwept = std::find(touched_.begin(), touched_.end(), kSweptContact) != touched_.end();
+  const std::vector<glm::vec3> x = anySwept ? state_.x : std::vector<glm::vec3>{};
+  const std::vector<glm::vec3> v = anySwept ? state_.v : std::vector<glm::vec3>{};
+  for (int attempt = anySwept ? 0 : 1; attempt < 2; ++attempt) {
+    for (size_t i = 0; i < state_.size(); ++i)
+      if (touched_[i] == kSweptContact && attempt == 0)
+        state_.invMass[i] = 0.0f;
+      else if (touched_[i])
+        state_.invMass[i] = kContactInvMassScale * freeInvMass[i];
+    // The held try gets the plain budget: pinched cloth fails it whatever the passes.
+    const int passes = attempt == 0 ? std::min(passBudget_, settings_.stretchIterations) : passBudget_;
+    const StretchLimitResult r = limitStretchByPositions(state_, springs, structural, activeMaxStretch(), passes, h);
+    state_.invMass = freeInvMass;
+    stats_.stretchPasses += r.passes;
+    if (r.maxStretchAfter <= activeMaxStretch()) return true;
+    if (attempt == 0) state_.x = x, state_.v = v;
+  }
+  return false;
 }
 
 void ClothSimulator::sewSeams(const std::vector<std::pair<uint32_t, uint32_t>>& seams, float closingSpeed,
@@ -346,16 +370,19 @@ void ClothSimulator::collideWithColliders(float h) {
         const glm::vec3 entry = firstContactAlong(c, stepStart_[i], state_.x[i], thickness);
         if (entry != state_.x[i]) state_.x[i] = entry;
         const float d = c.signedDistance(state_.x[i], n);
-        if (d < thickness) touched_[i] = 1;
+        if (d < thickness) touched_[i] = std::max(touched_[i], kContact);
         if (d < thickness)
           respondToContact(state_.x[i], state_.v[i], n, thickness - d, glm::vec3(0.0f),
                            c.friction >= 0.0f ? c.friction : settings_.friction);
       }
       if (body_.empty()) continue;
       BodyContact contact;
-      if (body_.firstHitAlong(stepStart_[i], state_.x[i], contact)) state_.x[i] = contact.point;
+      if (body_.firstHitAlong(stepStart_[i], state_.x[i], contact)) {
+        state_.x[i] = contact.point;
+        touched_[i] = body_.moved() ? kSweptContact : std::max(touched_[i], kContact);
+      }
       if (body_.nearestContact(state_.x[i], contact) && contact.signedDistance < thickness) {
-        touched_[i] = 1;
+        touched_[i] = std::max(touched_[i], kContact);
         respondToContact(state_.x[i], state_.v[i], contact.normal, thickness - contact.signedDistance,
                          contact.velocity, settings_.friction);
       }

@@ -116,6 +116,7 @@ class ClothSimulator {
   void findRestingContacts();
   void applyRestingFriction(float h);
   void collideWithColliders(float h);
+  bool limitStretchAfterContacts(float h);
   bool limitStretchWhileSewing(float h);
   void checkFinite(const char* where) const;
   void updateStats();

@@ -1,5 +1,8 @@
 #include "sim/cloth/collision/body_collider.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/util/error.h"
 #include "sim/cloth/collision/proximity.h"
 
@@ -21,7 +24,8 @@ void BodyCollider::setMesh(const std::vector<float>& positions, const std::vecto
   for (uint32_t t : triangles)
     if (t >= n) throw Error("body mesh triangle index out of range");
   triangles_ = triangles;
-  from_ = to_ = current_ = toVec3(positions);
+  from_ = to_ = current_ = previous_ = toVec3(positions);
+  maxDisplacement_ = 0.0f;
   velocity_.assign(n, glm::vec3(0.0f));
   searchRadius_ = searchRadius;
   tree_.build(triangleBoxes(current_, triangles_, searchRadius_));
@@ -35,8 +39,22 @@ void BodyCollider::setTarget(const std::vector<float>& positions, float frameTim
 }
 
 void BodyCollider::moveTo(float fraction) {
-  for (size_t i = 0; i < current_.size(); ++i) current_[i] = from_[i] + fraction * (to_[i] - from_[i]);
-  tree_.refit(triangleBoxes(current_, triangles_, searchRadius_));
+  previous_ = current_;
+  float moved2 = 0.0f;
+  for (size_t i = 0; i < current_.size(); ++i) {
+    current_[i] = from_[i] + fraction * (to_[i] - from_[i]);
+    const glm::vec3 d = current_[i] - previous_[i];
+    moved2 = std::max(moved2, glm::dot(d, d));
+  }
+  maxDisplacement_ = std::sqrt(moved2);
+  // Boxes over the triangles' sweep from the previous position: a vertex's
+  // path crosses a moving triangle only inside that triangle's sweep.
+  std::vector<Box> boxes = triangleBoxes(current_, triangles_, searchRadius_);
+  if (maxDisplacement_ > 0.0f) {
+    const std::vector<Box> before = triangleBoxes(previous_, triangles_, searchRadius_);
+    for (size_t t = 0; t < boxes.size(); ++t) boxes[t].extend(before[t]);
+  }
+  tree_.refit(boxes);
 }
 
 std::vector<float> BodyCollider::flatPositions() const {
@@ -47,21 +65,25 @@ std::vector<float> BodyCollider::flatPositions() const {
 }
 
 bool BodyCollider::firstHitAlong(const glm::vec3& from, const glm::vec3& to, BodyContact& contact) const {
-  const glm::vec3 dir = to - from;
-  if (glm::dot(dir, dir) <= 1e-16f) return false;
+  const glm::vec3 still = to - from;
+  if (glm::dot(still, still) <= 1e-16f && maxDisplacement_ == 0.0f) return false;
   Box box;
   box.extend(from);
   box.extend(to);
   float best = 1.0f;
   bool found = false;
   tree_.query(box, [&](uint32_t t) {
-    const glm::vec3 a = current_[triangles_[3 * t]], b = current_[triangles_[3 * t + 1]], c = current_[triangles_[3 * t + 2]];
+    const uint32_t ia = triangles_[3 * t], ib = triangles_[3 * t + 1], ic = triangles_[3 * t + 2];
+    const glm::vec3 a = current_[ia], b = current_[ib], c = current_[ic];
+    // Where the vertex started, seen from the triangle: moved with it.
+    const glm::vec3 start = from + (a + b + c - previous_[ia] - previous_[ib] - previous_[ic]) / 3.0f;
+    const glm::vec3 dir = to - start;
     const glm::vec3 n = glm::cross(b - a, c - a);
     const float approach = glm::dot(dir, n);
     if (approach >= 0.0f) return;  // only entering through the front side
-    const float s = glm::dot(a - from, n) / approach;
+    const float s = glm::dot(a - start, n) / approach;
     if (s < 0.0f || s >= best) return;
-    const glm::vec3 p = from + s * dir;
+    const glm::vec3 p = start + s * dir;
     if (glm::dot(glm::cross(b - a, p - a), n) < 0.0f || glm::dot(glm::cross(c - b, p - b), n) < 0.0f ||
         glm::dot(glm::cross(a - c, p - c), n) < 0.0f)
       return;
@@ -70,6 +92,7 @@ bool BodyCollider::firstHitAlong(const glm::vec3& from, const glm::vec3& to, Bod
     contact.point = p;
     contact.normal = glm::normalize(n);
     contact.signedDistance = 0.0f;
+    contact.velocity = glm::vec3(0.0f);
   });
   return found;
 }

@@ -33,6 +33,11 @@ class BodyCollider {
   void moveTo(float fraction);
   // First crossing of the surface from outside to inside along the segment
   // from -> to (contact.point is the crossing); false when there is none.
+  // Continuous in the body's motion too: `from` is where the vertex was
+  // before the last moveTo(), and each triangle is tested against the
+  // vertex's motion relative to that triangle (the triangle's own
+  // displacement added to `from`), so a fast limb cannot sweep through a
+  // still vertex and leave it inside or on its far side.
   bool firstHitAlong(const glm::vec3& from, const glm::vec3& to, BodyContact& contact) const;
   // Nearest contact within the search radius; false when there is none.
   bool nearestContact(const glm::vec3& p, BodyContact& contact) const;
@@ -42,10 +47,13 @@ class BodyCollider {
   std::vector<float> flatPositions() const;
   const std::vector<uint32_t>& triangles() const { return triangles_; }
   float searchRadius() const { return searchRadius_; }
+  // Whether the last moveTo() moved the body at all.
+  bool moved() const { return maxDisplacement_ > 0.0f; }
 
  private:
   std::vector<uint32_t> triangles_;
-  std::vector<glm::vec3> from_, to_, current_, velocity_;
+  std::vector<glm::vec3> from_, to_, current_, previous_, velocity_;
+  float maxDisplacement_ = 0.0f;  // largest vertex move of the last moveTo()
   AabbTree tree_;
   float searchRadius_ = 0.02f;
 };

@@ -54,8 +54,14 @@ StretchLimitResult limitStretchByPositions(ClothState& s, const std::vector<Spri
   // Symmetric Gauss-Seidel: forward and backward passes alternate, so a
   // correction travels across the cloth in both directions. Most springs are
   // within the limit: compared squared, they cost no square root.
-  for (; result.passes < maxPasses && worstSquared > maxSquared; ++result.passes) {
+  // Each pass tracks the worst spring it meets (before correcting it); the
+  // whole cloth is re-measured only when a pass met none beyond the limit
+  // (a later correction in that pass may still have stretched an earlier
+  // spring a little), not after every pass.
+  bool measured = true;
+  while (result.passes < maxPasses && worstSquared > maxSquared) {
     const bool forward = result.passes % 2 == 0;
+    float passWorst = 0.0f;
     for (size_t k = 0; k < count; ++k) {
       const Spring& sp = springs[forward ? k : count - 1 - k];
       const glm::vec3 d = s.x[sp.a] - s.x[sp.b];
@@ -63,13 +69,21 @@ StretchLimitResult limitStretchByPositions(ClothState& s, const std::vector<Spri
       if (l2 <= limit * limit) continue;
       const float wa = s.invMass[sp.a], wb = s.invMass[sp.b];
       if (wa + wb == 0.0f) continue;
+      passWorst = std::max(passWorst, l2 / (sp.rest * sp.rest));
       const float l = std::sqrt(l2);
       const glm::vec3 correction = ((l - limit) / (l * (wa + wb))) * d;
       s.x[sp.a] -= wa * correction;
       s.x[sp.b] += wb * correction;
     }
-    worstSquared = maxSquaredStretchOf(s.x, springs, count);
+    ++result.passes;
+    measured = false;
+    worstSquared = passWorst;
+    if (worstSquared <= maxSquared) {
+      worstSquared = maxSquaredStretchOf(s.x, springs, count);
+      measured = true;
+    }
   }
+  if (!measured) worstSquared = maxSquaredStretchOf(s.x, springs, count);
   result.maxStretchAfter = std::sqrt(worstSquared);
   forRange(s.size(), [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) s.v[i] += (s.x[i] - before[i]) / h;
