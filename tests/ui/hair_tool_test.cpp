@@ -4,7 +4,8 @@
 // position are changed in the panel's fields, and each edit must regrow the
 // guides; undo and redo must give back exactly the strands before and after;
 // the document saved and reopened must hold the same hairstyle and grow the
-// same strands. The source is also dragged by its handle in the viewport.
+// same strands. The source is also dragged by its handle in the viewport, and
+// a vortex's axis is turned by its tip handle.
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -369,6 +370,46 @@ class HairToolTest : public QObject {
     QCOMPARE(panel()->scalpModeCombo()->currentIndex(), int(HairPanel::ScalpBoneCone));
     QCOMPARE(float(panel()->scalpAngleBox()->value()), saved.angleDegrees);
     QCOMPARE(rootPoints(*tool_), narrowConeRoots_);
+  }
+
+  // Dragging a vortex's tip handle (the cube at the end of its axis line)
+  // turns its axis toward the cursor: a unit axis, the vortex stays put, live
+  // guides, one undo step that gives the axis back exactly.
+  void draggingTheVortexTipTurnsItsAxis() {
+    tool_->dock()->show();
+    tool_->dock()->raise();
+    QTest::mouseClick(panel()->addVortexButton(), Qt::LeftButton);
+    QApplication::processEvents();
+    renderNow();
+    const PrimitiveRef vortex{PrimitiveRef::Vortex, int(tool_->style().primitives.vortices.size()) - 1};
+    QVERIFY(tool_->selectedPrimitive() == vortex);
+    const Vortex before = tool_->style().primitives.vortices[vortex.index];
+    const std::vector<float> guidesBefore = guidePoints(*tool_);
+    const glm::mat4 worldFromHead = tool_->worldFromHead();
+    auto tipOnScreen = [&] {
+      return toWidget(glm::vec3(worldFromHead * glm::vec4(axisTipPosition(tool_->style(), vortex), 1.0f)));
+    };
+    const QPoint at = tipOnScreen();
+    const int commands = doc()->undoStack()->index();
+    QWidget* viewport = window_->viewport();
+    sendMouse(viewport, QEvent::MouseButtonPress, at, Qt::LeftButton, Qt::LeftButton);
+    for (int step = 1; step <= 4; ++step)
+      sendMouse(viewport, QEvent::MouseMove, at + QPoint(10 * step, 0), Qt::NoButton, Qt::LeftButton);
+    sendMouse(viewport, QEvent::MouseButtonRelease, at + QPoint(40, 0), Qt::LeftButton, Qt::NoButton);
+    QCOMPARE(doc()->undoStack()->index(), commands + 1);  // one step for the drag
+    const Vortex after = tool_->style().primitives.vortices[vortex.index];
+    QCOMPARE(after.position, before.position);  // the tip turns the axis, it does not move the vortex
+    QVERIFY2(std::abs(glm::length(after.axis) - 1.0f) < 1e-3f, "the turned axis is not unit length");
+    QVERIFY2(glm::length(after.axis - before.axis) > 0.1f, "dragging the tip did not turn the axis");
+    const QPoint tipAfter = tipOnScreen();
+    QVERIFY2(tipAfter.x() > at.x() + 15 && std::abs(tipAfter.y() - at.y()) < 15,
+             qPrintable(QString("the tip went to (%1, %2), not right of (%3, %4)")
+                            .arg(tipAfter.x()).arg(tipAfter.y()).arg(at.x()).arg(at.y())));
+    const std::vector<float> guidesAfter = guidePoints(*tool_);
+    QVERIFY2(maxDifference(guidesBefore, guidesAfter) > 1e-3f, "the guides did not follow the turned axis");
+    doc()->undoStack()->undo();
+    QCOMPARE(tool_->style().primitives.vortices[vortex.index].axis, before.axis);
+    QCOMPARE(guidePoints(*tool_), guidesBefore);
   }
 };
 

@@ -1,6 +1,7 @@
 #include "ui/hair/hair_handles.h"
 
 #include <vtkActor.h>
+#include <vtkCubeSource.h>
 #include <vtkLineSource.h>
 #include <vtkNew.h>
 #include <vtkPolyDataMapper.h>
@@ -75,6 +76,19 @@ void moveHandle(HairStyle& style, const PrimitiveRef& ref, const glm::vec3& head
   }
 }
 
+glm::vec3 axisTipPosition(const HairStyle& style, const PrimitiveRef& ref) {
+  const Vortex& vortex = style.primitives.vortices[ref.index];
+  const glm::vec3 axis = glm::length(vortex.axis) > 1e-6f ? glm::normalize(vortex.axis) : glm::vec3(0.0f);
+  return vortex.position + axis * kLineLength;
+}
+
+void turnAxisToward(HairStyle& style, const PrimitiveRef& ref, const glm::vec3& headSpace) {
+  Vortex& vortex = style.primitives.vortices[ref.index];
+  const glm::vec3 along = headSpace - vortex.position;
+  // Too near the vortex's centre the direction is noise: keep the axis.
+  if (glm::length(along) > 1e-3f) vortex.axis = roundedForTheDocument(glm::normalize(along));
+}
+
 HairHandles::HairHandles(vtkRenderer* renderer) : renderer_(renderer) {}
 HairHandles::~HairHandles() { clear(); }
 
@@ -82,6 +96,7 @@ void HairHandles::clear() {
   for (Handle& h : handles_) {
     renderer_->RemoveActor(h.sphere);
     renderer_->RemoveActor(h.line);
+    if (h.tip) renderer_->RemoveActor(h.tip);
   }
   handles_.clear();
 }
@@ -102,8 +117,22 @@ void HairHandles::update(const HairStyle& style, const glm::mat4& worldFromHead,
     h.sphere = makeActor(sphere, color);
     glm::vec3 along(0.0f);
     if (ref.kind == PrimitiveRef::Stream) along = style.primitives.streams[ref.index].direction;
-    if (ref.kind == PrimitiveRef::Vortex) along = style.primitives.vortices[ref.index].axis;
     if (glm::length(along) > 1e-6f) along = glm::normalize(glm::mat3(worldFromHead) * along) * kLineLength;
+    if (ref.kind == PrimitiveRef::Vortex && glm::length(style.primitives.vortices[ref.index].axis) > 1e-6f) {
+      // The line ends at the tip handle, which is placed in head space like the sphere.
+      h.tipWorld = glm::vec3(worldFromHead * glm::vec4(axisTipPosition(style, ref), 1.0f));
+      h.hasTip = true;
+      along = h.tipWorld - h.world;
+      const double side = isSelected ? 0.009 : 0.006;
+      vtkNew<vtkCubeSource> cube;
+      cube->SetCenter(h.tipWorld.x, h.tipWorld.y, h.tipWorld.z);
+      cube->SetXLength(side);
+      cube->SetYLength(side);
+      cube->SetZLength(side);
+      h.tip = makeActor(cube, color);
+      h.tip->SetVisibility(visible_);
+      renderer_->AddActor(h.tip);
+    }
     vtkNew<vtkLineSource> line;
     line->SetPoint1(h.world.x, h.world.y, h.world.z);
     line->SetPoint2(h.world.x + along.x, h.world.y + along.y, h.world.z + along.z);
@@ -121,22 +150,29 @@ void HairHandles::setVisible(bool visible) {
   for (Handle& h : handles_) {
     h.sphere->SetVisibility(visible);
     h.line->SetVisibility(visible);
+    if (h.tip) h.tip->SetVisibility(visible);
   }
 }
 
-PrimitiveRef HairHandles::pick(int x, int y, float radiusPixels) const {
+HandleHit HairHandles::pick(int x, int y, float radiusPixels) const {
   if (!visible_) return {};
-  PrimitiveRef best;
+  HandleHit best;
   double bestDepth = 2.0;
-  for (const Handle& h : handles_) {
-    renderer_->SetWorldPoint(h.world.x, h.world.y, h.world.z, 1.0);
+  // Returns whether world point `at` is under the cursor nearer than the best so far.
+  auto nearer = [&](const glm::vec3& at) {
+    renderer_->SetWorldPoint(at.x, at.y, at.z, 1.0);
     renderer_->WorldToDisplay();
     const double* d = renderer_->GetDisplayPoint();
     const double dx = d[0] - x, dy = d[1] - y;
-    if (dx * dx + dy * dy > double(radiusPixels) * radiusPixels || d[2] >= bestDepth) continue;
+    if (dx * dx + dy * dy > double(radiusPixels) * radiusPixels || d[2] >= bestDepth) return false;
     bestDepth = d[2];
-    best = h.ref;
-  }
+    return true;
+  };
+  for (const Handle& h : handles_)
+    if (h.hasTip && nearer(h.tipWorld)) best = {h.ref, HandleHit::AxisTip};
+  if (best.valid()) return best;
+  for (const Handle& h : handles_)
+    if (nearer(h.world)) best = {h.ref, HandleHit::Body};
   return best;
 }
 

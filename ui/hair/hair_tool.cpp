@@ -447,16 +447,23 @@ bool HairTool::eventFilter(QObject* watched, QEvent* event) {
 bool HairTool::onPress(QMouseEvent* event) {
   if (event->button() != Qt::LeftButton || event->modifiers() != Qt::NoModifier || !dock_->isVisible()) return false;
   const QPoint display = toDisplay(event->position());
-  const PrimitiveRef ref = handles_->pick(display.x(), display.y());
-  if (!ref.valid()) return false;
-  selectPrimitive(ref);
-  dragging_ = ref;
+  const HandleHit hit = handles_->pick(display.x(), display.y());
+  if (!hit.valid()) return false;
+  selectPrimitive(hit.ref);
+  dragging_ = hit.ref;
+  dragPart_ = hit.part;
   dragKey_ = HairStyleCommand::nextMergeKey();
   dragBefore_ = *style_;
   dragWorldFromHead_ = worldFromHead();
-  dragWorld_ = glm::vec3(dragWorldFromHead_ * glm::vec4(handlePosition(*style_, ref), 1.0f));
+  const glm::vec3 grabbed =
+      hit.part == HandleHit::AxisTip ? axisTipPosition(*style_, hit.ref) : handlePosition(*style_, hit.ref);
+  dragWorld_ = glm::vec3(dragWorldFromHead_ * glm::vec4(grabbed, 1.0f));
   dragMoved_ = false;
   return true;
+}
+
+QString HairTool::dragText() const {
+  return dragPart_ == HandleHit::AxisTip ? tr("Turn vortex axis") : tr("Move hair primitive");
 }
 
 bool HairTool::onMove(QMouseEvent* event) {
@@ -464,8 +471,12 @@ bool HairTool::onMove(QMouseEvent* event) {
   const QPoint display = toDisplay(event->position());
   HairStyle after = *style_;
   const glm::vec3 world = handles_->displayToWorld(display.x(), display.y(), dragWorld_);
-  moveHandle(after, dragging_, glm::vec3(glm::inverse(dragWorldFromHead_) * glm::vec4(world, 1.0f)));
-  editStyle(after, tr("Move hair primitive"), dragKey_, true);
+  const glm::vec3 headSpace = glm::vec3(glm::inverse(dragWorldFromHead_) * glm::vec4(world, 1.0f));
+  if (dragPart_ == HandleHit::AxisTip)
+    turnAxisToward(after, dragging_, headSpace);
+  else
+    moveHandle(after, dragging_, headSpace);
+  editStyle(after, dragText(), dragKey_, true);
   dragMoved_ = true;
   return true;
 }
@@ -473,7 +484,7 @@ bool HairTool::onMove(QMouseEvent* event) {
 bool HairTool::onRelease(QMouseEvent* event) {
   if (!dragging_.valid()) return false;
   // The drag's last step: same style, not live, so the children regrow.
-  if (dragMoved_) editStyle(*style_, tr("Move hair primitive"), dragKey_, false);
+  if (dragMoved_) editStyle(*style_, dragText(), dragKey_, false);
   dragging_ = {};
   return true;
 }

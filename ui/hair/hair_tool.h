@@ -3,7 +3,8 @@
 // hairstyle of the scene document's "hair" section, shows the strands
 // (render::HairActor) and the flow primitives' handles in the viewport, and
 // edits the style through undo commands (HairStyleCommand). Dragging a
-// handle regrows the guides live; the children regrow when it is released.
+// handle (a sphere moves a primitive, a vortex's tip cube turns its axis)
+// regrows the guides live; the children regrow when it is released.
 // Simulate steps the guide dynamics as the timeline moves; Bake simulates the
 // whole clip with a progress dialog and plays it back.
 //
@@ -131,6 +132,7 @@ class HairTool : public QObject {
   bool onPress(QMouseEvent* event);
   bool onMove(QMouseEvent* event);
   bool onRelease(QMouseEvent* event);
+  QString dragText() const;  // the undo text of the drag under way
 
   MainWindow* window_;
   HairPanel* panel_ = nullptr;
@@ -155,6 +157,7 @@ class HairTool : public QObject {
 
   // Handle drag
   PrimitiveRef dragging_;
+  HandleHit::Part dragPart_ = HandleHit::Body;  // the sphere moves it, a vortex's tip turns its axis
   int dragKey_ = 0;
   HairStyle dragBefore_;
   glm::vec3 dragWorld_{0.0f};
