@@ -34,6 +34,7 @@
 #include "ui/document/editor_document.h"
 #include "ui/document/pose_commands.h"
 #include "ui/main_window.h"
+#include "test_window.h"
 #include "ui/panels/properties_panel.h"
 #include "ui/panels/scene_tree_panel.h"
 #include "ui/panels/timeline_panel.h"
@@ -95,13 +96,7 @@ class EditorSmokeTest : public QObject {
 
  private slots:
   void initTestCase() {
-    window_ = new MainWindow;
-    window_->reportError = [](const QString& title, const QString& message) {
-      QFAIL(qPrintable("unexpected error dialog: " + title + ": " + message));
-    };
-    window_->confirmDiscardChanges = [] { return true; };
-    window_->resize(1280, 800);
-    window_->show();
+    window_ = makeTestWindow();
     QVERIFY(QTest::qWaitForWindowExposed(window_));
     QString error;
     QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));

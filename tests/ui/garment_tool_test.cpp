@@ -35,6 +35,7 @@
 #include "ui/garment/garment_panel.h"
 #include "ui/garment/garment_tool.h"
 #include "ui/main_window.h"
+#include "test_window.h"
 #include "ui/viewport/vtk_viewport_widget.h"
 
 using namespace mq;
@@ -100,13 +101,7 @@ class GarmentToolTest : public QObject {
 
  private slots:
   void initTestCase() {
-    window_ = new MainWindow;
-    window_->reportError = [](const QString& title, const QString& message) {
-      QFAIL(qPrintable("unexpected error dialog: " + title + ": " + message));
-    };
-    window_->confirmDiscardChanges = [] { return true; };
-    window_->resize(1280, 800);
-    window_->show();
+    window_ = makeTestWindow();
     QVERIFY(QTest::qWaitForWindowExposed(window_));
     QString error;
     QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));

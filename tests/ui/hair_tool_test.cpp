@@ -37,6 +37,7 @@
 #include "ui/hair/hair_panel.h"
 #include "ui/hair/hair_tool.h"
 #include "ui/main_window.h"
+#include "test_window.h"
 #include "ui/viewport/vtk_viewport_widget.h"
 
 using namespace mq;
@@ -121,13 +122,7 @@ class HairToolTest : public QObject {
 
  private slots:
   void initTestCase() {
-    window_ = new MainWindow;
-    window_->reportError = [](const QString& title, const QString& message) {
-      QFAIL(qPrintable("unexpected error dialog: " + title + ": " + message));
-    };
-    window_->confirmDiscardChanges = [] { return true; };
-    window_->resize(1280, 800);
-    window_->show();
+    window_ = makeTestWindow();
     QVERIFY(QTest::qWaitForWindowExposed(window_));
     tool_ = window_->findChild<HairTool*>();
     QVERIFY(tool_ != nullptr);
