@@ -156,6 +156,17 @@ LightSet gatherLights(vtkRenderer* renderer) {
   return set;
 }
 
+// Light-aligned frame: w toward the light, (u, v) across its rays.
+struct LightFrame {
+  glm::vec3 u, v, w;
+};
+LightFrame lightFrame(const glm::vec3& towardLight) {
+  const glm::vec3 w = glm::normalize(towardLight);
+  const glm::vec3 helper = std::abs(w.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+  const glm::vec3 u = glm::normalize(glm::cross(helper, w));
+  return {u, glm::cross(w, u), w};
+}
+
 }  // namespace
 
 // ---- The mapper: per frame, lights into uniforms and shadows refreshed ----
@@ -397,10 +408,7 @@ std::vector<float> HairActor::computeSelfShadow(const Strands& strands, const gl
   std::vector<float> shadow(count, 1.0f);
   const int n = strands.pointsPerStrand;
   if (count == 0 || n < 2) return shadow;
-  // Light-aligned frame: w toward the light, (u, v) across its rays.
-  const glm::vec3 w = glm::normalize(towardLight);
-  const glm::vec3 helper = std::abs(w.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
-  const glm::vec3 u = glm::normalize(glm::cross(helper, w)), v = glm::cross(w, u);
+  const auto [u, v, w] = lightFrame(towardLight);
 
   std::vector<glm::vec3> projected(count);  // (u, v, depth toward the light)
   glm::vec2 lo(1e30f), hi(-1e30f);
@@ -471,9 +479,7 @@ std::vector<float> HairActor::computeOpacityMapShadow(const Strands& strands, co
   std::vector<float> shadow(count, 1.0f);
   const int n = strands.pointsPerStrand;
   if (count == 0 || n < 2) return shadow;
-  const glm::vec3 w = glm::normalize(towardLight);
-  const glm::vec3 helper = std::abs(w.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
-  const glm::vec3 u = glm::normalize(glm::cross(helper, w)), v = glm::cross(w, u);
+  const auto [u, v, w] = lightFrame(towardLight);
 
   // (u, v, distance from the hair's front along the light).
   std::vector<glm::vec3> projected(count);
