@@ -168,9 +168,10 @@ TEST(HairRenderDefault, DefaultMannequinWithDefaultHairstyle) {
   }
 }
 
-TEST(HairSelfShadow, DarkensWithDepthIntoTheHair) {
-  // A slab of parallel horizontal strands stacked along y, lit from above:
-  // the top layer is lit, each layer below gets less light.
+// A slab of parallel horizontal strands stacked along y, lit from above: the
+// top layer is lit, each layer below gets less light; lit from below, the
+// order reverses. Both self-shadowing methods must behave so.
+void expectSlabDarkensWithDepth(render::HairShadowMethod method) {
   Strands strands;
   strands.pointsPerStrand = 16;
   for (int layer = 0; layer < 10; ++layer)
@@ -181,6 +182,7 @@ TEST(HairSelfShadow, DarkensWithDepthIntoTheHair) {
   render::HairShading shading;
   shading.minShadow = 0.0f;
   shading.shadowPerStrand = 0.04f;  // weak, so the deepest layers do not all saturate near 0
+  shading.shadowMethod = method;
   const std::vector<float> shadow = render::HairActor::computeSelfShadow(strands, {0.0f, 1.0f, 0.0f}, shading);
   auto layerMean = [&](int layer) {
     double sum = 0.0;
@@ -191,37 +193,16 @@ TEST(HairSelfShadow, DarkensWithDepthIntoTheHair) {
   EXPECT_GT(layerMean(0), 0.95);
   for (int layer = 1; layer < 10; ++layer) EXPECT_LT(layerMean(layer), layerMean(layer - 1) - 0.02) << layer;
   EXPECT_LT(layerMean(9), 0.5);
-  // Lit from below, the order reverses.
   const std::vector<float> fromBelow = render::HairActor::computeSelfShadow(strands, {0.0f, -1.0f, 0.0f}, shading);
   EXPECT_GT(fromBelow[(9 * 20 + 10) * 16 + 8], 0.95f);
   EXPECT_LT(fromBelow[(0 * 20 + 10) * 16 + 8], 0.5f);
 }
 
+TEST(HairSelfShadow, DarkensWithDepthIntoTheHair) { expectSlabDarkensWithDepth(render::HairShadowMethod::PointCount); }
+
 // Opacity shadow maps: the same layered slab, the same darkening with depth.
 TEST(HairSelfShadow, OpacityMapsDarkenWithDepthLikeTheExactCount) {
-  Strands strands;
-  strands.pointsPerStrand = 16;
-  for (int layer = 0; layer < 10; ++layer)
-    for (int row = 0; row < 20; ++row)
-      for (int i = 0; i < 16; ++i)
-        strands.points.insert(strands.points.end(), {0.01f * float(i), -0.005f * float(layer), 0.002f * float(row)});
-  render::HairShading shading;
-  shading.minShadow = 0.0f;
-  shading.shadowPerStrand = 0.04f;
-  shading.shadowMethod = render::HairShadowMethod::OpacityMaps;
-  const std::vector<float> shadow = render::HairActor::computeSelfShadow(strands, {0.0f, 1.0f, 0.0f}, shading);
-  auto layerMean = [&](int layer) {
-    double sum = 0.0;
-    for (int row = 0; row < 20; ++row)
-      for (int i = 2; i < 14; ++i) sum += shadow[(layer * 20 + row) * 16 + i];
-    return sum / (20 * 12);
-  };
-  EXPECT_GT(layerMean(0), 0.95);
-  for (int layer = 1; layer < 10; ++layer) EXPECT_LT(layerMean(layer), layerMean(layer - 1) - 0.02) << layer;
-  EXPECT_LT(layerMean(9), 0.5);
-  const std::vector<float> fromBelow = render::HairActor::computeSelfShadow(strands, {0.0f, -1.0f, 0.0f}, shading);
-  EXPECT_GT(fromBelow[(9 * 20 + 10) * 16 + 8], 0.95f);
-  EXPECT_LT(fromBelow[(0 * 20 + 10) * 16 + 8], 0.5f);
+  expectSlabDarkensWithDepth(render::HairShadowMethod::OpacityMaps);
 }
 
 // On a real groom the maps approach the exact count, closer with more maps.

@@ -59,12 +59,6 @@ float maxDifference(const std::vector<float>& a, const std::vector<float>& b) {
   return d;
 }
 
-// Sends a mouse event straight to the widget (event filters see it first,
-// as with real input).
-void sendMouse(QWidget* w, QEvent::Type type, QPoint pos, Qt::MouseButton button, Qt::MouseButtons buttons) {
-  QMouseEvent event(type, QPointF(pos), w->mapToGlobal(QPointF(pos)), button, buttons, Qt::NoModifier);
-  QApplication::sendEvent(w, &event);
-}
 
 }  // namespace
 
@@ -77,22 +71,11 @@ class EditorSmokeTest : public QObject {
 
   int bone(const char* name) { return doc()->character().skeleton.findBone(name); }
 
-  // Widget coordinates of a world point in the viewport.
-  QPoint toWidget(const glm::vec3& world) {
-    vtkRenderer* renderer = window_->sceneView()->renderer();
-    renderer->SetWorldPoint(world.x, world.y, world.z, 1.0);
-    renderer->WorldToDisplay();
-    const double* d = renderer->GetDisplayPoint();
-    const double ratio = window_->viewport()->devicePixelRatioF();
-    return QPoint(int(d[0] / ratio), int((window_->viewport()->height() * ratio - 1 - d[1]) / ratio));
-  }
+  QPoint toWidget(const glm::vec3& world) { return mq::ui::toWidget(window_, world); }
 
   glm::vec3 jointOf(int b) { return glm::vec3(doc()->posed().worldFromBone()[b][3]); }
 
-  void renderNow() {
-    window_->viewport()->grabFramebuffer();  // paints synchronously
-    QApplication::processEvents();
-  }
+  void renderNow() { mq::ui::renderNow(window_); }
 
  private slots:
   void initTestCase() {

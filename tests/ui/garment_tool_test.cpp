@@ -70,11 +70,6 @@ bool jsonNear(const nlohmann::json& a, const nlohmann::json& b) {
   return a == b;
 }
 
-void sendMouse(QWidget* w, QEvent::Type type, QPoint pos, Qt::MouseButton button, Qt::MouseButtons buttons,
-               Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
-  QMouseEvent event(type, QPointF(pos), w->mapToGlobal(QPointF(pos)), button, buttons, modifiers);
-  QApplication::sendEvent(w, &event);
-}
 
 }  // namespace
 
@@ -88,10 +83,7 @@ class GarmentToolTest : public QObject {
   GarmentPanel* panel() { return tool_->panel(); }
   QUndoStack* undo() { return doc()->undoStack(); }
 
-  void renderNow() {
-    window_->viewport()->grabFramebuffer();
-    QApplication::processEvents();
-  }
+  void renderNow() { mq::ui::renderNow(window_); }
 
   // MANNEQUIN_TEST_SHOTS=DIR keeps pictures of the window for a person to look at.
   void keepShot(const char* name) {

@@ -94,25 +94,10 @@ class HairToolTest : public QObject {
   EditorDocument* doc() { return window_->document(); }
   HairPanel* panel() { return tool_->panel(); }
 
-  // Widget coordinates of a world point in the viewport.
-  QPoint toWidget(const glm::vec3& world) {
-    vtkRenderer* renderer = window_->sceneView()->renderer();
-    renderer->SetWorldPoint(world.x, world.y, world.z, 1.0);
-    renderer->WorldToDisplay();
-    const double* d = renderer->GetDisplayPoint();
-    const double ratio = window_->viewport()->devicePixelRatioF();
-    return QPoint(int(d[0] / ratio), int((window_->viewport()->height() * ratio - 1 - d[1]) / ratio));
-  }
+  QPoint toWidget(const glm::vec3& world) { return mq::ui::toWidget(window_, world); }
 
-  void renderNow() {
-    window_->viewport()->grabFramebuffer();
-    QApplication::processEvents();
-  }
+  void renderNow() { mq::ui::renderNow(window_); }
 
-  static void sendMouse(QWidget* w, QEvent::Type type, QPoint pos, Qt::MouseButton button, Qt::MouseButtons buttons) {
-    QMouseEvent event(type, QPointF(pos), w->mapToGlobal(QPointF(pos)), button, buttons, Qt::NoModifier);
-    QApplication::sendEvent(w, &event);
-  }
 
   // State after each step, compared by undo/redo and the reopen.
   std::vector<float> opened_, added_, strengthened_, moved_;

@@ -1,11 +1,18 @@
 #pragma once
-// The editor window every GUI test drives: an error dialog fails the test,
-// discarding changes is always allowed, and the size is fixed so picks and
-// drags land in the same places on every run. Shown; wait for it to be exposed.
+// What every GUI test needs: the editor window it drives (an error dialog
+// fails the test, discarding changes is always allowed, the size is fixed so
+// picks and drags land in the same places on every run; shown, wait for it to
+// be exposed), synchronous painting, mouse events and world-to-widget points.
 
+#include <QApplication>
+#include <QMouseEvent>
 #include <QTest>
+#include <glm/glm.hpp>
+#include <vtkRenderer.h>
 
+#include "render/scene_view.h"
 #include "ui/main_window.h"
+#include "ui/viewport/vtk_viewport_widget.h"
 
 namespace mq::ui {
 
@@ -18,6 +25,30 @@ inline MainWindow* makeTestWindow() {
   window->resize(1280, 800);
   window->show();
   return window;
+}
+
+// Paints the viewport now (grabbing the framebuffer renders synchronously).
+inline void renderNow(MainWindow* window) {
+  window->viewport()->grabFramebuffer();
+  QApplication::processEvents();
+}
+
+// Sends a mouse event straight to the widget (event filters see it first,
+// as with real input).
+inline void sendMouse(QWidget* w, QEvent::Type type, QPoint pos, Qt::MouseButton button, Qt::MouseButtons buttons,
+                      Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+  QMouseEvent event(type, QPointF(pos), w->mapToGlobal(QPointF(pos)), button, buttons, modifiers);
+  QApplication::sendEvent(w, &event);
+}
+
+// Widget coordinates of a world point in the viewport.
+inline QPoint toWidget(MainWindow* window, const glm::vec3& world) {
+  vtkRenderer* renderer = window->sceneView()->renderer();
+  renderer->SetWorldPoint(world.x, world.y, world.z, 1.0);
+  renderer->WorldToDisplay();
+  const double* d = renderer->GetDisplayPoint();
+  const double ratio = window->viewport()->devicePixelRatioF();
+  return QPoint(int(d[0] / ratio), int((window->viewport()->height() * ratio - 1 - d[1]) / ratio));
 }
 
 }  // namespace mq::ui
