@@ -179,10 +179,14 @@ Garment makeTShirt(const BodyMeasurements& body, const Params& p) {
   float circumference = body.upperArmGirth + p.at("sleeveEase");
   for (int s = 0; s < 2; ++s) {
     std::string side = s == 0 ? "l" : "r";
-    Panel sleeve = sleevePanel("sleeve_" + side, circumference, p.at("sleeveLength"), 0.06f);
-    glm::vec3 axis = glm::normalize(body.shoulder[s] - body.elbow[s]);
+    // A low cap holds the sleeve out like a wing when the arm comes down from
+    // the A-pose it was sewn on; a set-in sleeve's cap lets it hang.
+    Panel sleeve = sleevePanel("sleeve_" + side, circumference, p.at("sleeveLength"), p.at("sleeveCap"));
+    // Along the whole arm (shoulder to wrist), not the upper arm alone: a long
+    // sleeve then clears the forward-bent forearm and the hand.
+    glm::vec3 axis = glm::normalize(body.shoulder[s] - body.wrist[s]);
     const BodyCapsule* arm = findCapsule(body.capsules, "upperarm_" + side);
-    float radius = std::max(circumference / (2.0f * kPi), (arm ? arm->radius : 0.05f) + offset + kCoverSpacing);
+    float radius = std::max(circumference / (2.0f * kPi), (arm ? arm->radius : 0.05f) + offset + 2.0f * kCoverSpacing);
     sleeve.placement = cylinder("upperarm_" + side, body.shoulder[s], axis, kUp, radius, {0.0f, p.at("sleeveLength")});
     glm::vec3 shoulder = body.shoulder[s];
     // Starts a little down the arm: a sleeve tube closing right at the
@@ -288,7 +292,8 @@ std::vector<GarmentParameter> garmentParameters(const std::string& type) {
     return {{"length", 0.66f, 0.35f, 1.1f, "shoulder to hem"},
             {"ease", 0.2f, 0.0f, 0.5f, "chest circumference added to the body's"},
             {"sleeveLength", 0.2f, 0.05f, 0.6f, "armhole to cuff, under the arm"},
-            {"sleeveEase", 0.12f, 0.0f, 0.3f, "sleeve circumference added to the upper arm's"},
+            {"sleeveEase", 0.24f, 0.0f, 0.4f, "sleeve circumference added to the upper arm's"},
+            {"sleeveCap", 0.18f, 0.03f, 0.3f, "sleeve cap height: taller hangs closer to the body"},
             {"neckWidth", 0.17f, 0.08f, 0.3f, "width of the neck opening"},
             offset};
   if (type == "skirt")

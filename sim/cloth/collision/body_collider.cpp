@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 #include "core/util/error.h"
 #include "sim/cloth/collision/proximity.h"
@@ -16,6 +17,23 @@ std::vector<glm::vec3> toVec3(const std::vector<float>& flat) {
   return out;
 }
 
+// For each triangle edge (i, i+1), the other triangle on that edge (-1 on a
+// boundary or a non-manifold edge).
+std::vector<int32_t> edgeNeighbours(const std::vector<uint32_t>& triangles) {
+  std::unordered_map<uint64_t, uint32_t> firstSide;
+  firstSide.reserve(triangles.size());
+  std::vector<int32_t> neighbour(triangles.size(), -1);
+  for (size_t e = 0; e < triangles.size(); ++e) {
+    const uint32_t a = triangles[e], b = triangles[e - e % 3 + (e + 1) % 3];
+    const uint64_t key = (uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+    auto [it, inserted] = firstSide.emplace(key, uint32_t(e));
+    if (inserted) continue;
+    neighbour[e] = int32_t(it->second / 3);
+    neighbour[it->second] = int32_t(e / 3);
+  }
+  return neighbour;
+}
+
 }  // namespace
 
 void BodyCollider::setMesh(const std::vector<float>& positions, const std::vector<uint32_t>& triangles,
@@ -24,6 +42,13 @@ void BodyCollider::setMesh(const std::vector<float>& positions, const std::vecto
   for (uint32_t t : triangles)
     if (t >= n) throw Error("body mesh triangle index out of range");
   triangles_ = triangles;
+  edgeNeighbour_ = edgeNeighbours(triangles_);
+  ringStart_.assign(n + 1, 0);
+  for (uint32_t v : triangles_) ++ringStart_[v + 1];
+  for (size_t v = 0; v < n; ++v) ringStart_[v + 1] += ringStart_[v];
+  ringTriangles_.resize(triangles_.size());
+  std::vector<uint32_t> fill(ringStart_.begin(), ringStart_.end() - 1);
+  for (size_t e = 0; e < triangles_.size(); ++e) ringTriangles_[fill[triangles_[e]]++] = uint32_t(e / 3);
   from_ = to_ = current_ = previous_ = toVec3(positions);
   maxDisplacement_ = 0.0f;
   velocity_.assign(n, glm::vec3(0.0f));
@@ -97,6 +122,38 @@ bool BodyCollider::firstHitAlong(const glm::vec3& from, const glm::vec3& to, Bod
   return found;
 }
 
+glm::vec3 BodyCollider::unitFaceNormal(uint32_t t) const {
+  const glm::vec3 &a = current_[triangles_[3 * t]], &b = current_[triangles_[3 * t + 1]], &c = current_[triangles_[3 * t + 2]];
+  const glm::vec3 n = glm::cross(b - a, c - a);
+  const float length = glm::length(n);
+  return length > 0.0f ? n / length : glm::vec3(0.0f);
+}
+
+glm::vec3 BodyCollider::pseudoNormal(uint32_t t, const glm::vec3& w) const {
+  const int zeros = (w.x == 0.0f) + (w.y == 0.0f) + (w.z == 0.0f);
+  if (zeros == 0) return unitFaceNormal(t);
+  if (zeros == 1) {
+    // The edge opposite the zero weight: (1,2), (2,0) or (0,1) in triangle order.
+    const int edge = w.x == 0.0f ? 1 : w.y == 0.0f ? 2 : 0;
+    const int32_t across = edgeNeighbour_[3 * t + edge];
+    return across < 0 ? unitFaceNormal(t) : unitFaceNormal(t) + unitFaceNormal(uint32_t(across));
+  }
+  const uint32_t v = triangles_[3 * t + (w.x != 0.0f ? 0 : w.y != 0.0f ? 1 : 2)];
+  glm::vec3 sum(0.0f);
+  for (uint32_t i = ringStart_[v]; i < ringStart_[v + 1]; ++i) {
+    const uint32_t r = ringTriangles_[i];
+    const int corner = triangles_[3 * r] == v ? 0 : triangles_[3 * r + 1] == v ? 1 : 2;
+    const glm::vec3 p = current_[v];
+    const glm::vec3 e1 = current_[triangles_[3 * r + (corner + 1) % 3]] - p;
+    const glm::vec3 e2 = current_[triangles_[3 * r + (corner + 2) % 3]] - p;
+    const float l1 = glm::length(e1), l2 = glm::length(e2);
+    if (l1 <= 0.0f || l2 <= 0.0f) continue;
+    const float angle = std::acos(std::clamp(glm::dot(e1, e2) / (l1 * l2), -1.0f, 1.0f));
+    sum += angle * unitFaceNormal(r);
+  }
+  return sum;
+}
+
 bool BodyCollider::nearestContact(const glm::vec3& p, BodyContact& contact) const {
   Box box;
   box.min = box.max = p;  // triangle boxes are grown by the search radius
@@ -109,15 +166,16 @@ bool BodyCollider::nearestContact(const glm::vec3& p, BodyContact& contact) cons
     const float d = glm::length(p - q);
     if (d >= best) return;
     const glm::vec3 faceNormal = glm::cross(current_[b] - current_[a], current_[c] - current_[a]);
-    const float area2 = glm::length(faceNormal);
-    if (area2 <= 0.0f) return;
+    if (glm::dot(faceNormal, faceNormal) <= 0.0f) return;
     best = d;
     found = true;
-    const glm::vec3 n = faceNormal / area2;
-    const bool inside = glm::dot(p - q, n) < 0.0f;
+    const glm::vec3 side = pseudoNormal(t, w);
+    const bool inside = glm::dot(p - q, side) < 0.0f;
     contact.point = q;
     contact.signedDistance = inside ? -d : d;
-    contact.normal = (!inside && d > 1e-6f) ? (p - q) / d : n;
+    // Out of the body is along the shortest way to the surface.
+    if (d > 1e-6f) contact.normal = inside ? (q - p) / d : (p - q) / d;
+    else contact.normal = glm::length(side) > 0.0f ? glm::normalize(side) : faceNormal / glm::length(faceNormal);
     contact.velocity = w.x * velocity_[a] + w.y * velocity_[b] + w.z * velocity_[c];
   });
   return found;

@@ -3,9 +3,11 @@
 // every frame. Between two frames the body moves linearly; a cloth vertex
 // closer than `thickness` to the surface (or behind it) is pushed out with the
 // contact response, relative to the body's velocity at the contact point.
-// Inside/outside comes from the normal of the nearest triangle, so the body
-// should be a closed, outward-oriented surface; vertices deeper than the
-// search radius are not seen.
+// Inside/outside comes from the angle-weighted pseudo-normal of the nearest
+// feature (face, edge or vertex; Baerentzen & Aanaes 2005), which is exact for
+// a closed, outward-oriented surface even in creases such as the armpit, where
+// the nearest triangle's own normal can point either way; vertices deeper than
+// the search radius are not seen.
 
 #include <cstdint>
 #include <vector>
@@ -51,7 +53,14 @@ class BodyCollider {
   bool moved() const { return maxDisplacement_ > 0.0f; }
 
  private:
+  // The normal that decides inside/outside for a closest point with
+  // barycentric weights `w` on triangle `t`.
+  glm::vec3 pseudoNormal(uint32_t t, const glm::vec3& w) const;
+  glm::vec3 unitFaceNormal(uint32_t t) const;
+
   std::vector<uint32_t> triangles_;
+  std::vector<int32_t> edgeNeighbour_;  // 3 per triangle: the triangle across edge (i, i+1), or -1
+  std::vector<uint32_t> ringStart_, ringTriangles_;  // vertex -> triangles around it (CSR)
   std::vector<glm::vec3> from_, to_, current_, previous_, velocity_;
   float maxDisplacement_ = 0.0f;  // largest vertex move of the last moveTo()
   AabbTree tree_;
