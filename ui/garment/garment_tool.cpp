@@ -259,6 +259,8 @@ void GarmentTool::loadSections() {
   loading_ = true;
   applyScene(loaded);
   loading_ = false;
+  // A document with cloth opens on the Garments dock.
+  if (!scene_.garments.empty() || sheet_ || !scene_.cloth.colliders.empty()) dock_->raise();
 }
 
 void GarmentTool::storeSections() {
