@@ -121,9 +121,12 @@ int main(int argc, char** argv) {
               std::fprintf(stderr, "mannequin: bake: %s\n", qPrintable(garmentTool->lastError()));
               break;
             }
-            std::fprintf(stderr, "mannequin: bake %d: %d frames in %.1f s (sewing ran %d times, reused %d times)\n",
+            std::fprintf(stderr,
+                         "mannequin: bake %d: %d frames in %.1f s: sewing %.1f s, draping %.1f s, frames %.1f s "
+                         "(sewing ran %d times, reused %d times)\n",
                          b + 1, garmentTool->bakedFrameCount(), garmentTool->lastBakeSeconds(),
-                         garmentTool->sewingRuns(), garmentTool->reusedSewings());
+                         garmentTool->lastBakePhaseSeconds(0), garmentTool->lastBakePhaseSeconds(1),
+                         garmentTool->lastBakePhaseSeconds(2), garmentTool->sewingRuns(), garmentTool->reusedSewings());
           }
           if (simulateSteps > 0) {
             garmentTool->setSimulating(true);

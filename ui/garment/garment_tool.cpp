@@ -753,6 +753,8 @@ void GarmentTool::setSimulating(bool on) {
     restartSimulation();
   } else {
     waitForStep();
+    if (sewingShown_) window_->hideProgress(QString());
+    sewingShown_ = false;
   }
   showGarments();
   emit simulationChanged();
@@ -815,6 +817,15 @@ void GarmentTool::onStepFinished() {
       keepState(view->sewingKey, view->simulation->snapshot());
       view->sewnKept = true;
     }
+  // The status bar's busy bar while the seams close (the first seconds of a new garment).
+  const bool sewing = simulationPhase() == tr("Sewing");
+  if (sewing) {
+    // Sewing ends by the weld, at the latest after the sewing time limit.
+    const float limit = cloth::GarmentSimulationSettings{}.maxSewingSeconds + 0.25f;
+    window_->showProgress(tr("Sewing the garments"), std::min(99, int(100.0f * simulatedSeconds_ / limit)));
+  }
+  else if (sewingShown_) window_->hideProgress(tr("Garments sewn"));
+  sewingShown_ = sewing;
   showGarments();
   emit simulationChanged();
   QTimer::singleShot(0, this, &GarmentTool::startStep);
@@ -899,8 +910,17 @@ bool GarmentTool::bake(float from, float to) {
   // Filled by the worker, kept on this thread afterwards.
   std::vector<std::optional<cloth::GarmentSimulation::Snapshot>> sewnStates(views.size()), drapedStates(views.size());
 
+  // Where the worker's time goes, for the status bar and scripts.
+  double phaseSeconds[3] = {0.0, 0.0, 0.0};  // sewing, draping, frames
   auto work = [&]() -> QString {
     try {
+      using Clock = std::chrono::steady_clock;
+      auto mark = Clock::now();
+      auto charge = [&](int phase) {
+        const auto now = Clock::now();
+        phaseSeconds[phase] += std::chrono::duration<double>(now - mark).count();
+        mark = now;
+      };
       std::vector<float> body;
       auto bodyOrNull = [](const std::vector<float>& b) { return b.empty() ? nullptr : &b; };
       for (size_t g = 0; g < starts.size(); ++g) {
@@ -915,12 +935,15 @@ bool GarmentTool::bake(float from, float to) {
               sewnStates[g] = simulation.snapshot();
               s.sewn = true;
             }
+            const bool sewing = !s.sewn;
             cloth::blendBody(restBody_, bodies[0], drape.advance(simulation, 1.0f / fps), body);
             simulation.step(1.0f / fps, bodyOrNull(body));
+            charge(sewing ? 0 : 1);
             done = base[g] + step + 1;
           }
           if (simulation.welded()) drapedStates[g] = simulation.snapshot();
         }
+        mark = Clock::now();
         cloth::BakedCloth baked(simulation.triangles(), fps);
         std::vector<std::vector<float>> stretch;
         for (int f = 0; f < frames; ++f) {
@@ -930,6 +953,7 @@ bool GarmentTool::bake(float from, float to) {
           stretch.push_back(simulation.vertexStretch());
           done = base[g] + s.settleSteps + f + 1;
         }
+        charge(2);
         result->garments.push_back(std::move(baked));
         result->stretch.push_back(std::move(stretch));
       }
@@ -981,7 +1005,13 @@ bool GarmentTool::bake(float from, float to) {
   }
   bake_ = std::move(result);
   lastBakeSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  window_->hideProgress(tr("Garments baked: %1 frames in %2 s").arg(frames).arg(lastBakeSeconds_, 0, 'f', 1));
+  for (int phase = 0; phase < 3; ++phase) lastBakePhases_[phase] = phaseSeconds[phase];
+  window_->hideProgress(tr("Garments baked: %1 frames in %2 s (sewing %3 s, draping %4 s, frames %5 s)")
+                            .arg(frames)
+                            .arg(lastBakeSeconds_, 0, 'f', 1)
+                            .arg(phaseSeconds[0], 0, 'f', 1)
+                            .arg(phaseSeconds[1], 0, 'f', 1)
+                            .arg(phaseSeconds[2], 0, 'f', 1));
   showGarments();
   emit simulationChanged();
   return true;

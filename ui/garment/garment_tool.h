@@ -156,6 +156,8 @@ class GarmentTool : public QObject {
   int reusedSewings() const { return reusedSewings_; }
   // Wall time of the last bake that finished, seconds.
   double lastBakeSeconds() const { return lastBakeSeconds_; }
+  // Of which the worker spent: 0 sewing, 1 draping onto the first frame, 2 simulating the frames.
+  double lastBakePhaseSeconds(int phase) const { return lastBakePhases_[phase]; }
 
   // Display
   void setStretchVisible(bool visible);
@@ -226,11 +228,13 @@ class GarmentTool : public QObject {
   std::vector<KeptState> kept_;
   int sewingRuns_ = 0, reusedSewings_ = 0;
   double lastBakeSeconds_ = 0.0;
+  double lastBakePhases_[3] = {0.0, 0.0, 0.0};
 
   // Live simulation
   bool simulating_ = false;
   int steps_ = 0;
   float simulatedSeconds_ = 0.0f;
+  bool sewingShown_ = false;  // the status bar shows the sewing progress
   QFutureWatcher<QString> stepWatcher_;
 
   // Bake
