@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "core/garment/garment.h"
+#include "core/scene/scene_document.h"
 #include "core/util/error.h"
 #include "sim/garment/drape_schedule.h"
 #include "sim/garment/garment_scene.h"
@@ -124,6 +125,25 @@ TEST(GarmentSheet, SheetFallsOnItsColliderAndKeepsItsPins) {
   }
   EXPECT_LT(lowest, 0.4f);    // it fell
   EXPECT_LT(inside, 0.005f);  // around the sphere, not through it
+}
+
+}  // namespace
+}  // namespace mq
+
+namespace mq {
+namespace {
+
+TEST(GarmentSheet, ExampleSheetAndCollidersSceneParses) {
+  const SceneDocument doc =
+      loadSceneDocument(std::string(MANNEQUIN_SOURCE_DIR) + "/resources/scenes/cloth_sheet_colliders.json");
+  EXPECT_FALSE(doc.hasCharacter());
+  const cloth::ClothSceneSpec spec = cloth::parseClothScene(doc.cloth, doc.colliders, "cloth_sheet_colliders.json");
+  EXPECT_TRUE(spec.hasSheet);
+  ASSERT_EQ(spec.colliders.size(), 3u);
+  EXPECT_EQ(spec.colliders[0].shape, cloth::PrimitiveCollider::Shape::Sphere);
+  EXPECT_EQ(spec.colliders[1].shape, cloth::PrimitiveCollider::Shape::Capsule);
+  EXPECT_EQ(spec.colliders[2].shape, cloth::PrimitiveCollider::Shape::Plane);
+  EXPECT_FLOAT_EQ(spec.colliders[2].friction, 0.6f);
 }
 
 }  // namespace

@@ -765,7 +765,8 @@ void GarmentTool::waitForStep() { stepWatcher_.waitForFinished(); }
 QString GarmentTool::simulationPhase() const {
   if (!simulating_) return QString();
   for (View* view : simulatedViews())
-    if (view->simulation && !view->drape.sewingDone(*view->simulation)) return tr("Sewing");
+    if (view->simulation && !view->simulation->welded()) return tr("Sewing");
+  if (restBody_.empty()) return tr("Simulating");  // a sheet without a character: nothing to drape onto
   for (View* view : simulatedViews())
     if (view->simulation && !view->drape.draped()) return tr("Draping");
   return tr("Following the clip");

@@ -137,7 +137,7 @@ class GarmentTool : public QObject {
   void setSimulating(bool on);
   bool simulating() const { return simulating_; }
   int simulatedSteps() const { return steps_; }
-  // "Sewing", "Draping", "Following the clip" or "" while not simulating.
+  // "Sewing", "Draping", "Following the clip", "Simulating" (no character) or "" while not simulating.
   QString simulationPhase() const;
   // Blocks until the step in flight (if any) is done.
   void waitForStep();
