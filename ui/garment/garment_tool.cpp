@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <string_view>
 #include <unordered_map>
 
@@ -834,14 +835,111 @@ void GarmentTool::onStepFinished() {
 
 // ---- Bake ----
 
+// One garment of a bake: where it starts, and the states the worker reached.
+struct GarmentTool::BakeGarment {
+  std::unique_ptr<cloth::GarmentSimulation> simulation;
+  std::string sewnKey, drapedKey;
+  bool sewn = false, draped = false;  // from a kept sewn / draped state (sewn: also once the worker sewed it)
+  int settleSteps = 0;                // at most this many steps before the first frame
+  std::optional<cloth::GarmentSimulation::Snapshot> sewnState, drapedState;  // to keep
+};
+
+namespace {
+
+// Worker time by phase: sewing, draping onto the first frame, the frames.
+class PhaseClock {
+ public:
+  enum Phase { Sewing, Draping, Frames };
+  void restart() { mark_ = std::chrono::steady_clock::now(); }
+  void charge(Phase phase) {
+    const auto now = std::chrono::steady_clock::now();
+    seconds[phase] += std::chrono::duration<double>(now - mark_).count();
+    mark_ = now;
+  }
+  double seconds[3] = {0.0, 0.0, 0.0};
+
+ private:
+  std::chrono::steady_clock::time_point mark_ = std::chrono::steady_clock::now();
+};
+
+const std::vector<float>* bodyOrNull(const std::vector<float>& body) { return body.empty() ? nullptr : &body; }
+
+}  // namespace
+
 // Each garment starts from its kept draped state for this bake's first
 // frame, or its kept sewn state (then drapes), or the placed panels (sews,
-// then drapes); the states reached are kept for the next bake or run.
+// then drapes). Throws mq::Error.
+std::vector<GarmentTool::BakeGarment> GarmentTool::prepareBake(const std::vector<float>& firstBody, float fps) const {
+  const std::string firstFrame = fingerprint(firstBody) + "@" + std::to_string(fps);
+  const int fullSettle = cloth::DrapeSchedule{}.maxSteps(1.0f / fps);
+  const int blendSteps = int(std::ceil(cloth::DrapeSchedule::kBlendSeconds * fps)) + 2;
+  std::vector<BakeGarment> garments(simulatedViews().size());
+  for (size_t i = 0; i < garments.size(); ++i) {
+    BakeGarment& g = garments[i];
+    g.simulation = makeViewSimulation(i);
+    g.sewnKey = sewingKey(i);
+    g.drapedKey = g.sewnKey + "|draped:" + firstFrame;
+    if (const auto* draped = keptState(g.drapedKey)) {
+      g.simulation->restore(*draped);
+      g.sewn = g.draped = true;
+    } else if (const auto* sewn = keptState(g.sewnKey)) {
+      g.simulation->restore(*sewn);
+      g.sewn = true;
+      g.settleSteps = blendSteps;
+    } else {
+      g.settleSteps = fullSettle;
+    }
+  }
+  return garments;
+}
+
+namespace {
+
+// Sews the garment (unless it starts sewn) on the rest body, then moves the
+// body to the first frame. False when cancelled.
+bool settle(GarmentTool::BakeGarment& g, const std::vector<float>& rest, const std::vector<float>& first, float dt,
+            const std::atomic<bool>& cancel, const std::function<void(int)>& stepped, PhaseClock& clock) {
+  cloth::GarmentSimulation& simulation = *g.simulation;
+  cloth::DrapeSchedule drape;
+  if (g.sewn) drape.skipSewing();
+  std::vector<float> body;
+  for (int step = 0; step < g.settleSteps && !drape.draped(); ++step) {
+    if (cancel) return false;
+    if (!g.sewn && simulation.welded() && drape.sewingDone(simulation)) {
+      g.sewnState = simulation.snapshot();
+      g.sewn = true;
+    }
+    const bool sewing = !g.sewn;
+    cloth::blendBody(rest, first, drape.advance(simulation, dt), body);
+    simulation.step(dt, bodyOrNull(body));
+    clock.charge(sewing ? PhaseClock::Sewing : PhaseClock::Draping);
+    stepped(step + 1);
+  }
+  if (simulation.welded()) g.drapedState = simulation.snapshot();
+  return true;
+}
+
+// The frames of the clip, the first where the garment is now. False when cancelled.
+bool bakeFrames(cloth::GarmentSimulation& simulation, const std::vector<std::vector<float>>& bodies, float fps,
+                const std::atomic<bool>& cancel, const std::function<void(int)>& stepped, cloth::BakedCloth& baked,
+                std::vector<std::vector<float>>& stretch) {
+  for (size_t f = 0; f < bodies.size(); ++f) {
+    if (cancel) return false;
+    if (f > 0) simulation.step(1.0f / fps, bodyOrNull(bodies[f]));
+    baked.addFrame(simulation.positions());
+    stretch.push_back(simulation.vertexStretch());
+    stepped(int(f) + 1);
+  }
+  return true;
+}
+
+}  // namespace
+
+// The states reached are kept for the next bake or run.
 bool GarmentTool::bake(float from, float to) {
   if (baking_) return false;
   EditorDocument* document = window_->document();
-  const std::vector<View*> views = simulatedViews();
-  if (views.empty()) {
+  if (simulatedViews().empty()) {
     lastError_ = tr("There are no garments to bake");
     return false;
   }
@@ -865,96 +963,41 @@ bool GarmentTool::bake(float from, float to) {
     posed.evaluate(document->character(), clip, start + f / fps, &document->poseEdits(), &ThreadPool::shared());
     bodies[f] = concatenated(posed.meshes());
   }
-  const std::string firstFrame = fingerprint(bodies[0]);
-
-  // Where each garment starts, and how many settle steps that leaves.
-  struct Start {
-    std::unique_ptr<cloth::GarmentSimulation> simulation;
-    std::string sewnKey, drapedKey;
-    bool sewn = false, draped = false;
-    int settleSteps = 0;
-  };
-  std::vector<Start> starts(views.size());
-  const int fullSettle = cloth::DrapeSchedule{}.maxSteps(1.0f / fps);
-  const int blendSteps = int(std::ceil(cloth::DrapeSchedule::kBlendSeconds * fps)) + 2;
+  std::vector<BakeGarment> garments;
   try {
-    for (size_t i = 0; i < views.size(); ++i) {
-      Start& s = starts[i];
-      s.simulation = makeViewSimulation(i);
-      s.sewnKey = sewingKey(i);
-      s.drapedKey = s.sewnKey + "|draped:" + firstFrame + "@" + std::to_string(fps);
-      if (const auto* draped = keptState(s.drapedKey)) {
-        s.simulation->restore(*draped);
-        s.sewn = s.draped = true;
-      } else if (const auto* sewn = keptState(s.sewnKey)) {
-        s.simulation->restore(*sewn);
-        s.sewn = true;
-        s.settleSteps = blendSteps;
-      } else {
-        s.settleSteps = fullSettle;
-      }
-    }
+    garments = prepareBake(bodies[0], fps);
   } catch (const Error& e) {
     lastError_ = QString::fromStdString(e.what());
     return false;
   }
 
   int total = 0;
-  std::vector<int> base;
-  for (const Start& s : starts) base.push_back(total), total += s.settleSteps + frames;
+  std::vector<int> base;  // progress before each garment
+  for (const BakeGarment& g : garments) base.push_back(total), total += g.settleSteps + frames;
   std::atomic<int> done{0};
   cancelBake_ = false;
   baking_ = true;
   auto result = std::make_unique<Bake>();
   result->clip = clip;
   result->start = start;
-  // Filled by the worker, kept on this thread afterwards.
-  std::vector<std::optional<cloth::GarmentSimulation::Snapshot>> sewnStates(views.size()), drapedStates(views.size());
+  PhaseClock clock;
 
-  // Where the worker's time goes, for the status bar and scripts.
-  double phaseSeconds[3] = {0.0, 0.0, 0.0};  // sewing, draping, frames
   auto work = [&]() -> QString {
     try {
-      using Clock = std::chrono::steady_clock;
-      auto mark = Clock::now();
-      auto charge = [&](int phase) {
-        const auto now = Clock::now();
-        phaseSeconds[phase] += std::chrono::duration<double>(now - mark).count();
-        mark = now;
-      };
-      std::vector<float> body;
-      auto bodyOrNull = [](const std::vector<float>& b) { return b.empty() ? nullptr : &b; };
-      for (size_t g = 0; g < starts.size(); ++g) {
-        Start& s = starts[g];
-        cloth::GarmentSimulation& simulation = *s.simulation;
-        if (!s.draped) {
-          cloth::DrapeSchedule drape;
-          if (s.sewn) drape.skipSewing();
-          for (int step = 0; step < s.settleSteps && !drape.draped(); ++step) {
-            if (cancelBake_) return QString();
-            if (!s.sewn && simulation.welded() && drape.sewingDone(simulation)) {
-              sewnStates[g] = simulation.snapshot();
-              s.sewn = true;
-            }
-            const bool sewing = !s.sewn;
-            cloth::blendBody(restBody_, bodies[0], drape.advance(simulation, 1.0f / fps), body);
-            simulation.step(1.0f / fps, bodyOrNull(body));
-            charge(sewing ? 0 : 1);
-            done = base[g] + step + 1;
-          }
-          if (simulation.welded()) drapedStates[g] = simulation.snapshot();
-        }
-        mark = Clock::now();
-        cloth::BakedCloth baked(simulation.triangles(), fps);
+      clock.restart();
+      for (size_t g = 0; g < garments.size(); ++g) {
+        BakeGarment& garment = garments[g];
+        if (!garment.draped &&
+            !settle(garment, restBody_, bodies[0], 1.0f / fps, cancelBake_, [&](int s) { done = base[g] + s; }, clock))
+          return QString();
+        clock.restart();
+        cloth::BakedCloth baked(garment.simulation->triangles(), fps);
         std::vector<std::vector<float>> stretch;
-        for (int f = 0; f < frames; ++f) {
-          if (cancelBake_) return QString();
-          if (f > 0) simulation.step(1.0f / fps, bodyOrNull(bodies[f]));
-          baked.addFrame(simulation.positions());
-          stretch.push_back(simulation.vertexStretch());
-          done = base[g] + s.settleSteps + f + 1;
-        }
-        charge(2);
+        const int settled = base[g] + garment.settleSteps;
+        if (!bakeFrames(*garment.simulation, bodies, fps, cancelBake_, [&](int f) { done = settled + f; }, baked,
+                        stretch))
+          return QString();
+        clock.charge(PhaseClock::Frames);
         result->garments.push_back(std::move(baked));
         result->stretch.push_back(std::move(stretch));
       }
@@ -985,11 +1028,11 @@ bool GarmentTool::bake(float from, float to) {
   progress.reset();
 
   // What was sewn or draped is kept, even when the bake was cancelled later.
-  for (size_t g = 0; g < starts.size(); ++g) {
-    if (sewnStates[g]) keepState(starts[g].sewnKey, std::move(*sewnStates[g]));
-    if (drapedStates[g]) keepState(starts[g].drapedKey, std::move(*drapedStates[g]));
-    if (starts[g].sewn && !sewnStates[g]) ++reusedSewings_;
+  for (BakeGarment& g : garments) {
+    if (g.sewn && !g.sewnState) ++reusedSewings_;
     else ++sewingRuns_;
+    if (g.sewnState) keepState(g.sewnKey, std::move(*g.sewnState));
+    if (g.drapedState) keepState(g.drapedKey, std::move(*g.drapedState));
   }
 
   if (!error.isEmpty()) {
@@ -1006,13 +1049,13 @@ bool GarmentTool::bake(float from, float to) {
   }
   bake_ = std::move(result);
   lastBakeSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  for (int phase = 0; phase < 3; ++phase) lastBakePhases_[phase] = phaseSeconds[phase];
+  for (int phase = 0; phase < 3; ++phase) lastBakePhases_[phase] = clock.seconds[phase];
   window_->hideProgress(tr("Garments baked: %1 frames in %2 s (sewing %3 s, draping %4 s, frames %5 s)")
                             .arg(frames)
                             .arg(lastBakeSeconds_, 0, 'f', 1)
-                            .arg(phaseSeconds[0], 0, 'f', 1)
-                            .arg(phaseSeconds[1], 0, 'f', 1)
-                            .arg(phaseSeconds[2], 0, 'f', 1));
+                            .arg(clock.seconds[0], 0, 'f', 1)
+                            .arg(clock.seconds[1], 0, 'f', 1)
+                            .arg(clock.seconds[2], 0, 'f', 1));
   showGarments();
   emit simulationChanged();
   return true;

@@ -179,6 +179,10 @@ class GarmentTool : public QObject {
  private:
   struct View;
   struct Bake;
+ public:
+  struct BakeGarment;  // one garment of a bake (garment_tool.cpp)
+
+ private:
   struct KeptState {
     std::string key;
     cloth::GarmentSimulation::Snapshot snapshot;
@@ -195,6 +199,7 @@ class GarmentTool : public QObject {
   void onStepFinished();
   std::vector<float> posedBody() const;
   std::vector<View*> simulatedViews() const;  // the garments, then the sheet
+  std::vector<BakeGarment> prepareBake(const std::vector<float>& firstBody, float fps) const;
   std::unique_ptr<cloth::GarmentSimulation> makeViewSimulation(size_t view) const;
   std::string sewingKey(size_t view) const;
   const cloth::GarmentSimulation::Snapshot* keptState(const std::string& key) const;
