@@ -5,13 +5,15 @@
 // saves it as a PNG and quits (exit code 1 if the file could not be opened).
 // --select BONE, --clip NAME and --time SECONDS set up the view first;
 // --map MAP names the bone-name map of a BVH FILE. --add-garment TYPE,
-// --bake-garments, --garment-stretch and --save-as script the garment tool
+// --bake-garments (twice: bake twice), --simulate-garments N, --garment-stretch
+// and --save-as script the garment tool
 // (documentation pictures, test scenes).
 #include <cstdio>
 
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDockWidget>
+#include <QEventLoop>
 #include <QSurfaceFormat>
 #include <QTimer>
 
@@ -61,6 +63,9 @@ int main(int argc, char** argv) {
   const QCommandLineOption saveAs("save-as", "Save the scene document to FILE once set up.", "FILE");
   parser.addOption(addGarment);
   parser.addOption(bakeGarments);
+  const QCommandLineOption simulateGarments("simulate-garments",
+                                            "Simulate the garments (and the sheet) live for N steps before the screenshot.", "N");
+  parser.addOption(simulateGarments);
   parser.addOption(garmentStretch);
   parser.addOption(saveAs);
   parser.addOption(map);
@@ -94,21 +99,43 @@ int main(int argc, char** argv) {
   const double time = parser.value(timeOption).toDouble();
   const bool setTime = parser.isSet(timeOption);
   const QStringList garments = parser.values(addGarment);
-  const bool bake = parser.isSet(bakeGarments), stretch = parser.isSet(garmentStretch);
+  // Given twice, bakes twice (the second reuses the sewn garments): each bake's time goes to stderr.
+  const int bake = int(parser.optionNames().count("bake-garments"));
+  const bool stretch = parser.isSet(garmentStretch);
+  const int simulateSteps = parser.value(simulateGarments).toInt();
   const QString savePath = parser.value(saveAs);
   auto afterLoad = [&window, takeScreenshot, screenshotPath, selectBone, clipName, time, setTime, garments, bake,
-                    stretch, savePath] {
+                    stretch, simulateSteps, savePath] {
     QObject::connect(&window, &mq::ui::MainWindow::loadFinished, &window,
         [&window, takeScreenshot, screenshotPath, selectBone, clipName, time, setTime, garments, bake, stretch,
-         savePath](bool ok) {
+         simulateSteps, savePath](bool ok) {
           mq::ui::EditorDocument* doc = window.document();
           if (clipName == "rest") doc->setClip(-1);
           else if (!clipName.isEmpty()) doc->setClip(doc->character().findClip(clipName.toStdString()));
           auto* garmentTool = window.findChild<mq::ui::GarmentTool*>();
           for (const QString& type : garments) garmentTool->addGarment(type.toStdString());
           if (!garments.isEmpty() || bake || stretch) garmentTool->dock()->raise();
-          if (bake && !garmentTool->bake())
-            std::fprintf(stderr, "mannequin: bake: %s\n", qPrintable(garmentTool->lastError()));
+          if (simulateSteps > 0 || bake) garmentTool->dock()->raise();
+          for (int b = 0; b < bake; ++b) {
+            if (!garmentTool->bake()) {
+              std::fprintf(stderr, "mannequin: bake: %s\n", qPrintable(garmentTool->lastError()));
+              break;
+            }
+            std::fprintf(stderr,
+                         "mannequin: bake %d: %d frames in %.1f s: sewing %.1f s, draping %.1f s, frames %.1f s "
+                         "(sewing ran %d times, reused %d times)\n",
+                         b + 1, garmentTool->bakedFrameCount(), garmentTool->lastBakeSeconds(),
+                         garmentTool->lastBakePhaseSeconds(0), garmentTool->lastBakePhaseSeconds(1),
+                         garmentTool->lastBakePhaseSeconds(2), garmentTool->sewingRuns(), garmentTool->reusedSewings());
+          }
+          if (simulateSteps > 0) {
+            garmentTool->setSimulating(true);
+            while (garmentTool->simulating() && garmentTool->simulatedSteps() < simulateSteps)
+              QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
+            garmentTool->setSimulating(false);
+            if (!garmentTool->lastError().isEmpty())
+              std::fprintf(stderr, "mannequin: simulate: %s\n", qPrintable(garmentTool->lastError()));
+          }
           if (stretch) garmentTool->setStretchVisible(true);
           if (setTime) doc->setTime(doc->clipStart() + float(time));
           if (!selectBone.isEmpty()) doc->selectBone(doc->character().skeleton.findBone(selectBone.toStdString()));

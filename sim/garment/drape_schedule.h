@@ -31,6 +31,14 @@ class DrapeSchedule {
     blending_ += dt;
     return std::min(1.0f, blending_ / kBlendSeconds);
   }
+  // The sewing part is over: the next advance() starts moving the body.
+  bool sewingDone(const GarmentSimulation& simulation) const {
+    const bool sewn = simulation.welded() || sewing_ >= maxSewing_ + 0.25f;
+    return blending_ > 0.0f || (sewn && sewing_ >= kMinSewingSeconds);
+  }
+  // For a simulation restored from a sewn state (GarmentSimulation::restore):
+  // the body starts moving with the next step.
+  void skipSewing() { sewing_ = std::max(sewing_, kMinSewingSeconds); }
   // On the wanted pose: the body follows the clip from here on.
   bool draped() const { return blending_ >= kBlendSeconds; }
   // Upper bound of the steps of dt before draped().

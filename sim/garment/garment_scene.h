@@ -27,4 +27,16 @@ std::unique_ptr<GarmentSimulation> makeGarmentSimulation(const Garment& garment,
                                                          const std::vector<uint32_t>& bodyTriangles,
                                                          const std::string& jsonPath);
 
+// The "cloth" section's sheet as a garment mesh (one panel, no seams; the
+// sheet's row-major vertex order), for tools that show and run sheets and
+// garments alike.
+GarmentMesh sheetGarmentMesh(const ClothSceneSpec& spec);
+
+// The sheet as a GarmentSimulation (nothing to sew: welded from the start)
+// with the section's fabric, pins (fixed in space) and the colliders.
+// mass_per_vertex becomes the fabric's mass per area (same total mass).
+std::unique_ptr<GarmentSimulation> makeSheetSimulation(const ClothSceneSpec& spec,
+                                                       const std::vector<float>& bodyPositions,
+                                                       const std::vector<uint32_t>& bodyTriangles);
+
 }  // namespace mq::cloth

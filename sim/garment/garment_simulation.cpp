@@ -36,6 +36,7 @@ struct GarmentSimulation::Impl {
   std::unique_ptr<ClothSimulator> sim;
   std::vector<PrimitiveCollider> colliders;
   bool welded = false;
+  std::vector<glm::vec3> weldPositions;  // unwelded positions at the weld
   SeamWeld weld;                   // identity until welded
   struct Pin {
     uint32_t vertex;               // garment-mesh index
@@ -75,6 +76,7 @@ struct GarmentSimulation::Impl {
   }
 
   void weldNow() {
+    weldPositions = sim->positions();
     WeldedCloth w = weldClothSeams(mesh, buildClothTopology(mesh));
     std::unique_ptr<ClothSimulator> next = continueWelded(*sim, w, settings.fabric);
     // A fixed pin keeps its target (where it was pinned), not where the weld averaged it.
@@ -219,5 +221,27 @@ const std::vector<uint32_t>& GarmentSimulation::triangles() const { return impl_
 size_t GarmentSimulation::vertexCount() const { return impl_->mesh.vertexCount(); }
 const ClothStats& GarmentSimulation::stats() const { return impl_->sim->stats(); }
 const ClothSimulator& GarmentSimulation::simulator() const { return *impl_->sim; }
+
+GarmentSimulation::Snapshot GarmentSimulation::snapshot() const {
+  const Impl& m = *impl_;
+  if (!m.welded) throw Error("a garment simulation can only be saved once its seams are welded");
+  return {m.weldPositions, m.sim->state(), m.body};
+}
+
+void GarmentSimulation::restore(const Snapshot& s) {
+  Impl& m = *impl_;
+  if (s.weldPositions.size() != m.mesh.vertexCount() || s.body.size() != m.body.size())
+    throw Error("the garment snapshot is of another garment or body");
+  if (!m.welded) {
+    m.sim->mutableState().x = s.weldPositions;
+    m.weldNow();
+  }
+  if (s.state.size() != m.sim->state().size()) throw Error("the garment snapshot is of another garment");
+  m.sim->mutableState() = s.state;
+  if (!m.body.empty()) {
+    m.body = s.body;
+    m.sim->setBody(m.body, m.bodyTriangles);
+  }
+}
 
 }  // namespace mq::cloth

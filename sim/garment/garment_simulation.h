@@ -70,6 +70,21 @@ class GarmentSimulation {
   const ClothStats& stats() const;               // of the running solver
   const ClothSimulator& simulator() const;       // sewing solver, then the welded one
 
+  // A welded simulation's state, to continue another simulation built the
+  // same way (same garment mesh, settings, body, colliders and pins) from
+  // there without sewing again: the editor keeps one per garment between
+  // bakes and live runs.
+  struct Snapshot {
+    std::vector<glm::vec3> weldPositions;  // garment-mesh positions when the seams were welded
+    ClothState state;                      // of the welded solver
+    std::vector<float> body;               // the body then (flat), empty: none
+  };
+  // Throws Error before the weld.
+  Snapshot snapshot() const;
+  // Welds as this simulation did (so pins keep their offsets), then takes the
+  // state and the body. Throws Error when the snapshot's sizes do not fit.
+  void restore(const Snapshot& snapshot);
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;

@@ -1,8 +1,10 @@
 // GUI test of the garment tool (needs X: run under xvfb-run). Drives the
 // real main window: adds a T-shirt from the panel, changes a measurement and
 // undoes it, edits the fabric and the integrator, pins vertices picked with a
-// rubber-band drag in the viewport, simulates live, bakes a few frames (and
-// cancels a bake), scrubs them, then saves and reopens the document.
+// rubber-band drag in the viewport, keeps them through rebuilds of the mesh,
+// simulates live, bakes a few frames (and cancels a bake), scrubs them, bakes
+// again from the kept sewn garment, adds and edits colliders, saves and
+// reopens the document, and opens a sheet-and-colliders scene with no character.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -17,6 +19,7 @@
 #include <QComboBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QFile>
 #include <QListWidget>
 #include <QMouseEvent>
 #include <QPushButton>
@@ -26,10 +29,13 @@
 #include <QTimer>
 #include <QUndoStack>
 
+#include <vtkActor.h>
+
 #include "core/garment/fabric.h"
 #include "core/garment/garment.h"
 #include "core/garment/parametric_garments.h"
 #include "core/mesh/mesh.h"
+#include "render/collider_actors.h"
 #include "render/scene_view.h"
 #include "ui/document/editor_document.h"
 #include "ui/garment/garment_panel.h"
@@ -285,6 +291,48 @@ class GarmentToolTest : public QObject {
     QVERIFY(!tool_->selectMode());
   }
 
+  void pinsSurviveRebuilds() {
+    const std::vector<uint32_t> pins = tool_->scene().garments[0].pins.vertices;
+    QVERIFY(pins.size() > 5);
+    const GarmentMesh before = *tool_->garmentMesh(0);
+    // Each pin of the rebuilt mesh sits where a pin was (rest pose), within about an edge.
+    auto nearOldPins = [&](const GarmentMesh& after, float within) {
+      for (uint32_t v : tool_->scene().garments[0].pins.vertices) {
+        if (v >= after.vertexCount()) return false;
+        float nearest = INFINITY;
+        for (uint32_t p : pins) nearest = std::min(nearest, glm::length(after.position(v) - before.position(p)));
+        if (nearest > within) return false;
+      }
+      return true;
+    };
+
+    // A finer mesh: other vertex indices, the pins carried over.
+    panel()->particleDistanceField()->setValue(35.0);
+    const GarmentMesh& finer = *tool_->garmentMesh(0);
+    QVERIFY(finer.vertexCount() != before.vertexCount());
+    QVERIFY2(tool_->scene().garments[0].pins.vertices.size() >= pins.size() / 2,
+             qPrintable(QString("%1 of %2 pins kept").arg(tool_->scene().garments[0].pins.vertices.size()).arg(pins.size())));
+    QVERIFY(nearOldPins(finer, 0.05f));
+    QCOMPARE(doc()->sceneSections().garments[0]["pins"]["vertices"].size(),
+             tool_->scene().garments[0].pins.vertices.size());
+    undo()->undo();
+    QCOMPARE(tool_->scene().garments[0].pins.vertices, pins);  // exactly the old pins
+    QCOMPARE(tool_->garmentMesh(0)->vertexCount(), before.vertexCount());
+
+    // A longer shirt: the shoulder pins stay at the shoulders.
+    QDoubleSpinBox* length = panel()->measurementField("length");
+    QVERIFY(length != nullptr);
+    length->setValue(length->value() + 0.06);
+    QVERIFY(!tool_->scene().garments[0].pins.vertices.empty());
+    const GarmentMesh& longer = *tool_->garmentMesh(0);
+    float top = -INFINITY;
+    for (size_t v = 0; v < longer.vertexCount(); ++v) top = std::max(top, longer.position(v).y);
+    for (uint32_t v : tool_->scene().garments[0].pins.vertices) QVERIFY(longer.position(v).y > top - 0.12f);
+    undo()->undo();
+    QCOMPARE(tool_->scene().garments[0].pins.vertices, pins);
+    QCOMPARE(tool_->garmentMesh(0)->positions, before.positions);
+  }
+
   void liveSimulationStepsWithoutBlocking() {
     const std::vector<float> rest = tool_->garmentMesh(0)->positions;
     QTest::mouseClick(panel()->simulateButton(), Qt::LeftButton);
@@ -343,6 +391,133 @@ class GarmentToolTest : public QObject {
     doc()->setClip(-1);
   }
 
+  void bakeReusesTheSewnGarment() {
+    doc()->setClip(0);
+    const float start = doc()->clipStart();
+    QVERIFY2(tool_->bake(start, start + 0.1f), qPrintable(tool_->lastError()));
+    doc()->setTime(start);
+    const std::vector<float> first = tool_->shownPositions(0);
+    const int runs = tool_->sewingRuns(), reused = tool_->reusedSewings();
+    // The same garment, fabric, pins, settings and body: no sewing, the same first frame.
+    QVERIFY2(tool_->bake(start, start + 0.1f), qPrintable(tool_->lastError()));
+    QCOMPARE(tool_->sewingRuns(), runs);
+    QCOMPARE(tool_->reusedSewings(), reused + 1);
+    doc()->setTime(start);
+    QVERIFY(maxDifference(tool_->shownPositions(0), first) < 1e-6f);
+    // Simulate starts from the sewn state too: straight to draping.
+    tool_->setSimulating(true);
+    QCOMPARE(tool_->reusedSewings(), reused + 2);
+    QVERIFY(tool_->simulationPhase() != QString("Sewing"));
+    tool_->setSimulating(false);
+    // Another fabric sews again.
+    tool_->setFabricPreset(0, "silk");
+    QTimer::singleShot(300, tool_, [this] { tool_->cancelBake(); });
+    tool_->bake(start, start + 0.1f);
+    QCOMPARE(tool_->sewingRuns(), runs + 1);
+    undo()->undo();
+    QCOMPARE(tool_->scene().garments[0].fabric, std::string("cotton"));
+    doc()->setClip(-1);
+  }
+
+  void collidersAreEditedAndUndone() {
+    QCOMPARE(tool_->colliderCount(), 0);
+    const int commands = undo()->index();
+    panel()->colliderShapeCombo()->setCurrentIndex(0);  // sphere
+    QTest::mouseClick(panel()->addColliderButton(), Qt::LeftButton);
+    QCOMPARE(tool_->colliderCount(), 1);
+    QCOMPARE(undo()->index(), commands + 1);
+    QCOMPARE(tool_->currentCollider(), 0);
+    QCOMPARE(panel()->colliderList()->count(), 1);
+    QCOMPARE(tool_->colliderActors().count(), size_t(1));
+    QVERIFY(doc()->sceneSections().colliders.is_array());
+    QCOMPARE(doc()->sceneSections().colliders[0]["type"].get<std::string>(), std::string("sphere"));
+    QVERIFY(window_->isWindowModified());
+    undo()->undo();
+    QCOMPARE(tool_->colliderCount(), 0);
+    QCOMPARE(tool_->colliderActors().count(), size_t(0));
+    QVERIFY(doc()->sceneSections().colliders.is_null());
+    undo()->redo();
+    QCOMPARE(tool_->colliderCount(), 1);
+
+    // Put the sphere on the shirt's front, below the pins: the fields as typed, one step each.
+    const GarmentMesh& mesh = *tool_->garmentMesh(0);
+    size_t front = 0;
+    float lowest = INFINITY;
+    glm::vec3 centre(0.0f);
+    for (size_t v = 0; v < mesh.vertexCount(); ++v) centre += mesh.position(v);
+    centre /= float(mesh.vertexCount());
+    for (size_t v = 0; v < mesh.vertexCount(); ++v) {
+      const glm::vec3 p = mesh.position(v);
+      if (mesh.panelIds[v] == 0 && std::abs(p.x - centre.x) < 0.05f && std::abs(p.y - centre.y) < lowest)
+        lowest = std::abs(p.y - centre.y), front = v;
+    }
+    const glm::vec3 target = mesh.position(front);
+    for (int axis = 0; axis < 3; ++axis) panel()->colliderField(0, axis)->setValue(target[axis]);
+    panel()->colliderRadiusField()->setValue(0.08);
+    panel()->colliderFrictionField()->setValue(0.5);
+    const cloth::PrimitiveCollider sphere = tool_->scene().cloth.colliders[0];
+    QVERIFY(glm::length(sphere.a - target) < 1e-3f);
+    QCOMPARE(sphere.radius, 0.08f);
+    QCOMPARE(sphere.friction, 0.5f);
+    QCOMPARE(doc()->sceneSections().colliders[0]["radius"].get<float>(), 0.08f);
+    // The actor follows: a sphere of that radius there.
+    double bounds[6];
+    tool_->colliderActors().actor(0)->GetBounds(bounds);
+    QVERIFY(std::abs((bounds[1] - bounds[0]) - 0.16) < 0.01 && std::abs(0.5 * (bounds[2] + bounds[3]) - target.y) < 0.01);
+    // Undo goes back one field at a time: friction, then radius.
+    undo()->undo();
+    QVERIFY(tool_->scene().cloth.colliders[0].friction < 0.0f);
+    QCOMPARE(tool_->scene().cloth.colliders[0].radius, 0.08f);
+    undo()->undo();
+    QVERIFY(tool_->scene().cloth.colliders[0].radius != 0.08f);
+    undo()->redo();
+    undo()->redo();
+    QCOMPARE(tool_->scene().cloth.colliders[0].friction, 0.5f);
+    // A bad value is refused and nothing changes.
+    const int before = undo()->index();
+    cloth::PrimitiveCollider bad = sphere;
+    bad.radius = 0.0f;
+    QVERIFY(!tool_->setCollider(0, bad));
+    QCOMPARE(undo()->index(), before);
+    QVERIFY(!tool_->lastError().isEmpty());
+
+    // The live simulation collides with it: the shirt is pushed out of the sphere.
+    auto deepest = [&](const std::vector<float>& p) {
+      float inside = 0.0f;
+      for (size_t v = 0; v < p.size() / 3; ++v)
+        inside = std::max(inside, sphere.radius - glm::length(glm::vec3(p[3 * v], p[3 * v + 1], p[3 * v + 2]) - sphere.a));
+      return inside;
+    };
+    QVERIFY(deepest(tool_->shownPositions(0)) > 0.05f);
+    tool_->setSimulating(true);
+    QTRY_VERIFY_WITH_TIMEOUT(tool_->simulatedSteps() >= 2, 60000);
+    tool_->setSimulating(false);
+    QVERIFY2(deepest(tool_->shownPositions(0)) < 0.01f,
+             qPrintable(QString("%1 m inside the collider").arg(deepest(tool_->shownPositions(0)))));
+
+    // A capsule and a plane; the capsule's end B edited, then removed and the removal undone.
+    panel()->colliderShapeCombo()->setCurrentIndex(1);
+    QTest::mouseClick(panel()->addColliderButton(), Qt::LeftButton);
+    QCOMPARE(tool_->currentCollider(), 1);
+    QCOMPARE(tool_->scene().cloth.colliders[1].shape, cloth::PrimitiveCollider::Shape::Capsule);
+    panel()->colliderField(1, 1)->setValue(tool_->scene().cloth.colliders[1].b.y + 0.2);
+    const cloth::PrimitiveCollider capsule = tool_->scene().cloth.colliders[1];
+    QVERIFY(capsule.b.y > capsule.a.y + 0.15f);
+    panel()->colliderShapeCombo()->setCurrentIndex(2);
+    QTest::mouseClick(panel()->addColliderButton(), Qt::LeftButton);
+    QCOMPARE(tool_->scene().cloth.colliders[2].shape, cloth::PrimitiveCollider::Shape::Plane);
+    QCOMPARE(tool_->colliderActors().count(), size_t(3));
+    tool_->setCurrentCollider(1);
+    QTest::mouseClick(panel()->removeColliderButton(), Qt::LeftButton);
+    QCOMPARE(tool_->colliderCount(), 2);
+    QCOMPARE(tool_->scene().cloth.colliders[1].shape, cloth::PrimitiveCollider::Shape::Plane);
+    undo()->undo();
+    QCOMPARE(tool_->colliderCount(), 3);
+    QVERIFY(tool_->scene().cloth.colliders[1].b == capsule.b);
+    renderNow();
+    keepShot("garment_colliders");
+  }
+
   void savedDocumentReopensIntact() {
     const GarmentScene saved = tool_->scene();
     QVERIFY(!saved.garments.empty() && !saved.garments[0].pins.vertices.empty());
@@ -367,9 +542,65 @@ class GarmentToolTest : public QObject {
     QCOMPARE(tool_->scene().garments[0].pins.vertices, saved.garments[0].pins.vertices);
     QCOMPARE(tool_->garmentMesh(0)->vertexCount(), vertices);
     QCOMPARE(panel()->garmentList()->count(), 1);
+    QCOMPARE(tool_->colliderCount(), 3);
+    QCOMPARE(panel()->colliderList()->count(), 3);
+    QCOMPARE(tool_->colliderActors().count(), size_t(3));
+    QCOMPARE(tool_->scene().cloth.colliders[0].friction, 0.5f);
     // Reopening pushes no edit and leaves the document unmodified.
     QVERIFY(doc()->undoStack()->isClean() && doc()->undoStack()->count() == 0);
     QVERIFY(!window_->isWindowModified());
+  }
+
+  // The case: a scene document that is a sheet and colliders, no character.
+  void sheetAndCollidersWithoutCharacter() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("sheet.mqscene");
+    const nlohmann::json scene = {
+        {"format", "mannequin-scene"}, {"version", 1}, {"character", nullptr},
+        {"cloth", {{"garment", {{"type", "sheet"}, {"columns", 16}, {"rows", 16}, {"width", 0.8}, {"height", 0.8},
+                                {"center", {0.0, 0.6, 0.0}}}},
+                   {"fps", 24}}},
+        {"colliders", {{{"type", "sphere"}, {"center", {0.0, 0.3, 0.0}}, {"radius", 0.2}}}}};
+    {
+      QFile file(path);
+      QVERIFY(file.open(QIODevice::WriteOnly));
+      file.write(QByteArray::fromStdString(scene.dump()));
+    }
+    QString error;
+    QVERIFY2(window_->openFileNow(path, &error), qPrintable(error));
+    QVERIFY(doc()->character().meshes.empty());
+    QCOMPARE(tool_->garmentCount(), 0);
+    QVERIFY(tool_->hasSheet());
+    QCOMPARE(tool_->shownSheetPositions().size(), size_t(3 * 16 * 16));
+    QCOMPARE(tool_->colliderCount(), 1);
+    QCOMPARE(tool_->colliderActors().count(), size_t(1));
+    QVERIFY(panel()->simulateButton()->isEnabled());
+    const std::vector<float> placed = tool_->shownSheetPositions();
+
+    // Simulated: it falls onto the sphere and stays outside it.
+    tool_->setSimulating(true);
+    QTRY_VERIFY_WITH_TIMEOUT(tool_->simulatedSteps() >= 12, 60000);
+    tool_->setSimulating(false);
+    QVERIFY2(tool_->lastError().isEmpty(), qPrintable(tool_->lastError()));
+    const std::vector<float>& fallen = tool_->shownSheetPositions();
+    QVERIFY(allFinite(fallen));
+    QVERIFY(maxDifference(fallen, placed) > 0.05f);
+    for (size_t v = 0; v < fallen.size() / 3; ++v)
+      QVERIFY(glm::length(glm::vec3(fallen[3 * v], fallen[3 * v + 1], fallen[3 * v + 2]) - glm::vec3(0.0f, 0.3f, 0.0f)) >
+              0.19f);
+
+    // A floor, saved and reopened with the sheet.
+    tool_->addCollider(cloth::PrimitiveCollider::Shape::Plane);
+    QCOMPARE(tool_->colliderCount(), 2);
+    QVERIFY(tool_->scene().cloth.colliders[1].a.y < 0.6f);  // below the sheet
+    QVERIFY2(window_->saveDocument(path, &error), qPrintable(error));
+    QVERIFY2(window_->openFileNow(path, &error), qPrintable(error));
+    QCOMPARE(tool_->colliderCount(), 2);
+    QVERIFY(tool_->hasSheet());
+    QCOMPARE(tool_->scene().cloth.colliders[1].shape, cloth::PrimitiveCollider::Shape::Plane);
+    QVERIFY(!doc()->sceneSections().garments.is_array());
+    renderNow();
+    keepShot("garment_sheet_colliders");
   }
 };
 

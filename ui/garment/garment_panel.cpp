@@ -232,6 +232,8 @@ GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent)
           [this](int index) { tool_->setPinsFollowBody(tool_->currentGarment(), index == 0); });
   layout->addWidget(pinBox);
 
+  buildColliderGroup(layout);
+
   // Display
   auto* displayBox = new QGroupBox(tr("Display"));
   auto* displayLayout = new QVBoxLayout(displayBox);
@@ -240,6 +242,10 @@ GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent)
   showPins_->setChecked(true);
   displayLayout->addWidget(stretch_);
   displayLayout->addWidget(showPins_);
+  showColliders_ = new QCheckBox(tr("Show colliders"));
+  showColliders_->setChecked(true);
+  displayLayout->addWidget(showColliders_);
+  connect(showColliders_, &QCheckBox::toggled, tool_, &GarmentTool::setCollidersVisible);
   connect(stretch_, &QCheckBox::toggled, tool_, &GarmentTool::setStretchVisible);
   connect(showPins_, &QCheckBox::toggled, tool_, &GarmentTool::setPinsVisible);
   layout->addWidget(displayBox);
@@ -294,6 +300,7 @@ void GarmentPanel::refresh() {
     const QSignalBlocker block(attach_);
     attach_->setCurrentIndex(current >= 0 && scene.garments[current].pins.attach == GarmentPins::Attach::Space ? 1 : 0);
   }
+  refreshColliders();
   refreshing_ = false;
   refreshStatus();
 }
@@ -376,9 +383,150 @@ void GarmentPanel::editFabric(int field, const std::function<void(Fabric&, doubl
   tool_->setFabric(current, fabric, lastMergeKey_);
 }
 
+// ---- Colliders ----
+
+namespace {
+
+constexpr cloth::PrimitiveCollider::Shape kShapes[] = {cloth::PrimitiveCollider::Shape::Sphere,
+                                                        cloth::PrimitiveCollider::Shape::Capsule,
+                                                        cloth::PrimitiveCollider::Shape::Plane};
+
+QString colliderLabel(const cloth::PrimitiveCollider& c, int index) {
+  const glm::vec3& p = c.a;
+  const QString at = QString("(%1, %2, %3)").arg(p.x, 0, 'f', 2).arg(p.y, 0, 'f', 2).arg(p.z, 0, 'f', 2);
+  switch (c.shape) {
+    case cloth::PrimitiveCollider::Shape::Sphere:
+      return QObject::tr("%1. Sphere r %2 at %3").arg(index + 1).arg(c.radius, 0, 'f', 2).arg(at);
+    case cloth::PrimitiveCollider::Shape::Capsule:
+      return QObject::tr("%1. Capsule r %2 from %3").arg(index + 1).arg(c.radius, 0, 'f', 2).arg(at);
+    default: return QObject::tr("%1. Plane through %2").arg(index + 1).arg(at);
+  }
+}
+
+}  // namespace
+
+void GarmentPanel::buildColliderGroup(QVBoxLayout* layout) {
+  auto* box = new QGroupBox(tr("Colliders"));
+  box->setToolTip(tr("Spheres, capsules and planes the cloth collides with (besides the character)"));
+  auto* boxLayout = new QVBoxLayout(box);
+  colliderList_ = new QListWidget;
+  colliderList_->setMaximumHeight(80);
+  boxLayout->addWidget(colliderList_);
+  auto* addRow = new QHBoxLayout;
+  colliderShape_ = new QComboBox;
+  colliderShape_->addItem(tr("Sphere"));
+  colliderShape_->addItem(tr("Capsule"));
+  colliderShape_->addItem(tr("Plane"));
+  addCollider_ = new QPushButton(tr("Add"));
+  addCollider_->setToolTip(tr("Add a collider near the character (or under the sheet)"));
+  removeCollider_ = new QPushButton(tr("Remove"));
+  addRow->addWidget(colliderShape_, 1);
+  addRow->addWidget(addCollider_);
+  addRow->addWidget(removeCollider_);
+  boxLayout->addLayout(addRow);
+  connect(addCollider_, &QPushButton::clicked, this,
+          [this] { tool_->addCollider(kShapes[colliderShape_->currentIndex()]); });
+  connect(removeCollider_, &QPushButton::clicked, this, [this] { tool_->removeCollider(tool_->currentCollider()); });
+  connect(colliderList_, &QListWidget::currentRowChanged, this, [this](int row) {
+    if (!refreshing_) tool_->setCurrentCollider(row);
+  });
+
+  colliderForm_ = new QFormLayout;
+  for (int vector = 0; vector < 2; ++vector) {
+    auto* row = new QHBoxLayout;
+    for (int axis = 0; axis < 3; ++axis) {
+      auto* spin = new QDoubleSpinBox;
+      spin->setRange(-100.0, 100.0);
+      spin->setDecimals(3);
+      spin->setSingleStep(0.01);
+      spin->setKeyboardTracking(false);
+      spin->setPrefix(QString("xyz"[axis]) + " ");
+      spin->setButtonSymbols(QAbstractSpinBox::NoButtons);  // three in a row: keep the dock narrow
+      spin->setMinimumWidth(40);
+      connect(spin, &QDoubleSpinBox::valueChanged, this, [this, vector, axis] { editCollider(300 + 3 * vector + axis); });
+      colliderVectors_[vector][axis] = spin;
+      row->addWidget(spin);
+    }
+    colliderForm_->addRow(vector == 0 ? tr("Centre") : tr("End B"), row);
+  }
+  colliderRadius_ = new QDoubleSpinBox;
+  colliderRadius_->setRange(0.001, 10.0);
+  colliderRadius_->setDecimals(3);
+  colliderRadius_->setSingleStep(0.01);
+  colliderRadius_->setSuffix(tr(" m"));
+  colliderRadius_->setKeyboardTracking(false);
+  colliderForm_->addRow(tr("Radius"), colliderRadius_);
+  colliderFriction_ = new QDoubleSpinBox;
+  colliderFriction_->setRange(-0.05, 2.0);
+  colliderFriction_->setSingleStep(0.05);
+  colliderFriction_->setDecimals(2);
+  colliderFriction_->setSpecialValueText(tr("the cloth's"));
+  colliderFriction_->setKeyboardTracking(false);
+  colliderFriction_->setToolTip(tr("Coulomb friction against this collider; lowest value: the cloth's own friction"));
+  colliderForm_->addRow(tr("Friction"), colliderFriction_);
+  connect(colliderRadius_, &QDoubleSpinBox::valueChanged, this, [this] { editCollider(306); });
+  connect(colliderFriction_, &QDoubleSpinBox::valueChanged, this, [this] { editCollider(307); });
+  boxLayout->addLayout(colliderForm_);
+  layout->addWidget(box);
+}
+
+void GarmentPanel::refreshColliders() {
+  const auto& colliders = tool_->scene().cloth.colliders;
+  const int current = tool_->currentCollider();
+  {
+    const QSignalBlocker block(colliderList_);
+    colliderList_->clear();
+    for (size_t i = 0; i < colliders.size(); ++i) colliderList_->addItem(colliderLabel(colliders[i], int(i)));
+    colliderList_->setCurrentRow(current);
+  }
+  removeCollider_->setEnabled(current >= 0);
+  const bool has = current >= 0 && current < int(colliders.size());
+  const cloth::PrimitiveCollider c = has ? colliders[current] : cloth::PrimitiveCollider{};
+  const bool plane = c.shape == cloth::PrimitiveCollider::Shape::Plane;
+  const bool capsule = c.shape == cloth::PrimitiveCollider::Shape::Capsule;
+  if (auto* label = qobject_cast<QLabel*>(colliderForm_->itemAt(0, QFormLayout::LabelRole)->widget()))
+    label->setText(plane ? tr("Point") : capsule ? tr("End A") : tr("Centre"));
+  if (auto* label = qobject_cast<QLabel*>(colliderForm_->itemAt(1, QFormLayout::LabelRole)->widget()))
+    label->setText(plane ? tr("Normal") : tr("End B"));
+  colliderForm_->setRowVisible(0, has);
+  colliderForm_->setRowVisible(1, has && (plane || capsule));
+  colliderForm_->setRowVisible(2, has && !plane);
+  colliderForm_->setRowVisible(3, has);
+  if (!has) return;
+  for (int vector = 0; vector < 2; ++vector)
+    for (int axis = 0; axis < 3; ++axis) {
+      const QSignalBlocker block(colliderVectors_[vector][axis]);
+      colliderVectors_[vector][axis]->setValue((vector == 0 ? c.a : c.b)[axis]);
+    }
+  {
+    const QSignalBlocker block(colliderRadius_);
+    colliderRadius_->setValue(c.radius);
+  }
+  const QSignalBlocker block(colliderFriction_);
+  colliderFriction_->setValue(c.friction < 0.0f ? colliderFriction_->minimum() : c.friction);
+}
+
+// The current collider with the fields' values, as one undoable edit (a
+// spun or typed field merges into one step).
+void GarmentPanel::editCollider(int field) {
+  const int current = tool_->currentCollider();
+  if (refreshing_ || current < 0) return;
+  cloth::PrimitiveCollider c = tool_->scene().cloth.colliders[current];
+  for (int axis = 0; axis < 3; ++axis) {
+    c.a[axis] = float(colliderVectors_[0][axis]->value());
+    if (c.shape != cloth::PrimitiveCollider::Shape::Sphere) c.b[axis] = float(colliderVectors_[1][axis]->value());
+  }
+  if (c.shape != cloth::PrimitiveCollider::Shape::Plane) c.radius = float(colliderRadius_->value());
+  const double friction = colliderFriction_->value();
+  c.friction = friction <= colliderFriction_->minimum() ? -1.0f : float(friction);
+  if (lastField_ != field) lastMergeKey_ = GarmentEditCommand::nextMergeKey();
+  lastField_ = field;
+  if (!tool_->setCollider(current, c, lastMergeKey_)) refresh();
+}
+
 void GarmentPanel::refreshStatus() {
   const int current = tool_->currentGarment();
-  const bool any = tool_->garmentCount() > 0;
+  const bool any = tool_->garmentCount() > 0 || tool_->hasSheet();
   {
     const QSignalBlocker block(simulate_);
     simulate_->setChecked(tool_->simulating());
@@ -405,7 +553,9 @@ void GarmentPanel::refreshStatus() {
   if (const GarmentMesh* mesh = tool_->garmentMesh(current))
     lines << tr("%1 vertices, %2 triangles").arg(mesh->vertexCount()).arg(mesh->triangleCount());
   if (tool_->hasBake()) lines << tr("Baked: %1 frames (scrub the timeline)").arg(tool_->bakedFrameCount());
-  if (tool_->simulating()) lines << tr("Simulating: %1 steps").arg(tool_->simulatedSteps());
+  if (tool_->hasSheet()) lines << tr("Sheet: %1 vertices").arg(tool_->shownSheetPositions().size() / 3);
+  if (tool_->simulating())
+    lines << tr("Simulating: %1 steps (%2)").arg(tool_->simulatedSteps()).arg(tool_->simulationPhase());
   if (current >= 0 && !tool_->shownStretch(current).empty()) {
     float worst = 1.0f;
     for (float s : tool_->shownStretch(current)) worst = std::max(worst, s);

@@ -3,8 +3,10 @@
 // the current garment's measurements (one field per parameter the garment
 // type declares, rebuilt when the type changes), its fabric (preset or
 // values), the simulation (integrator, self collisions, Simulate, Bake clip),
-// the pins (vertex-select mode, Pin selected, Unpin, attach to body or space)
-// and the display (stretch overlay, pin dots). Every change goes to the
+// the pins (vertex-select mode, Pin selected, Unpin, attach to body or space),
+// the colliders (list, add a sphere, capsule or plane, edit its centre or
+// ends or point and normal, radius and friction, remove) and the display
+// (stretch overlay, pin dots, colliders). Every change goes to the
 // GarmentTool as an undoable edit; the panel refreshes from its signals.
 
 #include <functional>
@@ -20,6 +22,7 @@ class QLabel;
 class QListWidget;
 class QPushButton;
 class QSpinBox;
+class QVBoxLayout;
 
 namespace mq {
 struct Fabric;
@@ -51,6 +54,15 @@ class GarmentPanel : public QWidget {
   QPushButton* pinButton() const { return pin_; }
   QPushButton* unpinButton() const { return unpin_; }
   QCheckBox* stretchCheck() const { return stretch_; }
+  QListWidget* colliderList() const { return colliderList_; }
+  QComboBox* colliderShapeCombo() const { return colliderShape_; }
+  QPushButton* addColliderButton() const { return addCollider_; }
+  QPushButton* removeColliderButton() const { return removeCollider_; }
+  // The current collider's fields: point a (centre, end A or a point on the
+  // plane) and b (end B or the normal), x/y/z each; radius; friction.
+  QDoubleSpinBox* colliderField(int vector, int axis) const { return colliderVectors_[vector][axis]; }
+  QDoubleSpinBox* colliderRadiusField() const { return colliderRadius_; }
+  QDoubleSpinBox* colliderFrictionField() const { return colliderFriction_; }
 
  private:
   void refresh();
@@ -58,6 +70,9 @@ class GarmentPanel : public QWidget {
   void refreshFabric();
   void refreshStatus();
   void editFabric(int field, const std::function<void(Fabric&, double)>& change, double value);
+  void buildColliderGroup(QVBoxLayout* layout);
+  void refreshColliders();
+  void editCollider(int field);
 
   GarmentTool* tool_;
   QListWidget* list_;
@@ -77,7 +92,14 @@ class GarmentPanel : public QWidget {
   QPushButton *simulate_, *bake_, *clearBake_;
   QPushButton *select_, *pin_, *unpin_, *clearPins_;
   QComboBox* attach_;
-  QCheckBox *stretch_, *showPins_;
+  QListWidget* colliderList_;
+  QComboBox* colliderShape_;
+  QPushButton *addCollider_, *removeCollider_;
+  QFormLayout* colliderForm_;
+  QDoubleSpinBox* colliderVectors_[2][3];
+  QDoubleSpinBox* colliderRadius_;
+  QDoubleSpinBox* colliderFriction_;
+  QCheckBox *stretch_, *showPins_, *showColliders_;
   QLabel* pinStatus_;
   QLabel* status_;
   bool refreshing_ = false;

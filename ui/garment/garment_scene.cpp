@@ -34,16 +34,18 @@ GarmentScene garmentSceneFromSections(const json& garments, const json& cloth, c
 
 void garmentSceneToSections(const GarmentScene& scene, json& garments, json& cloth, json& colliders) {
   garments = scene.garments.empty() ? json() : garmentsToJson(scene.garments);
+  json written, writtenColliders;
+  cloth::writeClothScene(scene.cloth, written, writtenColliders);
+  // The colliders stand on their own: a scene may have colliders and a
+  // sheet, garments, or (for the body's sake) neither.
+  colliders = scene.cloth.colliders.empty() ? json() : writtenColliders;
   // Without garments and without a sheet the cloth section would describe a
   // default sheet: leave it out.
   if (!scene.writeCloth || (scene.garments.empty() && !scene.cloth.hasSheet)) {
     cloth = json();
     return;
   }
-  json written, writtenColliders;
-  cloth::writeClothScene(scene.cloth, written, writtenColliders);
   cloth = written;
-  if (!scene.cloth.colliders.empty() || !colliders.is_null()) colliders = writtenColliders;
 }
 
 bool GarmentScene::operator==(const GarmentScene& other) const {

@@ -1,7 +1,10 @@
 #include "ui/garment/garment_tool.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <functional>
+#include <string_view>
 #include <unordered_map>
 
 #include <QDockWidget>
@@ -20,9 +23,11 @@
 #include "core/character/posed_character.h"
 #include "core/garment/garment_json.h"
 #include "core/garment/parametric_garments.h"
+#include "core/garment/pin_remap.h"
 #include "core/util/error.h"
 #include "core/util/thread_pool.h"
 #include "render/cloth_shading.h"
+#include "render/collider_actors.h"
 #include "render/garment_overlay.h"
 #include "render/scene_view.h"
 #include "sim/cloth/baked_cloth.h"
@@ -99,6 +104,23 @@ std::vector<uint32_t> sortedUnique(std::vector<uint32_t> v) {
   return v;
 }
 
+// A short fingerprint of a float or index array (for cache keys).
+template <typename T>
+std::string fingerprint(const std::vector<T>& values) {
+  const std::string_view bytes(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
+  return std::to_string(values.size()) + ":" + std::to_string(std::hash<std::string_view>{}(bytes));
+}
+
+bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+QString shapeLabel(cloth::PrimitiveCollider::Shape shape) {
+  switch (shape) {
+    case cloth::PrimitiveCollider::Shape::Sphere: return QObject::tr("sphere");
+    case cloth::PrimitiveCollider::Shape::Capsule: return QObject::tr("capsule");
+    default: return QObject::tr("plane");
+  }
+}
+
 QString displayName(const std::string& type) {
   if (type == "tshirt") return QObject::tr("T-shirt");
   if (type == "skirt") return QObject::tr("Skirt");
@@ -142,13 +164,27 @@ struct GarmentTool::View {
     overlay.setTriangles(mesh.triangles);
     simulation.reset();
   }
+
+  void buildSheet(const cloth::ClothSceneSpec& spec, const std::vector<float>& restBody) {
+    mesh = cloth::sheetGarmentMesh(spec);
+    nearestBody.clear();  // a sheet does not follow the body before it is simulated
+    (void)restBody;
+    cloth::buildClothMesh(spec, sheetPins);
+    actor.setMesh(mesh.positions, mesh.triangles, mesh.restUvs);
+    overlay.setTriangles(mesh.triangles);
+    simulation.reset();
+  }
+
+  std::vector<uint32_t> sheetPins;  // the sheet's pinned vertices (garments keep theirs in the scene)
+  std::string sewingKey;     // the kept-state key of the running simulation
+  bool sewnKept = false;     // its sewn state is kept (or came from there)
 };
 
 struct GarmentTool::Bake {
   int clip = -1;
   float start = 0.0f;
   std::vector<cloth::BakedCloth> garments;
-  std::vector<std::vector<std::vector<float>>> stretch;  // [garment][frame]
+  std::vector<std::vector<std::vector<float>>> stretch;  // [garment][frame] (the sheet last)
 
   size_t frameIndex(float time) const {
     if (garments.empty() || garments[0].frameCount() == 0) return 0;
@@ -163,6 +199,7 @@ GarmentTool::GarmentTool(MainWindow* window) : QObject(window), window_(window) 
   dock_->setObjectName("GarmentToolDock");
   dock_->setWidget(panel_);
   window->addToolDock(dock_);
+  colliderActors_ = std::make_unique<render::ColliderActors>(window->sceneView());
   rubberBand_ = new QRubberBand(QRubberBand::Rectangle, window->viewport());
   window->viewport()->installEventFilter(this);
   connect(&stepWatcher_, &QFutureWatcher<QString>::finished, this, &GarmentTool::onStepFinished);
@@ -178,6 +215,9 @@ GarmentTool::~GarmentTool() {
   simulating_ = false;
   cancelBake_ = true;
   waitForStep();
+  views_.clear();
+  sheet_.reset();
+  colliderActors_.reset();
 }
 
 // ---- Document ----
@@ -195,9 +235,13 @@ void GarmentTool::onCharacterReplaced() {
     for (uint32_t index : m.triangles) bodyTriangles_.push_back(index + offset);
     offset += uint32_t(m.vertexCount());
   }
+  bodyKey_ = fingerprint(restBody_) + "/" + fingerprint(bodyTriangles_);
+  kept_.clear();
   lastError_.clear();
   selection_.clear();
   views_.clear();
+  sheet_.reset();
+  currentCollider_ = -1;
   scene_ = GarmentScene{};
   loadSections();
   emit selectionChanged();
@@ -216,6 +260,8 @@ void GarmentTool::loadSections() {
   loading_ = true;
   applyScene(loaded);
   loading_ = false;
+  // A document with cloth opens on the Garments dock.
+  if (!scene_.garments.empty() || sheet_ || !scene_.cloth.colliders.empty()) dock_->raise();
 }
 
 void GarmentTool::storeSections() {
@@ -261,8 +307,9 @@ void GarmentTool::setMeasurement(int garment, const std::string& name, float val
     g.recipe.parameters[name] = value;
     const GarmentPins pins = g.pins;
     g = rebuildParametricGarment(g, window_->document()->character());
-    // Pins are vertex indices: they only survive a rebuild with the same vertices.
-    if (buildGarmentMesh(g).vertexCount() == views_[garment]->mesh.vertexCount()) g.pins = pins;
+    // Pins are vertex indices of the old mesh: carry them to the rebuilt one.
+    g.pins = pins;
+    g.pins.vertices = remapPins(views_[garment]->mesh, pins.vertices, buildGarmentMesh(g));
     edit(after, tr("%1 %2").arg(QString::fromStdString(g.name), QString::fromStdString(name)), mergeKey);
   } catch (const Error& e) {
     lastError_ = QString::fromStdString(e.what());
@@ -275,7 +322,14 @@ void GarmentTool::setParticleDistance(int garment, float metres, int mergeKey) {
   GarmentScene after = scene_;
   Garment& g = after.garments[garment];
   g.targetEdgeLength = metres;
-  g.pins.vertices.clear();  // a new mesh: the old vertex indices mean nothing
+  try {
+    // A new mesh: carry the pins to its nearest vertices.
+    g.pins.vertices = remapPins(views_[garment]->mesh, g.pins.vertices, buildGarmentMesh(g));
+  } catch (const Error& e) {
+    lastError_ = QString::fromStdString(e.what());
+    emit sceneChanged();
+    return;
+  }
   edit(after, tr("%1 particle distance").arg(QString::fromStdString(g.name)), mergeKey);
 }
 
@@ -361,6 +415,103 @@ void GarmentTool::clearPins() {
   edit(after, tr("Clear pins"));
 }
 
+// ---- Colliders ----
+
+void GarmentTool::setCurrentCollider(int index) {
+  if (index < -1 || index >= colliderCount() || index == currentCollider_) return;
+  currentCollider_ = index;
+  showColliders();
+  emit sceneChanged();
+}
+
+// Where a new collider goes: in front of the character's chest (a sphere or
+// a capsule across it) or under the sheet, and a plane at the feet or below
+// the sheet; the user moves it from there.
+cloth::PrimitiveCollider GarmentTool::placedCollider(cloth::PrimitiveCollider::Shape shape) const {
+  glm::vec3 centre(0.0f, 0.5f, 0.0f), floor(0.0f);
+  float size = 0.3f;
+  if (!restBody_.empty()) {
+    glm::vec3 lo(INFINITY), hi(-INFINITY);
+    for (size_t v = 0; v < restBody_.size() / 3; ++v) {
+      const glm::vec3 p(restBody_[3 * v], restBody_[3 * v + 1], restBody_[3 * v + 2]);
+      lo = glm::min(lo, p), hi = glm::max(hi, p);
+    }
+    size = 0.1f * (hi.y - lo.y);
+    centre = glm::vec3(0.5f * (lo.x + hi.x), lo.y + 0.7f * (hi.y - lo.y), hi.z + size);
+    floor = glm::vec3(0.5f * (lo.x + hi.x), lo.y, 0.5f * (lo.z + hi.z));
+  } else if (scene_.cloth.hasSheet) {
+    const cloth::SheetGarmentSpec& sheet = scene_.cloth.sheet;
+    size = 0.25f * std::min(sheet.width, sheet.height);
+    centre = sheet.center - glm::vec3(0.0f, sheet.vertical ? 0.0f : 1.5f * size, sheet.vertical ? -size : 0.0f);
+    floor = sheet.center - glm::vec3(0.0f, sheet.vertical ? sheet.height : 0.5f, 0.0f);
+  }
+  switch (shape) {
+    case cloth::PrimitiveCollider::Shape::Sphere: return cloth::PrimitiveCollider::sphere(centre, size);
+    case cloth::PrimitiveCollider::Shape::Capsule:
+      return cloth::PrimitiveCollider::capsule(centre - glm::vec3(1.5f * size, 0, 0),
+                                               centre + glm::vec3(1.5f * size, 0, 0), 0.4f * size);
+    default: return cloth::PrimitiveCollider::plane(floor, {0.0f, 1.0f, 0.0f});
+  }
+}
+
+void GarmentTool::addCollider(cloth::PrimitiveCollider::Shape shape) {
+  GarmentScene after = scene_;
+  after.cloth.colliders.push_back(placedCollider(shape));
+  edit(after, tr("Add %1 collider").arg(shapeLabel(shape)));
+  setCurrentCollider(colliderCount() - 1);
+}
+
+bool GarmentTool::setCollider(int index, const cloth::PrimitiveCollider& collider, int mergeKey) {
+  if (index < 0 || index >= colliderCount()) return false;
+  const bool isPlane = collider.shape == cloth::PrimitiveCollider::Shape::Plane;
+  QString problem;
+  if (!finite(collider.a) || !finite(collider.b) || !std::isfinite(collider.radius) || !std::isfinite(collider.friction))
+    problem = tr("collider values must be finite numbers");
+  else if (isPlane && !(glm::length(collider.b) > 0.0f))
+    problem = tr("a plane's normal must not be zero");
+  else if (!isPlane && !(collider.radius > 0.0f))
+    problem = tr("a collider's radius must be positive");
+  if (!problem.isEmpty()) {
+    lastError_ = problem;
+    emit sceneChanged();
+    return false;
+  }
+  const cloth::PrimitiveCollider& now = scene_.cloth.colliders[index];
+  if (now.shape == collider.shape && now.a == collider.a && now.b == collider.b && now.radius == collider.radius &&
+      now.friction == collider.friction)
+    return true;
+  GarmentScene after = scene_;
+  after.cloth.colliders[index] = collider;
+  lastError_.clear();
+  edit(after, tr("Edit %1 collider").arg(shapeLabel(collider.shape)), mergeKey);
+  return true;
+}
+
+void GarmentTool::removeCollider(int index) {
+  if (index < 0 || index >= colliderCount()) return;
+  GarmentScene after = scene_;
+  const auto shape = after.cloth.colliders[index].shape;
+  after.cloth.colliders.erase(after.cloth.colliders.begin() + index);
+  edit(after, tr("Remove %1 collider").arg(shapeLabel(shape)));
+}
+
+void GarmentTool::setCollidersVisible(bool visible) {
+  collidersVisible_ = visible;
+  colliderActors_->setVisible(visible);
+  window_->viewport()->requestRender();
+}
+
+void GarmentTool::showColliders() {
+  colliderActors_->set(scene_.cloth.colliders, currentCollider_);
+  colliderActors_->setVisible(collidersVisible_);
+  window_->viewport()->requestRender();
+}
+
+const std::vector<float>& GarmentTool::shownSheetPositions() const {
+  static const std::vector<float> none;
+  return sheet_ ? sheet_->positions : none;
+}
+
 void GarmentTool::applyScene(const GarmentScene& scene) {
   waitForStep();
   const GarmentScene before = scene_;
@@ -369,6 +520,9 @@ void GarmentTool::applyScene(const GarmentScene& scene) {
   dropDynamics();
   if (current_ >= garmentCount()) current_ = garmentCount() - 1;
   if (current_ < 0 && garmentCount() > 0) current_ = 0;
+  if (currentCollider_ >= colliderCount()) currentCollider_ = colliderCount() - 1;
+  if (currentCollider_ < 0 && colliderCount() > 0) currentCollider_ = 0;
+  showColliders();
   storeSections();
   if (simulating_) restartSimulation();
   showGarments();
@@ -406,6 +560,27 @@ void GarmentTool::rebuildViews(const GarmentScene& before) {
     selection_.clear();
     emit selectionChanged();
   }
+  rebuildSheet();
+}
+
+// The sheet's mesh when the sheet's own values changed (not for its fabric or the colliders).
+void GarmentTool::rebuildSheet() {
+  if (!scene_.cloth.hasSheet) {
+    sheet_.reset();
+    return;
+  }
+  nlohmann::json section, colliders;
+  cloth::writeClothScene(scene_.cloth, section, colliders);
+  const nlohmann::json wanted = {section["garment"], section["pins"]};
+  if (sheet_ && sheet_->builtFrom == wanted) return;
+  sheet_ = std::make_unique<View>(window_->sceneView());
+  try {
+    sheet_->buildSheet(scene_.cloth, restBody_);
+  } catch (const Error& e) {
+    lastError_ = QString::fromStdString(e.what());
+  }
+  sheet_->builtFrom = wanted;
+  sheet_->actor.setShading(render::clothShadingForFabric(scene_.cloth.fabricPreset.empty() ? "cotton" : scene_.cloth.fabricPreset));
 }
 
 void GarmentTool::setCurrentGarment(int index) {
@@ -426,14 +601,16 @@ const std::vector<float>& GarmentTool::shownStretch(int garment) const { return 
 
 // ---- Display ----
 
-// Each garment where it is now: the baked frame of the current time, the
-// live simulation, or as placed around the rest body.
+// Each garment (and the sheet) where it is now: the baked frame of the
+// current time, the live simulation, or as placed around the rest body.
 void GarmentTool::showGarments() {
   const float time = window_->document()->time();
   std::vector<float> posed;
-  for (size_t i = 0; i < views_.size(); ++i) {
-    View& view = *views_[i];
-    if (bake_ && bake_->clip == window_->document()->clipIndex()) {
+  const std::vector<View*> views = simulatedViews();
+  for (size_t i = 0; i < views.size(); ++i) {
+    View& view = *views[i];
+    const bool isGarment = i < scene_.garments.size();
+    if (bake_ && bake_->clip == window_->document()->clipIndex() && i < bake_->garments.size()) {
       const size_t frame = bake_->frameIndex(time);
       view.positions = bake_->garments[i].frame(frame);
       view.stretch = bake_->stretch[i][frame];
@@ -458,11 +635,47 @@ void GarmentTool::showGarments() {
     view.overlay.setPositions(view.positions);
     view.overlay.setStretch(view.stretch);
     view.overlay.setStretchVisible(stretchVisible_);
-    view.overlay.setPinned(scene_.garments[i].pins.vertices);
+    view.overlay.setPinned(isGarment ? scene_.garments[i].pins.vertices : view.sheetPins);
     view.overlay.setSelected(int(i) == current_ ? selection_ : std::vector<uint32_t>{});
     view.overlay.setDotsVisible(pinsVisible_);
   }
   window_->viewport()->requestRender();
+}
+
+std::vector<GarmentTool::View*> GarmentTool::simulatedViews() const {
+  std::vector<View*> out;
+  for (const auto& view : views_) out.push_back(view.get());
+  if (sheet_) out.push_back(sheet_.get());
+  return out;
+}
+
+std::unique_ptr<cloth::GarmentSimulation> GarmentTool::makeViewSimulation(size_t view) const {
+  if (view < scene_.garments.size()) return makeSimulation(scene_, view, restBody_, bodyTriangles_);
+  return cloth::makeSheetSimulation(scene_.cloth, restBody_, bodyTriangles_);
+}
+
+// Everything the sewn state depends on: the garment (mesh, fabric, pins) or
+// the sheet, the solver settings and fps, the colliders and the rest body.
+std::string GarmentTool::sewingKey(size_t view) const {
+  nlohmann::json cloth, colliders;
+  cloth::writeClothScene(scene_.cloth, cloth, colliders);
+  nlohmann::json key = {{"cloth", cloth}, {"colliders", colliders}};
+  if (view < scene_.garments.size()) key["garment"] = garmentToJson(scene_.garments[view]);
+  return key.dump() + "|" + bodyKey_;
+}
+
+const cloth::GarmentSimulation::Snapshot* GarmentTool::keptState(const std::string& key) const {
+  for (const KeptState& kept : kept_)
+    if (kept.key == key) return &kept.snapshot;
+  return nullptr;
+}
+
+void GarmentTool::keepState(std::string key, cloth::GarmentSimulation::Snapshot snapshot) {
+  constexpr size_t kKept = 12;  // a few garments' sewn and draped states
+  kept_.erase(std::remove_if(kept_.begin(), kept_.end(), [&](const KeptState& k) { return k.key == key; }),
+              kept_.end());
+  kept_.insert(kept_.begin(), KeptState{std::move(key), std::move(snapshot)});
+  if (kept_.size() > kKept) kept_.resize(kKept);
 }
 
 void GarmentTool::setStretchVisible(bool visible) {
@@ -480,7 +693,7 @@ void GarmentTool::setPinsVisible(bool visible) {
 
 void GarmentTool::dropDynamics() {
   waitForStep();
-  for (auto& view : views_) view->simulation.reset();
+  for (View* view : simulatedViews()) view->simulation.reset();
   steps_ = 0;
   simulatedSeconds_ = 0.0f;
   bake_.reset();
@@ -499,27 +712,41 @@ int GarmentTool::bakedFrameCount() const {
 
 std::vector<float> GarmentTool::posedBody() const { return concatenated(window_->document()->posed().meshes()); }
 
+// Every garment starts from its kept sewn state when there is one, else from
+// the placed panels (its sewn state is kept once the seams are done).
 void GarmentTool::restartSimulation() {
   waitForStep();
   steps_ = 0;
   simulatedSeconds_ = 0.0f;
   lastError_.clear();
+  const std::vector<View*> views = simulatedViews();
   try {
-    for (size_t i = 0; i < views_.size(); ++i) {
-      views_[i]->simulation = makeSimulation(scene_, i, restBody_, bodyTriangles_);
-      views_[i]->drape = cloth::DrapeSchedule{};
+    for (size_t i = 0; i < views.size(); ++i) {
+      View& view = *views[i];
+      view.simulation = makeViewSimulation(i);
+      view.drape = cloth::DrapeSchedule{};
+      view.sewingKey = sewingKey(i);
+      view.sewnKept = false;
+      if (const auto* sewn = keptState(view.sewingKey)) {
+        view.simulation->restore(*sewn);
+        view.drape.skipSewing();
+        view.sewnKept = true;
+        ++reusedSewings_;
+      } else {
+        ++sewingRuns_;
+      }
     }
   } catch (const Error& e) {
     lastError_ = QString::fromStdString(e.what());
     simulating_ = false;
-    for (auto& view : views_) view->simulation.reset();
+    for (View* view : views) view->simulation.reset();
     return;
   }
   QTimer::singleShot(0, this, &GarmentTool::startStep);
 }
 
 void GarmentTool::setSimulating(bool on) {
-  on = on && !views_.empty();
+  on = on && !simulatedViews().empty();
   if (on == simulating_) return;
   simulating_ = on;
   if (on) {
@@ -527,12 +754,24 @@ void GarmentTool::setSimulating(bool on) {
     restartSimulation();
   } else {
     waitForStep();
+    if (sewingShown_) window_->hideProgress(QString());
+    sewingShown_ = false;
   }
   showGarments();
   emit simulationChanged();
 }
 
 void GarmentTool::waitForStep() { stepWatcher_.waitForFinished(); }
+
+QString GarmentTool::simulationPhase() const {
+  if (!simulating_) return QString();
+  for (View* view : simulatedViews())
+    if (view->simulation && !view->simulation->welded()) return tr("Sewing");
+  if (restBody_.empty()) return tr("Simulating");  // a sheet without a character: nothing to drape onto
+  for (View* view : simulatedViews())
+    if (view->simulation && !view->drape.draped()) return tr("Draping");
+  return tr("Following the clip");
+}
 
 // One step of every garment on a worker thread, with the body where the
 // timeline has it now; the next step starts when this one has been shown.
@@ -543,7 +782,7 @@ void GarmentTool::startStep() {
     cloth::DrapeSchedule* drape;
   };
   std::vector<Job> jobs;
-  for (auto& view : views_)
+  for (View* view : simulatedViews())
     if (view->simulation) jobs.push_back({view->simulation.get(), &view->drape});
   if (jobs.empty()) return;
   const float dt = 1.0f / scene_.cloth.fps;
@@ -552,7 +791,7 @@ void GarmentTool::startStep() {
       std::vector<float> body;
       for (const Job& job : jobs) {
         cloth::blendBody(rest, target, job.drape->advance(*job.simulation, dt), body);
-        job.simulation->step(dt, &body);
+        job.simulation->step(dt, body.empty() ? nullptr : &body);  // no character: nothing to collide with
       }
       return QString();
     } catch (const std::exception& e) {
@@ -573,6 +812,22 @@ void GarmentTool::onStepFinished() {
   if (!simulating_) return;
   ++steps_;
   simulatedSeconds_ += 1.0f / scene_.cloth.fps;
+  // Keep each garment's sewn state (the worker is idle now) for the next run or bake.
+  for (View* view : simulatedViews())
+    if (view->simulation && !view->sewnKept && view->simulation->welded() &&
+        view->drape.sewingDone(*view->simulation)) {
+      keepState(view->sewingKey, view->simulation->snapshot());
+      view->sewnKept = true;
+    }
+  // The status bar's busy bar while the seams close (the first seconds of a new garment).
+  const bool sewing = simulationPhase() == tr("Sewing");
+  if (sewing) {
+    // Sewing ends by the weld, at the latest after the sewing time limit.
+    const float limit = cloth::GarmentSimulationSettings{}.maxSewingSeconds + 0.25f;
+    window_->showProgress(tr("Sewing the garments"), std::min(99, int(100.0f * simulatedSeconds_ / limit)));
+  }
+  else if (sewingShown_) window_->hideProgress(tr("Garments sewn"));
+  sewingShown_ = sewing;
   showGarments();
   emit simulationChanged();
   QTimer::singleShot(0, this, &GarmentTool::startStep);
@@ -580,10 +835,111 @@ void GarmentTool::onStepFinished() {
 
 // ---- Bake ----
 
+// One garment of a bake: where it starts, and the states the worker reached.
+struct GarmentTool::BakeGarment {
+  std::unique_ptr<cloth::GarmentSimulation> simulation;
+  std::string sewnKey, drapedKey;
+  bool sewn = false, draped = false;  // from a kept sewn / draped state (sewn: also once the worker sewed it)
+  int settleSteps = 0;                // at most this many steps before the first frame
+  std::optional<cloth::GarmentSimulation::Snapshot> sewnState, drapedState;  // to keep
+};
+
+namespace {
+
+// Worker time by phase: sewing, draping onto the first frame, the frames.
+class PhaseClock {
+ public:
+  enum Phase { Sewing, Draping, Frames };
+  void restart() { mark_ = std::chrono::steady_clock::now(); }
+  void charge(Phase phase) {
+    const auto now = std::chrono::steady_clock::now();
+    seconds[phase] += std::chrono::duration<double>(now - mark_).count();
+    mark_ = now;
+  }
+  double seconds[3] = {0.0, 0.0, 0.0};
+
+ private:
+  std::chrono::steady_clock::time_point mark_ = std::chrono::steady_clock::now();
+};
+
+const std::vector<float>* bodyOrNull(const std::vector<float>& body) { return body.empty() ? nullptr : &body; }
+
+}  // namespace
+
+// Each garment starts from its kept draped state for this bake's first
+// frame, or its kept sewn state (then drapes), or the placed panels (sews,
+// then drapes). Throws mq::Error.
+std::vector<GarmentTool::BakeGarment> GarmentTool::prepareBake(const std::vector<float>& firstBody, float fps) const {
+  const std::string firstFrame = fingerprint(firstBody) + "@" + std::to_string(fps);
+  const int fullSettle = cloth::DrapeSchedule{}.maxSteps(1.0f / fps);
+  const int blendSteps = int(std::ceil(cloth::DrapeSchedule::kBlendSeconds * fps)) + 2;
+  std::vector<BakeGarment> garments(simulatedViews().size());
+  for (size_t i = 0; i < garments.size(); ++i) {
+    BakeGarment& g = garments[i];
+    g.simulation = makeViewSimulation(i);
+    g.sewnKey = sewingKey(i);
+    g.drapedKey = g.sewnKey + "|draped:" + firstFrame;
+    if (const auto* draped = keptState(g.drapedKey)) {
+      g.simulation->restore(*draped);
+      g.sewn = g.draped = true;
+    } else if (const auto* sewn = keptState(g.sewnKey)) {
+      g.simulation->restore(*sewn);
+      g.sewn = true;
+      g.settleSteps = blendSteps;
+    } else {
+      g.settleSteps = fullSettle;
+    }
+  }
+  return garments;
+}
+
+namespace {
+
+// Sews the garment (unless it starts sewn) on the rest body, then moves the
+// body to the first frame. False when cancelled.
+bool settle(GarmentTool::BakeGarment& g, const std::vector<float>& rest, const std::vector<float>& first, float dt,
+            const std::atomic<bool>& cancel, const std::function<void(int)>& stepped, PhaseClock& clock) {
+  cloth::GarmentSimulation& simulation = *g.simulation;
+  cloth::DrapeSchedule drape;
+  if (g.sewn) drape.skipSewing();
+  std::vector<float> body;
+  for (int step = 0; step < g.settleSteps && !drape.draped(); ++step) {
+    if (cancel) return false;
+    if (!g.sewn && simulation.welded() && drape.sewingDone(simulation)) {
+      g.sewnState = simulation.snapshot();
+      g.sewn = true;
+    }
+    const bool sewing = !g.sewn;
+    cloth::blendBody(rest, first, drape.advance(simulation, dt), body);
+    simulation.step(dt, bodyOrNull(body));
+    clock.charge(sewing ? PhaseClock::Sewing : PhaseClock::Draping);
+    stepped(step + 1);
+  }
+  if (simulation.welded()) g.drapedState = simulation.snapshot();
+  return true;
+}
+
+// The frames of the clip, the first where the garment is now. False when cancelled.
+bool bakeFrames(cloth::GarmentSimulation& simulation, const std::vector<std::vector<float>>& bodies, float fps,
+                const std::atomic<bool>& cancel, const std::function<void(int)>& stepped, cloth::BakedCloth& baked,
+                std::vector<std::vector<float>>& stretch) {
+  for (size_t f = 0; f < bodies.size(); ++f) {
+    if (cancel) return false;
+    if (f > 0) simulation.step(1.0f / fps, bodyOrNull(bodies[f]));
+    baked.addFrame(simulation.positions());
+    stretch.push_back(simulation.vertexStretch());
+    stepped(int(f) + 1);
+  }
+  return true;
+}
+
+}  // namespace
+
+// The states reached are kept for the next bake or run.
 bool GarmentTool::bake(float from, float to) {
   if (baking_) return false;
   EditorDocument* document = window_->document();
-  if (views_.empty()) {
+  if (simulatedViews().empty()) {
     lastError_ = tr("There are no garments to bake");
     return false;
   }
@@ -594,6 +950,7 @@ bool GarmentTool::bake(float from, float to) {
   }
   setSimulating(false);
   bake_.reset();
+  const auto started = std::chrono::steady_clock::now();
   const float fps = scene_.cloth.fps;
   const float start = from >= 0.0f ? std::max(from, document->clipStart()) : document->clipStart();
   const float end = to >= 0.0f ? std::min(to, document->clipEnd()) : document->clipEnd();
@@ -606,46 +963,41 @@ bool GarmentTool::bake(float from, float to) {
     posed.evaluate(document->character(), clip, start + f / fps, &document->poseEdits(), &ThreadPool::shared());
     bodies[f] = concatenated(posed.meshes());
   }
-  std::vector<std::unique_ptr<cloth::GarmentSimulation>> simulations;
+  std::vector<BakeGarment> garments;
   try {
-    for (size_t i = 0; i < views_.size(); ++i)
-      simulations.push_back(makeSimulation(scene_, i, restBody_, bodyTriangles_));
+    garments = prepareBake(bodies[0], fps);
   } catch (const Error& e) {
     lastError_ = QString::fromStdString(e.what());
     return false;
   }
 
-  const int settleSteps = cloth::DrapeSchedule{}.maxSteps(1.0f / fps);
-  const int total = int(simulations.size()) * (settleSteps + frames);
+  int total = 0;
+  std::vector<int> base;  // progress before each garment
+  for (const BakeGarment& g : garments) base.push_back(total), total += g.settleSteps + frames;
   std::atomic<int> done{0};
   cancelBake_ = false;
   baking_ = true;
   auto result = std::make_unique<Bake>();
   result->clip = clip;
   result->start = start;
+  PhaseClock clock;
 
   auto work = [&]() -> QString {
     try {
-      std::vector<float> body;
-      for (size_t g = 0; g < simulations.size(); ++g) {
-        cloth::GarmentSimulation& simulation = *simulations[g];
-        const int base = int(g) * (settleSteps + frames);
-        cloth::DrapeSchedule drape;
-        for (int s = 0; s < settleSteps && !drape.draped(); ++s) {
-          if (cancelBake_) return QString();
-          cloth::blendBody(restBody_, bodies[0], drape.advance(simulation, 1.0f / fps), body);
-          simulation.step(1.0f / fps, &body);
-          done = base + std::min(s + 1, settleSteps);
-        }
-        cloth::BakedCloth baked(simulation.triangles(), fps);
+      clock.restart();
+      for (size_t g = 0; g < garments.size(); ++g) {
+        BakeGarment& garment = garments[g];
+        if (!garment.draped &&
+            !settle(garment, restBody_, bodies[0], 1.0f / fps, cancelBake_, [&](int s) { done = base[g] + s; }, clock))
+          return QString();
+        clock.restart();
+        cloth::BakedCloth baked(garment.simulation->triangles(), fps);
         std::vector<std::vector<float>> stretch;
-        for (int f = 0; f < frames; ++f) {
-          if (cancelBake_) return QString();
-          if (f > 0) simulation.step(1.0f / fps, &bodies[f]);
-          baked.addFrame(simulation.positions());
-          stretch.push_back(simulation.vertexStretch());
-          done = base + settleSteps + f + 1;
-        }
+        const int settled = base[g] + garment.settleSteps;
+        if (!bakeFrames(*garment.simulation, bodies, fps, cancelBake_, [&](int f) { done = settled + f; }, baked,
+                        stretch))
+          return QString();
+        clock.charge(PhaseClock::Frames);
         result->garments.push_back(std::move(baked));
         result->stretch.push_back(std::move(stretch));
       }
@@ -675,6 +1027,14 @@ bool GarmentTool::bake(float from, float to) {
   baking_ = false;
   progress.reset();
 
+  // What was sewn or draped is kept, even when the bake was cancelled later.
+  for (BakeGarment& g : garments) {
+    if (g.sewn && !g.sewnState) ++reusedSewings_;
+    else ++sewingRuns_;
+    if (g.sewnState) keepState(g.sewnKey, std::move(*g.sewnState));
+    if (g.drapedState) keepState(g.drapedKey, std::move(*g.drapedState));
+  }
+
   if (!error.isEmpty()) {
     lastError_ = tr("The bake stopped: %1").arg(error);
     window_->hideProgress(lastError_);
@@ -688,7 +1048,14 @@ bool GarmentTool::bake(float from, float to) {
     return false;
   }
   bake_ = std::move(result);
-  window_->hideProgress(tr("Garments baked: %1 frames").arg(frames));
+  lastBakeSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  for (int phase = 0; phase < 3; ++phase) lastBakePhases_[phase] = clock.seconds[phase];
+  window_->hideProgress(tr("Garments baked: %1 frames in %2 s (sewing %3 s, draping %4 s, frames %5 s)")
+                            .arg(frames)
+                            .arg(lastBakeSeconds_, 0, 'f', 1)
+                            .arg(clock.seconds[0], 0, 'f', 1)
+                            .arg(clock.seconds[1], 0, 'f', 1)
+                            .arg(clock.seconds[2], 0, 'f', 1));
   showGarments();
   emit simulationChanged();
   return true;

@@ -17,10 +17,26 @@
 // current garment's vertices that face the camera (Shift adds, Ctrl removes);
 // Pin selected / Unpin edit the pins. Pinned vertices are drawn as dots, and
 // the stretch overlay colours the garment by GarmentSimulation::vertexStretch.
+// Pins survive a rebuild of the mesh (a measurement or the particle
+// distance): they are carried to the nearest vertex of the same panel
+// (core/garment/pin_remap.h).
+//
+// Colliders: the document's primitive colliders (sphere, capsule, plane),
+// listed, added, edited and removed as undoable edits like the garments,
+// drawn as translucent actors (render::ColliderActors); every simulation and
+// bake collides with them. The "cloth" section's sheet, when the document
+// has one, is shown and simulated with the garments (a scene may be a sheet
+// and colliders with no character at all).
+//
+// Sewing is slow, so each garment's sewn state (and its state draped onto a
+// bake's first frame) is kept, keyed on everything it depends on (garment,
+// fabric, pins, solver settings, fps, colliders, the body): Simulate and Bake
+// start from there while those are unchanged.
 
 #include <atomic>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <QFutureWatcher>
@@ -31,6 +47,8 @@
 
 #include <glm/glm.hpp>
 
+#include "sim/cloth/collision/primitive_collider.h"
+#include "sim/garment/garment_simulation.h"
 #include "ui/garment/garment_scene.h"
 
 class QDockWidget;
@@ -39,6 +57,10 @@ class QRubberBand;
 
 namespace mq {
 struct GarmentMesh;
+}
+
+namespace mq::render {
+class ColliderActors;
 }
 
 namespace mq::ui {
@@ -81,6 +103,22 @@ class GarmentTool : public QObject {
   void pinSelected();
   void unpinSelected();
   void clearPins();
+  // Colliders (the document's "colliders" section).
+  int colliderCount() const { return int(scene_.cloth.colliders.size()); }
+  int currentCollider() const { return currentCollider_; }  // -1: none
+  void setCurrentCollider(int index);
+  // A collider of that shape placed near the character (or the sheet).
+  void addCollider(cloth::PrimitiveCollider::Shape shape);
+  // False (lastError says why) for a zero normal, a radius <= 0 or a value that is not finite.
+  bool setCollider(int index, const cloth::PrimitiveCollider& collider, int mergeKey = 0);
+  void removeCollider(int index);
+  void setCollidersVisible(bool visible);
+  const render::ColliderActors& colliderActors() const { return *colliderActors_; }
+
+  // The "cloth" section's sheet as shown (empty without a sheet).
+  bool hasSheet() const { return sheet_ != nullptr; }
+  const std::vector<float>& shownSheetPositions() const;
+
   // Replaces the state without undo (the commands call this).
   void applyScene(const GarmentScene& scene);
 
@@ -99,6 +137,8 @@ class GarmentTool : public QObject {
   void setSimulating(bool on);
   bool simulating() const { return simulating_; }
   int simulatedSteps() const { return steps_; }
+  // "Sewing", "Draping", "Following the clip", "Simulating" (no character) or "" while not simulating.
+  QString simulationPhase() const;
   // Blocks until the step in flight (if any) is done.
   void waitForStep();
 
@@ -110,6 +150,14 @@ class GarmentTool : public QObject {
   bool hasBake() const { return bake_ != nullptr; }
   int bakedFrameCount() const;
   void clearBake();
+  // How often sewing ran from the placed panels (Simulate or Bake), and how
+  // often a kept sewn or draped state was used instead.
+  int sewingRuns() const { return sewingRuns_; }
+  int reusedSewings() const { return reusedSewings_; }
+  // Wall time of the last bake that finished, seconds.
+  double lastBakeSeconds() const { return lastBakeSeconds_; }
+  // Of which the worker spent: 0 sewing, 1 draping onto the first frame, 2 simulating the frames.
+  double lastBakePhaseSeconds(int phase) const { return lastBakePhases_[phase]; }
 
   // Display
   void setStretchVisible(bool visible);
@@ -131,6 +179,14 @@ class GarmentTool : public QObject {
  private:
   struct View;
   struct Bake;
+ public:
+  struct BakeGarment;  // one garment of a bake (garment_tool.cpp)
+
+ private:
+  struct KeptState {
+    std::string key;
+    cloth::GarmentSimulation::Snapshot snapshot;
+  };
 
   void onCharacterReplaced();
   void loadSections();
@@ -142,7 +198,15 @@ class GarmentTool : public QObject {
   void startStep();
   void onStepFinished();
   std::vector<float> posedBody() const;
-  GarmentScene withRebuilt(GarmentScene scene, int garment) const;
+  std::vector<View*> simulatedViews() const;  // the garments, then the sheet
+  std::vector<BakeGarment> prepareBake(const std::vector<float>& firstBody, float fps) const;
+  std::unique_ptr<cloth::GarmentSimulation> makeViewSimulation(size_t view) const;
+  std::string sewingKey(size_t view) const;
+  const cloth::GarmentSimulation::Snapshot* keptState(const std::string& key) const;
+  void keepState(std::string key, cloth::GarmentSimulation::Snapshot snapshot);
+  void rebuildSheet();
+  void showColliders();
+  cloth::PrimitiveCollider placedCollider(cloth::PrimitiveCollider::Shape shape) const;
   bool onPress(QMouseEvent* event);
   bool onMove(QMouseEvent* event);
   bool onRelease(QMouseEvent* event);
@@ -152,6 +216,10 @@ class GarmentTool : public QObject {
   QDockWidget* dock_ = nullptr;
   GarmentScene scene_;
   std::vector<std::unique_ptr<View>> views_;  // one per garment
+  std::unique_ptr<View> sheet_;               // the cloth section's sheet, if any
+  std::unique_ptr<render::ColliderActors> colliderActors_;
+  int currentCollider_ = -1;
+  bool collidersVisible_ = true;
   int current_ = -1;
   QString lastError_;
   bool loading_ = false;
@@ -159,11 +227,19 @@ class GarmentTool : public QObject {
   // The body the garments are draped on: the character in its rest pose.
   std::vector<float> restBody_;
   std::vector<uint32_t> bodyTriangles_;
+  std::string bodyKey_;  // identifies restBody_ and bodyTriangles_ in kept states
+
+  // Sewn and draped states, newest first (a few garments' worth).
+  std::vector<KeptState> kept_;
+  int sewingRuns_ = 0, reusedSewings_ = 0;
+  double lastBakeSeconds_ = 0.0;
+  double lastBakePhases_[3] = {0.0, 0.0, 0.0};
 
   // Live simulation
   bool simulating_ = false;
   int steps_ = 0;
   float simulatedSeconds_ = 0.0f;
+  bool sewingShown_ = false;  // the status bar shows the sewing progress
   QFutureWatcher<QString> stepWatcher_;
 
   // Bake

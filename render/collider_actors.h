@@ -1,0 +1,43 @@
+#pragma once
+// The scene's primitive colliders drawn in the viewport: one translucent
+// actor per collider (a sphere, a capsule, a finite square of the plane with
+// its normal), the selected one brighter. Rebuilt from the colliders on
+// every edit; the colliders are few, so that is cheap.
+
+#include <vector>
+
+#include <vtkSmartPointer.h>
+
+#include "sim/cloth/collision/primitive_collider.h"
+
+class vtkActor;
+class vtkPolyData;
+
+namespace mq::render {
+
+class SceneView;
+
+// The surface of a collider as triangles (a plane: a square of `planeSize`
+// metres around its point). For drawing and for tests of the drawing.
+vtkSmartPointer<vtkPolyData> colliderSurface(const cloth::PrimitiveCollider& collider, double planeSize = 2.0);
+
+class ColliderActors {
+ public:
+  explicit ColliderActors(SceneView* view);
+  ~ColliderActors();
+  ColliderActors(const ColliderActors&) = delete;
+  ColliderActors& operator=(const ColliderActors&) = delete;
+
+  // selected: index into colliders, -1 for none.
+  void set(const std::vector<cloth::PrimitiveCollider>& colliders, int selected);
+  void setVisible(bool visible);
+  size_t count() const { return actors_.size(); }
+  vtkActor* actor(size_t i) const { return actors_[i]; }
+
+ private:
+  SceneView* view_;
+  std::vector<vtkSmartPointer<vtkActor>> actors_;
+  bool visible_ = true;
+};
+
+}  // namespace mq::render

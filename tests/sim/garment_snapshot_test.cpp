@@ -1,0 +1,150 @@
+// GarmentSimulation::snapshot / restore (a sewn garment reused without
+// sewing again) and DrapeSchedule::skipSewing, and the sheet of a cloth
+// section run as a GarmentSimulation (sim/garment/garment_scene.h).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/garment/garment.h"
+#include "core/scene/scene_document.h"
+#include "core/util/error.h"
+#include "sim/garment/drape_schedule.h"
+#include "sim/garment/garment_scene.h"
+#include "sim/garment/garment_simulation.h"
+
+namespace mq {
+namespace {
+
+using namespace mq::cloth;
+
+// Two 20 cm squares 5 cm apart, sewn along the facing sides, no body.
+Garment twoSquares() {
+  Garment g;
+  g.targetEdgeLength = 0.05f;
+  for (const char* name : {"left", "right"}) {
+    Panel p;
+    p.name = name;
+    p.addLine("bottom", {0, 0});
+    p.addLine("east", {0.2f, 0});
+    p.addLine("top", {0.2f, 0.2f});
+    p.addLine("west", {0, 0.2f});
+    p.placement.center = {std::string(name) == "left" ? -0.2f : 0.05f, 1.0f, 0};
+    g.panels.push_back(p);
+  }
+  g.seams.push_back({"left", "east", "right", "west", true});
+  return g;
+}
+
+GarmentSimulationSettings cotton() {
+  GarmentSimulationSettings s;
+  s.fabric = fabricPreset("cotton");
+  return s;
+}
+
+float maxDifference(const std::vector<float>& a, const std::vector<float>& b) {
+  if (a.size() != b.size()) return INFINITY;
+  float d = 0.0f;
+  for (size_t i = 0; i < a.size(); ++i) d = std::max(d, std::abs(a[i] - b[i]));
+  return d;
+}
+
+TEST(GarmentSnapshot, RestoredSimulationContinuesLikeTheOriginal) {
+  const GarmentMesh mesh = buildGarmentMesh(twoSquares());
+  const uint32_t pinned = mesh.panelFirstVertex[0];
+  GarmentSimulation original(mesh, cotton(), {}, {});
+  original.pin(pinned);
+  EXPECT_THROW(original.snapshot(), Error);  // not sewn yet
+  for (int f = 0; f < 90 && !original.welded(); ++f) original.step(1.0f / 30.0f);
+  ASSERT_TRUE(original.welded());
+  for (int f = 0; f < 3; ++f) original.step(1.0f / 30.0f);
+  const GarmentSimulation::Snapshot saved = original.snapshot();
+
+  GarmentSimulation restored(mesh, cotton(), {}, {});
+  restored.pin(pinned);
+  restored.restore(saved);
+  EXPECT_TRUE(restored.welded());
+  EXPECT_EQ(restored.positions(), original.positions());  // the state, exactly
+  EXPECT_EQ(restored.seamGap(), 0.0f);
+  // Both hang from the pin and swing on the same way.
+  for (int f = 0; f < 10; ++f) {
+    original.step(1.0f / 30.0f);
+    restored.step(1.0f / 30.0f);
+  }
+  EXPECT_LT(maxDifference(restored.positions(), original.positions()), 1e-3f);
+  const std::vector<float> x = restored.positions();
+  EXPECT_NEAR(x[3 * pinned + 1], mesh.position(pinned).y, 1e-4f);  // the pin held through the restore
+  EXPECT_LT(*std::min_element(x.begin() + 1, x.end()), 1.0f);     // and the rest fell
+}
+
+TEST(GarmentSnapshot, SnapshotOfAnotherGarmentIsRefused) {
+  const GarmentMesh mesh = buildGarmentMesh(twoSquares());
+  GarmentSimulation sim(mesh, cotton(), {}, {});
+  for (int f = 0; f < 90 && !sim.welded(); ++f) sim.step(1.0f / 30.0f);
+  ASSERT_TRUE(sim.welded());
+  Garment finer = twoSquares();
+  finer.targetEdgeLength = 0.03f;
+  GarmentSimulation other(buildGarmentMesh(finer), cotton(), {}, {});
+  EXPECT_THROW(other.restore(sim.snapshot()), Error);
+}
+
+TEST(GarmentSnapshot, DrapeScheduleSkipsSewingForARestoredGarment) {
+  const GarmentMesh mesh = buildGarmentMesh(twoSquares());
+  GarmentSimulation sim(mesh, cotton(), {}, {});
+  DrapeSchedule fresh;
+  EXPECT_FALSE(fresh.sewingDone(sim));
+  EXPECT_EQ(fresh.advance(sim, 0.1f), 0.0f);  // holds the body at rest while sewing
+  for (int f = 0; f < 90 && !sim.welded(); ++f) sim.step(1.0f / 30.0f);
+  ASSERT_TRUE(sim.welded());
+  DrapeSchedule skipped;
+  skipped.skipSewing();
+  EXPECT_TRUE(skipped.sewingDone(sim));
+  EXPECT_GT(skipped.advance(sim, 0.1f), 0.0f);  // moves the body at once
+}
+
+TEST(GarmentSheet, SheetFallsOnItsColliderAndKeepsItsPins) {
+  ClothSceneSpec spec;
+  spec.sheet.columns = spec.sheet.rows = 12;
+  spec.sheet.width = spec.sheet.height = 0.6f;
+  spec.sheet.center = {0.0f, 0.5f, 0.0f};
+  spec.fabric = fabricPreset("cotton");
+  spec.pinnedVertices = {0};
+  spec.colliders.push_back(PrimitiveCollider::sphere({0.0f, 0.25f, 0.0f}, 0.15f));
+  const GarmentMesh mesh = sheetGarmentMesh(spec);
+  EXPECT_EQ(mesh.vertexCount(), 144u);
+  auto sim = makeSheetSimulation(spec, {}, {});
+  EXPECT_TRUE(sim->welded());  // nothing to sew
+  for (int f = 0; f < 24; ++f) sim->step(1.0f / 24.0f);
+  const std::vector<float> x = sim->positions();
+  EXPECT_NEAR(x[1], 0.5f, 1e-4f);  // pinned corner
+  float lowest = INFINITY, inside = 0.0f;
+  for (size_t v = 0; v < x.size() / 3; ++v) {
+    const glm::vec3 p(x[3 * v], x[3 * v + 1], x[3 * v + 2]);
+    lowest = std::min(lowest, p.y);
+    inside = std::max(inside, 0.15f - glm::length(p - glm::vec3(0.0f, 0.25f, 0.0f)));
+  }
+  EXPECT_LT(lowest, 0.4f);    // it fell
+  EXPECT_LT(inside, 0.005f);  // around the sphere, not through it
+}
+
+}  // namespace
+}  // namespace mq
+
+namespace mq {
+namespace {
+
+TEST(GarmentSheet, ExampleSheetAndCollidersSceneParses) {
+  const SceneDocument doc =
+      loadSceneDocument(std::string(MANNEQUIN_SOURCE_DIR) + "/resources/scenes/cloth_sheet_colliders.json");
+  EXPECT_FALSE(doc.hasCharacter());
+  const cloth::ClothSceneSpec spec = cloth::parseClothScene(doc.cloth, doc.colliders, "cloth_sheet_colliders.json");
+  EXPECT_TRUE(spec.hasSheet);
+  ASSERT_EQ(spec.colliders.size(), 3u);
+  EXPECT_EQ(spec.colliders[0].shape, cloth::PrimitiveCollider::Shape::Sphere);
+  EXPECT_EQ(spec.colliders[1].shape, cloth::PrimitiveCollider::Shape::Capsule);
+  EXPECT_EQ(spec.colliders[2].shape, cloth::PrimitiveCollider::Shape::Plane);
+  EXPECT_FLOAT_EQ(spec.colliders[2].friction, 0.6f);
+}
+
+}  // namespace
+}  // namespace mq
