@@ -30,6 +30,11 @@ class AabbTree {
   // Calls visit(primitive) for every primitive whose box overlaps `box`.
   template <class Visit>
   void query(const Box& box, Visit&& visit) const;
+  // Calls visit(primitive) for the primitives whose box is closer to p than
+  // `best`, nearer subtrees first; visit may lower `best` (a nearest-point
+  // search: far subtrees are then skipped).
+  template <class Visit>
+  void nearest(const glm::vec3& p, float& best, Visit&& visit) const;
 
   bool empty() const { return nodes_.empty(); }
 
@@ -46,6 +51,11 @@ class AabbTree {
   std::vector<uint32_t> order_;  // primitive indices, leaf ranges
   std::vector<Box> leafBoxes_;   // the primitives' boxes in order_'s order
 };
+
+inline float squaredDistance(const Box& b, const glm::vec3& p) {
+  const glm::vec3 d = glm::max(glm::max(b.min - p, p - b.max), glm::vec3(0.0f));
+  return glm::dot(d, d);
+}
 
 // Boxes of the triangles of `positions`, grown by `margin`.
 std::vector<Box> triangleBoxes(const std::vector<glm::vec3>& positions, const std::vector<uint32_t>& triangles,
@@ -66,6 +76,37 @@ void AabbTree::query(const Box& box, Visit&& visit) const {
     } else {
       stack[top++] = n.left;
       stack[top++] = n.right;
+    }
+  }
+}
+
+template <class Visit>
+void AabbTree::nearest(const glm::vec3& p, float& best, Visit&& visit) const {
+  if (nodes_.empty()) return;
+  struct Entry {
+    int32_t node;
+    float distance2;
+  };
+  Entry stack[64];
+  int top = 0;
+  stack[top++] = {0, squaredDistance(nodes_[0].box, p)};
+  while (top > 0) {
+    const Entry e = stack[--top];
+    if (e.distance2 >= best * best) continue;
+    const Node& n = nodes_[e.node];
+    if (n.left < 0) {
+      for (uint32_t k = n.first; k < n.first + n.count; ++k)
+        if (squaredDistance(leafBoxes_[k], p) < best * best) visit(order_[k]);
+      continue;
+    }
+    const float l = squaredDistance(nodes_[n.left].box, p), r = squaredDistance(nodes_[n.right].box, p);
+    // The nearer child on top of the stack: visited first.
+    if (l <= r) {
+      stack[top++] = {n.right, r};
+      stack[top++] = {n.left, l};
+    } else {
+      stack[top++] = {n.left, l};
+      stack[top++] = {n.right, r};
     }
   }
 }

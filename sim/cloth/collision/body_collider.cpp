@@ -10,6 +10,8 @@ namespace mq::cloth {
 
 namespace {
 
+constexpr float kBoxSlack = 1e-5f;  // m: triangle boxes grown by this, against rounding
+
 std::vector<glm::vec3> toVec3(const std::vector<float>& flat) {
   std::vector<glm::vec3> out(flat.size() / 3);
   for (size_t i = 0; i < out.size(); ++i) out[i] = {flat[3 * i], flat[3 * i + 1], flat[3 * i + 2]};
@@ -28,7 +30,7 @@ void BodyCollider::setMesh(const std::vector<float>& positions, const std::vecto
   maxDisplacement_ = 0.0f;
   velocity_.assign(n, glm::vec3(0.0f));
   searchRadius_ = searchRadius;
-  tree_.build(triangleBoxes(current_, triangles_, searchRadius_));
+  tree_.build(triangleBoxes(current_, triangles_, kBoxSlack));
 }
 
 void BodyCollider::setTarget(const std::vector<float>& positions, float frameTime) {
@@ -47,13 +49,17 @@ void BodyCollider::moveTo(float fraction) {
     moved2 = std::max(moved2, glm::dot(d, d));
   }
   maxDisplacement_ = std::sqrt(moved2);
-  // Boxes over the triangles' sweep from the previous position: a vertex's
-  // path crosses a moving triangle only inside that triangle's sweep.
-  std::vector<Box> boxes = triangleBoxes(current_, triangles_, searchRadius_);
-  if (maxDisplacement_ > 0.0f) {
-    const std::vector<Box> before = triangleBoxes(previous_, triangles_, searchRadius_);
-    for (size_t t = 0; t < boxes.size(); ++t) boxes[t].extend(before[t]);
-  }
+  // Each triangle's box, extended by that box moved back by the triangle's
+  // mean displacement in this move: firstHitAlong() meets a triangle at a
+  // point p of it now with p - (1 - s) d on the vertex's segment, so such a
+  // box holds every hit; it also bounds the triangle now for nearestContact().
+  std::vector<Box> boxes = triangleBoxes(current_, triangles_, kBoxSlack);
+  if (maxDisplacement_ > 0.0f)
+    for (size_t t = 0; t < boxes.size(); ++t) {
+      const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
+      const glm::vec3 back = (previous_[a] + previous_[b] + previous_[c] - current_[a] - current_[b] - current_[c]) / 3.0f;
+      boxes[t].extend(Box{boxes[t].min + back, boxes[t].max + back});
+    }
   tree_.refit(boxes);
 }
 
@@ -98,11 +104,9 @@ bool BodyCollider::firstHitAlong(const glm::vec3& from, const glm::vec3& to, Bod
 }
 
 bool BodyCollider::nearestContact(const glm::vec3& p, BodyContact& contact) const {
-  Box box;
-  box.min = box.max = p;  // triangle boxes are grown by the search radius
   float best = searchRadius_;
   bool found = false;
-  tree_.query(box, [&](uint32_t t) {
+  tree_.nearest(p, best, [&](uint32_t t) {
     const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
     const glm::vec3 w = closestTriangleWeights(p, current_[a], current_[b], current_[c]);
     const glm::vec3 q = w.x * current_[a] + w.y * current_[b] + w.z * current_[c];
