@@ -76,28 +76,55 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
       }
     return std::sqrt(worst);
   };
-  // Element boxes for the broad phase, whichever is smaller: swept over the
-  // step (start and end, grown by the thickness), or at the start grown by
-  // half the thickness plus the deviation (any two elements closing by up to
-  // twice the deviation then still overlap). The second wins when the cloth
-  // moves mostly as a whole.
-  const bool relative = 2.0f * deviation < meanMotion + thickness;
-  const float grow = relative ? 0.5f * thickness + deviation : thickness;
+  // Element boxes for the broad phase. Swept over the step (start and end,
+  // grown by the thickness) when the cloth's moves differ much (a pair is a
+  // candidate only when those overlap); otherwise no such condition: any two
+  // elements closing by up to twice the deviation qualify. Either way a
+  // candidate passes the exact test below, dist(x0) <= thickness + closing,
+  // so its boxes at the start grown by half the thickness plus their own
+  // vertices' largest distance from the mean move overlap ("relative"
+  // boxes: tight where the cloth moves with the mean). The trees hold
+  // whichever kind is smaller in all; when they hold relative boxes in swept
+  // mode, the swept boxes are checked on each pair: the candidates do not
+  // depend on the choice.
+  const bool swept = !(2.0f * deviation < meanMotion + thickness);
+  std::vector<float> offMean(n);
+  for (size_t v = 0; v < n; ++v) offMean[v] = glm::length(move[v] - meanMove);
   auto sweptBox = [&](std::initializer_list<uint32_t> vertices) {
     Box b;
-    for (uint32_t v : vertices) {
-      b.extend(x0[v]);
-      if (!relative) b.extend(s.x[v]);
-    }
+    for (uint32_t v : vertices) b.extend(x0[v]), b.extend(s.x[v]);
+    b.min -= glm::vec3(thickness);
+    b.max += glm::vec3(thickness);
+    return b;
+  };
+  auto relativeBox = [&](std::initializer_list<uint32_t> vertices) {
+    Box b;
+    float grow = 0.0f;
+    for (uint32_t v : vertices) b.extend(x0[v]), grow = std::max(grow, offMean[v]);
+    grow += 0.5f * thickness;
     b.min -= glm::vec3(grow);
     b.max += glm::vec3(grow);
     return b;
   };
-  std::vector<Box> boxes(triangleCount);
-  for (size_t t = 0; t < triangleCount; ++t)
-    boxes[t] = sweptBox({triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]});
-  std::vector<Box> edgeBoxes(edges_.size());
-  for (size_t e = 0; e < edges_.size(); ++e) edgeBoxes[e] = sweptBox({edges_[e].first, edges_[e].second});
+  auto triangleBox = [&](auto&& box, size_t t) { return box({triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]}); };
+  auto edgeBox = [&](auto&& box, size_t e) { return box({edges_[e].first, edges_[e].second}); };
+  auto extentSum = [](const std::vector<Box>& boxes) {
+    double sum = 0.0;
+    for (const Box& b : boxes) sum += double(b.max.x - b.min.x) + double(b.max.y - b.min.y) + double(b.max.z - b.min.z);
+    return sum;
+  };
+  std::vector<Box> boxes(triangleCount), edgeBoxes(edges_.size()), sweptBoxes, sweptEdgeBoxes;
+  for (size_t t = 0; t < triangleCount; ++t) boxes[t] = triangleBox(relativeBox, t);
+  for (size_t e = 0; e < edges_.size(); ++e) edgeBoxes[e] = edgeBox(relativeBox, e);
+  bool checkSwept = false;  // the trees hold relative boxes, candidates need swept ones to overlap
+  if (swept) {
+    sweptBoxes.resize(triangleCount);
+    sweptEdgeBoxes.resize(edges_.size());
+    for (size_t t = 0; t < triangleCount; ++t) sweptBoxes[t] = triangleBox(sweptBox, t);
+    for (size_t e = 0; e < edges_.size(); ++e) sweptEdgeBoxes[e] = edgeBox(sweptBox, e);
+    checkSwept = extentSum(boxes) + extentSum(edgeBoxes) < extentSum(sweptBoxes) + extentSum(sweptEdgeBoxes);
+    if (!checkSwept) boxes.swap(sweptBoxes), edgeBoxes.swap(sweptEdgeBoxes);
+  }
   // The mesh keeps its topology: the trees are refitted to the new boxes and
   // rebuilt now and then, as the cloth's shape drifts from the one they were
   // built for (the candidates do not depend on the tree, only the speed).
@@ -112,9 +139,11 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
   ++stepsSinceBuild_;
   vertexTriangle_ = collectInBlocks<VertexTriangle>(n, [&](size_t v, std::vector<VertexTriangle>& out) {
     const size_t first = out.size();
-    tree_.query(sweptBox({uint32_t(v)}), [&](uint32_t t) {
+    const Box vertexSwept = sweptBox({uint32_t(v)});
+    tree_.query(swept && !checkSwept ? vertexSwept : relativeBox({uint32_t(v)}), [&](uint32_t t) {
       const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
       if (v == a || v == b || v == c) return;
+      if (checkSwept && !vertexSwept.overlaps(sweptBoxes[t])) return;
       const glm::vec3 w = closestTriangleWeights(x0[v], x0[a], x0[b], x0[c]);
       const glm::vec3 normal = glm::cross(x0[b] - x0[a], x0[c] - x0[a]);
       const glm::vec3 offset = x0[v] - (w.x * x0[a] + w.y * x0[b] + w.z * x0[c]);
@@ -153,6 +182,7 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
         const auto [p0, p1] = edges_[e];
         const auto [q0, q1] = edges_[f];
         if (sharesVertex(p0, p1, q0, q1)) return;
+        if (checkSwept && !sweptEdgeBoxes[e].overlaps(sweptEdgeBoxes[f])) return;
         const EdgeBound &be = bounds[e], &bf = bounds[f];
         const float bound = thickness + glm::length(be.meanMove - bf.meanMove) + be.spread + bf.spread;
         if (glm::length(be.mid - bf.mid) - (be.halfLength + bf.halfLength) > 1.0001f * bound + 1e-6f) return;
