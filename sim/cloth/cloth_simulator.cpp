@@ -423,8 +423,7 @@ float ClothSimulator::currentMaxStretch() const {
 }
 
 int ClothSimulator::countPenetrating() const {
-  int count = 0;
-  for (size_t i = 0; i < state_.size(); ++i) {
+  return int(deterministicSum(state_.size(), [&](size_t i) {
     bool inside = false;
     for (const PrimitiveCollider& c : colliders_) {
       glm::vec3 n;
@@ -432,9 +431,8 @@ int ClothSimulator::countPenetrating() const {
     }
     BodyContact contact;
     if (!inside && !body_.empty() && body_.nearestContact(state_.x[i], contact)) inside = contact.signedDistance < 0.0f;
-    count += inside ? 1 : 0;
-  }
-  return count;
+    return inside ? 1.0 : 0.0;
+  }));
 }
 
 void ClothSimulator::updateStats() {

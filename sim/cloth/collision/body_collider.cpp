@@ -105,26 +105,32 @@ bool BodyCollider::firstHitAlong(const glm::vec3& from, const glm::vec3& to, Bod
 
 bool BodyCollider::nearestContact(const glm::vec3& p, BodyContact& contact) const {
   float best = searchRadius_;
-  bool found = false;
+  int64_t nearest = -1;
+  glm::vec3 weights(0.0f);
+  // Distances only during the search; the contact of the nearest triangle after.
   tree_.nearest(p, best, [&](uint32_t t) {
     const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
     const glm::vec3 w = closestTriangleWeights(p, current_[a], current_[b], current_[c]);
-    const glm::vec3 q = w.x * current_[a] + w.y * current_[b] + w.z * current_[c];
-    const float d = glm::length(p - q);
+    const float d = glm::length(p - (w.x * current_[a] + w.y * current_[b] + w.z * current_[c]));
     if (d >= best) return;
     const glm::vec3 faceNormal = glm::cross(current_[b] - current_[a], current_[c] - current_[a]);
-    const float area2 = glm::length(faceNormal);
-    if (area2 <= 0.0f) return;
+    if (!(glm::dot(faceNormal, faceNormal) > 0.0f)) return;
     best = d;
-    found = true;
-    const glm::vec3 n = faceNormal / area2;
-    const bool inside = glm::dot(p - q, n) < 0.0f;
-    contact.point = q;
-    contact.signedDistance = inside ? -d : d;
-    contact.normal = (!inside && d > 1e-6f) ? (p - q) / d : n;
-    contact.velocity = w.x * velocity_[a] + w.y * velocity_[b] + w.z * velocity_[c];
+    nearest = t;
+    weights = w;
   });
-  return found;
+  if (nearest < 0) return false;
+  const uint32_t a = triangles_[3 * nearest], b = triangles_[3 * nearest + 1], c = triangles_[3 * nearest + 2];
+  const glm::vec3 q = weights.x * current_[a] + weights.y * current_[b] + weights.z * current_[c];
+  const glm::vec3 faceNormal = glm::cross(current_[b] - current_[a], current_[c] - current_[a]);
+  const glm::vec3 n = faceNormal / glm::length(faceNormal);
+  const float d = glm::length(p - q);
+  const bool inside = glm::dot(p - q, n) < 0.0f;
+  contact.point = q;
+  contact.signedDistance = inside ? -d : d;
+  contact.normal = (!inside && d > 1e-6f) ? (p - q) / d : n;
+  contact.velocity = weights.x * velocity_[a] + weights.y * velocity_[b] + weights.z * velocity_[c];
+  return true;
 }
 
 }  // namespace mq::cloth
