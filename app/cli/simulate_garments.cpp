@@ -51,6 +51,7 @@ SimulatedGarments::SimulatedGarments(const nlohmann::json& section, const cloth:
   sewingSteps_.assign(sims_.size(), 0);
   substeps_.assign(sims_.size(), 0);
   stretchPasses_.assign(sims_.size(), 0);
+  solverIterations_.assign(sims_.size(), 0);
 }
 
 SimulatedGarments::~SimulatedGarments() = default;
@@ -93,6 +94,7 @@ void SimulatedGarments::step(float dt, const std::vector<float>* posedBody) {
     sims_[i]->step(dt, posedBody);
     substeps_[i] += sims_[i]->stats().substeps;
     stretchPasses_[i] += sims_[i]->stats().stretchPasses;
+    solverIterations_[i] += sims_[i]->stats().solverIterations;
   }
 }
 
@@ -117,6 +119,7 @@ nlohmann::json SimulatedGarments::stats() const {
                    {"sewing_steps", sewingSteps_[i]},
                    {"substeps_per_frame", frames_ ? double(substeps_[i]) / frames_ : 0.0},
                    {"stretch_passes_per_frame", frames_ ? double(stretchPasses_[i]) / frames_ : 0.0},
+                   {"cg_iterations_per_frame", frames_ ? double(solverIterations_[i]) / frames_ : 0.0},
                    {"seam_gap", sim.seamGap()},
                    {"max_stretch", st.maxStretch},
                    {"penetrating_vertices", st.penetratingVertices},

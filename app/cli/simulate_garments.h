@@ -54,7 +54,7 @@ class SimulatedGarments {
   std::vector<Garment> garments_;
   std::vector<std::unique_ptr<cloth::GarmentSimulation>> sims_;
   std::vector<int> sewingSteps_;  // per garment: steps until the weld (in dress())
-  std::vector<long long> substeps_, stretchPasses_;  // per garment, summed over step()
+  std::vector<long long> substeps_, stretchPasses_, solverIterations_;  // per garment, summed over step()
   int frames_ = 0;
 };
 

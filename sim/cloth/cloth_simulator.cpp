@@ -74,6 +74,7 @@ ClothSimulator::ClothSimulator(const ClothMesh& mesh, const ClothTopology& topol
     if (a >= mesh.vertexCount() || b >= mesh.vertexCount()) throw Error("cloth seam vertex out of range");
   forces_ = std::make_unique<ClothForces>(topology_, mesh, fabric_, settings_);
   integrator_ = makeIntegrator(settings_);
+  stretchLimiter_ = StretchLimiter(forces_->springs().springs(), forces_->structuralCount(), mesh.vertexCount());
   if (settings_.selfCollisions) selfCollision_ = std::make_unique<SelfCollision>(triangles_, mesh.vertexCount());
   state_ = initialState(mesh, topology_, fabric_);
   freeInvMass_ = state_.invMass;
@@ -189,7 +190,7 @@ void ClothSimulator::substep(float h, float bodyFraction) {
     held = limitStretchWhileSewing(h);
   } else if (settings_.stretchLimit == StretchLimitMode::PositionCorrection) {
     const StretchLimitResult r =
-        limitStretchByPositions(state_, springs, structural, settings_.maxStretch, passBudget_, h);
+        stretchLimiter_.limitByPositions(state_, settings_.maxStretch, passBudget_, h);
     stats_.stretchPasses += r.passes;
     held = r.maxStretchAfter <= settings_.maxStretch;
   } else if (settings_.stretchLimit == StretchLimitMode::VelocityCorrection)
@@ -214,8 +215,6 @@ void ClothSimulator::substep(float h, float bodyFraction) {
 // the limit cannot hold that way (cloth pinched between two body parts), it
 // is redone with them merely heavy like the others.
 bool ClothSimulator::limitStretchAfterContacts(float h) {
-  const auto& springs = forces_->springs().springs();
-  const size_t structural = forces_->structuralCount();
   const std::vector<float> freeInvMass = state_.invMass;
   const bool anySwept = std::find(touched_.begin(), touched_.end(), kSweptContact) != touched_.end();
   const std::vector<glm::vec3> x = anySwept ? state_.x : std::vector<glm::vec3>{};
@@ -228,7 +227,7 @@ bool ClothSimulator::limitStretchAfterContacts(float h) {
         state_.invMass[i] = kContactInvMassScale * freeInvMass[i];
     // The held try gets the plain budget: pinched cloth fails it whatever the passes.
     const int passes = attempt == 0 ? std::min(passBudget_, settings_.stretchIterations) : passBudget_;
-    const StretchLimitResult r = limitStretchByPositions(state_, springs, structural, activeMaxStretch(), passes, h);
+    const StretchLimitResult r = stretchLimiter_.limitByPositions(state_, activeMaxStretch(), passes, h);
     state_.invMass = freeInvMass;
     stats_.stretchPasses += r.passes;
     if (r.maxStretchAfter <= activeMaxStretch()) return true;
@@ -260,8 +259,6 @@ bool ClothSimulator::limitStretchWhileSewing(float h) {
     const auto [a, b] = sewing_[k];
     target[k] = std::max(0.0f, glm::length(stepStart_[a] - stepStart_[b]) - closing);
   }
-  const auto& springs = forces_->springs().springs();
-  const size_t structural = forces_->structuralCount();
   const bool limit = settings_.stretchLimit == StretchLimitMode::PositionCorrection;
   const std::vector<float> freeInvMass = state_.invMass;
   std::vector<float> heavy = state_.invMass;
@@ -280,7 +277,7 @@ bool ClothSimulator::limitStretchWhileSewing(float h) {
     }
     if (!limit) continue;
     state_.invMass = heavy;
-    const StretchLimitResult r = limitStretchByPositions(state_, springs, structural, activeMaxStretch(),
+    const StretchLimitResult r = stretchLimiter_.limitByPositions(state_, activeMaxStretch(),
                                                          std::max(1, passBudget_ / kRounds), h);
     state_.invMass = freeInvMass;
     stats_.stretchPasses += r.passes;
@@ -426,8 +423,7 @@ float ClothSimulator::currentMaxStretch() const {
 }
 
 int ClothSimulator::countPenetrating() const {
-  int count = 0;
-  for (size_t i = 0; i < state_.size(); ++i) {
+  return int(deterministicSum(state_.size(), [&](size_t i) {
     bool inside = false;
     for (const PrimitiveCollider& c : colliders_) {
       glm::vec3 n;
@@ -435,9 +431,8 @@ int ClothSimulator::countPenetrating() const {
     }
     BodyContact contact;
     if (!inside && !body_.empty() && body_.nearestContact(state_.x[i], contact)) inside = contact.signedDistance < 0.0f;
-    count += inside ? 1 : 0;
-  }
-  return count;
+    return inside ? 1.0 : 0.0;
+  }));
 }
 
 void ClothSimulator::updateStats() {

@@ -23,6 +23,7 @@
 #include "sim/cloth/cloth_topology.h"
 #include "sim/cloth/collision/body_collider.h"
 #include "sim/cloth/collision/primitive_collider.h"
+#include "sim/cloth/constraints/stretch_limit.h"
 #include "sim/cloth/forces/cloth_forces.h"
 
 namespace mq::cloth {
@@ -129,6 +130,7 @@ class ClothSimulator {
   std::unique_ptr<ClothForces> forces_;
   std::unique_ptr<Integrator> integrator_;
   std::unique_ptr<SelfCollision> selfCollision_;
+  StretchLimiter stretchLimiter_;  // over forces_'s structural springs
   ClothState state_;
   std::vector<float> freeInvMass_;
   std::vector<glm::vec3> stepStart_;

@@ -74,4 +74,34 @@ void AabbTree::refit(const std::vector<Box>& boxes) {
   gatherLeafBoxes(boxes);
 }
 
+std::vector<AabbTree::PairJob> AabbTree::pairJobs(size_t minJobs) const {
+  std::vector<PairJob> jobs;
+  if (nodes_.empty()) return jobs;
+  jobs.push_back({0, 0});
+  // Breadth-first: split every job whose nodes are inner, as pairsWithin()
+  // and pairsBetween() would, until there are enough.
+  for (bool split = true; split && jobs.size() < minJobs;) {
+    split = false;
+    std::vector<PairJob> next;
+    for (const PairJob& j : jobs) {
+      const Node &na = nodes_[j.a], &nb = nodes_[j.b];
+      if (j.a == j.b && na.left >= 0) {
+        next.push_back({na.left, na.left});
+        next.push_back({na.right, na.right});
+        next.push_back({na.left, na.right});
+        split = true;
+      } else if (j.a != j.b && na.left >= 0 && nb.left >= 0) {
+        if (!na.box.overlaps(nb.box)) continue;
+        for (int32_t x : {na.left, na.right})
+          for (int32_t y : {nb.left, nb.right}) next.push_back({x, y});
+        split = true;
+      } else {
+        next.push_back(j);
+      }
+    }
+    jobs = std::move(next);
+  }
+  return jobs;
+}
+
 }  // namespace mq::cloth

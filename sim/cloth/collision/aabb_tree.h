@@ -30,6 +30,22 @@ class AabbTree {
   // Calls visit(primitive) for every primitive whose box overlaps `box`.
   template <class Visit>
   void query(const Box& box, Visit&& visit) const;
+  // Calls visit(primitive) for the primitives whose box is closer to p than
+  // `best`, nearer subtrees first; visit may lower `best` (a nearest-point
+  // search: far subtrees are then skipped).
+  template <class Visit>
+  void nearest(const glm::vec3& p, float& best, Visit&& visit) const;
+
+  // Every unordered pair of distinct primitives whose boxes overlap, once:
+  // visit(i, j) from a traversal of the tree against itself, split into
+  // independent jobs (at least `minJobs` when the tree is large enough) that
+  // may run in parallel; runJob(job, visit) runs one.
+  struct PairJob {
+    int32_t a, b;  // a == b: the pairs within node a; otherwise between a and b
+  };
+  std::vector<PairJob> pairJobs(size_t minJobs) const;
+  template <class Visit>
+  void runJob(const PairJob& job, Visit&& visit) const;
 
   bool empty() const { return nodes_.empty(); }
 
@@ -40,12 +56,21 @@ class AabbTree {
     uint32_t first = 0, count = 0;  // leaf: range in order_
   };
   int32_t buildNode(uint32_t first, uint32_t count, const std::vector<Box>& boxes);
+  template <class Visit>
+  void pairsWithin(int32_t node, Visit& visit) const;
+  template <class Visit>
+  void pairsBetween(int32_t a, int32_t b, Visit& visit) const;
   void gatherLeafBoxes(const std::vector<Box>& boxes);
 
   std::vector<Node> nodes_;
   std::vector<uint32_t> order_;  // primitive indices, leaf ranges
   std::vector<Box> leafBoxes_;   // the primitives' boxes in order_'s order
 };
+
+inline float squaredDistance(const Box& b, const glm::vec3& p) {
+  const glm::vec3 d = glm::max(glm::max(b.min - p, p - b.max), glm::vec3(0.0f));
+  return glm::dot(d, d);
+}
 
 // Boxes of the triangles of `positions`, grown by `margin`.
 std::vector<Box> triangleBoxes(const std::vector<glm::vec3>& positions, const std::vector<uint32_t>& triangles,
@@ -67,6 +92,82 @@ void AabbTree::query(const Box& box, Visit&& visit) const {
       stack[top++] = n.left;
       stack[top++] = n.right;
     }
+  }
+}
+
+template <class Visit>
+void AabbTree::nearest(const glm::vec3& p, float& best, Visit&& visit) const {
+  if (nodes_.empty()) return;
+  struct Entry {
+    int32_t node;
+    float distance2;
+  };
+  Entry stack[64];
+  int top = 0;
+  stack[top++] = {0, squaredDistance(nodes_[0].box, p)};
+  while (top > 0) {
+    const Entry e = stack[--top];
+    if (e.distance2 >= best * best) continue;
+    const Node& n = nodes_[e.node];
+    if (n.left < 0) {
+      for (uint32_t k = n.first; k < n.first + n.count; ++k)
+        if (squaredDistance(leafBoxes_[k], p) < best * best) visit(order_[k]);
+      continue;
+    }
+    const float l = squaredDistance(nodes_[n.left].box, p), r = squaredDistance(nodes_[n.right].box, p);
+    // The nearer child on top of the stack: visited first.
+    if (l <= r) {
+      stack[top++] = {n.right, r};
+      stack[top++] = {n.left, l};
+    } else {
+      stack[top++] = {n.left, l};
+      stack[top++] = {n.right, r};
+    }
+  }
+}
+
+template <class Visit>
+void AabbTree::runJob(const PairJob& job, Visit&& visit) const {
+  if (job.a == job.b)
+    pairsWithin(job.a, visit);
+  else
+    pairsBetween(job.a, job.b, visit);
+}
+
+template <class Visit>
+void AabbTree::pairsWithin(int32_t node, Visit& visit) const {
+  const Node& n = nodes_[node];
+  if (n.left >= 0) {
+    pairsWithin(n.left, visit);
+    pairsWithin(n.right, visit);
+    pairsBetween(n.left, n.right, visit);
+    return;
+  }
+  for (uint32_t i = n.first; i < n.first + n.count; ++i)
+    for (uint32_t j = i + 1; j < n.first + n.count; ++j)
+      if (leafBoxes_[i].overlaps(leafBoxes_[j])) visit(order_[i], order_[j]);
+}
+
+template <class Visit>
+void AabbTree::pairsBetween(int32_t a, int32_t b, Visit& visit) const {
+  const Node &na = nodes_[a], &nb = nodes_[b];
+  if (!na.box.overlaps(nb.box)) return;
+  if (na.left < 0 && nb.left < 0) {
+    for (uint32_t i = na.first; i < na.first + na.count; ++i) {
+      if (!leafBoxes_[i].overlaps(nb.box)) continue;
+      for (uint32_t j = nb.first; j < nb.first + nb.count; ++j)
+        if (leafBoxes_[i].overlaps(leafBoxes_[j])) visit(order_[i], order_[j]);
+    }
+    return;
+  }
+  // Split the node that is not a leaf (the larger when neither is).
+  const glm::vec3 ea = na.box.max - na.box.min, eb = nb.box.max - nb.box.min;
+  if (nb.left < 0 || (na.left >= 0 && ea.x + ea.y + ea.z >= eb.x + eb.y + eb.z)) {
+    pairsBetween(na.left, b, visit);
+    pairsBetween(na.right, b, visit);
+  } else {
+    pairsBetween(a, nb.left, visit);
+    pairsBetween(a, nb.right, visit);
   }
 }
 

@@ -11,6 +11,8 @@ namespace mq::cloth {
 
 namespace {
 
+constexpr float kBoxSlack = 1e-5f;  // m: triangle boxes grown by this, against rounding
+
 std::vector<glm::vec3> toVec3(const std::vector<float>& flat) {
   std::vector<glm::vec3> out(flat.size() / 3);
   for (size_t i = 0; i < out.size(); ++i) out[i] = {flat[3 * i], flat[3 * i + 1], flat[3 * i + 2]};
@@ -53,7 +55,7 @@ void BodyCollider::setMesh(const std::vector<float>& positions, const std::vecto
   maxDisplacement_ = 0.0f;
   velocity_.assign(n, glm::vec3(0.0f));
   searchRadius_ = searchRadius;
-  tree_.build(triangleBoxes(current_, triangles_, searchRadius_));
+  tree_.build(triangleBoxes(current_, triangles_, kBoxSlack));
 }
 
 void BodyCollider::setTarget(const std::vector<float>& positions, float frameTime) {
@@ -72,13 +74,17 @@ void BodyCollider::moveTo(float fraction) {
     moved2 = std::max(moved2, glm::dot(d, d));
   }
   maxDisplacement_ = std::sqrt(moved2);
-  // Boxes over the triangles' sweep from the previous position: a vertex's
-  // path crosses a moving triangle only inside that triangle's sweep.
-  std::vector<Box> boxes = triangleBoxes(current_, triangles_, searchRadius_);
-  if (maxDisplacement_ > 0.0f) {
-    const std::vector<Box> before = triangleBoxes(previous_, triangles_, searchRadius_);
-    for (size_t t = 0; t < boxes.size(); ++t) boxes[t].extend(before[t]);
-  }
+  // Each triangle's box, extended by that box moved back by the triangle's
+  // mean displacement in this move: firstHitAlong() meets a triangle at a
+  // point p of it now with p - (1 - s) d on the vertex's segment, so such a
+  // box holds every hit; it also bounds the triangle now for nearestContact().
+  std::vector<Box> boxes = triangleBoxes(current_, triangles_, kBoxSlack);
+  if (maxDisplacement_ > 0.0f)
+    for (size_t t = 0; t < boxes.size(); ++t) {
+      const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
+      const glm::vec3 back = (previous_[a] + previous_[b] + previous_[c] - current_[a] - current_[b] - current_[c]) / 3.0f;
+      boxes[t].extend(Box{boxes[t].min + back, boxes[t].max + back});
+    }
   tree_.refit(boxes);
 }
 
@@ -155,30 +161,34 @@ glm::vec3 BodyCollider::pseudoNormal(uint32_t t, const glm::vec3& w) const {
 }
 
 bool BodyCollider::nearestContact(const glm::vec3& p, BodyContact& contact) const {
-  Box box;
-  box.min = box.max = p;  // triangle boxes are grown by the search radius
   float best = searchRadius_;
-  bool found = false;
-  tree_.query(box, [&](uint32_t t) {
+  int64_t nearest = -1;
+  glm::vec3 weights(0.0f);
+  // Distances only during the search; the contact of the nearest triangle after.
+  tree_.nearest(p, best, [&](uint32_t t) {
     const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
     const glm::vec3 w = closestTriangleWeights(p, current_[a], current_[b], current_[c]);
-    const glm::vec3 q = w.x * current_[a] + w.y * current_[b] + w.z * current_[c];
-    const float d = glm::length(p - q);
+    const float d = glm::length(p - (w.x * current_[a] + w.y * current_[b] + w.z * current_[c]));
     if (d >= best) return;
     const glm::vec3 faceNormal = glm::cross(current_[b] - current_[a], current_[c] - current_[a]);
-    if (glm::dot(faceNormal, faceNormal) <= 0.0f) return;
+    if (!(glm::dot(faceNormal, faceNormal) > 0.0f)) return;
     best = d;
-    found = true;
-    const glm::vec3 side = pseudoNormal(t, w);
-    const bool inside = glm::dot(p - q, side) < 0.0f;
-    contact.point = q;
-    contact.signedDistance = inside ? -d : d;
-    // Out of the body is along the shortest way to the surface.
-    if (d > 1e-6f) contact.normal = inside ? (q - p) / d : (p - q) / d;
-    else contact.normal = glm::length(side) > 0.0f ? glm::normalize(side) : faceNormal / glm::length(faceNormal);
-    contact.velocity = w.x * velocity_[a] + w.y * velocity_[b] + w.z * velocity_[c];
+    nearest = t;
+    weights = w;
   });
-  return found;
+  if (nearest < 0) return false;
+  const uint32_t a = triangles_[3 * nearest], b = triangles_[3 * nearest + 1], c = triangles_[3 * nearest + 2];
+  const glm::vec3 q = weights.x * current_[a] + weights.y * current_[b] + weights.z * current_[c];
+  const glm::vec3 side = pseudoNormal(uint32_t(nearest), weights);
+  const float d = glm::length(p - q);
+  const bool inside = glm::dot(p - q, side) < 0.0f;
+  contact.point = q;
+  contact.signedDistance = inside ? -d : d;
+  // Out of the body is along the shortest way to the surface.
+  if (d > 1e-6f) contact.normal = inside ? (q - p) / d : (p - q) / d;
+  else contact.normal = glm::length(side) > 0.0f ? glm::normalize(side) : unitFaceNormal(uint32_t(nearest));
+  contact.velocity = weights.x * velocity_[a] + weights.y * velocity_[b] + weights.z * velocity_[c];
+  return true;
 }
 
 }  // namespace mq::cloth

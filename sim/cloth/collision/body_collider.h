@@ -1,6 +1,7 @@
 #pragma once
 // The animated skinned body as a collider: its triangles in a BVH refitted
-// every frame. Between two frames the body moves linearly; a cloth vertex
+// every frame (boxes that hold each triangle now and its motion in the last
+// move, so both queries visit only the triangles they could meet). Between two frames the body moves linearly; a cloth vertex
 // closer than `thickness` to the surface (or behind it) is pushed out with the
 // contact response, relative to the body's velocity at the contact point.
 // Inside/outside comes from the angle-weighted pseudo-normal of the nearest

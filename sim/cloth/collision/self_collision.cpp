@@ -76,34 +76,74 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
       }
     return std::sqrt(worst);
   };
-  // Element boxes for the broad phase, whichever is smaller: swept over the
-  // step (start and end, grown by the thickness), or at the start grown by
-  // half the thickness plus the deviation (any two elements closing by up to
-  // twice the deviation then still overlap). The second wins when the cloth
-  // moves mostly as a whole.
-  const bool relative = 2.0f * deviation < meanMotion + thickness;
-  const float grow = relative ? 0.5f * thickness + deviation : thickness;
+  // Element boxes for the broad phase. Swept over the step (start and end,
+  // grown by the thickness) when the cloth's moves differ much (a pair is a
+  // candidate only when those overlap); otherwise no such condition: any two
+  // elements closing by up to twice the deviation qualify. Either way a
+  // candidate passes the exact test below, dist(x0) <= thickness + closing,
+  // so its boxes at the start grown by half the thickness plus their own
+  // vertices' largest distance from the mean move overlap ("relative"
+  // boxes: tight where the cloth moves with the mean). The trees hold
+  // whichever kind is smaller in all; when they hold relative boxes in swept
+  // mode, the swept boxes are checked on each pair: the candidates do not
+  // depend on the choice.
+  const bool swept = !(2.0f * deviation < meanMotion + thickness);
+  std::vector<float> offMean(n);
+  for (size_t v = 0; v < n; ++v) offMean[v] = glm::length(move[v] - meanMove);
   auto sweptBox = [&](std::initializer_list<uint32_t> vertices) {
     Box b;
-    for (uint32_t v : vertices) {
-      b.extend(x0[v]);
-      if (!relative) b.extend(s.x[v]);
-    }
+    for (uint32_t v : vertices) b.extend(x0[v]), b.extend(s.x[v]);
+    b.min -= glm::vec3(thickness);
+    b.max += glm::vec3(thickness);
+    return b;
+  };
+  auto relativeBox = [&](std::initializer_list<uint32_t> vertices) {
+    Box b;
+    float grow = 0.0f;
+    for (uint32_t v : vertices) b.extend(x0[v]), grow = std::max(grow, offMean[v]);
+    grow += 0.5f * thickness;
     b.min -= glm::vec3(grow);
     b.max += glm::vec3(grow);
     return b;
   };
-  std::vector<Box> boxes(triangleCount);
-  for (size_t t = 0; t < triangleCount; ++t)
-    boxes[t] = sweptBox({triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]});
-  tree_.build(boxes);
-  std::vector<Box> edgeBoxes(edges_.size());
-  for (size_t e = 0; e < edges_.size(); ++e) edgeBoxes[e] = sweptBox({edges_[e].first, edges_[e].second});
-  edgeTree_.build(edgeBoxes);
+  auto triangleBox = [&](auto&& box, size_t t) { return box({triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]}); };
+  auto edgeBox = [&](auto&& box, size_t e) { return box({edges_[e].first, edges_[e].second}); };
+  auto extentSum = [](const std::vector<Box>& boxes) {
+    double sum = 0.0;
+    for (const Box& b : boxes) sum += double(b.max.x - b.min.x) + double(b.max.y - b.min.y) + double(b.max.z - b.min.z);
+    return sum;
+  };
+  std::vector<Box> boxes(triangleCount), edgeBoxes(edges_.size()), sweptBoxes, sweptEdgeBoxes;
+  for (size_t t = 0; t < triangleCount; ++t) boxes[t] = triangleBox(relativeBox, t);
+  for (size_t e = 0; e < edges_.size(); ++e) edgeBoxes[e] = edgeBox(relativeBox, e);
+  bool checkSwept = false;  // the trees hold relative boxes, candidates need swept ones to overlap
+  if (swept) {
+    sweptBoxes.resize(triangleCount);
+    sweptEdgeBoxes.resize(edges_.size());
+    for (size_t t = 0; t < triangleCount; ++t) sweptBoxes[t] = triangleBox(sweptBox, t);
+    for (size_t e = 0; e < edges_.size(); ++e) sweptEdgeBoxes[e] = edgeBox(sweptBox, e);
+    checkSwept = extentSum(boxes) + extentSum(edgeBoxes) < extentSum(sweptBoxes) + extentSum(sweptEdgeBoxes);
+    if (!checkSwept) boxes.swap(sweptBoxes), edgeBoxes.swap(sweptEdgeBoxes);
+  }
+  // The mesh keeps its topology: the trees are refitted to the new boxes and
+  // rebuilt now and then, as the cloth's shape drifts from the one they were
+  // built for (the candidates do not depend on the tree, only the speed).
+  if (stepsSinceBuild_ >= kRebuildEvery || tree_.empty()) {
+    tree_.build(boxes);
+    edgeTree_.build(edgeBoxes);
+    stepsSinceBuild_ = 0;
+  } else {
+    tree_.refit(boxes);
+    edgeTree_.refit(edgeBoxes);
+  }
+  ++stepsSinceBuild_;
   vertexTriangle_ = collectInBlocks<VertexTriangle>(n, [&](size_t v, std::vector<VertexTriangle>& out) {
-    tree_.query(sweptBox({uint32_t(v)}), [&](uint32_t t) {
+    const size_t first = out.size();
+    const Box vertexSwept = sweptBox({uint32_t(v)});
+    tree_.query(swept && !checkSwept ? vertexSwept : relativeBox({uint32_t(v)}), [&](uint32_t t) {
       const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
       if (v == a || v == b || v == c) return;
+      if (checkSwept && !vertexSwept.overlaps(sweptBoxes[t])) return;
       const glm::vec3 w = closestTriangleWeights(x0[v], x0[a], x0[b], x0[c]);
       const glm::vec3 normal = glm::cross(x0[b] - x0[a], x0[c] - x0[a]);
       const glm::vec3 offset = x0[v] - (w.x * x0[a] + w.y * x0[b] + w.z * x0[c]);
@@ -112,32 +152,59 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
       const float side = glm::dot(offset, normal) >= 0.0f ? 1.0f : -1.0f;
       out.push_back({uint32_t(v), t, w, side});
     });
+    // In order of the triangle (the tree's order depends on the boxes).
+    std::sort(out.begin() + first, out.end(),
+              [](const VertexTriangle& a, const VertexTriangle& b) { return a.triangle < b.triangle; });
   });
-  edgeEdge_ = collectInBlocks<EdgeEdge>(edges_.size(), [&](size_t e, std::vector<EdgeEdge>& out) {
+  // Edge pairs from the edge tree against itself. A cheap bound first, from
+  // each edge's midpoint, half length, mean move and move spread: any two of
+  // their vertices' moves differ by at most |mean_e - mean_f| + spread_e +
+  // spread_f, so a pair it rejects fails the exact test below too.
+  struct EdgeBound {
+    glm::vec3 mid;
+    float halfLength;
+    glm::vec3 meanMove;
+    float spread;
+  };
+  std::vector<EdgeBound> bounds(edges_.size());
+  for (size_t e = 0; e < edges_.size(); ++e) {
     const auto [p0, p1] = edges_[e];
-    const Box& box = edgeBoxes[e];
-    const size_t first = out.size();
-    edgeTree_.query(box, [&](uint32_t f) {
-      // (The tree only visits edges whose swept boxes meet this one's: the
-      // others never come within the thickness during the step.)
-      if (f <= e) return;
-      const auto [q0, q1] = edges_[f];
-      if (sharesVertex(p0, p1, q0, q1)) return;
-      const float reach = thickness + closing({p0, p1}, {q0, q1});
-      // Bounding balls first: the segments' points lie within half their
-      // lengths of their midpoints.
-      const float apart = glm::length(0.5f * (x0[p0] + x0[p1] - x0[q0] - x0[q1])) -
-                          0.5f * (glm::length(x0[p0] - x0[p1]) + glm::length(x0[q0] - x0[q1]));
-      if (apart > reach) return;
-      const glm::vec2 st = closestSegmentParameters(x0[p0], x0[p1], x0[q0], x0[q1]);
-      const glm::vec3 d = glm::mix(x0[p0], x0[p1], st.x) - glm::mix(x0[q0], x0[q1], st.y);
-      const float l = glm::length(d);
-      if (l < 1e-9f || l > reach) return;
-      out.push_back({uint32_t(e), f, st, d / l});
-    });
-    // In order of the other edge (the tree's order depends on the boxes).
-    std::sort(out.begin() + first, out.end(), [](const EdgeEdge& a, const EdgeEdge& b) { return a.e1 < b.e1; });
+    bounds[e] = {0.5f * (x0[p0] + x0[p1]), 0.5f * glm::length(x0[p0] - x0[p1]), 0.5f * (move[p0] + move[p1]),
+                 0.5f * glm::length(move[p0] - move[p1])};
+  }
+  const std::vector<AabbTree::PairJob> jobs = edgeTree_.pairJobs(4 * kBlocks);
+  std::vector<std::vector<EdgeEdge>> found(jobs.size());
+  ThreadPool::shared().parallelFor(0, jobs.size(), 1, [&](size_t j0, size_t j1) {
+    for (size_t j = j0; j < j1; ++j) {
+      std::vector<EdgeEdge>& out = found[j];
+      edgeTree_.runJob(jobs[j], [&](uint32_t i, uint32_t k) {
+        const uint32_t e = std::min(i, k), f = std::max(i, k);
+        const auto [p0, p1] = edges_[e];
+        const auto [q0, q1] = edges_[f];
+        if (sharesVertex(p0, p1, q0, q1)) return;
+        if (checkSwept && !sweptEdgeBoxes[e].overlaps(sweptEdgeBoxes[f])) return;
+        const EdgeBound &be = bounds[e], &bf = bounds[f];
+        const float bound = thickness + glm::length(be.meanMove - bf.meanMove) + be.spread + bf.spread;
+        if (glm::length(be.mid - bf.mid) - (be.halfLength + bf.halfLength) > 1.0001f * bound + 1e-6f) return;
+        const float reach = thickness + closing({p0, p1}, {q0, q1});
+        // Bounding balls first: the segments' points lie within half their
+        // lengths of their midpoints.
+        const float apart = glm::length(0.5f * (x0[p0] + x0[p1] - x0[q0] - x0[q1])) -
+                            0.5f * (glm::length(x0[p0] - x0[p1]) + glm::length(x0[q0] - x0[q1]));
+        if (apart > reach) return;
+        const glm::vec2 st = closestSegmentParameters(x0[p0], x0[p1], x0[q0], x0[q1]);
+        const glm::vec3 d = glm::mix(x0[p0], x0[p1], st.x) - glm::mix(x0[q0], x0[q1], st.y);
+        const float l = glm::length(d);
+        if (l < 1e-9f || l > reach) return;
+        out.push_back({e, f, st, d / l});
+      });
+    }
   });
+  // In order of the first edge, then the other (the jobs' order depends on the tree).
+  edgeEdge_.clear();
+  for (const auto& f : found) edgeEdge_.insert(edgeEdge_.end(), f.begin(), f.end());
+  std::sort(edgeEdge_.begin(), edgeEdge_.end(),
+            [](const EdgeEdge& a, const EdgeEdge& b) { return a.e0 != b.e0 ? a.e0 < b.e0 : a.e1 < b.e1; });
 }
 
 // Pushes the weighted point sum_k w_k x_k of a pair apart along n until its
@@ -191,10 +258,36 @@ int SelfCollision::applyEdgeEdge(ClothState& s, const EdgeEdge& c, float thickne
 int SelfCollision::resolve(ClothState& s, const std::vector<glm::vec3>& x0, float thickness, int passes) {
   findCandidates(s, x0, thickness);
   int contacts = 0;
+  // A pair whose four vertices have not moved since it was last found apart
+  // is apart still: later passes skip it (moved_: the clock of each vertex's
+  // last push, checked_: of each pair's last test).
+  moved_.assign(s.size(), 0);
+  checkedVT_.assign(vertexTriangle_.size(), 0);
+  checkedEE_.assign(edgeEdge_.size(), 0);
+  uint32_t clock = 1;
+  auto stale = [&](uint32_t checked, const uint32_t (&v)[4]) {
+    return moved_[v[0]] >= checked || moved_[v[1]] >= checked || moved_[v[2]] >= checked || moved_[v[3]] >= checked;
+  };
+  auto touch = [&](const uint32_t (&v)[4]) {
+    for (uint32_t k : v) moved_[k] = clock;
+  };
   for (int pass = 0; pass < passes; ++pass) {
     int active = 0;
-    for (const auto& c : vertexTriangle_) active += applyVertexTriangle(s, c, thickness);
-    for (const auto& c : edgeEdge_) active += applyEdgeEdge(s, c, thickness);
+    for (size_t k = 0; k < vertexTriangle_.size(); ++k) {
+      const VertexTriangle& c = vertexTriangle_[k];
+      const uint32_t* t = &triangles_[3 * c.triangle];
+      const uint32_t v[4] = {c.vertex, t[0], t[1], t[2]};
+      if (pass > 0 && !stale(checkedVT_[k], v)) continue;
+      checkedVT_[k] = ++clock;
+      if (applyVertexTriangle(s, c, thickness)) ++active, touch(v);
+    }
+    for (size_t k = 0; k < edgeEdge_.size(); ++k) {
+      const EdgeEdge& c = edgeEdge_[k];
+      const uint32_t v[4] = {edges_[c.e0].first, edges_[c.e0].second, edges_[c.e1].first, edges_[c.e1].second};
+      if (pass > 0 && !stale(checkedEE_[k], v)) continue;
+      checkedEE_[k] = ++clock;
+      if (applyEdgeEdge(s, c, thickness)) ++active, touch(v);
+    }
     if (pass == 0) contacts = active;
     if (active == 0) break;
   }

@@ -45,6 +45,9 @@ class SelfCollision {
   AabbTree edgeTree_;  // over the edges' boxes
   std::vector<VertexTriangle> vertexTriangle_;
   std::vector<EdgeEdge> edgeEdge_;
+  static constexpr int kRebuildEvery = 16;  // steps between tree rebuilds (refitted in between)
+  int stepsSinceBuild_ = 0;
+  std::vector<uint32_t> moved_, checkedVT_, checkedEE_;  // resolve()'s pass clocks
 };
 
 }  // namespace mq::cloth

@@ -32,6 +32,31 @@ struct StretchLimitResult {
 StretchLimitResult limitStretchByPositions(ClothState& s, const std::vector<Spring>& springs, size_t count,
                                            float maxStretch, int maxPasses, float h);
 
+// The position correction for one cloth, with the springs around each vertex
+// kept between calls. A pass visits only the springs whose ends moved since
+// they were last checked (a bit set per spring, scanned in the pass's order):
+// the others are known to be within the limit, so the result is that of the
+// full Gauss-Seidel sweep, and where the limit cannot hold (cloth pinched
+// between two body parts) the passes cost the pinched region, not the cloth.
+class StretchLimiter {
+ public:
+  StretchLimiter() = default;
+  // The first `count` springs; `springs` must outlive the limiter.
+  StretchLimiter(const std::vector<Spring>& springs, size_t count, size_t vertexCount);
+  StretchLimitResult limitByPositions(ClothState& s, float maxStretch, int maxPasses, float h);
+
+ private:
+  // Shortens spring k to `limit` when longer; returns its (length / rest)^2
+  // before, 0 when it was within the limit or cannot move.
+  float correct(ClothState& s, size_t k, float target);
+  void markAround(uint32_t vertex, size_t except);
+
+  const std::vector<Spring>* springs_ = nullptr;
+  size_t count_ = 0;
+  std::vector<uint32_t> incidenceStart_, incidence_;  // CSR: the springs at each vertex
+  std::vector<uint64_t> dirty_;                       // one bit per spring: check in a pass
+};
+
 StretchLimitResult limitStretchByVelocities(ClothState& s, const std::vector<glm::vec3>& x0,
                                             const std::vector<Spring>& springs, size_t count, float maxStretch,
                                             int maxPasses, float h);

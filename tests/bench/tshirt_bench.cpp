@@ -1,0 +1,118 @@
+// The pieces of the 10k-vertex T-shirt step (tests/bench/scenes/tshirt_walk_10k.json)
+// that dominate its cost, on a real state: the shirt's panels placed around
+// the default mannequin (rest pose) and sewn for 12 frames (set up once, a
+// few seconds, not timed).
+//
+//  - BM_TShirtSelfCollision: one SelfCollision::resolve (broad phase over the
+//    step's motion, then up to 20 passes) from the state before the last
+//    frame to the state after it.
+//  - BM_TShirtStretchPinch: the elongation limit where a patch of the shirt
+//    is pulled 3 cm off the rest and its centre held heavy, as a body part
+//    pinching the cloth does (the armpit of the walk): passes and the max
+//    stretch after them are counters.
+//
+//   mannequin-bench --benchmark_filter=TShirt
+#include <benchmark/benchmark.h>
+
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "core/character/default_mannequin.h"
+#include "core/character/posed_character.h"
+#include "core/garment/garment_json.h"
+#include "sim/cloth/collision/self_collision.h"
+#include "sim/cloth/constraints/stretch_limit.h"
+#include "sim/garment/garment_scene.h"
+
+namespace {
+
+using namespace mq::cloth;
+
+struct ShirtStates {
+  ClothState before, after;      // the sewing solver's state before and after the last frame
+  std::vector<uint32_t> triangles;
+  ClothSettings settings;
+  std::unique_ptr<mq::cloth::GarmentSimulation> sim;  // keeps the springs the limiter points at
+};
+
+const ShirtStates& shirtStates() {
+  static const ShirtStates states = [] {
+    ShirtStates out;
+    const std::string path = std::string(MANNEQUIN_SOURCE_DIR) + "/tests/bench/scenes/tshirt_walk_10k.json";
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    const nlohmann::json doc = nlohmann::json::parse(text.str());
+    const std::vector<mq::Garment> garments = mq::garmentsFromJson(doc["garments"]);
+    const ClothSceneSpec spec = parseClothScene(doc["cloth"], nlohmann::json(), path, true);
+    const mq::Character mannequin = mq::makeDefaultMannequin();
+    mq::PosedCharacter posed;
+    posed.evaluate(mannequin, -1, 0.0f, nullptr, nullptr);  // rest pose
+    std::vector<float> body;
+    std::vector<uint32_t> bodyTriangles;
+    for (size_t m = 0; m < posed.meshes().size(); ++m) {
+      const uint32_t offset = uint32_t(body.size() / 3);
+      body.insert(body.end(), posed.meshes()[m].positions.begin(), posed.meshes()[m].positions.end());
+      for (uint32_t t : mannequin.meshes[m].triangles) bodyTriangles.push_back(t + offset);
+    }
+    out.sim = makeGarmentSimulation(garments.at(0), spec, body, bodyTriangles, "garments[0]");
+    const float dt = 1.0f / spec.fps;
+    for (int f = 0; f < 11; ++f) out.sim->step(dt);
+    out.before = out.sim->simulator().state();
+    out.sim->step(dt);
+    out.after = out.sim->simulator().state();
+    out.triangles = out.sim->simulator().triangles();
+    out.settings = out.sim->simulator().settings();
+    return out;
+  }();
+  return states;
+}
+
+void BM_TShirtSelfCollision(benchmark::State& state) {
+  const ShirtStates& shirt = shirtStates();
+  if (shirt.before.size() != shirt.after.size()) return state.SkipWithError("the shirt welded during the setup");
+  SelfCollision selfCollision(shirt.triangles, shirt.after.size());
+  int contacts = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    ClothState s = shirt.after;
+    state.ResumeTiming();
+    contacts = selfCollision.resolve(s, shirt.before.x, shirt.settings.selfThickness, 20);
+  }
+  state.counters["vertices"] = double(shirt.after.size());
+  state.counters["contacts"] = contacts;
+}
+BENCHMARK(BM_TShirtSelfCollision)->Unit(benchmark::kMillisecond);
+
+void BM_TShirtStretchPinch(benchmark::State& state) {
+  const ShirtStates& shirt = shirtStates();
+  const ClothSimulator& sim = shirt.sim->simulator();
+  const auto& springs = sim.forces().springs().springs();
+  StretchLimiter limiter(springs, sim.forces().structuralCount(), shirt.after.size());
+  // The patch: the vertices within 3 cm of the middle vertex, pulled 3 cm
+  // along x; those within 1 cm are 20 times heavier (in contact).
+  ClothState pinched = shirt.after;
+  const glm::vec3 centre = pinched.x[pinched.size() / 2];
+  for (size_t i = 0; i < pinched.size(); ++i) {
+    const float d = glm::length(pinched.x[i] - centre);
+    if (d < 0.03f) pinched.x[i] += glm::vec3(0.03f * (1.0f - d / 0.03f), 0.0f, 0.0f);
+    if (d < 0.01f) pinched.invMass[i] *= 0.05f;
+  }
+  const int budget = 20 * shirt.settings.stretchIterations;
+  StretchLimitResult result;
+  for (auto _ : state) {
+    state.PauseTiming();
+    ClothState s = pinched;
+    state.ResumeTiming();
+    result = limiter.limitByPositions(s, shirt.settings.maxStretch, budget, 1.0f / 30.0f);
+  }
+  state.counters["passes"] = result.passes;
+  state.counters["stretch_before"] = result.maxStretchBefore;
+  state.counters["stretch_after"] = result.maxStretchAfter;
+}
+BENCHMARK(BM_TShirtStretchPinch)->Unit(benchmark::kMillisecond);
+
+}  // namespace
