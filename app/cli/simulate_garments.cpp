@@ -1,6 +1,5 @@
 #include "app/cli/simulate_garments.h"
 
-#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -17,13 +16,6 @@ namespace mq::cli {
 namespace {
 
 constexpr float kDressingMoveSeconds = 1.5f;
-
-std::string fileStem(const Garment& garment, size_t index) {
-  std::string stem = "garment" + std::to_string(index);
-  if (!garment.name.empty()) stem += "_";
-  for (char c : garment.name) stem += std::isalnum(static_cast<unsigned char>(c)) || c == '-' ? c : '_';
-  return stem;
-}
 
 }  // namespace
 
@@ -100,7 +92,7 @@ void SimulatedGarments::step(float dt, const std::vector<float>* posedBody) {
 
 void SimulatedGarments::exportFrame(const std::string& dir, int frame) const {
   for (size_t i = 0; i < sims_.size(); ++i)
-    cloth::writeObj((std::filesystem::path(dir) / cloth::objFrameName(fileStem(garments_[i], i), size_t(frame))).string(),
+    cloth::writeObj((std::filesystem::path(dir) / cloth::objFrameName(cloth::garmentFileStem(garments_[i].name, i), size_t(frame))).string(),
                     sims_[i]->positions(), sims_[i]->triangles());
 }
 

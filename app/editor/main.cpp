@@ -5,7 +5,7 @@
 // saves it as a PNG and quits (exit code 1 if the file could not be opened).
 // --select BONE, --clip NAME and --time SECONDS set up the view first;
 // --map MAP names the bone-name map of a BVH FILE. --add-garment TYPE,
-// --bake-garments (twice: bake twice), --simulate-garments N, --garment-stretch
+// --bake-garments (twice: bake twice), --export-bake DIR, --simulate-garments N, --garment-stretch
 // and --save-as script the garment tool
 // (documentation pictures, test scenes).
 #include <cstdio>
@@ -66,6 +66,9 @@ int main(int argc, char** argv) {
   const QCommandLineOption simulateGarments("simulate-garments",
                                             "Simulate the garments (and the sheet) live for N steps before the screenshot.", "N");
   parser.addOption(simulateGarments);
+  const QCommandLineOption exportBake("export-bake", "After --bake-garments, write the bake as OBJ sequences into DIR.",
+                                      "DIR");
+  parser.addOption(exportBake);
   parser.addOption(garmentStretch);
   parser.addOption(saveAs);
   parser.addOption(map);
@@ -104,11 +107,12 @@ int main(int argc, char** argv) {
   const bool stretch = parser.isSet(garmentStretch);
   const int simulateSteps = parser.value(simulateGarments).toInt();
   const QString savePath = parser.value(saveAs);
+  const QString exportDir = parser.value(exportBake);
   auto afterLoad = [&window, takeScreenshot, screenshotPath, selectBone, clipName, time, setTime, garments, bake,
-                    stretch, simulateSteps, savePath] {
+                    stretch, simulateSteps, savePath, exportDir] {
     QObject::connect(&window, &mq::ui::MainWindow::loadFinished, &window,
         [&window, takeScreenshot, screenshotPath, selectBone, clipName, time, setTime, garments, bake, stretch,
-         simulateSteps, savePath](bool ok) {
+         simulateSteps, savePath, exportDir](bool ok) {
           mq::ui::EditorDocument* doc = window.document();
           if (clipName == "rest") doc->setClip(-1);
           else if (!clipName.isEmpty()) doc->setClip(doc->character().findClip(clipName.toStdString()));
@@ -127,6 +131,13 @@ int main(int argc, char** argv) {
                          b + 1, garmentTool->bakedFrameCount(), garmentTool->lastBakeSeconds(),
                          garmentTool->lastBakePhaseSeconds(0), garmentTool->lastBakePhaseSeconds(1),
                          garmentTool->lastBakePhaseSeconds(2), garmentTool->sewingRuns(), garmentTool->reusedSewings());
+          }
+          if (!exportDir.isEmpty()) {
+            if (garmentTool->exportBake(exportDir))
+              std::fprintf(stderr, "mannequin: exported %d baked frames to %s\n", garmentTool->bakedFrameCount(),
+                           qPrintable(exportDir));
+            else
+              std::fprintf(stderr, "mannequin: export bake: %s\n", qPrintable(garmentTool->lastError()));
           }
           if (simulateSteps > 0) {
             garmentTool->setSimulating(true);

@@ -1,5 +1,6 @@
 #include "sim/cloth/baked_cloth.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -20,6 +21,13 @@ std::string objFrameName(const std::string& stem, size_t frameNumber) {
   char name[32];
   std::snprintf(name, sizeof name, "_%04zu.obj", frameNumber);
   return stem + name;
+}
+
+std::string garmentFileStem(const std::string& name, size_t index) {
+  std::string stem = "garment" + std::to_string(index);
+  if (!name.empty()) stem += "_";
+  for (char c : name) stem += std::isalnum(static_cast<unsigned char>(c)) || c == '-' ? c : '_';
+  return stem;
 }
 
 void writeObj(const std::string& path, const std::vector<float>& positions, const std::vector<uint32_t>& triangles) {

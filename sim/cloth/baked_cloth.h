@@ -34,5 +34,8 @@ class BakedCloth {
 // One OBJ file of a triangle mesh (positions only). Throws FileError.
 void writeObj(const std::string& path, const std::vector<float>& positions, const std::vector<uint32_t>& triangles);
 std::string objFrameName(const std::string& stem, size_t frameNumber);  // "cloth_0001.obj"
+// The file stem of garment `index` named `name` in an exported sequence:
+// "garment0_T-shirt" (characters other than letters, digits and '-' become '_').
+std::string garmentFileStem(const std::string& name, size_t index);
 
 }  // namespace mq::cloth

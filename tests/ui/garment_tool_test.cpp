@@ -17,6 +17,7 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDir>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFile>
@@ -373,6 +374,33 @@ class GarmentToolTest : public QObject {
     // Pinned vertices stay with the body: they barely move between frames.
     for (uint32_t v : tool_->scene().garments[0].pins.vertices)
       QVERIFY(std::abs(first[3 * v + 1] - last[3 * v + 1]) < 0.05f);
+
+    // Export: one OBJ per baked frame, each with the garment's vertices.
+    QVERIFY(panel()->exportBakeButton()->isEnabled());
+    const QString exportDir = QDir(QDir::tempPath()).filePath("mannequin_bake_export");
+    QDir(exportDir).removeRecursively();
+    QVERIFY2(tool_->exportBake(exportDir), qPrintable(tool_->lastError()));
+    const QStringList objs = QDir(exportDir).entryList({"garment0_*.obj"}, QDir::Files, QDir::Name);
+    QCOMPARE(objs.size(), frames);
+    QFile lastObj(QDir(exportDir).filePath(objs.back()));
+    QVERIFY(lastObj.open(QIODevice::ReadOnly | QIODevice::Text));
+    size_t objVertices = 0;
+    float lastY = 0.0f;
+    while (!lastObj.atEnd()) {
+      const QByteArray line = lastObj.readLine();
+      if (!line.startsWith("v ")) continue;
+      ++objVertices;
+      if (objVertices == 1) lastY = line.split(' ').at(2).toFloat();
+    }
+    QCOMPARE(objVertices, tool_->garmentMesh(0)->vertexCount());
+    QVERIFY(std::abs(lastY - last[1]) < 1e-4f);  // the last frame as baked
+    // Into a path that cannot be a folder: refused, naming it.
+    QFile blocker(QDir(exportDir).filePath("not_a_folder"));
+    QVERIFY(blocker.open(QIODevice::WriteOnly));
+    blocker.close();
+    QVERIFY(!tool_->exportBake(blocker.fileName() + "/inside"));
+    QVERIFY2(tool_->lastError().contains("not_a_folder"), qPrintable(tool_->lastError()));
+    QDir(exportDir).removeRecursively();
 
     // The stretch overlay has a value per vertex.
     QTest::mouseClick(panel()->stretchCheck(), Qt::LeftButton);

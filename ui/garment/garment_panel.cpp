@@ -5,11 +5,13 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QFileDialog>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSignalBlocker>
@@ -193,13 +195,21 @@ GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent)
   bake_ = new QPushButton(tr("Bake clip"));
   bake_->setToolTip(tr("Simulate the whole clip; the timeline then scrubs the baked frames"));
   clearBake_ = new QPushButton(tr("Clear bake"));
+  exportBake_ = new QPushButton(tr("Export bake as OBJ..."));
+  exportBake_->setToolTip(tr("Write the baked frames as OBJ sequences (one file per frame per garment) into a folder"));
   for (QPushButton* b : {simulate_, bake_, clearBake_}) simButtons->addWidget(b);
   simLayout->addLayout(simButtons);
+  simLayout->addWidget(exportBake_);
   connect(simulate_, &QPushButton::toggled, this, [this](bool on) {
     if (!refreshing_) tool_->setSimulating(on);
   });
   connect(bake_, &QPushButton::clicked, this, [this] { tool_->bake(); });
   connect(clearBake_, &QPushButton::clicked, this, [this] { tool_->clearBake(); });
+  connect(exportBake_, &QPushButton::clicked, this, [this] {
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Export the bake as OBJ sequences into"));
+    if (!dir.isEmpty() && !tool_->exportBake(dir))
+      QMessageBox::warning(this, tr("Export bake"), tool_->lastError());
+  });
   layout->addWidget(simBox);
 
   // Pins
@@ -542,6 +552,7 @@ void GarmentPanel::refreshStatus() {
   simulate_->setEnabled(any);
   bake_->setEnabled(any);
   clearBake_->setEnabled(tool_->hasBake());
+  exportBake_->setEnabled(tool_->hasBake());
   const size_t selected = tool_->selectedVertices().size();
   const size_t pinned = current >= 0 ? tool_->scene().garments[current].pins.vertices.size() : 0;
   pin_->setEnabled(selected > 0);

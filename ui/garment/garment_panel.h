@@ -50,6 +50,7 @@ class GarmentPanel : public QWidget {
   QDoubleSpinBox* particleDistanceField() const { return particleDistance_; }
   QPushButton* simulateButton() const { return simulate_; }
   QPushButton* bakeButton() const { return bake_; }
+  QPushButton* exportBakeButton() const { return exportBake_; }
   QPushButton* selectButton() const { return select_; }
   QPushButton* pinButton() const { return pin_; }
   QPushButton* unpinButton() const { return unpin_; }
@@ -89,7 +90,7 @@ class GarmentPanel : public QWidget {
   QComboBox* integratorCombo_;
   QCheckBox* selfCollisions_;
   QSpinBox* clothFps_;
-  QPushButton *simulate_, *bake_, *clearBake_;
+  QPushButton *simulate_, *bake_, *clearBake_, *exportBake_;
   QPushButton *select_, *pin_, *unpin_, *clearPins_;
   QComboBox* attach_;
   QListWidget* colliderList_;

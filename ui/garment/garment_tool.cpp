@@ -706,6 +706,25 @@ void GarmentTool::clearBake() {
   emit simulationChanged();
 }
 
+bool GarmentTool::exportBake(const QString& dir) {
+  if (!bake_) {
+    lastError_ = tr("There is no bake to export: bake the clip first");
+    return false;
+  }
+  try {
+    for (size_t g = 0; g < bake_->garments.size(); ++g) {
+      const bool garment = g < scene_.garments.size();
+      const std::string stem = garment ? cloth::garmentFileStem(scene_.garments[g].name, g) : "sheet";
+      bake_->garments[g].exportObjSequence(dir.toStdString(), stem);
+    }
+  } catch (const std::exception& e) {
+    lastError_ = QString::fromStdString(e.what());
+    return false;
+  }
+  lastError_.clear();
+  return true;
+}
+
 int GarmentTool::bakedFrameCount() const {
   return bake_ && !bake_->garments.empty() ? int(bake_->garments[0].frameCount()) : 0;
 }

@@ -150,6 +150,11 @@ class GarmentTool : public QObject {
   bool hasBake() const { return bake_ != nullptr; }
   int bakedFrameCount() const;
   void clearBake();
+  // Writes the bake as OBJ sequences into `dir` (created if missing): one file
+  // per frame per garment, <garment stem>_0001.obj ..., and sheet_0001.obj ...
+  // for the sheet; false (lastError names the file and the problem) when it
+  // cannot, or when there is no bake.
+  bool exportBake(const QString& dir);
   // How often sewing ran from the placed panels (Simulate or Bake), and how
   // often a kept sewn or draped state was used instead.
   int sewingRuns() const { return sewingRuns_; }
