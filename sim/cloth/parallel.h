@@ -35,8 +35,10 @@ void forRange(size_t count, Body&& body) {
 // order: a fused loop + reduction, identical for any thread count.
 template <class Body>
 double blockReduce(size_t count, Body&& body) {
-  constexpr size_t kBlocks = 64;
-  const size_t block = (count + kBlocks - 1) / kBlocks;
+  constexpr size_t kBlocks = 64, kAlign = 8;
+  // Blocks start at multiples of 8 items: the spring product handles eight
+  // vertices at once (sliced ELL) and falls back to one at a time elsewhere.
+  const size_t block = ((count + kBlocks - 1) / kBlocks + kAlign - 1) / kAlign * kAlign;
   double partial[kBlocks] = {};
   auto run = [&](size_t b) {
     const size_t begin = std::min(count, b * block), end = std::min(count, (b + 1) * block);
