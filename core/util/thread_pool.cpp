@@ -30,6 +30,17 @@ void ThreadPool::workerLoop(unsigned index) {
     wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
     if (stopping_) return;
     seen = generation_;
+    if (blockJob_) {
+      if (!blockJobOpen_) continue;  // the caller already did every block
+      ++blockWorkers_;
+      const auto* body = blockBody_;
+      const size_t count = blockCount_;
+      lock.unlock();
+      runBlocks(*body, count);
+      lock.lock();
+      if (--blockWorkers_ == 0) done_.notify_one();
+      continue;
+    }
     const auto chunk = chunks_[index];
     const auto* body = body_;
     lock.unlock();
@@ -37,6 +48,32 @@ void ThreadPool::workerLoop(unsigned index) {
     lock.lock();
     if (--pending_ == 0) done_.notify_one();
   }
+}
+
+void ThreadPool::runBlocks(const std::function<void(size_t)>& body, size_t count) {
+  for (size_t i; (i = nextBlock_.fetch_add(1, std::memory_order_relaxed)) < count;) body(i);
+}
+
+void ThreadPool::parallelBlocks(size_t blocks, const std::function<void(size_t)>& body) {
+  if (blocks == 0) return;
+  if (threadCount() == 1 || blocks == 1) {
+    for (size_t i = 0; i < blocks; ++i) body(i);
+    return;
+  }
+  std::lock_guard submitLock(submit_);
+  std::unique_lock lock(mutex_);
+  blockJob_ = blockJobOpen_ = true;
+  blockBody_ = &body;
+  blockCount_ = blocks;
+  nextBlock_.store(0, std::memory_order_relaxed);
+  ++generation_;
+  lock.unlock();
+  wake_.notify_all();
+  runBlocks(body, blocks);
+  lock.lock();
+  blockJobOpen_ = false;  // a worker waking from now on finds nothing to do
+  done_.wait(lock, [&] { return blockWorkers_ == 0; });
+  blockBody_ = nullptr;  // blockJob_ stays set: a late worker must see this job closed
 }
 
 void ThreadPool::parallelFor(size_t begin, size_t end, size_t minChunk,
@@ -57,6 +94,7 @@ void ThreadPool::parallelFor(size_t begin, size_t end, size_t minChunk,
     chunks_[i] = {b, std::min(end, b + chunk)};
   }
   body_ = &body;
+  blockJob_ = false;
   pending_ = threads - 1;
   ++generation_;
   lock.unlock();

@@ -3,6 +3,7 @@
 // [begin, end) into contiguous chunks, one per worker, so a loop's result does
 // not depend on scheduling (deterministic for a given thread count).
 
+#include <atomic>
 #include <condition_variable>
 #include <cstddef>
 #include <functional>
@@ -27,6 +28,12 @@ class ThreadPool {
   void parallelFor(size_t begin, size_t end, size_t minChunk,
                    const std::function<void(size_t, size_t)>& body);
 
+  // Calls body(i) once for every i in [0, blocks). The caller and the idle
+  // workers claim blocks one at a time, so the caller never waits for a
+  // worker that has not woken up yet (on a loaded machine a worker can wait
+  // a whole time slice): results are deterministic when each block's work
+  // does not depend on which thread runs it.
+  void parallelBlocks(size_t blocks, const std::function<void(size_t)>& body);
   // The process-wide pool.
   static ThreadPool& shared();
 
@@ -41,6 +48,13 @@ class ThreadPool {
   std::vector<std::pair<size_t, size_t>> chunks_;
   unsigned generation_ = 0;
   unsigned pending_ = 0;
+  // parallelBlocks: the job, open while blocks remain, and the workers inside it.
+  bool blockJob_ = false, blockJobOpen_ = false;
+  const std::function<void(size_t)>* blockBody_ = nullptr;
+  size_t blockCount_ = 0;
+  std::atomic<size_t> nextBlock_{0};
+  unsigned blockWorkers_ = 0;
+  void runBlocks(const std::function<void(size_t)>& body, size_t count);
   bool stopping_ = false;
 };
 

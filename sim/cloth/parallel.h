@@ -15,13 +15,19 @@ namespace mq::cloth {
 // sheet, waking the pool for every solver pass costs more than it saves.
 constexpr size_t kParallelGrain = 4096;
 
+// Large loops go to the pool in blocks of this many items, claimed by
+// whichever thread is free (the caller alone when the worker is late).
+constexpr size_t kParallelBlock = 512;
+
 template <class Body>
 void forRange(size_t count, Body&& body) {
   if (count < 2 * kParallelGrain) {
     body(size_t(0), count);
     return;
   }
-  ThreadPool::shared().parallelFor(0, count, kParallelGrain, [&](size_t b, size_t e) { body(b, e); });
+  ThreadPool::shared().parallelBlocks((count + kParallelBlock - 1) / kParallelBlock, [&](size_t block) {
+    body(block * kParallelBlock, std::min(count, (block + 1) * kParallelBlock));
+  });
 }
 
 // Runs body(begin, end) -> double over [0, count) in 64 fixed blocks (in
@@ -29,19 +35,19 @@ void forRange(size_t count, Body&& body) {
 // order: a fused loop + reduction, identical for any thread count.
 template <class Body>
 double blockReduce(size_t count, Body&& body) {
-  constexpr size_t kBlocks = 64;
-  const size_t block = (count + kBlocks - 1) / kBlocks;
+  constexpr size_t kBlocks = 64, kAlign = 8;
+  // Blocks start at multiples of 8 items: the spring product handles eight
+  // vertices at once (sliced ELL) and falls back to one at a time elsewhere.
+  const size_t block = ((count + kBlocks - 1) / kBlocks + kAlign - 1) / kAlign * kAlign;
   double partial[kBlocks] = {};
-  auto run = [&](size_t b0, size_t b1) {
-    for (size_t b = b0; b < b1; ++b) {
-      const size_t begin = std::min(count, b * block), end = std::min(count, (b + 1) * block);
-      if (begin < end) partial[b] = body(begin, end);
-    }
+  auto run = [&](size_t b) {
+    const size_t begin = std::min(count, b * block), end = std::min(count, (b + 1) * block);
+    if (begin < end) partial[b] = body(begin, end);
   };
   if (count < 2 * kParallelGrain)
-    run(0, kBlocks);
+    for (size_t b = 0; b < kBlocks; ++b) run(b);
   else
-    ThreadPool::shared().parallelFor(0, kBlocks, 1, run);
+    ThreadPool::shared().parallelBlocks(kBlocks, run);
   double total = 0.0;
   for (double p : partial) total += p;
   return total;

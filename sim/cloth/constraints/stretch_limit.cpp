@@ -16,22 +16,20 @@ float maxSquaredStretchOf(const std::vector<glm::vec3>& x, const std::vector<Spr
   float partial[kBlocks];
   std::fill(partial, partial + kBlocks, 0.0f);
   const size_t block = (count + kBlocks - 1) / kBlocks;
-  auto body = [&](size_t b0, size_t b1) {
-    for (size_t b = b0; b < b1; ++b) {
-      float m = 0.0f;
-      for (size_t i = b * block; i < std::min(count, (b + 1) * block); ++i) {
-        const Spring& s = springs[i];
-        const glm::vec3 d = x[s.a] - x[s.b];
-        const float rest2 = s.rest * s.rest;
-        if (rest2 > 0.0f) m = std::max(m, glm::dot(d, d) / rest2);
-      }
-      partial[b] = m;
+  auto body = [&](size_t b) {
+    float m = 0.0f;
+    for (size_t i = b * block; i < std::min(count, (b + 1) * block); ++i) {
+      const Spring& s = springs[i];
+      const glm::vec3 d = x[s.a] - x[s.b];
+      const float rest2 = s.rest * s.rest;
+      if (rest2 > 0.0f) m = std::max(m, glm::dot(d, d) / rest2);
     }
+    partial[b] = m;
   };
   if (count < 2 * kParallelGrain)
-    body(0, kBlocks);
+    for (size_t b = 0; b < kBlocks; ++b) body(b);
   else
-    ThreadPool::shared().parallelFor(0, kBlocks, 1, body);
+    ThreadPool::shared().parallelBlocks(kBlocks, body);
   return *std::max_element(partial, partial + kBlocks);
 }
 
