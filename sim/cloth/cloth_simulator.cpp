@@ -15,6 +15,7 @@ namespace mq::cloth {
 namespace {
 
 constexpr float kContactInvMassScale = 0.05f;
+constexpr float kMaxApproachReach = 0.08f;  // m: how far ahead findApproachingBody() looks at most
 constexpr uint8_t kContact = 1, kSweptContact = 2;  // touched_ values
 
 ClothState initialState(const ClothMesh& mesh, const ClothTopology& topology, const Fabric& fabric) {
@@ -175,6 +176,7 @@ void ClothSimulator::step(float dt) {
 }
 
 void ClothSimulator::substep(float h, float bodyFraction) {
+  findApproachingBody(h);
   if (!body_.empty()) body_.moveTo(bodyFraction);
   preparePins(h);
   findRestingContacts();
@@ -323,6 +325,44 @@ void ClothSimulator::findRestingContacts() {
         state_.contactSpeed[i] = speed;
         restingSurfaceVelocity_[i] = surfaceVelocity;
       }
+      if (!approachNormal_.empty() && approachNormal_[i] != glm::vec3(0.0f) &&
+          (state_.contactNormal[i] == glm::vec3(0.0f) || approachSpeed_[i] > state_.contactSpeed[i])) {
+        state_.contactNormal[i] = approachNormal_[i];
+        state_.contactSpeed[i] = approachSpeed_[i];
+        restingSurfaceVelocity_[i] = approachVelocity_[i];
+      }
+    }
+  });
+}
+
+// A moving body part about to reach a cloth vertex in this substep (seen
+// from the pose at the substep's start, before moveTo()): the vertex's
+// velocity along the contact normal is held by the solver at what keeps it
+// the thickness off the moving surface at the substep's end, so the limb
+// carries the cloth in front of it (a trouser leg moves with the leg) and
+// the springs drag the rest of the cloth along in the same implicit solve,
+// rather than the cloth being pushed out afterwards and the elongation limit
+// pulling its neighbours through the limb in straight lines.
+void ClothSimulator::findApproachingBody(float h) {
+  approachNormal_.clear();
+  if (body_.empty() || !(body_.maxSpeed() > 0.0f)) return;
+  const float thickness = settings_.collisionThickness;
+  const float radius = std::min(kMaxApproachReach, thickness + body_.maxSpeed() * h);
+  approachNormal_.assign(state_.size(), glm::vec3(0.0f));
+  approachSpeed_.assign(state_.size(), 0.0f);
+  approachVelocity_.assign(state_.size(), glm::vec3(0.0f));
+  forRange(state_.size(), [&](size_t b, size_t e) {
+    for (size_t i = b; i < e; ++i) {
+      if (freeInvMass_[i] == 0.0f) continue;
+      BodyContact contact;
+      if (!body_.nearestContact(state_.x[i], contact, radius) || contact.signedDistance < 0.0f) continue;
+      const float surfaceSpeed = glm::dot(contact.velocity, contact.normal);
+      if (surfaceSpeed <= 0.0f) continue;  // not coming towards the vertex
+      const float needed = surfaceSpeed - (contact.signedDistance - thickness) / h;
+      if (glm::dot(state_.v[i], contact.normal) >= needed) continue;
+      approachNormal_[i] = contact.normal;
+      approachSpeed_[i] = needed;
+      approachVelocity_[i] = contact.velocity;
     }
   });
 }

@@ -115,6 +115,7 @@ class ClothSimulator {
   void preparePins(float h);
   void placePins();
   void findRestingContacts();
+  void findApproachingBody(float h);
   void applyRestingFriction(float h);
   void collideWithColliders(float h);
   bool limitStretchAfterContacts(float h);
@@ -135,6 +136,8 @@ class ClothSimulator {
   std::vector<float> freeInvMass_;
   std::vector<glm::vec3> stepStart_;
   std::vector<uint8_t> touched_;
+  std::vector<glm::vec3> approachNormal_, approachVelocity_;  // findApproachingBody(); empty: none
+  std::vector<float> approachSpeed_;
   std::vector<glm::vec3> restingSurfaceVelocity_;  // vertices a collision moved in this substep
   std::vector<PrimitiveCollider> colliders_;
   BodyCollider body_;
