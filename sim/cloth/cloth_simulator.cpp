@@ -338,7 +338,8 @@ void ClothSimulator::findRestingContacts() {
 // A moving body part about to reach a cloth vertex in this substep (seen
 // from the pose at the substep's start, before moveTo()): the vertex's
 // velocity along the contact normal is held by the solver at what keeps it
-// the thickness off the moving surface at the substep's end, so the limb
+// the thickness off the moving surface at the substep's end (and it sticks
+// to the surface tangentially), so the limb
 // carries the cloth in front of it (a trouser leg moves with the leg) and
 // the springs drag the rest of the cloth along in the same implicit solve,
 // rather than the cloth being pushed out afterwards and the elongation limit
@@ -360,6 +361,11 @@ void ClothSimulator::findApproachingBody(float h) {
       if (surfaceSpeed <= 0.0f) continue;  // not coming towards the vertex
       const float needed = surfaceSpeed - (contact.signedDistance - thickness) / h;
       if (glm::dot(state_.v[i], contact.normal) >= needed) continue;
+      // The limb grips what it hits: the vertex takes the surface's
+      // tangential velocity too (sticking friction), so a trouser leg turns
+      // with the swinging leg instead of being dragged back over it.
+      const glm::vec3 relative = state_.v[i] - contact.velocity;
+      state_.v[i] -= relative - glm::dot(relative, contact.normal) * contact.normal;
       approachNormal_[i] = contact.normal;
       approachSpeed_[i] = needed;
       approachVelocity_[i] = contact.velocity;
