@@ -3,9 +3,11 @@
 // character plays, or baking with progress and cancel) and the tests.
 //
 // One step(dt) reads top to bottom (cloth_simulator.cpp): for each solver
-// substep, move the body and the pin targets, integrate, limit the
-// elongation, resolve self-collisions, resolve collisions with the colliders
-// and the body, put pinned vertices on their targets, check for NaNs.
+// substep, find the cloth a moving body part is about to reach (the solver
+// then moves it with the part), move the body and the pin targets,
+// integrate, limit the elongation, resolve self-collisions, resolve
+// collisions with the colliders and the body, put pinned vertices on their
+// targets, check for NaNs.
 //
 //   ClothSimulator sim(mesh, fabricPreset("cotton"), settings);
 //   sim.addCollider(PrimitiveCollider::sphere({0, 0, 0}, 0.3f));
