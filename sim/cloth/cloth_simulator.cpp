@@ -16,6 +16,8 @@ namespace {
 
 constexpr float kContactInvMassScale = 0.05f;
 constexpr float kMaxApproachReach = 0.08f;  // m: how far ahead findApproachingBody() looks at most
+constexpr float kApproachPerSubstep = 0.05f;  // m: see substepsForBodySpeed()
+constexpr int kMaxBodySpeedSubsteps = 4;
 constexpr uint8_t kContact = 1, kSweptContact = 2;  // touched_ values
 
 ClothState initialState(const ClothMesh& mesh, const ClothTopology& topology, const Fabric& fabric) {
@@ -143,6 +145,25 @@ int ClothSimulator::substepsFor(float dt) const {
   return std::max(1, int(std::ceil(dt / hMax)));
 }
 
+// More solver steps when a body part comes towards the cloth near it faster
+// than kApproachPerSubstep a step (a swinging shin in a trouser leg): the
+// cloth it carries then moves less per step, and the elongation limit has
+// less to pull back over it.
+int ClothSimulator::substepsForBodySpeed(float dt) const {
+  if (body_.empty() || !(body_.maxSpeed() > 0.0f)) return 1;
+  const float radius = std::min(kMaxApproachReach, settings_.collisionThickness + body_.maxSpeed() * dt);
+  std::vector<float> approach(state_.size(), 0.0f);
+  forRange(state_.size(), [&](size_t b, size_t e) {
+    for (size_t i = b; i < e; ++i) {
+      BodyContact contact;
+      if (freeInvMass_[i] != 0.0f && body_.nearestContact(state_.x[i], contact, radius) && contact.signedDistance >= 0.0f)
+        approach[i] = glm::dot(contact.velocity, contact.normal);
+    }
+  });
+  const float fastest = approach.empty() ? 0.0f : *std::max_element(approach.begin(), approach.end());
+  return std::clamp(int(std::ceil(fastest * dt / kApproachPerSubstep)), 1, kMaxBodySpeedSubsteps);
+}
+
 void ClothSimulator::step(float dt) {
   if (!(dt > 0.0f) || !std::isfinite(dt)) throw Error("cloth step needs a positive time step");
   checkFinite("before the step");
@@ -154,18 +175,18 @@ void ClothSimulator::step(float dt) {
   }
   // Adaptive refinement: when the elongation limit could not hold a step
   // (a violent impact), the step is redone with twice the substeps.
-  int substeps = substepsFor(dt);
+  const int baseSubsteps = std::max(substepsFor(dt), settings_.substeps > 0 ? 1 : substepsForBodySpeed(dt));
+  int substeps = baseSubsteps;
   const ClothState start = state_;
   for (;;) {
     const float h = dt / float(substeps);
     stats_.solverIterations = stats_.selfContacts = stats_.stretchPasses = 0;
     limitHeld_ = true;
     // The last try may spend 20 times the passes on the limit.
-    passBudget_ = settings_.stretchIterations *
-                  (substeps * 2 > settings_.maxRefinement * std::max(1, substepsFor(dt)) ? 20 : 1);
+    passBudget_ = settings_.stretchIterations * (substeps * 2 > settings_.maxRefinement * baseSubsteps ? 20 : 1);
     if (!body_.empty()) body_.restartStep();
     for (int k = 0; k < substeps; ++k) substep(h, float(k + 1) / float(substeps));
-    if (limitHeld_ || substeps >= settings_.maxRefinement * std::max(1, substepsFor(dt))) break;
+    if (limitHeld_ || substeps >= settings_.maxRefinement * baseSubsteps) break;
     state_ = start;
     substeps *= 2;
   }

@@ -118,6 +118,7 @@ class ClothSimulator {
   void placePins();
   void findRestingContacts();
   void findApproachingBody(float h);
+  int substepsForBodySpeed(float dt) const;
   void applyRestingFriction(float h);
   void collideWithColliders(float h);
   bool limitStretchAfterContacts(float h);
