@@ -16,7 +16,7 @@ namespace {
 
 constexpr float kContactInvMassScale = 0.05f;
 constexpr float kMaxApproachReach = 0.08f;  // m: how far ahead findApproachingBody() looks at most
-constexpr float kApproachPerSubstep = 0.05f;  // m: see substepsForBodySpeed()
+constexpr float kApproachPerSubstep = 0.03f;  // m: see substepsForBodySpeed()
 constexpr int kMaxBodySpeedSubsteps = 4;
 constexpr uint8_t kContact = 1, kSweptContact = 2;  // touched_ values
 
@@ -146,7 +146,8 @@ int ClothSimulator::substepsFor(float dt) const {
 }
 
 // More solver steps when a body part comes towards the cloth near it faster
-// than kApproachPerSubstep a step (a swinging shin in a trouser leg): the
+// than kApproachPerSubstep a step (a swinging shin in a trouser leg moves up
+// to 10 cm a frame at 30 fps, the walking T-shirt's arms under 2 cm): the
 // cloth it carries then moves less per step, and the elongation limit has
 // less to pull back over it.
 int ClothSimulator::substepsForBodySpeed(float dt) const {
