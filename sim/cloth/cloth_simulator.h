@@ -103,7 +103,8 @@ class ClothSimulator {
   double potentialEnergy() const;
   float currentMaxStretch() const;
   int countPenetrating() const;
-  // Solver steps one step(dt) takes with these settings.
+  // Solver steps one step(dt) takes with these settings at least (automatic
+  // substeps add more while a body part comes fast towards the cloth).
   int substepsFor(float dt) const;
 
  private:
