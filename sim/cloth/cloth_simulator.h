@@ -3,9 +3,11 @@
 // character plays, or baking with progress and cancel) and the tests.
 //
 // One step(dt) reads top to bottom (cloth_simulator.cpp): for each solver
-// substep, move the body and the pin targets, integrate, limit the
-// elongation, resolve self-collisions, resolve collisions with the colliders
-// and the body, put pinned vertices on their targets, check for NaNs.
+// substep, find the cloth a moving body part is about to reach (the solver
+// then moves it with the part), move the body and the pin targets,
+// integrate, limit the elongation, resolve self-collisions, resolve
+// collisions with the colliders and the body, put pinned vertices on their
+// targets, check for NaNs.
 //
 //   ClothSimulator sim(mesh, fabricPreset("cotton"), settings);
 //   sim.addCollider(PrimitiveCollider::sphere({0, 0, 0}, 0.3f));
@@ -101,7 +103,8 @@ class ClothSimulator {
   double potentialEnergy() const;
   float currentMaxStretch() const;
   int countPenetrating() const;
-  // Solver steps one step(dt) takes with these settings.
+  // Solver steps one step(dt) takes with these settings at least (automatic
+  // substeps add more while a body part comes fast towards the cloth).
   int substepsFor(float dt) const;
 
  private:
@@ -115,6 +118,8 @@ class ClothSimulator {
   void preparePins(float h);
   void placePins();
   void findRestingContacts();
+  void findApproachingBody(float h);
+  int substepsForBodySpeed(float dt) const;
   void applyRestingFriction(float h);
   void collideWithColliders(float h);
   bool limitStretchAfterContacts(float h);
@@ -135,6 +140,8 @@ class ClothSimulator {
   std::vector<float> freeInvMass_;
   std::vector<glm::vec3> stepStart_;
   std::vector<uint8_t> touched_;
+  std::vector<glm::vec3> approachNormal_, approachVelocity_;  // findApproachingBody(); empty: none
+  std::vector<float> approachSpeed_;
   std::vector<glm::vec3> restingSurfaceVelocity_;  // vertices a collision moved in this substep
   std::vector<PrimitiveCollider> colliders_;
   BodyCollider body_;

@@ -52,7 +52,7 @@ void BodyCollider::setMesh(const std::vector<float>& positions, const std::vecto
   std::vector<uint32_t> fill(ringStart_.begin(), ringStart_.end() - 1);
   for (size_t e = 0; e < triangles_.size(); ++e) ringTriangles_[fill[triangles_[e]]++] = uint32_t(e / 3);
   from_ = to_ = current_ = previous_ = toVec3(positions);
-  maxDisplacement_ = 0.0f;
+  maxDisplacement_ = maxSpeed_ = 0.0f;
   velocity_.assign(n, glm::vec3(0.0f));
   searchRadius_ = searchRadius;
   tree_.build(triangleBoxes(current_, triangles_, kBoxSlack));
@@ -62,7 +62,12 @@ void BodyCollider::setTarget(const std::vector<float>& positions, float frameTim
   if (positions.size() != 3 * from_.size()) throw Error("posed body has a different vertex count");
   from_ = current_;
   to_ = toVec3(positions);
-  for (size_t i = 0; i < to_.size(); ++i) velocity_[i] = frameTime > 0.0f ? (to_[i] - from_[i]) / frameTime : glm::vec3(0.0f);
+  float speed2 = 0.0f;
+  for (size_t i = 0; i < to_.size(); ++i) {
+    velocity_[i] = frameTime > 0.0f ? (to_[i] - from_[i]) / frameTime : glm::vec3(0.0f);
+    speed2 = std::max(speed2, glm::dot(velocity_[i], velocity_[i]));
+  }
+  maxSpeed_ = std::sqrt(speed2);
 }
 
 void BodyCollider::moveTo(float fraction) {
@@ -160,8 +165,8 @@ glm::vec3 BodyCollider::pseudoNormal(uint32_t t, const glm::vec3& w) const {
   return sum;
 }
 
-bool BodyCollider::nearestContact(const glm::vec3& p, BodyContact& contact) const {
-  float best = searchRadius_;
+bool BodyCollider::nearestContact(const glm::vec3& p, BodyContact& contact, float radius) const {
+  float best = radius;
   int64_t nearest = -1;
   glm::vec3 weights(0.0f);
   // Distances only during the search; the contact of the nearest triangle after.

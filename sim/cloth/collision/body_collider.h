@@ -43,7 +43,11 @@ class BodyCollider {
   // still vertex and leave it inside or on its far side.
   bool firstHitAlong(const glm::vec3& from, const glm::vec3& to, BodyContact& contact) const;
   // Nearest contact within the search radius; false when there is none.
-  bool nearestContact(const glm::vec3& p, BodyContact& contact) const;
+  bool nearestContact(const glm::vec3& p, BodyContact& contact) const { return nearestContact(p, contact, searchRadius_); }
+  // ... within `radius` instead.
+  bool nearestContact(const glm::vec3& p, BodyContact& contact, float radius) const;
+  // Fastest vertex speed in the current frame (between the last pose and the target).
+  float maxSpeed() const { return maxSpeed_; }
 
   bool empty() const { return triangles_.empty(); }
   const std::vector<glm::vec3>& positions() const { return current_; }
@@ -64,6 +68,7 @@ class BodyCollider {
   std::vector<uint32_t> ringStart_, ringTriangles_;  // vertex -> triangles around it (CSR)
   std::vector<glm::vec3> from_, to_, current_, previous_, velocity_;
   float maxDisplacement_ = 0.0f;  // largest vertex move of the last moveTo()
+  float maxSpeed_ = 0.0f;
   AabbTree tree_;
   float searchRadius_ = 0.02f;
 };
