@@ -1,59 +1,15 @@
 #include "core/garment/body_measurements.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 
 #include "core/character/character.h"
 #include "core/character/posed_character.h"
+#include "core/skeleton/humanoid_roles.h"
 #include "core/util/error.h"
 
 namespace mq {
 namespace {
-
-std::string canonical(std::string name) {
-  size_t colon = name.rfind(':');  // "mixamorig:LeftArm"
-  if (colon != std::string::npos) name = name.substr(colon + 1);
-  std::string out;
-  for (char c : name)
-    if (std::isalnum(static_cast<unsigned char>(c))) out += char(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
-
-// Bone names by role; "%" stands for a side: l/r or left/right.
-const std::vector<std::pair<std::string, std::vector<std::string>>>& aliases() {
-  static const std::vector<std::pair<std::string, std::vector<std::string>>> table = {
-      {"pelvis", {"pelvis", "hips", "hip", "root"}},
-      {"spine", {"spine", "spine1", "spine01", "abdomen"}},
-      {"chest", {"chest", "spine2", "spine02", "upperchest", "thorax"}},
-      {"neck", {"neck", "neck1", "neck01"}},
-      {"upperarm", {"upperarm%", "%upperarm", "%arm", "arm%", "upperarm%"}},
-      {"forearm", {"forearm%", "%forearm", "lowerarm%", "%lowerarm"}},
-      {"hand", {"hand%", "%hand"}},
-      {"thigh", {"thigh%", "%thigh", "%upleg", "upperleg%", "%upperleg"}},
-      {"shin", {"shin%", "%shin", "calf%", "%leg", "lowerleg%", "%lowerleg"}},
-      {"foot", {"foot%", "%foot"}},
-  };
-  return table;
-}
-
-int findRoleBone(const Skeleton& skeleton, const std::string& role, int side) {
-  std::vector<std::string> sides = side == 0 ? std::vector<std::string>{"l", "left"} : std::vector<std::string>{"r", "right"};
-  for (const auto& [name, patterns] : aliases()) {
-    if (name != role) continue;
-    for (const std::string& pattern : patterns) {
-      std::vector<std::string> candidates;
-      size_t pct = pattern.find('%');
-      if (pct == std::string::npos) candidates.push_back(pattern);
-      else
-        for (const std::string& s : sides) candidates.push_back(pattern.substr(0, pct) + s + pattern.substr(pct + 1));
-      for (const std::string& candidate : candidates)
-        for (int b = 0; b < skeleton.boneCount(); ++b)
-          if (canonical(skeleton.bone(b).name) == candidate) return b;
-    }
-  }
-  return -1;
-}
 
 struct RestBody {
   std::vector<glm::mat4> world;
@@ -116,24 +72,28 @@ glm::vec3 BodyMeasurements::torsoAxisAt(float y) const {
 BodyMeasurements measureBody(const Character& character) {
   const Skeleton& skeleton = character.skeleton;
   RestBody body = restBody(character);
-  auto bone = [&](const std::string& role, int side) {
-    int b = findRoleBone(skeleton, role, side);
-    if (b < 0) throw Error("character '" + character.name + "': no bone for the " + role +
-                           (role == "pelvis" || role == "spine" || role == "chest" || role == "neck"
-                                ? std::string()
-                                : side == 0 ? " (left)" : " (right)"));
-    return b;
-  };
+  HumanoidBones roles;
+  try {
+    roles = findHumanoidBones(skeleton, body.world);
+  } catch (const Error& e) {
+    throw Error("character '" + character.name + "': " + e.what());
+  }
+  if (glm::length(roles.facing) > 0.0f && roles.facing.z < 0.5f)
+    throw Error("character '" + character.name + "' does not face +Z (its toes point to (" +
+                std::to_string(roles.facing.x) + ", " + std::to_string(roles.facing.z) +
+                ")): the built-in garments are made for a character facing +Z with its left on +X");
   auto joint = [&](int b) { return glm::vec3(body.world[b][3]); };
 
   BodyMeasurements m;
-  int pelvis = bone("pelvis", 0), spine = bone("spine", 0), chest = bone("chest", 0), neck = bone("neck", 0);
-  m.pelvis = joint(pelvis), m.waist = joint(spine), m.chest = joint(chest), m.neck = joint(neck);
-  int upperArm[2], thigh[2];
+  const int pelvis = roles.pelvis, spine = roles.spine, chest = roles.chest;
+  m.pelvis = joint(pelvis), m.waist = joint(spine), m.chest = joint(chest), m.neck = joint(roles.neck);
+  m.spineBone = skeleton.bone(spine).name;
+  const int* upperArm = roles.upperArm;
+  const int* thigh = roles.thigh;
   for (int s = 0; s < 2; ++s) {
-    upperArm[s] = bone("upperarm", s), thigh[s] = bone("thigh", s);
-    m.shoulder[s] = joint(upperArm[s]), m.elbow[s] = joint(bone("forearm", s)), m.wrist[s] = joint(bone("hand", s));
-    m.hip[s] = joint(thigh[s]), m.knee[s] = joint(bone("shin", s)), m.ankle[s] = joint(bone("foot", s));
+    m.upperArmBone[s] = skeleton.bone(upperArm[s]).name;
+    m.shoulder[s] = joint(upperArm[s]), m.elbow[s] = joint(roles.forearm[s]), m.wrist[s] = joint(roles.hand[s]);
+    m.hip[s] = joint(thigh[s]), m.knee[s] = joint(roles.shin[s]), m.ankle[s] = joint(roles.foot[s]);
   }
   glm::vec3 up(0, 1, 0), across(1, 0, 0);
   float chestY = glm::mix(m.chest.y, m.neck.y, 0.35f);

@@ -88,8 +88,8 @@ void wrapTorso(const BodyMeasurements& body, Panel& front, Panel& back, float to
     widest += hi - lo;
   }
   glm::vec3 center = body.torsoAxisAt(topY);
-  front.placement = cylinder("spine", center, kUp, kForward, 0.1f, {0.0f, anchorV});
-  back.placement = cylinder("spine", center, kUp, -kForward, 0.1f, {0.0f, anchorV});
+  front.placement = cylinder(body.spineBone, center, kUp, kForward, 0.1f, {0.0f, anchorV});
+  back.placement = cylinder(body.spineBone, center, kUp, -kForward, 0.1f, {0.0f, anchorV});
   growUntilClear(body.capsules, {&front, &back}, offset, widest / (2.0f * kPi), 1.0f,
                  [](Panel& panel, float radius) { panel.placement.radius = radius; });
 }
@@ -185,9 +185,9 @@ Garment makeTShirt(const BodyMeasurements& body, const Params& p) {
     // Along the whole arm (shoulder to wrist), not the upper arm alone: a long
     // sleeve then clears the forward-bent forearm and the hand.
     glm::vec3 axis = glm::normalize(body.shoulder[s] - body.wrist[s]);
-    const BodyCapsule* arm = findCapsule(body.capsules, "upperarm_" + side);
+    const BodyCapsule* arm = findCapsule(body.capsules, body.upperArmBone[s]);
     float radius = std::max(circumference / (2.0f * kPi), (arm ? arm->radius : 0.05f) + offset + 2.0f * kCoverSpacing);
-    sleeve.placement = cylinder("upperarm_" + side, body.shoulder[s], axis, kUp, radius, {0.0f, p.at("sleeveLength")});
+    sleeve.placement = cylinder(body.upperArmBone[s], body.shoulder[s], axis, kUp, radius, {0.0f, p.at("sleeveLength")});
     glm::vec3 shoulder = body.shoulder[s];
     // Starts a little down the arm: a sleeve tube closing right at the
     // shoulder joint would have to pass where the arm meets the torso. (A
