@@ -96,20 +96,34 @@ BodyMeasurements measureBody(const Character& character) {
     m.hip[s] = joint(thigh[s]), m.knee[s] = joint(roles.shin[s]), m.ankle[s] = joint(roles.foot[s]);
   }
   glm::vec3 up(0, 1, 0), across(1, 0, 0);
-  float chestY = glm::mix(m.chest.y, m.neck.y, 0.35f);
+  // A third of the way from chest to neck joint, but at least a fifth of the
+  // way from shoulders to hips below the shoulders (a chest joint at the
+  // shoulders' height, as on CesiumMan, would measure the neck's base).
+  const float shoulderY = 0.5f * (m.shoulder[0].y + m.shoulder[1].y), hipY0 = 0.5f * (m.hip[0].y + m.hip[1].y);
+  float chestY = std::min(glm::mix(m.chest.y, m.neck.y, 0.35f), shoulderY - 0.2f * (shoulderY - hipY0));
   m.chestGirth = girth(body, {chest, spine}, m.torsoAxisAt(chestY), up, across);
   m.waistGirth = girth(body, {spine, pelvis}, m.torsoAxisAt(m.waist.y), up, across);
   float hipY = m.hip[0].y - 0.03f;
   m.hipGirth = girth(body, {pelvis, thigh[0], thigh[1]}, m.torsoAxisAt(hipY), up, across);
+  // A body widest above its hip joints (a belly, as on CesiumMan): the hips
+  // are that wide, or a skirt or trousers sized to them slide up the body.
+  for (float y = hipY + 0.01f; y < m.waist.y; y += 0.01f)
+    m.hipGirth = std::max(m.hipGirth, girth(body, {pelvis, spine, thigh[0], thigh[1]}, m.torsoAxisAt(y), up, across));
   glm::vec3 armAxis = glm::normalize(m.elbow[0] - m.shoulder[0]);
   m.upperArmGirth = girth(body, {upperArm[0]}, glm::mix(m.shoulder[0], m.elbow[0], 0.3f), armAxis, {0, 0, 1});
   glm::vec3 legAxis = glm::normalize(m.knee[0] - m.hip[0]);
   m.thighGirth = girth(body, {thigh[0]}, glm::mix(m.hip[0], m.knee[0], 0.25f), legAxis, {1, 0, 0});
+  // Bones of the neck and above (index + 1: a vertex without bone is -1).
+  std::vector<bool> headOrNeck(skeleton.boneCount() + 1, false);
+  for (int b = 0; b < skeleton.boneCount(); ++b)
+    for (int a = b; a >= 0 && !headOrNeck[b + 1]; a = skeleton.bone(a).parent) headOrNeck[b + 1] = a == roles.neck;
   for (int s = 0; s < 2; ++s) {
     const glm::vec3 axis = m.torsoAxisAt(m.shoulder[s].y);
     const float inner = 0.5f * std::abs(m.shoulder[s].x - axis.x), outer = 2.0f * inner;
     m.shoulderTop[s] = m.shoulder[s].y;
-    for (const glm::vec3& p : body.positions) {
+    for (size_t v = 0; v < body.positions.size(); ++v) {
+      const glm::vec3& p = body.positions[v];
+      if (headOrNeck[body.dominantBone[v] + 1]) continue;  // a big head close to the shoulders
       const float across = (p.x - axis.x) * (m.shoulder[s].x > axis.x ? 1.0f : -1.0f);
       if (across >= inner && across <= outer && std::abs(p.z - axis.z) < 0.05f && p.y < m.shoulder[s].y + 0.3f)
         m.shoulderTop[s] = std::max(m.shoulderTop[s], p.y);
