@@ -108,6 +108,28 @@ TEST(HumanoidRoles, CesiumManByStructure) {
   EXPECT_GT(r.facing.z, 0.7f);
 }
 
+// The built-in garments build on CesiumMan (1.5 units tall): lengths scale
+// with the body, circumferences come from its skin; the default mannequin's
+// keep the declared defaults.
+TEST(HumanoidRoles, BuiltInGarmentsFitCesiumMan) {
+  const Character c = importCharacter(kCharacters + "CesiumMan/glTF/CesiumMan.gltf");
+  const BodyMeasurements m = measureBody(c);
+  for (const std::string type : {"tshirt", "skirt", "trousers"}) {
+    SCOPED_TRACE(type);
+    const Garment g = makeParametricGarment(type, c);
+    EXPECT_FALSE(g.panels.empty());
+    const float declaredLength = garmentParameters(type)[0].value;
+    EXPECT_LT(g.recipe.parameters.at("length"), 0.9f * declaredLength);
+    EXPECT_GT(g.recipe.parameters.at("length"), 0.6f * declaredLength);
+    // The front panels follow CesiumMan's bones, not the default's names.
+    EXPECT_EQ(g.panels[0].placement.bone, "Skeleton_torso_joint_2");
+    EXPECT_EQ(makeParametricGarment(type, makeDefaultMannequin()).recipe.parameters.at("length"), declaredLength);
+  }
+  EXPECT_GT(m.chestGirth, 0.4f);
+  EXPECT_LT(m.chestGirth, 1.0f);
+  EXPECT_GE(m.hipGirth, m.waistGirth);
+}
+
 TEST(HumanoidRoles, NonHumanoidGivesAClearError) {
   const Character c = importCharacter(kCharacters + "RiggedSimple/RiggedSimple.gltf");
   try {
