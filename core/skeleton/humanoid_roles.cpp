@@ -81,8 +81,8 @@ struct Rig {
 
 // A chain going down from `bone` by at least a quarter of the body's height.
 bool goesDown(const Rig& rig, int parent, int child) {
-  const float top = rig.joint[parent].y;
-  return top - -rig.maxOver(child, [](glm::vec3 p) { return -p.y; }) > 0.25f * rig.height;
+  const float lowest = -rig.maxOver(child, [](glm::vec3 p) { return -p.y; });
+  return rig.joint[parent].y - lowest > 0.25f * rig.height;
 }
 
 // The hips: the first bone (parents first) with two children going down, on
