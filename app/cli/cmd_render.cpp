@@ -40,6 +40,7 @@ render::SurfaceLook parseLook(const std::string& name) {
 int chooseClip(const Args& args, const LoadedScene& scene, const std::string& file) {
   if (!args.has("--clip")) return scene.clipIndex;
   const std::string wanted = args.option("--clip");
+  if (wanted == "rest") return -1;  // the rest pose, as the editor's --clip rest
   const int clip = scene.character.findClip(wanted);
   if (clip >= 0) return clip;
   std::string names;
@@ -92,7 +93,7 @@ int runRender(const std::vector<std::string>& argv) {
   return 0;
 }
 
-Registration reg({"render", "FILE --out OUT.png [--time T] [--clip NAME|INDEX] [--size WxH] [--skeleton]\n"
+Registration reg({"render", "FILE --out OUT.png [--time T] [--clip NAME|INDEX|rest] [--size WxH] [--skeleton]\n"
                   "         [--look mannequin|skin|plain] [--hair auto|simulate|rigid|off]\n"
                   "         [--hair-shadow count|maps]",
                   "renders an image offscreen (starts a private Xvfb when there is no X display)", runRender});

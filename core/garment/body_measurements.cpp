@@ -1,59 +1,15 @@
 #include "core/garment/body_measurements.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 
 #include "core/character/character.h"
 #include "core/character/posed_character.h"
+#include "core/skeleton/humanoid_roles.h"
 #include "core/util/error.h"
 
 namespace mq {
 namespace {
-
-std::string canonical(std::string name) {
-  size_t colon = name.rfind(':');  // "mixamorig:LeftArm"
-  if (colon != std::string::npos) name = name.substr(colon + 1);
-  std::string out;
-  for (char c : name)
-    if (std::isalnum(static_cast<unsigned char>(c))) out += char(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
-
-// Bone names by role; "%" stands for a side: l/r or left/right.
-const std::vector<std::pair<std::string, std::vector<std::string>>>& aliases() {
-  static const std::vector<std::pair<std::string, std::vector<std::string>>> table = {
-      {"pelvis", {"pelvis", "hips", "hip", "root"}},
-      {"spine", {"spine", "spine1", "spine01", "abdomen"}},
-      {"chest", {"chest", "spine2", "spine02", "upperchest", "thorax"}},
-      {"neck", {"neck", "neck1", "neck01"}},
-      {"upperarm", {"upperarm%", "%upperarm", "%arm", "arm%", "upperarm%"}},
-      {"forearm", {"forearm%", "%forearm", "lowerarm%", "%lowerarm"}},
-      {"hand", {"hand%", "%hand"}},
-      {"thigh", {"thigh%", "%thigh", "%upleg", "upperleg%", "%upperleg"}},
-      {"shin", {"shin%", "%shin", "calf%", "%leg", "lowerleg%", "%lowerleg"}},
-      {"foot", {"foot%", "%foot"}},
-  };
-  return table;
-}
-
-int findRoleBone(const Skeleton& skeleton, const std::string& role, int side) {
-  std::vector<std::string> sides = side == 0 ? std::vector<std::string>{"l", "left"} : std::vector<std::string>{"r", "right"};
-  for (const auto& [name, patterns] : aliases()) {
-    if (name != role) continue;
-    for (const std::string& pattern : patterns) {
-      std::vector<std::string> candidates;
-      size_t pct = pattern.find('%');
-      if (pct == std::string::npos) candidates.push_back(pattern);
-      else
-        for (const std::string& s : sides) candidates.push_back(pattern.substr(0, pct) + s + pattern.substr(pct + 1));
-      for (const std::string& candidate : candidates)
-        for (int b = 0; b < skeleton.boneCount(); ++b)
-          if (canonical(skeleton.bone(b).name) == candidate) return b;
-    }
-  }
-  return -1;
-}
 
 struct RestBody {
   std::vector<glm::mat4> world;
@@ -116,40 +72,58 @@ glm::vec3 BodyMeasurements::torsoAxisAt(float y) const {
 BodyMeasurements measureBody(const Character& character) {
   const Skeleton& skeleton = character.skeleton;
   RestBody body = restBody(character);
-  auto bone = [&](const std::string& role, int side) {
-    int b = findRoleBone(skeleton, role, side);
-    if (b < 0) throw Error("character '" + character.name + "': no bone for the " + role +
-                           (role == "pelvis" || role == "spine" || role == "chest" || role == "neck"
-                                ? std::string()
-                                : side == 0 ? " (left)" : " (right)"));
-    return b;
-  };
+  HumanoidBones roles;
+  try {
+    roles = findHumanoidBones(skeleton, body.world);
+  } catch (const Error& e) {
+    throw Error("character '" + character.name + "': " + e.what());
+  }
+  if (glm::length(roles.facing) > 0.0f && roles.facing.z < 0.5f)
+    throw Error("character '" + character.name + "' does not face +Z (its toes point to (" +
+                std::to_string(roles.facing.x) + ", " + std::to_string(roles.facing.z) +
+                ")): the built-in garments are made for a character facing +Z with its left on +X");
   auto joint = [&](int b) { return glm::vec3(body.world[b][3]); };
 
   BodyMeasurements m;
-  int pelvis = bone("pelvis", 0), spine = bone("spine", 0), chest = bone("chest", 0), neck = bone("neck", 0);
-  m.pelvis = joint(pelvis), m.waist = joint(spine), m.chest = joint(chest), m.neck = joint(neck);
-  int upperArm[2], thigh[2];
+  const int pelvis = roles.pelvis, spine = roles.spine, chest = roles.chest;
+  m.pelvis = joint(pelvis), m.waist = joint(spine), m.chest = joint(chest), m.neck = joint(roles.neck);
+  m.spineBone = skeleton.bone(spine).name;
+  const int* upperArm = roles.upperArm;
+  const int* thigh = roles.thigh;
   for (int s = 0; s < 2; ++s) {
-    upperArm[s] = bone("upperarm", s), thigh[s] = bone("thigh", s);
-    m.shoulder[s] = joint(upperArm[s]), m.elbow[s] = joint(bone("forearm", s)), m.wrist[s] = joint(bone("hand", s));
-    m.hip[s] = joint(thigh[s]), m.knee[s] = joint(bone("shin", s)), m.ankle[s] = joint(bone("foot", s));
+    m.upperArmBone[s] = skeleton.bone(upperArm[s]).name;
+    m.shoulder[s] = joint(upperArm[s]), m.elbow[s] = joint(roles.forearm[s]), m.wrist[s] = joint(roles.hand[s]);
+    m.hip[s] = joint(thigh[s]), m.knee[s] = joint(roles.shin[s]), m.ankle[s] = joint(roles.foot[s]);
   }
   glm::vec3 up(0, 1, 0), across(1, 0, 0);
-  float chestY = glm::mix(m.chest.y, m.neck.y, 0.35f);
+  // A third of the way from chest to neck joint, but at least a fifth of the
+  // way from shoulders to hips below the shoulders (a chest joint at the
+  // shoulders' height, as on CesiumMan, would measure the neck's base).
+  const float shoulderY = 0.5f * (m.shoulder[0].y + m.shoulder[1].y), hipY0 = 0.5f * (m.hip[0].y + m.hip[1].y);
+  float chestY = std::min(glm::mix(m.chest.y, m.neck.y, 0.35f), shoulderY - 0.2f * (shoulderY - hipY0));
   m.chestGirth = girth(body, {chest, spine}, m.torsoAxisAt(chestY), up, across);
   m.waistGirth = girth(body, {spine, pelvis}, m.torsoAxisAt(m.waist.y), up, across);
   float hipY = m.hip[0].y - 0.03f;
   m.hipGirth = girth(body, {pelvis, thigh[0], thigh[1]}, m.torsoAxisAt(hipY), up, across);
+  // A body widest above its hip joints (a belly, as on CesiumMan): the hips
+  // are that wide, or a skirt or trousers sized to them slide up the body.
+  for (float y = hipY + 0.01f; y < m.waist.y; y += 0.01f)
+    m.hipGirth = std::max(m.hipGirth, girth(body, {pelvis, spine, thigh[0], thigh[1]}, m.torsoAxisAt(y), up, across));
   glm::vec3 armAxis = glm::normalize(m.elbow[0] - m.shoulder[0]);
   m.upperArmGirth = girth(body, {upperArm[0]}, glm::mix(m.shoulder[0], m.elbow[0], 0.3f), armAxis, {0, 0, 1});
   glm::vec3 legAxis = glm::normalize(m.knee[0] - m.hip[0]);
   m.thighGirth = girth(body, {thigh[0]}, glm::mix(m.hip[0], m.knee[0], 0.25f), legAxis, {1, 0, 0});
+  // Bones of the neck and above (index + 1: a vertex without bone is -1).
+  std::vector<bool> headOrNeck(skeleton.boneCount() + 1, false);
+  for (int b = 0; b < skeleton.boneCount(); ++b)
+    for (int a = b; a >= 0 && !headOrNeck[b + 1]; a = skeleton.bone(a).parent) headOrNeck[b + 1] = a == roles.neck;
   for (int s = 0; s < 2; ++s) {
     const glm::vec3 axis = m.torsoAxisAt(m.shoulder[s].y);
     const float inner = 0.5f * std::abs(m.shoulder[s].x - axis.x), outer = 2.0f * inner;
     m.shoulderTop[s] = m.shoulder[s].y;
-    for (const glm::vec3& p : body.positions) {
+    for (size_t v = 0; v < body.positions.size(); ++v) {
+      const glm::vec3& p = body.positions[v];
+      if (headOrNeck[body.dominantBone[v] + 1]) continue;  // a big head close to the shoulders
       const float across = (p.x - axis.x) * (m.shoulder[s].x > axis.x ? 1.0f : -1.0f);
       if (across >= inner && across <= outer && std::abs(p.z - axis.z) < 0.05f && p.y < m.shoulder[s].y + 0.3f)
         m.shoulderTop[s] = std::max(m.shoulderTop[s], p.y);

@@ -1,9 +1,10 @@
 #pragma once
 // What a tailor measures, read from a character in its rest pose: joint
-// positions (skeleton rest world transforms, bones found by name with common
-// aliases), girths (ellipses fitted to thin slices of the skin) and the
+// positions (skeleton rest world transforms, bones found by findHumanoidBones:
+// names with common aliases, else the skeleton's structure), girths (ellipses fitted to thin slices of the skin) and the
 // bounding capsules of the body. Index 0 of a pair is the character's left (+X).
 
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -27,13 +28,16 @@ struct BodyMeasurements {
   // hips and the knees (the hips' height minus 7 cm without skin there).
   float crotchY = 0.0f;
   std::vector<BodyCapsule> capsules;
+  // Names of the bones garment panels follow: the spine, the upper arms.
+  std::string spineBone, upperArmBone[2];
 
   // The vertical torso axis (through pelvis and chest), as a point at height y.
   glm::vec3 torsoAxisAt(float y) const;
 };
 
-// Throws mq::Error naming the missing bone when the skeleton lacks one of
-// pelvis, spine, chest, neck, upper arms, forearms, hands, thighs, shins or feet.
+// Throws mq::Error naming the character and the missing role when the
+// skeleton lacks one of pelvis, spine, chest, neck, upper arms, forearms,
+// hands, thighs, shins or feet, or when the character does not face +Z.
 BodyMeasurements measureBody(const Character& character);
 
 }  // namespace mq

@@ -48,6 +48,17 @@ float clearance(const std::vector<BodyCapsule>& capsules, const Panel& panel) {
   return nearest - kCoverSpacing;  // the worst point between two samples
 }
 
+// The bone whose capsule comes closest to the panels (for error messages).
+std::string nearestBone(const std::vector<BodyCapsule>& capsules, const std::vector<Panel*>& panels) {
+  float nearest = 1e30f;
+  std::string bone = "body";
+  for (const Panel* panel : panels)
+    for (glm::vec2 p : coverPoints(*panel, kCoverSpacing))
+      for (const BodyCapsule& c : capsules)
+        if (float d = c.distance(panel->placement.place(p)); d < nearest) nearest = d, bone = "bone '" + c.boneName + "'";
+  return bone;
+}
+
 // Grows `value` in steps until every panel surely clears the body by half
 // `margin` (most of it by about `margin`);
 // throws mq::Error when it reaches `limit` first.
@@ -62,7 +73,8 @@ void growUntilClear(const std::vector<BodyCapsule>& capsules, std::vector<Panel*
   }
   std::string names;
   for (Panel* panel : panels) names += (names.empty() ? "" : ", ") + panel->name;
-  throw Error("cannot place panel(s) " + names + " clear of the body");
+  throw Error("cannot place panel(s) " + names + " clear of the body (it meets the " + nearestBone(capsules, panels) +
+              ")");
 }
 
 PanelPlacement cylinder(const std::string& bone, glm::vec3 center, glm::vec3 axis, glm::vec3 facing, float radius,
@@ -88,18 +100,34 @@ void wrapTorso(const BodyMeasurements& body, Panel& front, Panel& back, float to
     widest += hi - lo;
   }
   glm::vec3 center = body.torsoAxisAt(topY);
-  front.placement = cylinder("spine", center, kUp, kForward, 0.1f, {0.0f, anchorV});
-  back.placement = cylinder("spine", center, kUp, -kForward, 0.1f, {0.0f, anchorV});
+  front.placement = cylinder(body.spineBone, center, kUp, kForward, 0.1f, {0.0f, anchorV});
+  back.placement = cylinder(body.spineBone, center, kUp, -kForward, 0.1f, {0.0f, anchorV});
   growUntilClear(body.capsules, {&front, &back}, offset, widest / (2.0f * kPi), 1.0f,
                  [](Panel& panel, float radius) { panel.placement.radius = radius; });
 }
 
 // ---- Parameters ---------------------------------------------------------------
 
-Params resolve(const std::string& type, const Params& given) {
+// Body size relative to the default mannequin the defaults are made for: the
+// neck joint's height over the ankles' (1.365 m there); 1 within 3%.
+float bodyScale(const BodyMeasurements& body) {
+  const float height = body.neck.y - 0.5f * (body.ankle[0].y + body.ankle[1].y);
+  const float scale = height / 1.365f;
+  return std::abs(scale - 1.0f) < 0.03f ? 1.0f : scale;
+}
+
+// Lengths scale with a smaller or larger body; circumferences (eases, the
+// leg opening, the flare) do not: girths come from the skin, and a short body
+// may have the thighs of a tall one. Nor does the offset from the body.
+bool scalesWithBody(const std::string& parameter) {
+  return parameter == "length" || parameter == "sleeveLength" || parameter == "sleeveCap" || parameter == "neckWidth";
+}
+
+Params resolve(const std::string& type, const Params& given, float scale) {
   Params values;
   std::vector<GarmentParameter> declared = garmentParameters(type);
-  for (const GarmentParameter& p : declared) values[p.name] = p.value;
+  for (const GarmentParameter& p : declared)
+    values[p.name] = scalesWithBody(p.name) ? std::clamp(scale * p.value, p.min, p.max) : p.value;
   for (const auto& [name, value] : given) {
     auto it = std::find_if(declared.begin(), declared.end(), [&](const GarmentParameter& p) { return p.name == name; });
     if (it == declared.end()) throw Error(type + ": unknown parameter '" + name + "'");
@@ -185,9 +213,9 @@ Garment makeTShirt(const BodyMeasurements& body, const Params& p) {
     // Along the whole arm (shoulder to wrist), not the upper arm alone: a long
     // sleeve then clears the forward-bent forearm and the hand.
     glm::vec3 axis = glm::normalize(body.shoulder[s] - body.wrist[s]);
-    const BodyCapsule* arm = findCapsule(body.capsules, "upperarm_" + side);
+    const BodyCapsule* arm = findCapsule(body.capsules, body.upperArmBone[s]);
     float radius = std::max(circumference / (2.0f * kPi), (arm ? arm->radius : 0.05f) + offset + 2.0f * kCoverSpacing);
-    sleeve.placement = cylinder("upperarm_" + side, body.shoulder[s], axis, kUp, radius, {0.0f, p.at("sleeveLength")});
+    sleeve.placement = cylinder(body.upperArmBone[s], body.shoulder[s], axis, kUp, radius, {0.0f, p.at("sleeveLength")});
     glm::vec3 shoulder = body.shoulder[s];
     // Starts a little down the arm: a sleeve tube closing right at the
     // shoulder joint would have to pass where the arm meets the torso. (A
@@ -232,6 +260,9 @@ Garment makeSkirt(const BodyMeasurements& body, const Params& p) {
   float topY = body.waist.y;
   float hipDepth = std::clamp(topY - (body.hip[0].y - 0.03f), 0.05f, 0.6f * length);
   float waistHalf = 0.25f * (body.waistGirth + p.at("waistEase"));
+  // A waist no narrower than the chest (CesiumMan's) holds no snug band: the
+  // body narrows upwards and pushes it up. A looser band hangs from the hips.
+  if (body.waistGirth >= body.chestGirth) waistHalf = std::max(waistHalf, 0.25f * 1.15f * body.waistGirth);
   float hipHalf = std::max(0.25f * (body.hipGirth + p.at("waistEase") + 0.04f), waistHalf);
   float hemHalf = hipHalf + 0.5f * p.at("flare");
   g.panels.push_back(skirtPanel("front", "l", "r", hemHalf, hipHalf, waistHalf, length, hipDepth));
@@ -310,8 +341,8 @@ std::vector<GarmentParameter> garmentParameters(const std::string& type) {
 }
 
 Garment makeParametricGarment(const std::string& type, const Character& body, const Params& parameters) {
-  Params values = resolve(type, parameters);
   BodyMeasurements measurements = measureBody(body);
+  Params values = resolve(type, parameters, bodyScale(measurements));
   Garment g = type == "tshirt" ? makeTShirt(measurements, values)
               : type == "skirt" ? makeSkirt(measurements, values)
                                 : makeTrousers(measurements, values);

@@ -29,8 +29,11 @@ std::vector<std::string> parametricGarmentTypes();
 std::vector<GarmentParameter> garmentParameters(const std::string& type);
 
 // Builds a garment of `type` for `body`. Parameters not given take their
-// defaults; unknown names or values out of range throw mq::Error. The result
-// remembers type and parameters in Garment::recipe.
+// defaults, lengths scaled by the body's size relative to the default
+// mannequin's (its neck joint's height over the ankles; unscaled within 3%,
+// so the default mannequin's garments are the declared ones); unknown names
+// or values out of range throw mq::Error. The result remembers type and
+// parameters in Garment::recipe.
 Garment makeParametricGarment(const std::string& type, const Character& body,
                               const std::map<std::string, float>& parameters = {});
 

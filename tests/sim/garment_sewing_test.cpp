@@ -8,6 +8,7 @@
 #include "core/character/posed_character.h"
 #include "core/garment/body_measurements.h"
 #include "core/garment/parametric_garments.h"
+#include "core/io/character_import.h"
 #include "sim/garment/garment_sewing.h"
 #include "sim/garment/garment_simulation.h"
 
@@ -84,12 +85,16 @@ struct SewnGarment {
   Aabb bounds;
 };
 
-SewnGarment sewOnMannequin(const std::string& type, float edge, int settleFrames) {
-  const Character body = makeDefaultMannequin();
+SewnGarment sewOn(const Character& body, const std::string& type, float edge, int settleFrames) {
   PosedCharacter rest;
   rest.evaluate(body, -1, 0.0f, nullptr, nullptr);
-  const std::vector<float>& bodyPositions = rest.meshes()[0].positions;
-  const std::vector<uint32_t>& bodyTriangles = body.meshes[0].triangles;
+  std::vector<float> bodyPositions;  // every mesh of the body, as one
+  std::vector<uint32_t> bodyTriangles;
+  for (size_t m = 0; m < body.meshes.size(); ++m) {
+    const uint32_t first = uint32_t(bodyPositions.size() / 3);
+    for (uint32_t i : body.meshes[m].triangles) bodyTriangles.push_back(first + i);
+    bodyPositions.insert(bodyPositions.end(), rest.meshes()[m].positions.begin(), rest.meshes()[m].positions.end());
+  }
   Garment garment = makeParametricGarment(type, body);
   garment.targetEdgeLength = edge;
   GarmentSimulationSettings settings;
@@ -109,10 +114,14 @@ SewnGarment sewOnMannequin(const std::string& type, float edge, int settleFrames
   out.penetrating = sim.stats().penetratingVertices;
   out.finalStretch = sim.stats().maxStretch;
   out.bounds = boundsOf(x);
-  std::printf("%s: %zu vertices, seam gap %.3f m, welded after %d frames, bounds y %.3f..%.3f, stretch %.3f\n",
-              type.c_str(), out.vertices, out.initialGap, out.sewingFrames, out.bounds.min.y, out.bounds.max.y,
+  std::printf("%s on %s: %zu vertices, seam gap %.3f m, welded after %d frames, bounds y %.3f..%.3f, stretch %.3f\n",
+              type.c_str(), body.name.c_str(), out.vertices, out.initialGap, out.sewingFrames, out.bounds.min.y, out.bounds.max.y,
               out.finalStretch);
   return out;
+}
+
+SewnGarment sewOnMannequin(const std::string& type, float edge, int settleFrames) {
+  return sewOn(makeDefaultMannequin(), type, edge, settleFrames);
 }
 
 // Stiff zero-length seam springs used to close the 0.4 m shoulder gap in one
@@ -159,6 +168,40 @@ TEST(GarmentSewing, TrousersSettleOnTheWaistWithTheCrotchSewnBelowTheBody) {
   const BodyMeasurements body = measureBody(makeDefaultMannequin());
   EXPECT_LT(trousers.bounds.min.y, std::min(body.knee[0].y, body.knee[1].y));  // the legs cover the knees
 }
+
+// The built-in garments on an imported character whose bones no alias names
+// (CesiumMan, about 1.5 units tall): sized from its skeleton's structure and
+// skin, sewn on its rest pose, nothing inside the body after settling.
+// Known limitation: CesiumMan's arms leave the torso high and nearly level,
+// and the T-shirt's armhole seams (straight from shoulder to armpit) close
+// through the arms' roots: about 2% of the shirt's vertices (all at the
+// armpits) settle inside the body. The test bounds that, and where they are.
+class GarmentOnCesiumMan : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(GarmentOnCesiumMan, SewsWeldsAndSettlesOutsideTheBody) {
+  const Character body =
+      importCharacter(std::string(MANNEQUIN_SHARED_DIR) + "/assets/characters/CesiumMan/glTF/CesiumMan.gltf");
+  const BodyMeasurements m = measureBody(body);
+  const SewnGarment g = sewOn(body, GetParam(), 0.035f, 40);
+  EXPECT_GT(g.initialGap, 0.05f);
+  EXPECT_TRUE(g.welded);
+  EXPECT_LT(g.sewingFrames, 70);
+  EXPECT_LE(g.finalStretch, 1.1f + 1e-3f);
+  EXPECT_GT(g.bounds.min.y, 0.05f);  // not down on the floor
+  if (GetParam() == "tshirt") {
+    EXPECT_LT(g.insideBody, int(0.03f * g.vertices)) << "settled shirt vertices inside the body mesh";
+    EXPECT_LT(g.bounds.max.y, m.neck.y + 0.1f);  // hangs on the shoulders, not over the head
+    EXPECT_GT(g.bounds.max.y, m.shoulder[0].y);
+    EXPECT_LT(g.bounds.min.y, m.waist.y);  // and covers the waist
+  } else {
+    EXPECT_EQ(g.penetrating, 0);
+    EXPECT_EQ(g.insideBody, 0) << "settled vertices inside the body mesh";
+    EXPECT_GT(g.bounds.max.y, std::min(m.hip[0].y, m.hip[1].y));  // worn at the waist, not slid up or down
+    EXPECT_LT(g.bounds.max.y, m.waist.y + 0.1f);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Types, GarmentOnCesiumMan, ::testing::Values("tshirt", "skirt", "trousers"));
 
 }  // namespace
 }  // namespace mq

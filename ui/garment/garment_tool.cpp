@@ -1,5 +1,7 @@
 #include "ui/garment/garment_tool.h"
 
+#include <QStatusBar>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -12,6 +14,7 @@
 #include <QMouseEvent>
 #include <QProgressDialog>
 #include <QRubberBand>
+#include <QStatusBar>
 #include <QTimer>
 #include <QUndoStack>
 #include <QtConcurrent/QtConcurrentRun>
@@ -286,7 +289,11 @@ void GarmentTool::addGarment(const std::string& type) {
     edit(after, tr("Add %1").arg(displayName(type)));
     setCurrentGarment(garmentCount() - 1);
   } catch (const Error& e) {
-    lastError_ = QString::fromStdString(e.what());
+    // Not only in the panel's status lines (often scrolled out of view): a
+    // dialog (stderr in batch mode) and the status bar.
+    lastError_ = tr("Could not add the %1: %2").arg(displayName(type), QString::fromStdString(e.what()));
+    window_->statusBar()->showMessage(lastError_);
+    if (window_->reportError) window_->reportError(tr("Garments"), lastError_);
     emit sceneChanged();
   }
 }
