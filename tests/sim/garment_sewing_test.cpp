@@ -11,6 +11,7 @@
 #include "core/io/character_import.h"
 #include "sim/garment/garment_sewing.h"
 #include "sim/garment/garment_simulation.h"
+#include "garment_test_garments.h"
 
 namespace mq {
 namespace {
@@ -39,21 +40,8 @@ bool insideClosedMesh(const std::vector<float>& positions, const std::vector<uin
 }
 
 TEST(GarmentSewing, WeldRemapsSpringsAndKeepsRestLengths) {
-  // Two squares side by side, sewn along the shared side.
-  Garment g;
-  g.name = "pair";
-  g.targetEdgeLength = 0.05f;
-  for (const char* name : {"left", "right"}) {
-    Panel p;
-    p.name = name;
-    p.addLine("bottom", {0, 0});
-    p.addLine("east", {0.2f, 0});
-    p.addLine("top", {0.2f, 0.2f});
-    p.addLine("west", {0, 0.2f});
-    p.placement.center = {std::string(name) == "left" ? -0.2f : 0.05f, 0, 0};  // a 5 cm gap
-    g.panels.push_back(p);
-  }
-  g.seams.push_back({"left", "east", "right", "west", true});
+  // Two squares side by side, 5 cm apart, sewn along the shared side.
+  const Garment g = test::twoSewnSquares(0.0f);
   ClothMesh mesh = clothMeshFromGarment(buildGarmentMesh(g));
   ClothTopology topology = buildClothTopology(mesh);
   WeldedCloth welded = weldClothSeams(mesh, topology);

@@ -10,30 +10,12 @@
 #include "core/util/error.h"
 #include "sim/garment/garment_scene.h"
 #include "sim/garment/garment_simulation.h"
+#include "garment_test_garments.h"
 
 namespace mq {
 namespace {
 
 using namespace mq::cloth;
-
-// Two 20 cm squares 5 cm apart, sewn along the facing sides, no body.
-Garment pair() {
-  Garment g;
-  g.name = "pair";
-  g.targetEdgeLength = 0.05f;
-  for (const char* name : {"left", "right"}) {
-    Panel p;
-    p.name = name;
-    p.addLine("bottom", {0, 0});
-    p.addLine("east", {0.2f, 0});
-    p.addLine("top", {0.2f, 0.2f});
-    p.addLine("west", {0, 0.2f});
-    p.placement.center = {std::string(name) == "left" ? -0.2f : 0.05f, 1.0f, 0};
-    g.panels.push_back(p);
-  }
-  g.seams.push_back({"left", "east", "right", "west", true});
-  return g;
-}
 
 GarmentSimulationSettings noGravity() {
   GarmentSimulationSettings s;
@@ -43,7 +25,7 @@ GarmentSimulationSettings noGravity() {
 }
 
 TEST(GarmentSimulation, SewsWeldsAndKeepsTheGarmentMeshOrderAndPins) {
-  const GarmentMesh mesh = buildGarmentMesh(pair());
+  const GarmentMesh mesh = buildGarmentMesh(test::twoSewnSquares());
   GarmentSimulation sim(mesh, noGravity(), {}, {});
   ASSERT_GT(mesh.seamPairs.size(), 0u);
   const uint32_t pinned = mesh.panelFirstVertex[0];  // a corner of the left panel, off the seam
@@ -72,7 +54,7 @@ TEST(GarmentSimulation, SewsWeldsAndKeepsTheGarmentMeshOrderAndPins) {
 TEST(GarmentSimulation, GentleSewingClosesAtTheSewingSpeed) {
   GarmentSimulationSettings settings = noGravity();
   settings.sewingSpeed = 0.3f;  // m/s: a 5 cm gap takes about 1/6 s
-  GarmentSimulation sim(buildGarmentMesh(pair()), settings, {}, {});
+  GarmentSimulation sim(buildGarmentMesh(test::twoSewnSquares()), settings, {}, {});
   sim.step(1.0f / 30.0f);
   // One frame closes at most 1 cm, not the whole gap as a stiff spring would.
   EXPECT_GT(sim.seamGap(), 0.05f - 0.3f / 30.0f - 1e-3f);
@@ -80,7 +62,7 @@ TEST(GarmentSimulation, GentleSewingClosesAtTheSewingSpeed) {
 }
 
 TEST(GarmentScene, FabricAndPinsOfTheDocumentReachTheSimulation) {
-  Garment g = pair();
+  Garment g = test::twoSewnSquares();
   Fabric silk = fabricPreset("silk");
   silk.damping = 0.01f;
   g.fabric = "silk";

@@ -12,29 +12,12 @@
 #include "sim/garment/drape_schedule.h"
 #include "sim/garment/garment_scene.h"
 #include "sim/garment/garment_simulation.h"
+#include "garment_test_garments.h"
 
 namespace mq {
 namespace {
 
 using namespace mq::cloth;
-
-// Two 20 cm squares 5 cm apart, sewn along the facing sides, no body.
-Garment twoSquares() {
-  Garment g;
-  g.targetEdgeLength = 0.05f;
-  for (const char* name : {"left", "right"}) {
-    Panel p;
-    p.name = name;
-    p.addLine("bottom", {0, 0});
-    p.addLine("east", {0.2f, 0});
-    p.addLine("top", {0.2f, 0.2f});
-    p.addLine("west", {0, 0.2f});
-    p.placement.center = {std::string(name) == "left" ? -0.2f : 0.05f, 1.0f, 0};
-    g.panels.push_back(p);
-  }
-  g.seams.push_back({"left", "east", "right", "west", true});
-  return g;
-}
 
 GarmentSimulationSettings cotton() {
   GarmentSimulationSettings s;
@@ -50,7 +33,7 @@ float maxDifference(const std::vector<float>& a, const std::vector<float>& b) {
 }
 
 TEST(GarmentSnapshot, RestoredSimulationContinuesLikeTheOriginal) {
-  const GarmentMesh mesh = buildGarmentMesh(twoSquares());
+  const GarmentMesh mesh = buildGarmentMesh(test::twoSewnSquares());
   const uint32_t pinned = mesh.panelFirstVertex[0];
   GarmentSimulation original(mesh, cotton(), {}, {});
   original.pin(pinned);
@@ -78,18 +61,18 @@ TEST(GarmentSnapshot, RestoredSimulationContinuesLikeTheOriginal) {
 }
 
 TEST(GarmentSnapshot, SnapshotOfAnotherGarmentIsRefused) {
-  const GarmentMesh mesh = buildGarmentMesh(twoSquares());
+  const GarmentMesh mesh = buildGarmentMesh(test::twoSewnSquares());
   GarmentSimulation sim(mesh, cotton(), {}, {});
   for (int f = 0; f < 90 && !sim.welded(); ++f) sim.step(1.0f / 30.0f);
   ASSERT_TRUE(sim.welded());
-  Garment finer = twoSquares();
+  Garment finer = test::twoSewnSquares();
   finer.targetEdgeLength = 0.03f;
   GarmentSimulation other(buildGarmentMesh(finer), cotton(), {}, {});
   EXPECT_THROW(other.restore(sim.snapshot()), Error);
 }
 
 TEST(GarmentSnapshot, DrapeScheduleSkipsSewingForARestoredGarment) {
-  const GarmentMesh mesh = buildGarmentMesh(twoSquares());
+  const GarmentMesh mesh = buildGarmentMesh(test::twoSewnSquares());
   GarmentSimulation sim(mesh, cotton(), {}, {});
   DrapeSchedule fresh;
   EXPECT_FALSE(fresh.sewingDone(sim));

@@ -1,0 +1,29 @@
+#pragma once
+// Small garments shared by the garment tests.
+
+#include <string>
+
+#include "core/garment/garment.h"
+
+namespace mq::test {
+
+// Two 20 cm squares 5 cm apart at height `y`, sewn along the facing sides.
+inline Garment twoSewnSquares(float y = 1.0f) {
+  Garment g;
+  g.name = "pair";
+  g.targetEdgeLength = 0.05f;
+  for (const char* name : {"left", "right"}) {
+    Panel p;
+    p.name = name;
+    p.addLine("bottom", {0, 0});
+    p.addLine("east", {0.2f, 0});
+    p.addLine("top", {0.2f, 0.2f});
+    p.addLine("west", {0, 0.2f});
+    p.placement.center = {std::string(name) == "left" ? -0.2f : 0.05f, y, 0};
+    g.panels.push_back(p);
+  }
+  g.seams.push_back({"left", "east", "right", "west", true});
+  return g;
+}
+
+}  // namespace mq::test
