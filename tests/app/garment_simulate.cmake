@@ -1,6 +1,8 @@
-# mannequin-cli simulate on a garment scene: the T-shirt is sewn, welded and
+# mannequin-cli simulate on a garment scene: the garment is sewn, welded and
 # walks with the mannequin; checks the stats and the exported frames.
-#   -DCLI=<exe> -DSCENE=<scene.json> -DWORK=<dir> -DFRAMES=<n>
+#   -DCLI=<exe> -DSCENE=<scene.json> -DWORK=<dir> -DFRAMES=<n> -DMAX_PENETRATING=<n>
+#   -DGARMENT=<name in the scene> -DMIN_Y=<lo;hi> -DMAX_Y=<lo;hi> (where its lowest
+#   and highest points must be, metres)
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 execute_process(COMMAND "${CLI}" simulate "${SCENE}" --frames ${FRAMES} --stats-json "${WORK}/stats.json"
@@ -22,7 +24,7 @@ if(NOT frames EQUAL FRAMES)
   message(FATAL_ERROR "stats report ${frames} frames, asked for ${FRAMES}")
 endif()
 if(NOT welded)
-  message(FATAL_ERROR "the T-shirt's seams were not welded")
+  message(FATAL_ERROR "the ${GARMENT}'s seams were not welded")
 endif()
 if(penetrating GREATER ${MAX_PENETRATING})
   message(FATAL_ERROR "${penetrating} cloth vertices inside the body (at most ${MAX_PENETRATING})")
@@ -30,11 +32,14 @@ endif()
 if(stretch GREATER 1.101)
   message(FATAL_ERROR "final stretch ${stretch} beyond the 1.1 limit")
 endif()
-# On the shoulders of the 1.8 m mannequin: below the head, covering the waist.
-if(min_y LESS 0.6 OR min_y GREATER 1.05 OR max_y GREATER 1.62 OR max_y LESS 1.4)
-  message(FATAL_ERROR "the T-shirt is not on the shoulders: y ${min_y} .. ${max_y}")
+list(GET MIN_Y 0 min_lo)
+list(GET MIN_Y 1 min_hi)
+list(GET MAX_Y 0 max_lo)
+list(GET MAX_Y 1 max_hi)
+if(min_y LESS min_lo OR min_y GREATER min_hi OR max_y LESS max_lo OR max_y GREATER max_hi)
+  message(FATAL_ERROR "the ${GARMENT} is not where it is worn: y ${min_y} .. ${max_y}")
 endif()
-file(GLOB objs "${WORK}/frames/garment0_T-shirt_*.obj")
+file(GLOB objs "${WORK}/frames/garment0_${GARMENT}_*.obj")
 list(LENGTH objs obj_count)
 if(NOT obj_count EQUAL FRAMES)
   message(FATAL_ERROR "${obj_count} OBJ frames written, expected ${FRAMES}")
