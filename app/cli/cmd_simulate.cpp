@@ -35,15 +35,8 @@ class PosedBody {
   void pose(float time, std::vector<float>& positions, std::vector<uint32_t>* triangles, bool rest = false) {
     posed_.evaluate(scene_.character, rest ? -1 : scene_.clipIndex, rest ? 0.0f : time, rest ? nullptr : &scene_.edits,
                     &ThreadPool::shared());
-    positions.clear();
-    if (triangles) triangles->clear();
-    for (size_t m = 0; m < posed_.meshes().size(); ++m) {
-      const uint32_t offset = uint32_t(positions.size() / 3);
-      const auto& p = posed_.meshes()[m].positions;
-      positions.insert(positions.end(), p.begin(), p.end());
-      if (triangles)
-        for (uint32_t t : scene_.character.meshes[m].triangles) triangles->push_back(t + offset);
-    }
+    positions = concatenatedPositions(posed_.meshes());
+    if (triangles) *triangles = concatenatedTriangles(scene_.character);
   }
 
  private:

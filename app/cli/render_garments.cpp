@@ -25,19 +25,7 @@ constexpr float kHoldSeconds = 0.5f;
 std::vector<float> bodyAt(const Character& character, int clip, float time, const PoseEdits& edits) {
   PosedCharacter posed;
   posed.evaluate(character, clip, time, &edits, &ThreadPool::shared());
-  std::vector<float> out;
-  for (const PosedMesh& m : posed.meshes()) out.insert(out.end(), m.positions.begin(), m.positions.end());
-  return out;
-}
-
-std::vector<uint32_t> bodyTriangles(const Character& character) {
-  std::vector<uint32_t> out;
-  uint32_t offset = 0;
-  for (const Mesh& m : character.meshes) {
-    for (uint32_t index : m.triangles) out.push_back(index + offset);
-    offset += uint32_t(m.vertexCount());
-  }
-  return out;
+  return concatenatedPositions(posed.meshes());
 }
 
 }  // namespace
@@ -62,7 +50,7 @@ RenderedGarments addSceneGarments(render::SceneView& view, const LoadedScene& sc
   }
   const Character& character = scene.character;
   const std::vector<float> rest = bodyAt(character, -1, 0.0f, scene.edits);
-  const std::vector<uint32_t> triangles = bodyTriangles(character);
+  const std::vector<uint32_t> triangles = concatenatedTriangles(character);
   const float dt = 1.0f / spec.fps;
   const float start = clip >= 0 ? character.clips[clip].startTime() : 0.0f;
   const std::vector<float> first = bodyAt(character, clip, start, scene.edits);

@@ -6,6 +6,22 @@
 #include "core/util/thread_pool.h"
 
 namespace mq {
+
+std::vector<float> concatenatedPositions(const std::vector<PosedMesh>& meshes) {
+  std::vector<float> out;
+  for (const PosedMesh& m : meshes) out.insert(out.end(), m.positions.begin(), m.positions.end());
+  return out;
+}
+
+std::vector<uint32_t> concatenatedTriangles(const Character& character) {
+  std::vector<uint32_t> out;
+  uint32_t offset = 0;
+  for (const Mesh& m : character.meshes) {
+    for (uint32_t index : m.triangles) out.push_back(index + offset);
+    offset += uint32_t(m.vertexCount());
+  }
+  return out;
+}
 namespace {
 
 bool anyNonZero(const std::vector<float>& w) {

@@ -16,6 +16,11 @@ struct PosedMesh {
   std::vector<float> normals;
 };
 
+// The posed meshes as one body (what cloth and hair collide with): their
+// positions one after the other, and the character's triangles indexing them.
+std::vector<float> concatenatedPositions(const std::vector<PosedMesh>& meshes);
+std::vector<uint32_t> concatenatedTriangles(const Character& character);
+
 class PosedCharacter {
  public:
   // Poses `character` with local bone transforms `pose` and per-mesh morph

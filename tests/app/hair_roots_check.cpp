@@ -13,21 +13,9 @@
 #include <string>
 #include <vector>
 
-namespace {
+#include "obj_vertices.h"
 
-bool readObjVertices(const char* path, std::vector<float>& out) {
-  std::ifstream in(path);
-  if (!in) return false;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("v ", 0) != 0) continue;
-    std::istringstream s(line.substr(2));
-    float x, y, z;
-    if (!(s >> x >> y >> z)) return false;
-    out.insert(out.end(), {x, y, z});
-  }
-  return !out.empty();
-}
+namespace {
 
 // The strand roots of a PLY written by writeStrandsPly: the header's comment
 // gives the points per strand, the vertex block follows the header.
@@ -63,7 +51,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s: not a strands PLY\n", argv[1]);
     return 2;
   }
-  if (!readObjVertices(argv[2], mesh)) {
+  if (!readObjVertices(argv[2], mesh) || mesh.empty()) {
     std::fprintf(stderr, "%s: no vertices\n", argv[2]);
     return 2;
   }

@@ -4,28 +4,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
-#include <string>
 #include <vector>
 
-namespace {
-
-bool readVertices(const char* path, std::vector<double>& out) {
-  std::ifstream in(path);
-  if (!in) return false;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("v ", 0) != 0) continue;
-    std::istringstream s(line.substr(2));
-    double x, y, z;
-    if (!(s >> x >> y >> z)) return false;
-    out.insert(out.end(), {x, y, z});
-  }
-  return true;
-}
-
-}  // namespace
+#include "obj_vertices.h"
 
 int main(int argc, char** argv) {
   if (argc != 4) {
@@ -33,7 +14,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   std::vector<double> a, b;
-  if (!readVertices(argv[1], a) || !readVertices(argv[2], b)) {
+  if (!readObjVertices(argv[1], a) || !readObjVertices(argv[2], b)) {
     std::fprintf(stderr, "cannot read %s or %s\n", argv[1], argv[2]);
     return 2;
   }

@@ -77,13 +77,8 @@ void BM_ClothSheetOnMannequin(benchmark::State& state) {
   const mq::Character mannequin = mq::makeDefaultMannequin();
   mq::PosedCharacter posed;
   posed.evaluate(mannequin, -1, 0.0f, nullptr, nullptr);  // rest pose
-  std::vector<float> body;
-  std::vector<uint32_t> triangles;
-  for (size_t m = 0; m < posed.meshes().size(); ++m) {
-    const uint32_t offset = uint32_t(body.size() / 3);
-    body.insert(body.end(), posed.meshes()[m].positions.begin(), posed.meshes()[m].positions.end());
-    for (uint32_t t : mannequin.meshes[m].triangles) triangles.push_back(t + offset);
-  }
+  const std::vector<float> body = concatenatedPositions(posed.meshes());
+  const std::vector<uint32_t> triangles = concatenatedTriangles(mannequin);
   ClothSceneSpec spec = loadScene("drape_64");
   spec.sheet.columns = spec.sheet.rows = int(state.range(0));
   spec.sheet.center = glm::vec3(0.0f, 1.85f, 0.0f);

@@ -51,13 +51,8 @@ const ShirtStates& shirtStates() {
     const mq::Character mannequin = mq::makeDefaultMannequin();
     mq::PosedCharacter posed;
     posed.evaluate(mannequin, -1, 0.0f, nullptr, nullptr);  // rest pose
-    std::vector<float> body;
-    std::vector<uint32_t> bodyTriangles;
-    for (size_t m = 0; m < posed.meshes().size(); ++m) {
-      const uint32_t offset = uint32_t(body.size() / 3);
-      body.insert(body.end(), posed.meshes()[m].positions.begin(), posed.meshes()[m].positions.end());
-      for (uint32_t t : mannequin.meshes[m].triangles) bodyTriangles.push_back(t + offset);
-    }
+    const std::vector<float> body = mq::concatenatedPositions(posed.meshes());
+    const std::vector<uint32_t> bodyTriangles = mq::concatenatedTriangles(mannequin);
     out.sim = makeGarmentSimulation(garments.at(0), spec, body, bodyTriangles, "garments[0]");
     const float dt = 1.0f / spec.fps;
     for (int f = 0; f < 11; ++f) out.sim->step(dt);

@@ -67,13 +67,8 @@ TEST(ClothCollision, SheetDroppedOnTheDefaultMannequinSettlesOutsideIt) {
   const Character mannequin = makeDefaultMannequin();
   PosedCharacter posed;
   posed.evaluate(mannequin, -1, 0.0f, nullptr, nullptr);  // rest pose
-  std::vector<float> body;
-  std::vector<uint32_t> triangles;
-  for (size_t m = 0; m < posed.meshes().size(); ++m) {
-    const uint32_t offset = uint32_t(body.size() / 3);
-    body.insert(body.end(), posed.meshes()[m].positions.begin(), posed.meshes()[m].positions.end());
-    for (uint32_t t : mannequin.meshes[m].triangles) triangles.push_back(t + offset);
-  }
+  const std::vector<float> body = concatenatedPositions(posed.meshes());
+  const std::vector<uint32_t> triangles = concatenatedTriangles(mannequin);
   ASSERT_FALSE(triangles.empty());
   ClothSimulator sim(test::horizontalSheetMesh(32, 1.0f, {0, 1.85f, 0}), fabricPreset("cotton"), ClothSettings{});
   sim.setBody(body, triangles);

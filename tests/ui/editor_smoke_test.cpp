@@ -4,10 +4,7 @@
 // timeline, failed opens and save/reopen.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
-#include <chrono>
-#include <thread>
 
 #include <QApplication>
 #include <QDoubleSpinBox>
@@ -415,13 +412,7 @@ int main(int argc, char** argv) {
   QApplication::setApplicationName("gui_smoke");
   // `mannequin_gui_tests hair [qtest options]`: the hair tool's test.
   if (argc > 1 && std::string(argv[1]) == "hair") return runHairToolTest(argc - 1, argv + 1);
-  // A widget test must never hang: give up after two minutes, even when
-  // the event loop is stuck.
-  std::thread([] {
-    std::this_thread::sleep_for(std::chrono::seconds(120));
-    std::fprintf(stderr, "gui_smoke: timed out\n");
-    std::_Exit(2);
-  }).detach();
+  mq::ui::exitAfter(120, "gui_smoke");  // never hang
   EditorSmokeTest test;
   return QTest::qExec(&test, argc, argv);
 }

@@ -6,11 +6,8 @@
 // again from the kept sewn garment, adds and edits colliders, saves and
 // reopens the document, and opens a sheet-and-colliders scene with no character.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
-#include <thread>
 
 #include <nlohmann/json.hpp>
 
@@ -638,11 +635,7 @@ int main(int argc, char** argv) {
   QApplication::setOrganizationName("MannequinTests");
   QApplication::setApplicationName("gui_garments");
   // Never hang: give up after five minutes (the bakes run real simulations).
-  std::thread([] {
-    std::this_thread::sleep_for(std::chrono::seconds(300));
-    std::fprintf(stderr, "gui_garments: timed out\n");
-    std::_Exit(2);
-  }).detach();
+  mq::ui::exitAfter(300, "gui_garments");
   GarmentToolTest test;
   return QTest::qExec(&test, argc, argv);
 }

@@ -6,10 +6,7 @@
 // the document saved and reopened must hold the same hairstyle and grow the
 // same strands. The source is also dragged by its handle in the viewport, and
 // a vortex's axis is turned by its tip handle.
-#include <chrono>
-#include <cstdio>
 #include <cstdlib>
-#include <thread>
 
 #include <QApplication>
 #include <QCheckBox>
@@ -394,12 +391,7 @@ class HairToolTest : public QObject {
 };
 
 int runHairToolTest(int argc, char** argv) {
-  // A widget test must never hang.
-  std::thread([] {
-    std::this_thread::sleep_for(std::chrono::seconds(180));
-    std::fprintf(stderr, "gui_hair_tool: timed out\n");
-    std::_Exit(2);
-  }).detach();
+  mq::ui::exitAfter(180, "gui_hair_tool");  // never hang
   HairToolTest test;
   return QTest::qExec(&test, argc, argv);
 }

@@ -4,6 +4,11 @@
 // picks and drags land in the same places on every run; shown, wait for it to
 // be exposed), synchronous painting, mouse events and world-to-widget points.
 
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <thread>
+
 #include <QApplication>
 #include <QMouseEvent>
 #include <QTest>
@@ -15,6 +20,16 @@
 #include "ui/viewport/vtk_viewport_widget.h"
 
 namespace mq::ui {
+
+// A widget test must never hang, even when the event loop is stuck: the
+// process gives up after `seconds`, saying so.
+inline void exitAfter(int seconds, const char* testName) {
+  std::thread([seconds, testName] {
+    std::this_thread::sleep_for(std::chrono::seconds(seconds));
+    std::fprintf(stderr, "%s: timed out\n", testName);
+    std::_Exit(2);
+  }).detach();
+}
 
 inline MainWindow* makeTestWindow() {
   auto* window = new MainWindow;

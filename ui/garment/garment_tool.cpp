@@ -81,12 +81,6 @@ std::vector<uint32_t> nearestBodyVertices(const std::vector<float>& garment, con
   return nearest;
 }
 
-std::vector<float> concatenated(const std::vector<PosedMesh>& meshes) {
-  std::vector<float> out;
-  for (const PosedMesh& m : meshes) out.insert(out.end(), m.positions.begin(), m.positions.end());
-  return out;
-}
-
 std::unique_ptr<cloth::GarmentSimulation> makeSimulation(const GarmentScene& scene, size_t garment,
                                                          const std::vector<float>& body,
                                                          const std::vector<uint32_t>& bodyTriangles) {
@@ -231,13 +225,8 @@ void GarmentTool::onCharacterReplaced() {
   const Character& character = window_->document()->character();
   PosedCharacter rest;
   rest.evaluate(character, -1, 0.0f, nullptr, &ThreadPool::shared());
-  restBody_ = concatenated(rest.meshes());
-  bodyTriangles_.clear();
-  uint32_t offset = 0;
-  for (const Mesh& m : character.meshes) {
-    for (uint32_t index : m.triangles) bodyTriangles_.push_back(index + offset);
-    offset += uint32_t(m.vertexCount());
-  }
+  restBody_ = concatenatedPositions(rest.meshes());
+  bodyTriangles_ = concatenatedTriangles(character);
   bodyKey_ = fingerprint(restBody_) + "/" + fingerprint(bodyTriangles_);
   kept_.clear();
   lastError_.clear();
@@ -736,7 +725,7 @@ int GarmentTool::bakedFrameCount() const {
   return bake_ && !bake_->garments.empty() ? int(bake_->garments[0].frameCount()) : 0;
 }
 
-std::vector<float> GarmentTool::posedBody() const { return concatenated(window_->document()->posed().meshes()); }
+std::vector<float> GarmentTool::posedBody() const { return concatenatedPositions(window_->document()->posed().meshes()); }
 
 // Every garment starts from its kept sewn state when there is one, else from
 // the placed panels (its sewn state is kept once the seams are done).
@@ -987,7 +976,7 @@ bool GarmentTool::bake(float from, float to) {
   PosedCharacter posed;
   for (int f = 0; f < frames; ++f) {
     posed.evaluate(document->character(), clip, start + f / fps, &document->poseEdits(), &ThreadPool::shared());
-    bodies[f] = concatenated(posed.meshes());
+    bodies[f] = concatenatedPositions(posed.meshes());
   }
   std::vector<BakeGarment> garments;
   try {
