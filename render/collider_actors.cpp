@@ -4,6 +4,8 @@
 
 #include <vtkActor.h>
 #include <vtkCellArray.h>
+#include <vtkCellPicker.h>
+#include <vtkRenderer.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -129,11 +131,23 @@ void ColliderActors::set(const std::vector<cloth::PrimitiveCollider>& colliders,
     property->SetOpacity(isSelected ? 0.5 : 0.32);
     property->SetSpecular(0.2);
     property->BackfaceCullingOff();
-    actor->PickableOff();
     actor->SetVisibility(visible_);
     view_->addProp(actor);
     actors_.push_back(actor);
   }
+}
+
+int ColliderActors::pick(int x, int y) const {
+  if (!visible_ || actors_.empty() || !view_->renderer()->GetRenderWindow()) return -1;
+  vtkNew<vtkCellPicker> picker;
+  picker->SetTolerance(0.0005);
+  picker->PickFromListOn();
+  for (const auto& actor : actors_) picker->AddPickList(actor);
+  for (int mesh = 0; vtkActor* body = view_->meshActor(mesh); ++mesh) picker->AddPickList(body);
+  if (!picker->Pick(x, y, 0.0, view_->renderer())) return -1;
+  for (size_t i = 0; i < actors_.size(); ++i)
+    if (actors_[i] == picker->GetActor()) return int(i);
+  return -1;  // the character
 }
 
 void ColliderActors::setVisible(bool visible) {

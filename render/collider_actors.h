@@ -2,7 +2,8 @@
 // The scene's primitive colliders drawn in the viewport: one translucent
 // actor per collider (a sphere, a capsule, a finite square of the plane with
 // its normal), the selected one brighter. Rebuilt from the colliders on
-// every edit; the colliders are few, so that is cheap.
+// every edit; the colliders are few, so that is cheap. pick() finds the
+// collider under the cursor (the character in front of it hides it).
 
 #include <vector>
 
@@ -33,6 +34,10 @@ class ColliderActors {
   void setVisible(bool visible);
   size_t count() const { return actors_.size(); }
   vtkActor* actor(size_t i) const { return actors_[i]; }
+  // The collider drawn under display position (x, y) (pixels, origin bottom
+  // left), nearest the viewer; -1 for none, or when the character's surface
+  // is nearer there. Needs the renderer in a window.
+  int pick(int x, int y) const;
 
  private:
   SceneView* view_;

@@ -225,6 +225,7 @@ ClothSceneSpec parseClothScene(const json& cloth, const json& colliders, const s
       r.fail("pins.vertices", "vertex " + std::to_string(v) + " is beyond the sheet's vertices");
   spec.fps = r.positive("fps", spec.fps);
   spec.animateBody = r.boolean("animate_body", spec.animateBody);
+  spec.bakeFrames = r.integer("bake_frames", spec.bakeFrames, 1);
   return spec;
 }
 
@@ -258,6 +259,7 @@ void writeClothScene(const ClothSceneSpec& spec, json& cloth, json& colliders) {
   cloth["pins"] = {{"rows", spec.pinnedRows}, {"vertices", spec.pinnedVertices}};
   cloth["fps"] = spec.fps;
   cloth["animate_body"] = spec.animateBody;
+  cloth["bake_frames"] = spec.bakeFrames;
   colliders = json::array();
   for (const PrimitiveCollider& c : spec.colliders) {
     json j = {{"type", shapeName(c.shape)}};

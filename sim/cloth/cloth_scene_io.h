@@ -20,7 +20,9 @@
 //     "stretch_iterations": 100, "max_refinement": 8, "self_collisions": false, "thickness": 0.005,
 //     "self_thickness": 0.004, "friction": 0.3, "cg_max_iterations": 100, "cg_tolerance": 0.001,
 //     "pins": {"rows": [0], "vertices": [12, 13]},   sheet rows (0 = first row) and/or vertex indices
-//     "fps": 24, "animate_body": true },
+//     "fps": 24, "animate_body": true,
+//     "bake_frames": 120 },                    frames the editor bakes when there is no clip to follow
+//                                              (no character); optional, added after version 1 shipped
 //   "colliders": [ {"type": "sphere", "center": [0, 0, 0], "radius": 0.3},
 //                  {"type": "capsule", "a": [..], "b": [..], "radius": 0.1},
 //                  {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "friction": 0.5} ]
@@ -61,6 +63,7 @@ struct ClothSceneSpec {
   std::vector<PrimitiveCollider> colliders;
   float fps = 24.0f;
   bool animateBody = true;  // the character (if any) plays its clip while the cloth runs
+  int bakeFrames = 120;     // the editor's bake length at fps when there is no clip (no character)
 };
 
 // Throws FileError(pathForErrors, "cloth.<key>: <problem>") for bad sections.

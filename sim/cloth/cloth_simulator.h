@@ -63,6 +63,8 @@ class ClothSimulator {
 
   // Colliders and the body
   void addCollider(const PrimitiveCollider& collider);
+  // Replaces the colliders (a collider moved between steps: the editor's drag).
+  void setColliders(const std::vector<PrimitiveCollider>& colliders) { colliders_ = colliders; }
   const std::vector<PrimitiveCollider>& colliders() const { return colliders_; }
   void setBody(const std::vector<float>& positions, const std::vector<uint32_t>& triangles);
   // The posed body (same vertices) at the end of the next step().

@@ -136,6 +136,11 @@ void GarmentSimulation::addCollider(const PrimitiveCollider& collider) {
   impl_->sim->addCollider(collider);
 }
 
+void GarmentSimulation::setColliders(const std::vector<PrimitiveCollider>& colliders) {
+  impl_->colliders = colliders;
+  impl_->sim->setColliders(colliders);
+}
+
 void GarmentSimulation::pin(uint32_t garmentVertex) {
   Impl& m = *impl_;
   if (garmentVertex >= vertexCount()) throw Error("pinned garment vertex " + std::to_string(garmentVertex) + " out of range");

@@ -51,6 +51,8 @@ class GarmentSimulation {
   ~GarmentSimulation();
 
   void addCollider(const PrimitiveCollider& collider);
+  // Replaces the colliders, keeping the cloth's state (a collider dragged while it runs).
+  void setColliders(const std::vector<PrimitiveCollider>& colliders);
   // Pins, in garment-mesh vertex indices; kept across the weld.
   void pin(uint32_t garmentVertex);         // fixed in space where it is now
   void pinToBody(uint32_t garmentVertex);   // follows the nearest body vertex

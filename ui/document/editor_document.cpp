@@ -23,6 +23,7 @@ void EditorDocument::replace(LoadedDocument loaded) {
   displayName_ = loaded.displayName;
   edits_ = std::move(loaded.edits);
   clipIndex_ = loaded.clipIndex < static_cast<int>(character_.clips.size()) ? loaded.clipIndex : -1;
+  noClipDuration_ = 0.0f;
   time_ = clipIndex_ >= 0 ? std::clamp(scene_.time, clipStart(), clipEnd()) : 0.0f;
   selectedBone_ = -1;
   selectedMesh_ = -1;
@@ -102,7 +103,15 @@ float EditorDocument::clipStart() const {
 }
 
 float EditorDocument::clipEnd() const {
-  return clipIndex_ >= 0 ? character_.clips[clipIndex_].endTime() : 0.0f;
+  return clipIndex_ >= 0 ? character_.clips[clipIndex_].endTime() : noClipDuration_;
+}
+
+void EditorDocument::setNoClipDuration(float seconds) {
+  seconds = std::max(0.0f, seconds);
+  if (seconds == noClipDuration_) return;
+  noClipDuration_ = seconds;
+  emit timeAxisChanged();
+  if (clipIndex_ < 0 && time_ > seconds) setTime(seconds);
 }
 
 void EditorDocument::setClip(int clipIndex) {
@@ -117,7 +126,7 @@ void EditorDocument::setClip(int clipIndex) {
 }
 
 void EditorDocument::setTime(float seconds) {
-  seconds = clipIndex_ >= 0 ? std::clamp(seconds, clipStart(), clipEnd()) : 0.0f;
+  seconds = std::clamp(seconds, clipStart(), clipEnd());
   if (seconds == time_) return;
   time_ = seconds;
   evaluatePose();

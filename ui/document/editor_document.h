@@ -62,9 +62,14 @@ class EditorDocument : public QObject {
   float time() const { return time_; }
   void setClip(int clipIndex);
   void setTime(float seconds);
-  // Start and end of the current clip's time axis (0, 0 for the rest pose).
+  // Start and end of the current clip's time axis (0, 0 for the rest pose,
+  // 0 and the no-clip duration when one is set).
   float clipStart() const;
   float clipEnd() const;
+  // A time axis from 0 to `seconds` while no clip plays (0: none): a scene of
+  // cloth and colliders without a character scrubs its bake on it (the
+  // garment tool sets it from the bake's length). The pose stays the rest pose.
+  void setNoClipDuration(float seconds);
   // Adds a clip (e.g. an imported BVH motion) and makes it current.
   void addClip(Clip clip);
 
@@ -92,6 +97,7 @@ class EditorDocument : public QObject {
   void timeChanged(float seconds);
   void clipChanged(int clipIndex);
   void clipsChanged();  // the list of clips changed
+  void timeAxisChanged();  // clipStart() or clipEnd() changed without a clip change
   void selectionChanged();
   void viewSettingsChanged();
   // Any change at all (for tools that keep derived data, e.g. hair, cloth).
@@ -109,6 +115,7 @@ class EditorDocument : public QObject {
   QString displayName_;
   int clipIndex_ = -1;
   float time_ = 0.0f;
+  float noClipDuration_ = 0.0f;
   int selectedBone_ = -1;
   int selectedMesh_ = -1;
   bool unsavedSectionChanges_ = false;  // changes outside the undo stack

@@ -182,6 +182,21 @@ GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent)
     lastField_ = 51;
     tool_->setClothFps(float(fps), lastMergeKey_);
   });
+  bakeFrames_ = new QSpinBox;
+  bakeFrames_->setRange(1, 100000);
+  bakeFrames_->setSuffix(tr(" frames"));
+  bakeFrames_->setKeyboardTracking(false);
+  bakeFrames_->setToolTip(tr("With no character there is no clip to follow: Bake simulates this many frames "
+                             "(at the cloth's fps) from the placed cloth; the timeline scrubs them"));
+  simForm->addRow(tr("Bake length"), bakeFrames_);
+  connect(bakeFrames_, &QSpinBox::valueChanged, this, [this](int frames) {
+    if (refreshing_) return;
+    if (lastField_ != 52) lastMergeKey_ = GarmentEditCommand::nextMergeKey();
+    lastField_ = 52;
+    tool_->setBakeFrames(frames, lastMergeKey_);
+  });
+  simForm->setRowVisible(bakeFrames_, false);
+  simForm_ = simForm;
   simLayout->addLayout(simForm);
   connect(integratorCombo_, &QComboBox::activated, this,
           [this](int index) { tool_->setIntegrator(kIntegrators[index]); });
@@ -306,6 +321,12 @@ void GarmentPanel::refresh() {
     const QSignalBlocker block(clothFps_);
     clothFps_->setValue(int(std::lround(scene.cloth.fps)));
   }
+  {
+    const QSignalBlocker block(bakeFrames_);
+    bakeFrames_->setValue(scene.cloth.bakeFrames);
+  }
+  simForm_->setRowVisible(bakeFrames_, tool_->bakesWithoutClip());
+  bake_->setText(tool_->bakesWithoutClip() ? tr("Bake") : tr("Bake clip"));
   {
     const QSignalBlocker block(attach_);
     attach_->setCurrentIndex(current >= 0 && scene.garments[current].pins.attach == GarmentPins::Attach::Space ? 1 : 0);

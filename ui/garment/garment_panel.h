@@ -2,8 +2,9 @@
 // The garment tool's dock: the garments (list, add a built-in one, remove),
 // the current garment's measurements (one field per parameter the garment
 // type declares, rebuilt when the type changes), its fabric (preset or
-// values), the simulation (integrator, self collisions, Simulate, Bake clip),
-// the pins (vertex-select mode, Pin selected, Unpin, attach to body or space),
+// values), the simulation (integrator, self collisions, Simulate, Bake clip;
+// with no character: the bake length in frames), the pins (vertex-select
+// mode, Pin selected, Unpin, attach to body or space),
 // the colliders (list, add a sphere, capsule or plane, edit its centre or
 // ends or point and normal, radius and friction, remove) and the display
 // (stretch overlay, pin dots, colliders). Every change goes to the
@@ -45,6 +46,8 @@ class GarmentPanel : public QWidget {
   QComboBox* fabricCombo() const { return fabricCombo_; }
   QComboBox* integratorCombo() const { return integratorCombo_; }
   QSpinBox* clothFpsField() const { return clothFps_; }
+  // Frames to bake when there is no clip (no character); shown only then.
+  QSpinBox* bakeFramesField() const { return bakeFrames_; }
   // The measurement field named `name` of the current garment, or null.
   QDoubleSpinBox* measurementField(const QString& name) const;
   QDoubleSpinBox* particleDistanceField() const { return particleDistance_; }
@@ -90,6 +93,8 @@ class GarmentPanel : public QWidget {
   QComboBox* integratorCombo_;
   QCheckBox* selfCollisions_;
   QSpinBox* clothFps_;
+  QSpinBox* bakeFrames_;
+  QFormLayout* simForm_;
   QPushButton *simulate_, *bake_, *clearBake_, *exportBake_;
   QPushButton *select_, *pin_, *unpin_, *clearPins_;
   QComboBox* attach_;

@@ -38,6 +38,7 @@
 #include "sim/garment/garment_scene.h"
 #include "sim/garment/garment_simulation.h"
 #include "ui/document/editor_document.h"
+#include "ui/garment/collider_drag_tool.h"
 #include "ui/garment/garment_edit_command.h"
 #include "ui/garment/garment_panel.h"
 #include "ui/main_window.h"
@@ -199,6 +200,7 @@ GarmentTool::GarmentTool(MainWindow* window) : QObject(window), window_(window) 
   colliderActors_ = std::make_unique<render::ColliderActors>(window->sceneView());
   rubberBand_ = new QRubberBand(QRubberBand::Rectangle, window->viewport());
   window->viewport()->installEventFilter(this);
+  colliderDrag_ = new ColliderDragTool(this, window);  // filters the viewport's events before this tool
   connect(&stepWatcher_, &QFutureWatcher<QString>::finished, this, &GarmentTool::onStepFinished);
   connect(window->document(), &EditorDocument::characterReplaced, this, &GarmentTool::onCharacterReplaced);
   connect(window->document(), &EditorDocument::poseChanged, this, &GarmentTool::showGarments);
@@ -375,6 +377,14 @@ void GarmentTool::setClothFps(float fps, int mergeKey) {
   edit(after, tr("Cloth %1 fps").arg(fps), mergeKey);
 }
 
+void GarmentTool::setBakeFrames(int frames, int mergeKey) {
+  if (frames == scene_.cloth.bakeFrames || frames < 1) return;
+  GarmentScene after = scene_;
+  after.cloth.bakeFrames = frames;
+  after.writeCloth = true;
+  edit(after, tr("Bake %1 frames").arg(frames), mergeKey);
+}
+
 void GarmentTool::setPinsFollowBody(int garment, bool followBody) {
   const auto attach = followBody ? GarmentPins::Attach::Body : GarmentPins::Attach::Space;
   if (garment < 0 || garment >= garmentCount() || scene_.garments[garment].pins.attach == attach) return;
@@ -457,7 +467,8 @@ void GarmentTool::addCollider(cloth::PrimitiveCollider::Shape shape) {
   setCurrentCollider(colliderCount() - 1);
 }
 
-bool GarmentTool::setCollider(int index, const cloth::PrimitiveCollider& collider, int mergeKey) {
+bool GarmentTool::setCollider(int index, const cloth::PrimitiveCollider& collider, int mergeKey,
+                              const QString& text) {
   if (index < 0 || index >= colliderCount()) return false;
   const bool isPlane = collider.shape == cloth::PrimitiveCollider::Shape::Plane;
   QString problem;
@@ -479,7 +490,7 @@ bool GarmentTool::setCollider(int index, const cloth::PrimitiveCollider& collide
   GarmentScene after = scene_;
   after.cloth.colliders[index] = collider;
   lastError_.clear();
-  edit(after, tr("Edit %1 collider").arg(shapeLabel(collider.shape)), mergeKey);
+  edit(after, text.isEmpty() ? tr("Edit %1 collider").arg(shapeLabel(collider.shape)) : text, mergeKey);
   return true;
 }
 
@@ -494,13 +505,32 @@ void GarmentTool::removeCollider(int index) {
 void GarmentTool::setCollidersVisible(bool visible) {
   collidersVisible_ = visible;
   colliderActors_->setVisible(visible);
+  colliderDrag_->updateGizmo();
   window_->viewport()->requestRender();
 }
 
 void GarmentTool::showColliders() {
   colliderActors_->set(scene_.cloth.colliders, currentCollider_);
   colliderActors_->setVisible(collidersVisible_);
+  colliderDrag_->updateGizmo();
   window_->viewport()->requestRender();
+}
+
+// The running simulations take the colliders where they are now and go on
+// (a drag moves a collider under the cloth live); the bake no longer fits.
+void GarmentTool::moveCollidersOfRunningSimulation() {
+  bake_.reset();
+  for (View* view : simulatedViews()) {
+    if (!view->simulation) continue;
+    view->simulation->setColliders(scene_.cloth.colliders);
+    view->sewnKept = true;  // sewn among moving colliders: not a state to reuse
+  }
+}
+
+// Without a character the document's time axis is the bake's length.
+void GarmentTool::updateTimeAxis() {
+  const bool axis = bakesWithoutClip() && !simulatedViews().empty() && scene_.cloth.bakeFrames > 1;
+  window_->document()->setNoClipDuration(axis ? float(scene_.cloth.bakeFrames - 1) / scene_.cloth.fps : 0.0f);
 }
 
 const std::vector<float>& GarmentTool::shownSheetPositions() const {
@@ -511,16 +541,22 @@ const std::vector<float>& GarmentTool::shownSheetPositions() const {
 void GarmentTool::applyScene(const GarmentScene& scene) {
   waitForStep();
   const GarmentScene before = scene_;
+  GarmentScene withTheseColliders = before;
+  withTheseColliders.cloth.colliders = scene.cloth.colliders;
+  const bool keepRunning = simulating_ && withTheseColliders == scene;  // only the colliders changed
   scene_ = scene;
   rebuildViews(before);
-  dropDynamics();
+  if (keepRunning) moveCollidersOfRunningSimulation();
+  else dropDynamics();
   if (current_ >= garmentCount()) current_ = garmentCount() - 1;
   if (current_ < 0 && garmentCount() > 0) current_ = 0;
   if (currentCollider_ >= colliderCount()) currentCollider_ = colliderCount() - 1;
-  if (currentCollider_ < 0 && colliderCount() > 0) currentCollider_ = 0;
+  // An opened document shows its first collider in the dock; later a click on nothing clears the selection.
+  if (loading_ && currentCollider_ < 0 && colliderCount() > 0) currentCollider_ = 0;
   showColliders();
   storeSections();
-  if (simulating_) restartSimulation();
+  updateTimeAxis();
+  if (simulating_ && !keepRunning) restartSimulation();
   showGarments();
   emit sceneChanged();
   emit simulationChanged();
@@ -655,6 +691,7 @@ std::unique_ptr<cloth::GarmentSimulation> GarmentTool::makeViewSimulation(size_t
 std::string GarmentTool::sewingKey(size_t view) const {
   nlohmann::json cloth, colliders;
   cloth::writeClothScene(scene_.cloth, cloth, colliders);
+  cloth.erase("bake_frames");  // what is baked afterwards, not how the cloth is sewn
   nlohmann::json key = {{"cloth", cloth}, {"colliders", colliders}};
   if (view < scene_.garments.size()) key["garment"] = garmentToJson(scene_.garments[view]);
   return key.dump() + "|" + bodyKey_;
@@ -908,6 +945,18 @@ std::vector<GarmentTool::BakeGarment> GarmentTool::prepareBake(const std::vector
   return garments;
 }
 
+// No body to drape onto: every garment (the sheet) starts as placed, its
+// first frame is the placed state (nothing kept is reused: a kept state has
+// already fallen).
+std::vector<GarmentTool::BakeGarment> GarmentTool::prepareBakeWithoutClip() const {
+  std::vector<BakeGarment> garments(simulatedViews().size());
+  for (size_t i = 0; i < garments.size(); ++i) {
+    garments[i].simulation = makeViewSimulation(i);
+    garments[i].draped = true;  // no settling before the first frame
+  }
+  return garments;
+}
+
 namespace {
 
 // Sews the garment (unless it starts sewn) on the rest body, then moves the
@@ -959,7 +1008,9 @@ bool GarmentTool::bake(float from, float to) {
     return false;
   }
   const int clip = document->clipIndex();
-  if (clip < 0) {
+  // No character: no clip to follow; bake_frames from the placed cloth, on the document's own time axis.
+  const bool withoutClip = clip < 0 && bakesWithoutClip();
+  if (clip < 0 && !withoutClip) {
     lastError_ = tr("Choose a clip to bake (the rest pose has no time axis)");
     return false;
   }
@@ -967,20 +1018,21 @@ bool GarmentTool::bake(float from, float to) {
   bake_.reset();
   const auto started = std::chrono::steady_clock::now();
   const float fps = scene_.cloth.fps;
-  const float start = from >= 0.0f ? std::max(from, document->clipStart()) : document->clipStart();
+  const float start = withoutClip ? 0.0f : from >= 0.0f ? std::max(from, document->clipStart()) : document->clipStart();
   const float end = to >= 0.0f ? std::min(to, document->clipEnd()) : document->clipEnd();
-  const int frames = std::max(1, int(std::floor((end - start) * fps + 1e-3f)) + 1);
+  const int frames =
+      withoutClip ? scene_.cloth.bakeFrames : std::max(1, int(std::floor((end - start) * fps + 1e-3f)) + 1);
 
-  // The body at every frame, posed here (the worker only simulates).
+  // The body at every frame, posed here (the worker only simulates); none without a character.
   std::vector<std::vector<float>> bodies(frames);
   PosedCharacter posed;
-  for (int f = 0; f < frames; ++f) {
+  for (int f = 0; f < frames && !withoutClip; ++f) {
     posed.evaluate(document->character(), clip, start + f / fps, &document->poseEdits(), &ThreadPool::shared());
     bodies[f] = concatenatedPositions(posed.meshes());
   }
   std::vector<BakeGarment> garments;
   try {
-    garments = prepareBake(bodies[0], fps);
+    garments = withoutClip ? prepareBakeWithoutClip() : prepareBake(bodies[0], fps);
   } catch (const Error& e) {
     lastError_ = QString::fromStdString(e.what());
     return false;
@@ -1128,6 +1180,7 @@ void GarmentTool::selectInRect(const QRect& rect, SelectOp op) {
 
 void GarmentTool::setSelectMode(bool on) {
   selectMode_ = on;
+  colliderDrag_->updateGizmo();  // the gizmo stands aside for the rubber band
   window_->viewport()->setCursor(on ? Qt::CrossCursor : Qt::ArrowCursor);
   emit selectionChanged();
 }

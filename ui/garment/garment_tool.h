@@ -24,9 +24,15 @@
 // Colliders: the document's primitive colliders (sphere, capsule, plane),
 // listed, added, edited and removed as undoable edits like the garments,
 // drawn as translucent actors (render::ColliderActors); every simulation and
-// bake collides with them. The "cloth" section's sheet, when the document
-// has one, is shown and simulated with the garments (a scene may be a sheet
-// and colliders with no character at all).
+// bake collides with them. In the viewport a click selects a collider and
+// its move gizmo drags it (ColliderDragTool); a running simulation goes on
+// with a collider that moves (only the colliders changed: no restart). The
+// "cloth" section's sheet, when the document has one, is shown and
+// simulated with the garments (a scene may be a sheet and colliders with no
+// character at all). With no character there is no clip to follow: Bake
+// then bakes the cloth section's bake_frames at its fps from the placed
+// sheet, and the document gets a time axis of that length
+// (EditorDocument::setNoClipDuration) on which the timeline scrubs the bake.
 //
 // Sewing is slow, so each garment's sewn state (and its state draped onto a
 // bake's first frame) is kept, keyed on everything it depends on (garment,
@@ -65,6 +71,7 @@ class ColliderActors;
 
 namespace mq::ui {
 
+class ColliderDragTool;
 class GarmentPanel;
 class MainWindow;
 
@@ -99,6 +106,10 @@ class GarmentTool : public QObject {
   void setSelfCollisions(bool on);
   // Simulation and bake frames per second (the "cloth" section's fps).
   void setClothFps(float fps, int mergeKey = 0);
+  // With no clip to follow (bakesWithoutClip): how many frames Bake makes (the section's bake_frames).
+  void setBakeFrames(int frames, int mergeKey = 0);
+  // The document has no character, so no clip: Bake bakes bake_frames from the placed cloth.
+  bool bakesWithoutClip() const { return restBody_.empty(); }
   void setPinsFollowBody(int garment, bool followBody);
   void pinSelected();
   void unpinSelected();
@@ -110,10 +121,14 @@ class GarmentTool : public QObject {
   // A collider of that shape placed near the character (or the sheet).
   void addCollider(cloth::PrimitiveCollider::Shape shape);
   // False (lastError says why) for a zero normal, a radius <= 0 or a value that is not finite.
-  bool setCollider(int index, const cloth::PrimitiveCollider& collider, int mergeKey = 0);
+  // text: the undo step's name ("Edit <shape> collider" when empty).
+  bool setCollider(int index, const cloth::PrimitiveCollider& collider, int mergeKey = 0,
+                   const QString& text = QString());
   void removeCollider(int index);
   void setCollidersVisible(bool visible);
+  bool collidersVisible() const { return collidersVisible_; }
   const render::ColliderActors& colliderActors() const { return *colliderActors_; }
+  ColliderDragTool* colliderDragTool() const { return colliderDrag_; }
 
   // The "cloth" section's sheet as shown (empty without a sheet).
   bool hasSheet() const { return sheet_ != nullptr; }
@@ -143,7 +158,8 @@ class GarmentTool : public QObject {
   void waitForStep();
 
   // Bake: simulates the current clip (or its part from `from` to `to`
-  // seconds, when given); false when cancelled or impossible (lastError says why).
+  // seconds, when given), or with no character bake_frames from the placed
+  // cloth; false when cancelled or impossible (lastError says why).
   bool bake(float from = -1.0f, float to = -1.0f);
   void cancelBake() { cancelBake_ = true; }
   bool baking() const { return baking_; }
@@ -205,12 +221,15 @@ class GarmentTool : public QObject {
   std::vector<float> posedBody() const;
   std::vector<View*> simulatedViews() const;  // the garments, then the sheet
   std::vector<BakeGarment> prepareBake(const std::vector<float>& firstBody, float fps) const;
+  std::vector<BakeGarment> prepareBakeWithoutClip() const;
   std::unique_ptr<cloth::GarmentSimulation> makeViewSimulation(size_t view) const;
   std::string sewingKey(size_t view) const;
   const cloth::GarmentSimulation::Snapshot* keptState(const std::string& key) const;
   void keepState(std::string key, cloth::GarmentSimulation::Snapshot snapshot);
   void rebuildSheet();
   void showColliders();
+  void moveCollidersOfRunningSimulation();
+  void updateTimeAxis();
   cloth::PrimitiveCollider placedCollider(cloth::PrimitiveCollider::Shape shape) const;
   bool onPress(QMouseEvent* event);
   bool onMove(QMouseEvent* event);
@@ -223,6 +242,7 @@ class GarmentTool : public QObject {
   std::vector<std::unique_ptr<View>> views_;  // one per garment
   std::unique_ptr<View> sheet_;               // the cloth section's sheet, if any
   std::unique_ptr<render::ColliderActors> colliderActors_;
+  ColliderDragTool* colliderDrag_ = nullptr;
   int currentCollider_ = -1;
   bool collidersVisible_ = true;
   int current_ = -1;

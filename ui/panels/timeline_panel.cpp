@@ -75,6 +75,7 @@ TimelinePanel::TimelinePanel(EditorDocument* document, QWidget* parent)
 
   connect(document_, &EditorDocument::clipsChanged, this, &TimelinePanel::rebuildClips);
   connect(document_, &EditorDocument::clipChanged, this, &TimelinePanel::showClip);
+  connect(document_, &EditorDocument::timeAxisChanged, this, &TimelinePanel::showClip);
   connect(document_, &EditorDocument::timeChanged, this, &TimelinePanel::showTime);
   rebuildClips();
 }
@@ -85,7 +86,7 @@ bool TimelinePanel::isPlaying() const { return timer_->isActive(); }
 
 void TimelinePanel::setPlaying(bool playing) {
   if (playing == isPlaying()) return;
-  if (playing && document_->clipIndex() < 0) return;
+  if (playing && !(document_->clipEnd() > document_->clipStart())) return;
   if (playing) {
     if (document_->time() >= document_->clipEnd()) document_->setTime(document_->clipStart());
     clock_.start();
@@ -126,14 +127,15 @@ void TimelinePanel::showClip() {
   const int clip = document_->clipIndex();
   clipBox_->setCurrentIndex(clip + 1);
   const float duration = document_->clipEnd() - document_->clipStart();
+  const bool hasAxis = duration > 0.0f;  // a clip, or a scene's own duration without one
   const int frames = std::max(0, int(std::ceil(duration / framePeriod() - 1e-3f)));
   slider_->setRange(0, frames);
   slider_->setTickInterval(std::max(1, fps_->value() / 2));
   for (QWidget* w : {static_cast<QWidget*>(slider_), static_cast<QWidget*>(play_), static_cast<QWidget*>(toStart_),
                      static_cast<QWidget*>(toEnd_), static_cast<QWidget*>(stepBack_),
                      static_cast<QWidget*>(stepForward_)})
-    w->setEnabled(clip >= 0);
-  if (clip < 0) setPlaying(false);
+    w->setEnabled(hasAxis);
+  if (!hasAxis) setPlaying(false);
   syncing_ = false;
   showTime();
 }

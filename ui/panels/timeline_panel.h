@@ -1,5 +1,6 @@
 #pragma once
-// The timeline: play/pause, a slider to scrub the current clip, the time,
+// The timeline: play/pause, a slider to scrub the current clip (or, with no
+// clip, the scene's own duration: EditorDocument::setNoClipDuration), the time,
 // the clip chooser and the playback frame rate. Playback runs on a QTimer
 // and loops over the clip.
 

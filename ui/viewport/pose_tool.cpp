@@ -12,12 +12,12 @@
 #include "render/scene_view.h"
 #include "ui/document/editor_document.h"
 #include "ui/document/pose_commands.h"
+#include "ui/viewport/viewport_geometry.h"
 #include "ui/viewport/vtk_viewport_widget.h"
 
 namespace mq::ui {
 namespace {
 
-constexpr int kClickTolerancePixels = 4;
 // Below this |cos| between ring axis and view direction the ring is seen
 // nearly edge-on and drags follow its tangent instead of circling it.
 constexpr float kFacingThreshold = 0.35f;
@@ -65,19 +65,7 @@ void PoseTool::updateGizmo() {
   viewport_->requestRender();
 }
 
-QPoint PoseTool::toDisplay(const QPointF& position) const {
-  const qreal ratio = viewport_->devicePixelRatioF();
-  const int height = int(viewport_->height() * ratio);
-  return QPoint(int(position.x() * ratio), height - 1 - int(position.y() * ratio));
-}
-
-glm::vec2 PoseTool::projectToDisplay(const glm::vec3& world) const {
-  vtkRenderer* renderer = scene_->renderer();
-  renderer->SetWorldPoint(world.x, world.y, world.z, 1.0);
-  renderer->WorldToDisplay();
-  const double* d = renderer->GetDisplayPoint();
-  return {float(d[0]), float(d[1])};
-}
+glm::vec2 PoseTool::projectToDisplay(const glm::vec3& world) const { return worldToDisplay(scene_->renderer(), world); }
 
 bool PoseTool::eventFilter(QObject* watched, QEvent* event) {
   if (watched != viewport_) return false;
@@ -95,7 +83,7 @@ bool PoseTool::onPress(QMouseEvent* event) {
   pressed_ = true;
   const int bone = document_->selectedBone();
   if (bone < 0 || event->modifiers() != Qt::NoModifier) return false;
-  const QPoint display = toDisplay(event->position());
+  const QPoint display = widgetToDisplay(viewport_, event->position());
   const int axis = gizmo_.pickAxis(display.x(), display.y());
   if (axis < 0) return false;
 
@@ -145,7 +133,7 @@ float PoseTool::dragAngle(const QPoint& display) const {
 }
 
 bool PoseTool::onMove(QMouseEvent* event) {
-  const QPoint display = toDisplay(event->position());
+  const QPoint display = widgetToDisplay(viewport_, event->position());
   if (dragAxis_ >= 0) {
     const float angle = dragAngle(display);
     const glm::quat edit = editAfterWorldRotation(dragEditBefore_, dragWorldBefore_, dragAxisWorld_, angle);
@@ -172,7 +160,7 @@ bool PoseTool::onRelease(QMouseEvent* event) {
   }
   const QPoint moved = event->position().toPoint() - pressPosition_;
   if (pressed_ && moved.manhattanLength() <= kClickTolerancePixels) {
-    const QPoint display = toDisplay(event->position());
+    const QPoint display = widgetToDisplay(viewport_, event->position());
     const int bone = scene_->pickBone(display.x(), display.y());
     document_->selectBone(bone);
     emit bonePicked(bone);

@@ -52,8 +52,6 @@ class PoseTool : public QObject {
   bool onPress(QMouseEvent* event);
   bool onMove(QMouseEvent* event);
   bool onRelease(QMouseEvent* event);
-  // Display coordinates of a widget position (device pixels, y up).
-  QPoint toDisplay(const QPointF& position) const;
   glm::vec2 projectToDisplay(const glm::vec3& world) const;
   float dragAngle(const QPoint& display) const;
   glm::quat boneWorldRotation(int bone) const;

@@ -1,0 +1,35 @@
+#pragma once
+// The on-screen move gizmo (as in Blender and Maya): three arrows from the
+// centre, red, green and blue along the frame's X, Y and Z, for moves along
+// one axis, and a white disc at the centre facing the viewer for moves in
+// the screen plane. An overlay gizmo of constant size on screen
+// (viewport_gizmo.h); arrows a shape cannot move along can be hidden
+// (a plane shows only its normal). The collider drag tool
+// (ui/garment/collider_drag_tool.h) turns drags into moves.
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include "ui/viewport/viewport_gizmo.h"
+
+namespace mq::ui {
+
+class MoveGizmo : public ViewportGizmo {
+ public:
+  static constexpr int kScreenPlane = 3;  // the centre disc
+  static constexpr int kHandleCount = 4;
+
+  MoveGizmo();
+
+  // Centre and orientation (the arrows point along the rotated X, Y, Z axes).
+  void setFrame(const glm::vec3& center, const glm::quat& orientation);
+  // World space, unit: an arrow's direction; kScreenPlane: towards the camera.
+  glm::vec3 axis(int handle) const;
+
+ private:
+  void placeHandles() override;
+
+  glm::quat orientation_{1.0f, 0.0f, 0.0f, 0.0f};
+};
+
+}  // namespace mq::ui
