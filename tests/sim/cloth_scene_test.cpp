@@ -51,7 +51,9 @@ TEST(ClothScene, BenchmarkScenesParse) {
 
 TEST(ClothScene, WriteThenParseGivesTheSameSpec) {
   const json doc = readJson(benchScene("pinned_64"));
-  const ClothSceneSpec a = parseClothScene(doc["cloth"], doc["colliders"], "pinned_64");
+  ClothSceneSpec a = parseClothScene(doc["cloth"], doc["colliders"], "pinned_64");
+  EXPECT_EQ(a.bakeFrames, 120);  // not in the file: the default
+  a.bakeFrames = 48;
   json cloth, colliders;
   writeClothScene(a, cloth, colliders);
   const ClothSceneSpec b = parseClothScene(cloth, colliders, "again");
@@ -61,6 +63,7 @@ TEST(ClothScene, WriteThenParseGivesTheSameSpec) {
   EXPECT_FLOAT_EQ(b.massPerVertex, a.massPerVertex);
   EXPECT_EQ(b.settings.integrator, a.settings.integrator);
   EXPECT_EQ(b.pinnedRows, a.pinnedRows);
+  EXPECT_EQ(b.bakeFrames, 48);
 }
 
 std::string errorFor(const json& cloth, const json& colliders = json()) {
@@ -84,6 +87,7 @@ TEST(ClothScene, BadValuesNameTheFileAndTheKey) {
   EXPECT_NE(errorFor(json::object(), json::array({{{"type", "cone"}}})).find("colliders[0].type: unknown collider"),
             std::string::npos);
   EXPECT_NE(errorFor(json()).find("no cloth section"), std::string::npos);
+  EXPECT_NE(errorFor({{"bake_frames", 0}}).find("cloth.bake_frames: must be an integer >= 1"), std::string::npos);
   // Numbers too large for a float are not finite.
   EXPECT_NE(errorFor({{"wind", {0, 1e300, 0}}}).find("cloth.wind"), std::string::npos);
 }
