@@ -424,7 +424,9 @@ void GarmentTool::clearPins() {
 // ---- Colliders ----
 
 void GarmentTool::setCurrentCollider(int index) {
-  if (index < -1 || index >= colliderCount() || index == currentCollider_) return;
+  if (index < -1 || index >= colliderCount()) return;
+  colliderDeselected_ = index < 0;
+  if (index == currentCollider_) return;
   currentCollider_ = index;
   showColliders();
   emit sceneChanged();
@@ -551,8 +553,9 @@ void GarmentTool::applyScene(const GarmentScene& scene) {
   if (current_ >= garmentCount()) current_ = garmentCount() - 1;
   if (current_ < 0 && garmentCount() > 0) current_ = 0;
   if (currentCollider_ >= colliderCount()) currentCollider_ = colliderCount() - 1;
-  // An opened document shows its first collider in the dock; later a click on nothing clears the selection.
-  if (loading_ && currentCollider_ < 0 && colliderCount() > 0) currentCollider_ = 0;
+  // The dock shows the first collider unless the selection was cleared (a click on nothing).
+  if (loading_) colliderDeselected_ = false;
+  if (currentCollider_ < 0 && colliderCount() > 0 && !colliderDeselected_) currentCollider_ = 0;
   showColliders();
   storeSections();
   updateTimeAxis();

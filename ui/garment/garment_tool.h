@@ -117,6 +117,7 @@ class GarmentTool : public QObject {
   // Colliders (the document's "colliders" section).
   int colliderCount() const { return int(scene_.cloth.colliders.size()); }
   int currentCollider() const { return currentCollider_; }  // -1: none
+  // -1 clears the selection (it stays clear through later edits until a collider is chosen).
   void setCurrentCollider(int index);
   // A collider of that shape placed near the character (or the sheet).
   void addCollider(cloth::PrimitiveCollider::Shape shape);
@@ -244,6 +245,7 @@ class GarmentTool : public QObject {
   std::unique_ptr<render::ColliderActors> colliderActors_;
   ColliderDragTool* colliderDrag_ = nullptr;
   int currentCollider_ = -1;
+  bool colliderDeselected_ = false;  // setCurrentCollider(-1): no collider selected until one is chosen
   bool collidersVisible_ = true;
   int current_ = -1;
   QString lastError_;
