@@ -27,6 +27,7 @@
 #include <vtkCamera.h>
 
 #include "render/collider_actors.h"
+#include "render/scene_view.h"
 #include "ui/document/editor_document.h"
 #include "ui/garment/collider_drag_tool.h"
 #include "ui/garment/garment_panel.h"
@@ -258,6 +259,36 @@ class ColliderDragTest : public QObject {
     renderNow(window_);
     keepShot("collider_dragged_under_sheet");
     undo()->undo();
+  }
+
+  // With a character: the body in front of a collider takes the click (a
+  // bone), the sphere in front of the chest takes it back (the bone is cleared).
+  void theCharacterHidesCollidersBehindIt() {
+    QString error;
+    QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));
+    tool_->dock()->raise();
+    tool_->addCollider(cloth::PrimitiveCollider::Shape::Plane);  // at the feet, 2 m wide, behind the legs
+    tool_->addCollider(cloth::PrimitiveCollider::Shape::Sphere);  // in front of the chest
+    renderNow(window_);
+    // A point of the floor collider's square that the character hides (its feet stand on it).
+    const glm::vec3 floor = collider(0).a;
+    QPoint onLeg(-1, -1);
+    for (float z = -0.9f; z < 0.9f && onLeg.x() < 0; z += 0.05f)
+      for (float x = -0.3f; x < 0.3f && onLeg.x() < 0; x += 0.05f) {
+        const QPoint at = toWidget(window_, floor + glm::vec3(x, 0.0f, z));
+        const QPoint d = widgetToDisplay(viewport(), at);
+        if (window_->sceneView()->pickBone(d.x(), d.y()) >= 0) onLeg = at;
+      }
+    QVERIFY2(onLeg.x() >= 0, "the character hides no part of the floor");
+    click(onLeg);
+    QVERIFY(doc()->selectedBone() >= 0);
+    QCOMPARE(tool_->currentCollider(), -1);
+    QVERIFY(!gizmo().visible());
+    click(toWidget(window_, collider(1).a));
+    QCOMPARE(tool_->currentCollider(), 1);
+    QCOMPARE(doc()->selectedBone(), -1);
+    QVERIFY(gizmo().visible());
+    keepShot("collider_gizmo_on_character");
   }
 
   // No character, so no clip: Bake makes the dock's number of frames from the

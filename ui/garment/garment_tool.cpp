@@ -518,15 +518,29 @@ void GarmentTool::showColliders() {
   window_->viewport()->requestRender();
 }
 
-// The running simulations take the colliders where they are now and go on
-// (a drag moves a collider under the cloth live); the bake no longer fits.
-void GarmentTool::moveCollidersOfRunningSimulation() {
+// Only the colliders changed while the cloth runs (a drag moves a collider
+// under it): the simulation goes on with them where they are now. No wait
+// for the step in flight (a garment's step can take a second): the next
+// step takes them. The bake no longer fits.
+void GarmentTool::moveCollidersLive(const GarmentScene& scene) {
+  scene_ = scene;
   bake_.reset();
-  for (View* view : simulatedViews()) {
-    if (!view->simulation) continue;
-    view->simulation->setColliders(scene_.cloth.colliders);
-    view->sewnKept = true;  // sewn among moving colliders: not a state to reuse
-  }
+  collidersMoved_ = true;
+  for (View* view : simulatedViews()) view->sewnKept = true;  // sewn among moving colliders: not a state to reuse
+  if (!stepWatcher_.isRunning()) applyMovedColliders();
+  if (currentCollider_ >= colliderCount()) currentCollider_ = colliderCount() - 1;
+  showColliders();
+  storeSections();
+  emit sceneChanged();
+  emit simulationChanged();
+}
+
+// Between steps only (the worker owns the simulations during one).
+void GarmentTool::applyMovedColliders() {
+  if (!collidersMoved_) return;
+  collidersMoved_ = false;
+  for (View* view : simulatedViews())
+    if (view->simulation) view->simulation->setColliders(scene_.cloth.colliders);
 }
 
 // Without a character the document's time axis is the bake's length.
@@ -541,15 +555,17 @@ const std::vector<float>& GarmentTool::shownSheetPositions() const {
 }
 
 void GarmentTool::applyScene(const GarmentScene& scene) {
+  GarmentScene withTheseColliders = scene_;
+  withTheseColliders.cloth.colliders = scene.cloth.colliders;
+  if (simulating_ && withTheseColliders == scene) {
+    moveCollidersLive(scene);
+    return;
+  }
   waitForStep();
   const GarmentScene before = scene_;
-  GarmentScene withTheseColliders = before;
-  withTheseColliders.cloth.colliders = scene.cloth.colliders;
-  const bool keepRunning = simulating_ && withTheseColliders == scene;  // only the colliders changed
   scene_ = scene;
   rebuildViews(before);
-  if (keepRunning) moveCollidersOfRunningSimulation();
-  else dropDynamics();
+  dropDynamics();
   if (current_ >= garmentCount()) current_ = garmentCount() - 1;
   if (current_ < 0 && garmentCount() > 0) current_ = 0;
   if (currentCollider_ >= colliderCount()) currentCollider_ = colliderCount() - 1;
@@ -559,7 +575,7 @@ void GarmentTool::applyScene(const GarmentScene& scene) {
   showColliders();
   storeSections();
   updateTimeAxis();
-  if (simulating_ && !keepRunning) restartSimulation();
+  if (simulating_) restartSimulation();
   showGarments();
   emit sceneChanged();
   emit simulationChanged();
@@ -832,6 +848,7 @@ QString GarmentTool::simulationPhase() const {
 // timeline has it now; the next step starts when this one has been shown.
 void GarmentTool::startStep() {
   if (!simulating_ || stepWatcher_.isRunning()) return;
+  applyMovedColliders();
   struct Job {
     cloth::GarmentSimulation* simulation;
     cloth::DrapeSchedule* drape;

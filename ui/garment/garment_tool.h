@@ -229,7 +229,8 @@ class GarmentTool : public QObject {
   void keepState(std::string key, cloth::GarmentSimulation::Snapshot snapshot);
   void rebuildSheet();
   void showColliders();
-  void moveCollidersOfRunningSimulation();
+  void moveCollidersLive(const GarmentScene& scene);
+  void applyMovedColliders();
   void updateTimeAxis();
   cloth::PrimitiveCollider placedCollider(cloth::PrimitiveCollider::Shape shape) const;
   bool onPress(QMouseEvent* event);
@@ -264,6 +265,7 @@ class GarmentTool : public QObject {
 
   // Live simulation
   bool simulating_ = false;
+  bool collidersMoved_ = false;  // the next step gives the simulations the scene's colliders
   int steps_ = 0;
   float simulatedSeconds_ = 0.0f;
   bool sewingShown_ = false;  // the status bar shows the sewing progress
