@@ -110,6 +110,33 @@ TEST(GarmentSheet, SheetFallsOnItsColliderAndKeepsItsPins) {
   EXPECT_LT(inside, 0.005f);  // around the sphere, not through it
 }
 
+// A collider moved while the cloth runs (the editor's drag): the running
+// simulation collides with it where it is now.
+TEST(GarmentSheet, SetCollidersMovesTheColliderOfARunningSimulation) {
+  ClothSceneSpec spec;
+  spec.sheet.columns = spec.sheet.rows = 12;
+  spec.sheet.width = spec.sheet.height = 0.6f;
+  spec.sheet.center = {0.0f, 0.5f, 0.0f};
+  spec.fabric = fabricPreset("cotton");
+  spec.colliders.push_back(PrimitiveCollider::sphere({0.0f, -1.0f, 0.0f}, 0.15f));  // far below: nothing to hit
+  auto sim = makeSheetSimulation(spec, {}, {});
+  for (int f = 0; f < 4; ++f) sim->step(1.0f / 24.0f);
+  const glm::vec3 centre(0.0f, 0.2f, 0.0f);  // moved under the falling sheet
+  sim->setColliders({PrimitiveCollider::sphere(centre, 0.15f)});
+  EXPECT_EQ(sim->simulator().colliders().size(), 1u);
+  for (int f = 0; f < 24; ++f) sim->step(1.0f / 24.0f);
+  const std::vector<float> x = sim->positions();
+  float inside = 0.0f, overTop = -INFINITY;
+  for (size_t v = 0; v < x.size() / 3; ++v) {
+    const glm::vec3 p(x[3 * v], x[3 * v + 1], x[3 * v + 2]);
+    inside = std::max(inside, 0.15f - glm::length(p - centre));
+    if (std::abs(p.x) < 0.04f && std::abs(p.z) < 0.04f) overTop = std::max(overTop, p.y);
+  }
+  EXPECT_LT(inside, 0.005f);
+  EXPECT_GT(overTop, centre.y + 0.15f - 0.01f);  // resting on the moved sphere, not fallen past it
+  EXPECT_LT(overTop, centre.y + 0.15f + 0.04f);
+}
+
 }  // namespace
 }  // namespace mq
 
