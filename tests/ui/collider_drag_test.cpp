@@ -219,6 +219,8 @@ class ColliderDragTest : public QObject {
     QVERIFY(!gizmo().handle(0)->GetVisibility() && !gizmo().handle(2)->GetVisibility());
     QVERIFY(gizmo().handle(1)->GetVisibility());
     QVERIFY(glm::length(gizmo().axis(1) - glm::normalize(plane.b)) < 1e-5f);
+    renderNow(window_);
+    keepShot("collider_gizmo_plane");
     const glm::vec3 lifted = dragArrow(1, 0.1f);
     QVERIFY(std::isfinite(lifted.x));
     QVERIFY(std::abs(collider(2).a.y - (plane.a.y + 0.1f)) < 0.01f);
