@@ -327,6 +327,9 @@ void GarmentPanel::refresh() {
   }
   simForm_->setRowVisible(bakeFrames_, tool_->bakesWithoutClip());
   bake_->setText(tool_->bakesWithoutClip() ? tr("Bake") : tr("Bake clip"));
+  bake_->setToolTip(tool_->bakesWithoutClip()
+                        ? tr("Simulate the bake length from the placed cloth; the timeline then scrubs the baked frames")
+                        : tr("Simulate the whole clip; the timeline then scrubs the baked frames"));
   {
     const QSignalBlocker block(attach_);
     attach_->setCurrentIndex(current >= 0 && scene.garments[current].pins.attach == GarmentPins::Attach::Space ? 1 : 0);
