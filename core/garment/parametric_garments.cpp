@@ -184,6 +184,31 @@ Panel sleevePanel(const std::string& name, float circumference, float length, fl
   return p;
 }
 
+// An upper arm's fitted capsule is about 1.55 times as thick as the radius of
+// its measured girth (the default mannequin's: the deltoid and the joint's
+// end). Much thicker, it is not the arm's: the bone also drives skin of the
+// shoulder and chest (CesiumMan's left upper arm), and a sleeve sized and
+// placed by it sticks out like a wing and closes its cap through the arm.
+constexpr float kArmCapsuleGirthRadii = 1.55f, kArmBlobGirthRadii = 1.8f;
+
+// The body's capsules as a sleeve sees them: an upper arm's blob (above)
+// becomes a capsule of the usual thickness around the arm up to the elbow,
+// along the sleeve's axis (shoulder to wrist: around a bent elbow too); the
+// skin it leaves out belongs to the torso's capsules.
+std::vector<BodyCapsule> sleeveCapsules(const BodyMeasurements& body) {
+  std::vector<BodyCapsule> capsules = body.capsules;
+  const float girthRadius = body.upperArmGirth / (2.0f * kPi);
+  for (BodyCapsule& c : capsules)
+    for (int s = 0; s < 2; ++s)
+      if (c.boneName == body.upperArmBone[s] && c.radius > kArmBlobGirthRadii * girthRadius) {
+        const glm::vec3 axis = glm::normalize(body.wrist[s] - body.shoulder[s]);
+        c.a = body.shoulder[s];
+        c.b = c.a + glm::dot(body.elbow[s] - c.a, axis) * axis;
+        c.radius = kArmCapsuleGirthRadii * girthRadius + glm::length(body.elbow[s] - c.b);
+      }
+  return capsules;
+}
+
 Garment makeTShirt(const BodyMeasurements& body, const Params& p) {
   Garment g;
   g.name = "T-shirt";
@@ -205,6 +230,7 @@ Garment makeTShirt(const BodyMeasurements& body, const Params& p) {
   wrapTorso(body, g.panels[0], g.panels[1], topY, length, offset);
 
   float circumference = body.upperArmGirth + p.at("sleeveEase");
+  const std::vector<BodyCapsule> armCapsules = sleeveCapsules(body);
   for (int s = 0; s < 2; ++s) {
     std::string side = s == 0 ? "l" : "r";
     // A low cap holds the sleeve out like a wing when the arm comes down from
@@ -213,7 +239,7 @@ Garment makeTShirt(const BodyMeasurements& body, const Params& p) {
     // Along the whole arm (shoulder to wrist), not the upper arm alone: a long
     // sleeve then clears the forward-bent forearm and the hand.
     glm::vec3 axis = glm::normalize(body.shoulder[s] - body.wrist[s]);
-    const BodyCapsule* arm = findCapsule(body.capsules, body.upperArmBone[s]);
+    const BodyCapsule* arm = findCapsule(armCapsules, body.upperArmBone[s]);
     float radius = std::max(circumference / (2.0f * kPi), (arm ? arm->radius : 0.05f) + offset + 2.0f * kCoverSpacing);
     sleeve.placement = cylinder(body.upperArmBone[s], body.shoulder[s], axis, kUp, radius, {0.0f, p.at("sleeveLength")});
     glm::vec3 shoulder = body.shoulder[s];
@@ -222,9 +248,9 @@ Garment makeTShirt(const BodyMeasurements& body, const Params& p) {
     // long sleeve moved down may meet the forearm: then from the joint.)
     auto moveDown = [&](Panel& panel, float shift) { panel.placement.center = shoulder - shift * axis; };
     try {
-      growUntilClear(body.capsules, {&sleeve}, offset, kSleeveDrop, 0.4f, moveDown);
+      growUntilClear(armCapsules, {&sleeve}, offset, kSleeveDrop, 0.4f, moveDown);
     } catch (const Error&) {
-      growUntilClear(body.capsules, {&sleeve}, offset, 0.0f, 0.4f, moveDown);
+      growUntilClear(armCapsules, {&sleeve}, offset, 0.0f, 0.4f, moveDown);
     }
     g.panels.push_back(sleeve);
   }
