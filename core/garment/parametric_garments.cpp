@@ -209,6 +209,20 @@ std::vector<BodyCapsule> sleeveCapsules(const BodyMeasurements& body) {
   return capsules;
 }
 
+// How much deeper the armholes are cut than for the default mannequin's arms,
+// 45 degrees below level: by sin 45 / sin(angle) for more level arms (at most
+// 1.6 times; 1 within 3%). A pattern sewn on arms held out (CesiumMan's, 29
+// degrees) has its underarm pulled up when they come down to walk: with the
+// default depth the sleeves' undersides and the sides under the armpits were
+// caught between arm and torso (up to 32 vertices inside the body in a frame
+// of its walk, 25 cut this way).
+float armholeDeepening(const BodyMeasurements& body) {
+  float below = 0.0f;
+  for (int s = 0; s < 2; ++s) below += 0.5f * glm::normalize(body.shoulder[s] - body.wrist[s]).y;
+  const float deepening = std::clamp(std::sin(0.25f * kPi) / std::max(below, 0.1f), 1.0f, 1.6f);
+  return deepening < 1.03f ? 1.0f : deepening;
+}
+
 Garment makeTShirt(const BodyMeasurements& body, const Params& p) {
   Garment g;
   g.name = "T-shirt";
@@ -223,8 +237,10 @@ Garment makeTShirt(const BodyMeasurements& body, const Params& p) {
   // at the body instead of sliding over it.
   topY = std::max(topY, std::max(body.shoulderTop[0], body.shoulderTop[1]) + kShoulderSlope + offset);
   // A roomy armhole: the armpit corners of front, back and sleeve must meet
-  // under the arm of an A-pose body without stretching past the limit.
-  float length = p.at("length"), armholeDepth = std::min(0.25f * topY / 1.5f, 0.5f * length);
+  // under the arm of an A-pose body without stretching past the limit; deeper
+  // for arms held out.
+  float length = p.at("length");
+  float armholeDepth = std::min(0.25f * topY / 1.5f * armholeDeepening(body), 0.6f * length);
   g.panels.push_back(shirtBody("front", "l", "r", halfWidth, length, armholeDepth, shoulderHalf, neckHalf, 0.08f));
   g.panels.push_back(shirtBody("back", "r", "l", halfWidth, length, armholeDepth, shoulderHalf, neckHalf, 0.02f));
   wrapTorso(body, g.panels[0], g.panels[1], topY, length, offset);
