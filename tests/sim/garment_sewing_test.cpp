@@ -69,6 +69,7 @@ struct SewnGarment {
   int sewingFrames = 0;
   float finalStretch = 0.0f;
   int penetrating = 0;
+  int startInsideBody = 0;  // placed panel vertices inside the body before sewing
   int insideBody = 0;
   Aabb bounds;
 };
@@ -88,8 +89,11 @@ SewnGarment sewOn(const Character& body, const std::string& type, float edge, in
   GarmentSimulationSettings settings;
   settings.fabric = fabricPreset("cotton");
   settings.cloth.collisionThickness = 0.004f;
-  GarmentSimulation sim(buildGarmentMesh(garment), settings, bodyPositions, bodyTriangles);
+  const GarmentMesh placed = buildGarmentMesh(garment);
+  GarmentSimulation sim(placed, settings, bodyPositions, bodyTriangles);
   SewnGarment out;
+  for (size_t i = 0; i < placed.vertexCount(); ++i)
+    out.startInsideBody += insideClosedMesh(bodyPositions, bodyTriangles, placed.position(i)) ? 1 : 0;
   out.vertices = sim.vertexCount();
   out.initialGap = sim.seamGap();
   const float dt = 1.0f / 30.0f;
@@ -178,6 +182,7 @@ TEST_P(GarmentOnCesiumMan, SewsWeldsAndSettlesOutsideTheBody) {
   EXPECT_LT(g.sewingFrames, 70);
   EXPECT_LE(g.finalStretch, 1.1f + 1e-3f);
   EXPECT_GT(g.bounds.min.y, 0.05f);  // not down on the floor
+  EXPECT_EQ(g.startInsideBody, 0) << "panels placed inside the body";
   EXPECT_EQ(g.penetrating, 0);
   EXPECT_EQ(g.insideBody, 0) << "settled vertices inside the body mesh";
   if (GetParam() == "tshirt") {
