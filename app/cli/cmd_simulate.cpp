@@ -61,6 +61,7 @@ std::unique_ptr<cloth::ClothSimulator> makeSheet(const cloth::ClothSceneSpec& sp
 struct RunResult {
   double seconds = 0.0;
   float maxStretch = 1.0f;
+  int maxPenetrating = 0;  // the most cloth vertices inside the body in any frame
   long long solverIterations = 0;
   int substeps = 0;
 };
@@ -94,7 +95,9 @@ RunResult run(SceneCloth& cloth, PosedBody& body, float startTime, bool animateB
     }
     if (cloth.garments) cloth.garments->step(1.0f / fps, posed ? &bodyPositions : nullptr);
     r.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    r.maxStretch = std::max(r.maxStretch, cloth.now().maxStretch);
+    const cli::ClothNow now = cloth.now();
+    r.maxStretch = std::max(r.maxStretch, now.maxStretch);
+    r.maxPenetrating = std::max(r.maxPenetrating, now.penetratingVertices);
     if (exportDir.empty()) continue;
     if (cloth.sheet)
       cloth::writeObj((std::filesystem::path(exportDir) / cloth::objFrameName("cloth", f + 1)).string(),
@@ -160,6 +163,7 @@ int runSimulate(const std::vector<std::string>& argv) {
                 {"max_stretch", r.maxStretch},
                 {"final_max_stretch", now.maxStretch},
                 {"penetrating_vertices", now.penetratingVertices},
+                {"max_penetrating_vertices", r.maxPenetrating},
                 {"bbox_min", vec3Json(now.boundsMin)},
                 {"bbox_max", vec3Json(now.boundsMax)},
                 {"vertices", now.vertices},

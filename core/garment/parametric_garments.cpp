@@ -184,6 +184,45 @@ Panel sleevePanel(const std::string& name, float circumference, float length, fl
   return p;
 }
 
+// An upper arm's fitted capsule is about 1.55 times as thick as the radius of
+// its measured girth (the default mannequin's: the deltoid and the joint's
+// end). Much thicker, it is not the arm's: the bone also drives skin of the
+// shoulder and chest (CesiumMan's left upper arm), and a sleeve sized and
+// placed by it sticks out like a wing and closes its cap through the arm.
+constexpr float kArmCapsuleGirthRadii = 1.55f, kArmBlobGirthRadii = 1.8f;
+
+// The body's capsules as a sleeve sees them: an upper arm's blob (above)
+// becomes a capsule of the usual thickness around the arm up to the elbow,
+// along the sleeve's axis (shoulder to wrist: around a bent elbow too); the
+// skin it leaves out belongs to the torso's capsules.
+std::vector<BodyCapsule> sleeveCapsules(const BodyMeasurements& body) {
+  std::vector<BodyCapsule> capsules = body.capsules;
+  const float girthRadius = body.upperArmGirth / (2.0f * kPi);
+  for (BodyCapsule& c : capsules)
+    for (int s = 0; s < 2; ++s)
+      if (c.boneName == body.upperArmBone[s] && c.radius > kArmBlobGirthRadii * girthRadius) {
+        const glm::vec3 axis = glm::normalize(body.wrist[s] - body.shoulder[s]);
+        c.a = body.shoulder[s];
+        c.b = c.a + glm::dot(body.elbow[s] - c.a, axis) * axis;
+        c.radius = kArmCapsuleGirthRadii * girthRadius + glm::length(body.elbow[s] - c.b);
+      }
+  return capsules;
+}
+
+// How much deeper the armholes are cut than for the default mannequin's arms,
+// 45 degrees below level: by sin 45 / sin(angle) for more level arms (at most
+// 1.6 times; 1 within 3%). A pattern sewn on arms held out (CesiumMan's, 29
+// degrees) has its underarm pulled up when they come down to walk: with the
+// default depth the sleeves' undersides and the sides under the armpits were
+// caught between arm and torso (up to 32 vertices inside the body in a frame
+// of its walk, 25 cut this way).
+float armholeDeepening(const BodyMeasurements& body) {
+  float below = 0.0f;
+  for (int s = 0; s < 2; ++s) below += 0.5f * glm::normalize(body.shoulder[s] - body.wrist[s]).y;
+  const float deepening = std::clamp(std::sin(0.25f * kPi) / std::max(below, 0.1f), 1.0f, 1.6f);
+  return deepening < 1.03f ? 1.0f : deepening;
+}
+
 Garment makeTShirt(const BodyMeasurements& body, const Params& p) {
   Garment g;
   g.name = "T-shirt";
@@ -198,13 +237,16 @@ Garment makeTShirt(const BodyMeasurements& body, const Params& p) {
   // at the body instead of sliding over it.
   topY = std::max(topY, std::max(body.shoulderTop[0], body.shoulderTop[1]) + kShoulderSlope + offset);
   // A roomy armhole: the armpit corners of front, back and sleeve must meet
-  // under the arm of an A-pose body without stretching past the limit.
-  float length = p.at("length"), armholeDepth = std::min(0.25f * topY / 1.5f, 0.5f * length);
+  // under the arm of an A-pose body without stretching past the limit; deeper
+  // for arms held out.
+  float length = p.at("length");
+  float armholeDepth = std::min(0.25f * topY / 1.5f * armholeDeepening(body), 0.6f * length);
   g.panels.push_back(shirtBody("front", "l", "r", halfWidth, length, armholeDepth, shoulderHalf, neckHalf, 0.08f));
   g.panels.push_back(shirtBody("back", "r", "l", halfWidth, length, armholeDepth, shoulderHalf, neckHalf, 0.02f));
   wrapTorso(body, g.panels[0], g.panels[1], topY, length, offset);
 
   float circumference = body.upperArmGirth + p.at("sleeveEase");
+  const std::vector<BodyCapsule> armCapsules = sleeveCapsules(body);
   for (int s = 0; s < 2; ++s) {
     std::string side = s == 0 ? "l" : "r";
     // A low cap holds the sleeve out like a wing when the arm comes down from
@@ -213,7 +255,7 @@ Garment makeTShirt(const BodyMeasurements& body, const Params& p) {
     // Along the whole arm (shoulder to wrist), not the upper arm alone: a long
     // sleeve then clears the forward-bent forearm and the hand.
     glm::vec3 axis = glm::normalize(body.shoulder[s] - body.wrist[s]);
-    const BodyCapsule* arm = findCapsule(body.capsules, body.upperArmBone[s]);
+    const BodyCapsule* arm = findCapsule(armCapsules, body.upperArmBone[s]);
     float radius = std::max(circumference / (2.0f * kPi), (arm ? arm->radius : 0.05f) + offset + 2.0f * kCoverSpacing);
     sleeve.placement = cylinder(body.upperArmBone[s], body.shoulder[s], axis, kUp, radius, {0.0f, p.at("sleeveLength")});
     glm::vec3 shoulder = body.shoulder[s];
@@ -222,9 +264,9 @@ Garment makeTShirt(const BodyMeasurements& body, const Params& p) {
     // long sleeve moved down may meet the forearm: then from the joint.)
     auto moveDown = [&](Panel& panel, float shift) { panel.placement.center = shoulder - shift * axis; };
     try {
-      growUntilClear(body.capsules, {&sleeve}, offset, kSleeveDrop, 0.4f, moveDown);
+      growUntilClear(armCapsules, {&sleeve}, offset, kSleeveDrop, 0.4f, moveDown);
     } catch (const Error&) {
-      growUntilClear(body.capsules, {&sleeve}, offset, 0.0f, 0.4f, moveDown);
+      growUntilClear(armCapsules, {&sleeve}, offset, 0.0f, 0.4f, moveDown);
     }
     g.panels.push_back(sleeve);
   }

@@ -130,6 +130,20 @@ TEST(HumanoidRoles, BuiltInGarmentsFitCesiumMan) {
   EXPECT_GE(m.hipGirth, m.waistGirth);
 }
 
+// CesiumMan's left upper arm also drives skin of its shoulder (its capsule
+// is 3.4 times as thick as the arm's girth, the right one's 2 times): the
+// sleeves follow the arm's girth instead, so both sit alike around their arm.
+TEST(HumanoidRoles, TShirtSleevesOfCesiumManAreAlike) {
+  const Character c = importCharacter(kCharacters + "CesiumMan/glTF/CesiumMan.gltf");
+  const Garment shirt = makeParametricGarment("tshirt", c);
+  const PanelPlacement& left = shirt.panels[2].placement;
+  const PanelPlacement& right = shirt.panels[3].placement;
+  ASSERT_EQ(shirt.panels[2].name, "sleeve_l");
+  EXPECT_NEAR(left.radius, right.radius, 0.005f);
+  EXPECT_NEAR(left.center.x, -right.center.x, 0.02f);
+  EXPECT_NEAR(left.center.y, right.center.y, 0.01f);
+}
+
 TEST(HumanoidRoles, NonHumanoidGivesAClearError) {
   const Character c = importCharacter(kCharacters + "RiggedSimple/RiggedSimple.gltf");
   try {

@@ -69,6 +69,7 @@ struct SewnGarment {
   int sewingFrames = 0;
   float finalStretch = 0.0f;
   int penetrating = 0;
+  int startInsideBody = 0;  // placed panel vertices inside the body before sewing
   int insideBody = 0;
   Aabb bounds;
 };
@@ -88,8 +89,11 @@ SewnGarment sewOn(const Character& body, const std::string& type, float edge, in
   GarmentSimulationSettings settings;
   settings.fabric = fabricPreset("cotton");
   settings.cloth.collisionThickness = 0.004f;
-  GarmentSimulation sim(buildGarmentMesh(garment), settings, bodyPositions, bodyTriangles);
+  const GarmentMesh placed = buildGarmentMesh(garment);
+  GarmentSimulation sim(placed, settings, bodyPositions, bodyTriangles);
   SewnGarment out;
+  for (size_t i = 0; i < placed.vertexCount(); ++i)
+    out.startInsideBody += insideClosedMesh(bodyPositions, bodyTriangles, placed.position(i)) ? 1 : 0;
   out.vertices = sim.vertexCount();
   out.initialGap = sim.seamGap();
   const float dt = 1.0f / 30.0f;
@@ -102,9 +106,10 @@ SewnGarment sewOn(const Character& body, const std::string& type, float edge, in
   out.penetrating = sim.stats().penetratingVertices;
   out.finalStretch = sim.stats().maxStretch;
   out.bounds = boundsOf(x);
-  std::printf("%s on %s: %zu vertices, seam gap %.3f m, welded after %d frames, bounds y %.3f..%.3f, stretch %.3f\n",
-              type.c_str(), body.name.c_str(), out.vertices, out.initialGap, out.sewingFrames, out.bounds.min.y, out.bounds.max.y,
-              out.finalStretch);
+  std::printf("%s on %s: %zu vertices, seam gap %.3f m, welded after %d frames, bounds y %.3f..%.3f, stretch %.3f, "
+              "%d inside the body (%d by the solver's test)\n",
+              type.c_str(), body.name.c_str(), out.vertices, out.initialGap, out.sewingFrames, out.bounds.min.y,
+              out.bounds.max.y, out.finalStretch, out.insideBody, out.penetrating);
   return out;
 }
 
@@ -160,10 +165,11 @@ TEST(GarmentSewing, TrousersSettleOnTheWaistWithTheCrotchSewnBelowTheBody) {
 // The built-in garments on an imported character whose bones no alias names
 // (CesiumMan, about 1.5 units tall): sized from its skeleton's structure and
 // skin, sewn on its rest pose, nothing inside the body after settling.
-// Known limitation: CesiumMan's arms leave the torso high and nearly level,
-// and the T-shirt's armhole seams (straight from shoulder to armpit) close
-// through the arms' roots: about 2% of the shirt's vertices (all at the
-// armpits) settle inside the body. The test bounds that, and where they are.
+// CesiumMan's arms leave the torso high and nearly level, and its left upper
+// arm's bone also drives the skin of the shoulder: a sleeve sized and placed
+// by that bone's capsule stood out like a wing, and its cap closed through
+// the arm's root (21 of the shirt's 1269 vertices inside the body, all at
+// the left armpit). The sleeves now follow the arm's measured girth.
 class GarmentOnCesiumMan : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(GarmentOnCesiumMan, SewsWeldsAndSettlesOutsideTheBody) {
@@ -176,14 +182,14 @@ TEST_P(GarmentOnCesiumMan, SewsWeldsAndSettlesOutsideTheBody) {
   EXPECT_LT(g.sewingFrames, 70);
   EXPECT_LE(g.finalStretch, 1.1f + 1e-3f);
   EXPECT_GT(g.bounds.min.y, 0.05f);  // not down on the floor
+  EXPECT_EQ(g.startInsideBody, 0) << "panels placed inside the body";
+  EXPECT_EQ(g.penetrating, 0);
+  EXPECT_EQ(g.insideBody, 0) << "settled vertices inside the body mesh";
   if (GetParam() == "tshirt") {
-    EXPECT_LT(g.insideBody, int(0.03f * g.vertices)) << "settled shirt vertices inside the body mesh";
     EXPECT_LT(g.bounds.max.y, m.neck.y + 0.1f);  // hangs on the shoulders, not over the head
     EXPECT_GT(g.bounds.max.y, m.shoulder[0].y);
     EXPECT_LT(g.bounds.min.y, m.waist.y);  // and covers the waist
   } else {
-    EXPECT_EQ(g.penetrating, 0);
-    EXPECT_EQ(g.insideBody, 0) << "settled vertices inside the body mesh";
     EXPECT_GT(g.bounds.max.y, std::min(m.hip[0].y, m.hip[1].y));  // worn at the waist, not slid up or down
     EXPECT_LT(g.bounds.max.y, m.waist.y + 0.1f);
   }
