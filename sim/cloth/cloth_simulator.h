@@ -30,6 +30,7 @@
 
 namespace mq::cloth {
 
+class BodyFeatureContact;
 class Integrator;
 class SelfCollision;
 
@@ -47,6 +48,7 @@ struct ClothStats {
   int substeps = 0;              // solver steps in the last step()
   int solverIterations = 0;      // CG iterations in the last step() (implicit)
   int selfContacts = 0;          // cloth-cloth pairs closer than the thickness in the last step()
+  int bodyFeatureContacts = 0;   // body vertices under (or through) cloth triangles in the last step()
   int stretchPasses = 0;         // elongation-limit passes in the last step()
   long long steps = 0;
   double simulatedTime = 0.0;
@@ -135,6 +137,7 @@ class ClothSimulator {
   std::unique_ptr<ClothForces> forces_;
   std::unique_ptr<Integrator> integrator_;
   std::unique_ptr<SelfCollision> selfCollision_;
+  std::unique_ptr<BodyFeatureContact> bodyFeatures_;  // body vertices against cloth triangles
   StretchLimiter stretchLimiter_;  // over forces_'s structural springs
   ClothState state_;
   std::vector<float> freeInvMass_;

@@ -1,0 +1,65 @@
+#pragma once
+// Body features against cloth triangles: a body vertex that pierces a cloth
+// triangle between its vertices (a shin through the front of a trouser leg
+// whose vertices are all outside the leg) or comes closer to it than the
+// thickness. The vertex contacts of BodyCollider only see cloth vertices, so
+// on a cloth coarser than the body (3 cm trouser triangles over a body of
+// about 8 mm edges) a limb can pass between them.
+//
+// Candidates: every body vertex against a BVH over the cloth's triangles
+// (refitted every call, rebuilt now and then). The cloth belongs outside the
+// body, so "out" for a triangle is the side the body vertex's outward normal
+// points to; a triangle whose point under the vertex lies behind it by up to
+// kMaxDepth (unless that point is outside the body beyond a surface facing
+// the other way: cloth beyond a thin body part) or in front of it by less
+// than half the thickness is pushed along its normal until that point is
+// half the thickness in front of the body vertex. The
+// push is shared by the triangle's vertices by barycentric weight and inverse
+// mass, so the point under the body vertex moves exactly that far (Bridson,
+// Fedkiw and Anderson 2002), and the approaching normal velocity relative to
+// the body is removed the same way. Contacts are found in parallel and
+// applied in a fixed order, Gauss-Seidel: deterministic.
+
+#include <cstdint>
+#include <vector>
+
+#include "sim/cloth/cloth_state.h"
+#include "sim/cloth/collision/aabb_tree.h"
+#include "sim/cloth/collision/body_collider.h"
+
+namespace mq::cloth {
+
+class BodyFeatureContact {
+ public:
+  explicit BodyFeatureContact(const std::vector<uint32_t>& clothTriangles);
+  // Pushes cloth triangles off the body's vertices (the body as it is now);
+  // the cloth vertices it moves get touched[v] = max(touched[v], mark).
+  // Returns the number of body vertex - cloth triangle contacts found.
+  int resolve(ClothState& s, const BodyCollider& body, float thickness, std::vector<uint8_t>& touched,
+              uint8_t mark);
+
+  // How deep behind a cloth triangle a body vertex is still pushed out of it, m.
+  static constexpr float kMaxDepth = 0.02f;
+
+ private:
+  struct Contact {
+    uint32_t bodyVertex, triangle;
+    glm::vec3 weights;          // of the triangle's point under the body vertex
+    float side;                 // +1 / -1: the triangle's normal times this points out of the body
+    glm::vec3 surfaceVelocity;  // the body's, near the contact
+  };
+  void prepareBody(const BodyCollider& body);
+  void updateTree(const ClothState& s);
+  std::vector<Contact> findContacts(const ClothState& s, const BodyCollider& body, float thickness) const;
+  bool apply(ClothState& s, const BodyCollider& body, const Contact& c, float thickness) const;
+
+  std::vector<uint32_t> triangles_;
+  AabbTree tree_;
+  static constexpr int kRebuildEvery = 16;  // calls between tree rebuilds (refitted in between)
+  int callsSinceBuild_ = 0;
+  // Body vertex -> its triangles (CSR), for outward vertex normals.
+  std::vector<uint32_t> ringStart_, ringTriangles_;
+  size_t bodyTriangleCount_ = 0;
+};
+
+}  // namespace mq::cloth
