@@ -49,16 +49,25 @@ class BodyFeatureContact {
     glm::vec3 surfaceVelocity;  // the body's, near the contact
   };
   void prepareBody(const BodyCollider& body);
-  void updateTree(const ClothState& s);
+  // Planes, bounding circles and the tree of the cloth's triangles now.
+  void updateTriangles(const ClothState& s, float thickness);
   std::vector<Contact> findContacts(const ClothState& s, const BodyCollider& body, float thickness) const;
   bool apply(ClothState& s, const BodyCollider& body, const Contact& c, float thickness) const;
 
+  struct Plane {
+    glm::vec3 normal;  // unit (zero for a degenerate triangle)
+    float offset;      // dot(normal, a point of the triangle)
+    glm::vec3 centroid;
+    float reach;  // circumscribing radius about the centroid plus the thickness
+  };
   std::vector<uint32_t> triangles_;
+  std::vector<Plane> planes_;
   AabbTree tree_;
   static constexpr int kRebuildEvery = 16;  // calls between tree rebuilds (refitted in between)
   int callsSinceBuild_ = 0;
   // Body vertex -> its triangles (CSR), for outward vertex normals.
   std::vector<uint32_t> ringStart_, ringTriangles_;
+  std::vector<uint32_t> clusterOrder_;  // body vertices, runs of nearby ones
   size_t bodyTriangleCount_ = 0;
 };
 
