@@ -80,8 +80,8 @@ ClothSimulator::ClothSimulator(const ClothMesh& mesh, const ClothTopology& topol
   integrator_ = makeIntegrator(settings_);
   stretchLimiter_ = StretchLimiter(forces_->springs().springs(), forces_->structuralCount(), mesh.vertexCount());
   if (settings_.selfCollisions) selfCollision_ = std::make_unique<SelfCollision>(triangles_, mesh.vertexCount());
-  bodyFeatures_ = std::make_unique<BodyFeatureContact>(triangles_);
   state_ = initialState(mesh, topology_, fabric_);
+  bodyFeatures_ = std::make_unique<BodyFeatureContact>(triangles_, state_.x);
   freeInvMass_ = state_.invMass;
   updateStats();
 }

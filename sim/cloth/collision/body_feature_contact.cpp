@@ -40,7 +40,19 @@ uint32_t spreadBits(uint32_t x) {
 
 }  // namespace
 
-BodyFeatureContact::BodyFeatureContact(const std::vector<uint32_t>& clothTriangles) : triangles_(clothTriangles) {}
+BodyFeatureContact::BodyFeatureContact(const std::vector<uint32_t>& clothTriangles,
+                                       const std::vector<glm::vec3>& restPositions)
+    : triangles_(clothTriangles) {
+  // A smooth body part can come between cloth vertices that are outside it
+  // by about the sagitta of a cloth edge, far less than the edge: half the
+  // mean edge length is plenty, and the search (whose cost grows with the
+  // square of this depth) stays small on fine cloth.
+  double sum = 0.0;
+  for (size_t k = 0; k < triangles_.size(); ++k)
+    sum += glm::length(restPositions[triangles_[k]] - restPositions[triangles_[k - k % 3 + (k + 1) % 3]]);
+  const float meanEdge = triangles_.empty() ? 0.0f : float(sum / double(triangles_.size()));
+  maxDepth_ = std::clamp(0.5f * meanEdge, kMinDepth, kMaxDepth);
+}
 
 void BodyFeatureContact::prepareBody(const BodyCollider& body) {
   const std::vector<uint32_t>& triangles = body.triangles();
@@ -124,8 +136,8 @@ std::vector<BodyFeatureContact::Contact> BodyFeatureContact::findContacts(const 
       const size_t begin = k * kClusterSize, end = std::min(bodyX.size(), begin + kClusterSize);
       Box box;
       for (size_t i = begin; i < end; ++i) box.extend(bodyX[clusterOrder_[i]]);
-      box.min -= glm::vec3(kMaxDepth);
-      box.max += glm::vec3(kMaxDepth);
+      box.min -= glm::vec3(maxDepth_);
+      box.max += glm::vec3(maxDepth_);
       near.clear();
       tree_.query(box, [&](uint32_t t) { near.push_back(t); });
       if (near.empty()) continue;
@@ -140,10 +152,10 @@ std::vector<BodyFeatureContact::Contact> BodyFeatureContact::findContacts(const 
           // ball, of its plane, and p's foot on the plane within its circle.
           const Plane& plane = planes_[t];
           const glm::vec3 d = p - plane.centroid;
-          const float ball = plane.reach + kMaxDepth;
+          const float ball = plane.reach + maxDepth_;
           if (glm::dot(d, d) > ball * ball) continue;
           const float above = plane.offset - glm::dot(plane.normal, p);  // the plane seen from p, along its normal
-          if (std::abs(above) > kMaxDepth) continue;
+          if (std::abs(above) > maxDepth_) continue;
           const glm::vec3 inPlane = d - glm::dot(d, plane.normal) * plane.normal;
           if (glm::dot(inPlane, inPlane) > plane.reach * plane.reach) continue;
           if (!normalKnown) bodyNormal = outward(v), normalKnown = true;
@@ -151,7 +163,7 @@ std::vector<BodyFeatureContact::Contact> BodyFeatureContact::findContacts(const 
           if (std::abs(alignment) < kMinAlignment) continue;
           const float side = alignment > 0.0f ? 1.0f : -1.0f;
           const float height = side * above;  // > 0: the triangle is in front of the body vertex
-          if (height >= gap || height < -kMaxDepth) continue;
+          if (height >= gap || height < -maxDepth_) continue;
           // Only a body vertex under the triangle (not beside it) is in contact.
           const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
           const glm::vec3 w = closestTriangleWeights(p, s.x[a], s.x[b], s.x[c]);
@@ -163,7 +175,7 @@ std::vector<BodyFeatureContact::Contact> BodyFeatureContact::findContacts(const 
           // body's surface between it and the vertex (the surface facing away
           // from the vertex's side), it is cloth beyond a thin body part.
           BodyContact contact;
-          const bool found = body.nearestContact(q, contact, kMaxDepth + thickness);
+          const bool found = body.nearestContact(q, contact, maxDepth_ + thickness);
           if (height < 0.0f && found && contact.signedDistance >= 0.0f &&
               glm::dot(contact.normal, side * plane.normal) < kBeyond)
             continue;

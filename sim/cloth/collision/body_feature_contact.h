@@ -6,19 +6,23 @@
 // on a cloth coarser than the body (3 cm trouser triangles over a body of
 // about 8 mm edges) a limb can pass between them.
 //
-// Candidates: every body vertex against a BVH over the cloth's triangles
-// (refitted every call, rebuilt now and then). The cloth belongs outside the
-// body, so "out" for a triangle is the side the body vertex's outward normal
-// points to; a triangle whose point under the vertex lies behind it by up to
-// kMaxDepth (unless that point is outside the body beyond a surface facing
-// the other way: cloth beyond a thin body part) or in front of it by less
-// than half the thickness is pushed along its normal until that point is
-// half the thickness in front of the body vertex. The
+// Candidates: the body's vertices, in runs of nearby ones (Morton order),
+// against a BVH over the cloth's triangles (refitted every call, rebuilt now
+// and then), then cheap ball, plane and circle tests. The cloth belongs
+// outside the body, so "out" for a triangle is the side the body vertex's
+// outward normal points to; a triangle whose point under the vertex lies
+// behind it by up to maxDepth() (unless that point is outside the body
+// beyond a surface facing the other way: cloth beyond a thin body part) or in
+// front of it by less than half the thickness is pushed along its normal
+// until that point is half the thickness in front of the body vertex. The
 // push is shared by the triangle's vertices by barycentric weight and inverse
-// mass, so the point under the body vertex moves exactly that far (Bridson,
-// Fedkiw and Anderson 2002), and the approaching normal velocity relative to
-// the body is removed the same way. Contacts are found in parallel and
-// applied in a fixed order, Gauss-Seidel: deterministic.
+// mass, so the point under the body vertex moves that far (Bridson, Fedkiw
+// and Anderson 2002; no vertex more than 4 times that), and the approaching
+// normal velocity relative to the body is removed the same way. Contacts are
+// found in parallel and applied in a fixed order, Gauss-Seidel:
+// deterministic. The simulator calls it after the vertex contacts, before the
+// final elongation limit, which holds the vertices it moved like those a
+// moving body part swept along.
 
 #include <cstdint>
 #include <vector>
@@ -31,15 +35,17 @@ namespace mq::cloth {
 
 class BodyFeatureContact {
  public:
-  explicit BodyFeatureContact(const std::vector<uint32_t>& clothTriangles);
+  BodyFeatureContact(const std::vector<uint32_t>& clothTriangles, const std::vector<glm::vec3>& restPositions);
   // Pushes cloth triangles off the body's vertices (the body as it is now);
   // the cloth vertices it moves get touched[v] = max(touched[v], mark).
   // Returns the number of body vertex - cloth triangle contacts found.
   int resolve(ClothState& s, const BodyCollider& body, float thickness, std::vector<uint8_t>& touched,
               uint8_t mark);
 
-  // How deep behind a cloth triangle a body vertex is still pushed out of it, m.
-  static constexpr float kMaxDepth = 0.02f;
+  // How deep behind a cloth triangle a body vertex is still pushed out of
+  // it: half the cloth's mean edge length, within these bounds (m).
+  static constexpr float kMinDepth = 0.005f, kMaxDepth = 0.02f;
+  float maxDepth() const { return maxDepth_; }
 
  private:
   struct Contact {
@@ -61,6 +67,7 @@ class BodyFeatureContact {
     float reach;  // circumscribing radius about the centroid plus the thickness
   };
   std::vector<uint32_t> triangles_;
+  float maxDepth_ = kMaxDepth;
   std::vector<Plane> planes_;
   AabbTree tree_;
   static constexpr int kRebuildEvery = 16;  // calls between tree rebuilds (refitted in between)
