@@ -227,7 +227,7 @@ void ClothSimulator::substep(float h, float bodyFraction) {
   collideWithColliders(h);
   // Body vertices through cloth triangles, between the cloth's vertices.
   if (!body_.empty())
-    stats_.bodyFeatureContacts += bodyFeatures_->resolve(state_, body_, settings_.collisionThickness, touched_,
+    stats_.bodyFeatureContacts += bodyFeatures_->resolve(state_, body_, settings_.collisionThickness, touched_, kContact,
                                                       body_.moved() ? kSweptContact : kContact);
   if (settings_.stretchLimit == StretchLimitMode::PositionCorrection && (!colliders_.empty() || !body_.empty())) {
     held = limitStretchAfterContacts(h);

@@ -14,15 +14,16 @@
 // behind it by up to maxDepth() (unless that point is outside the body
 // beyond a surface facing the other way: cloth beyond a thin body part) or in
 // front of it by less than half the thickness is pushed along its normal
-// until that point is half the thickness in front of the body vertex. The
+// until that point is half the thickness (the whole thickness if it was
+// behind) in front of the body vertex. The
 // push is shared by the triangle's vertices by barycentric weight and inverse
 // mass, so the point under the body vertex moves that far (Bridson, Fedkiw
 // and Anderson 2002; no vertex more than 4 times that), and the approaching
 // normal velocity relative to the body is removed the same way. Contacts are
 // found in parallel and applied in a fixed order, Gauss-Seidel:
 // deterministic. The simulator calls it after the vertex contacts, before the
-// final elongation limit, which holds the vertices it moved like those a
-// moving body part swept along.
+// final elongation limit, which holds the vertices of pierced triangles like
+// those a moving body part swept along.
 
 #include <cstdint>
 #include <vector>
@@ -37,10 +38,11 @@ class BodyFeatureContact {
  public:
   BodyFeatureContact(const std::vector<uint32_t>& clothTriangles, const std::vector<glm::vec3>& restPositions);
   // Pushes cloth triangles off the body's vertices (the body as it is now);
-  // the cloth vertices it moves get touched[v] = max(touched[v], mark).
+  // the cloth vertices it moves get touched[v] = max(touched[v], mark), mark
+  // = piercedMark where a body vertex was through the triangle, else nearMark.
   // Returns the number of body vertex - cloth triangle contacts found.
   int resolve(ClothState& s, const BodyCollider& body, float thickness, std::vector<uint8_t>& touched,
-              uint8_t mark);
+              uint8_t nearMark, uint8_t piercedMark);
 
   // How deep behind a cloth triangle a body vertex is still pushed out of
   // it: half the cloth's mean edge length, within these bounds (m).
@@ -53,6 +55,7 @@ class BodyFeatureContact {
     glm::vec3 weights;          // of the triangle's point under the body vertex
     float side;                 // +1 / -1: the triangle's normal times this points out of the body
     glm::vec3 surfaceVelocity;  // the body's, near the contact
+    bool pierced;               // the body vertex was in front of the triangle
   };
   void prepareBody(const BodyCollider& body);
   // Planes, bounding circles and the tree of the cloth's triangles now.
