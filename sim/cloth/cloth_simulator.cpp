@@ -225,8 +225,10 @@ void ClothSimulator::substep(float h, float bodyFraction) {
                                 .passes;
   if (selfCollision_) stats_.selfContacts += selfCollision_->resolve(state_, stepStart_, settings_.selfThickness, 20);
   collideWithColliders(h);
-  // Body vertices through cloth triangles, between the cloth's vertices.
-  if (!body_.empty())
+  // Body vertices through cloth triangles, between the cloth's vertices
+  // (not while sewing: the panels pulled together over the shoulders would
+  // be pushed apart, and the seams close late).
+  if (!body_.empty() && sewing_.empty())
     stats_.bodyFeatureContacts += bodyFeatures_->resolve(state_, body_, settings_.collisionThickness, touched_, kContact,
                                                       body_.moved() ? kSweptContact : kContact);
   if (settings_.stretchLimit == StretchLimitMode::PositionCorrection && (!colliders_.empty() || !body_.empty())) {
