@@ -87,7 +87,7 @@ TEST(BodyFeatureContact, ASpikeBetweenClothVerticesTentsTheSheetInsteadOfPiercin
   EXPECT_GT(contacts, 0);
   const std::optional<float> cloth = clothHeightAt(sim, tipX, tipZ);
   ASSERT_TRUE(cloth.has_value());
-  // Over the tip by about the thickness (the gap kept at a body vertex that was through).
+  // Over the tip by about half the thickness (the gap kept at a body vertex).
   EXPECT_GT(*cloth, endTip);
   EXPECT_LT(*cloth, endTip + 0.01f);
   EXPECT_EQ(sim.countPenetrating(), 0);

@@ -14,8 +14,7 @@
 // behind it by up to maxDepth() (unless that point is outside the body
 // beyond a surface facing the other way: cloth beyond a thin body part) or in
 // front of it by less than half the thickness is pushed along its normal
-// until that point is half the thickness (the whole thickness if it was
-// behind) in front of the body vertex. The
+// until that point is half the thickness in front of the body vertex. The
 // push is shared by the triangle's vertices by barycentric weight and inverse
 // mass, so the point under the body vertex moves that far (Bridson, Fedkiw
 // and Anderson 2002; no vertex more than 4 times that), and the approaching
