@@ -6,8 +6,9 @@
 // substep, find the cloth a moving body part is about to reach (the solver
 // then moves it with the part), move the body and the pin targets,
 // integrate, limit the elongation, resolve self-collisions, resolve
-// collisions with the colliders and the body, put pinned vertices on their
-// targets, check for NaNs.
+// collisions with the colliders and the body, push cloth triangles off the
+// body's vertices (body_feature_contact.h), limit the elongation again, put
+// pinned vertices on their targets, check for NaNs.
 //
 //   ClothSimulator sim(mesh, fabricPreset("cotton"), settings);
 //   sim.addCollider(PrimitiveCollider::sphere({0, 0, 0}, 0.3f));
