@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "sim/cloth/collision/body_feature_contact.h"
 #include "sim/cloth/collision/contact_response.h"
 #include "sim/cloth/collision/self_collision.h"
 #include "sim/cloth/constraints/stretch_limit.h"
@@ -80,6 +81,7 @@ ClothSimulator::ClothSimulator(const ClothMesh& mesh, const ClothTopology& topol
   stretchLimiter_ = StretchLimiter(forces_->springs().springs(), forces_->structuralCount(), mesh.vertexCount());
   if (settings_.selfCollisions) selfCollision_ = std::make_unique<SelfCollision>(triangles_, mesh.vertexCount());
   state_ = initialState(mesh, topology_, fabric_);
+  bodyFeatures_ = std::make_unique<BodyFeatureContact>(triangles_, state_.x);
   freeInvMass_ = state_.invMass;
   updateStats();
 }
@@ -181,7 +183,7 @@ void ClothSimulator::step(float dt) {
   const ClothState start = state_;
   for (;;) {
     const float h = dt / float(substeps);
-    stats_.solverIterations = stats_.selfContacts = stats_.stretchPasses = 0;
+    stats_.solverIterations = stats_.selfContacts = stats_.stretchPasses = stats_.bodyFeatureContacts = 0;
     limitHeld_ = true;
     // The last try may spend 20 times the passes on the limit.
     passBudget_ = settings_.stretchIterations * (substeps * 2 > settings_.maxRefinement * baseSubsteps ? 20 : 1);
@@ -223,6 +225,12 @@ void ClothSimulator::substep(float h, float bodyFraction) {
                                 .passes;
   if (selfCollision_) stats_.selfContacts += selfCollision_->resolve(state_, stepStart_, settings_.selfThickness, 20);
   collideWithColliders(h);
+  // Body vertices through cloth triangles, between the cloth's vertices
+  // (not while sewing: the panels pulled together over the shoulders would
+  // be pushed apart, and the seams close late).
+  if (!body_.empty() && sewing_.empty())
+    stats_.bodyFeatureContacts += bodyFeatures_->resolve(state_, body_, settings_.collisionThickness, touched_, kContact,
+                                                      body_.moved() ? kSweptContact : kContact);
   if (settings_.stretchLimit == StretchLimitMode::PositionCorrection && (!colliders_.empty() || !body_.empty())) {
     held = limitStretchAfterContacts(h);
   }

@@ -6,8 +6,9 @@
 // substep, find the cloth a moving body part is about to reach (the solver
 // then moves it with the part), move the body and the pin targets,
 // integrate, limit the elongation, resolve self-collisions, resolve
-// collisions with the colliders and the body, put pinned vertices on their
-// targets, check for NaNs.
+// collisions with the colliders and the body, push cloth triangles off the
+// body's vertices (body_feature_contact.h), limit the elongation again, put
+// pinned vertices on their targets, check for NaNs.
 //
 //   ClothSimulator sim(mesh, fabricPreset("cotton"), settings);
 //   sim.addCollider(PrimitiveCollider::sphere({0, 0, 0}, 0.3f));
@@ -30,6 +31,7 @@
 
 namespace mq::cloth {
 
+class BodyFeatureContact;
 class Integrator;
 class SelfCollision;
 
@@ -47,6 +49,7 @@ struct ClothStats {
   int substeps = 0;              // solver steps in the last step()
   int solverIterations = 0;      // CG iterations in the last step() (implicit)
   int selfContacts = 0;          // cloth-cloth pairs closer than the thickness in the last step()
+  int bodyFeatureContacts = 0;   // body vertices under (or through) cloth triangles in the last step()
   int stretchPasses = 0;         // elongation-limit passes in the last step()
   long long steps = 0;
   double simulatedTime = 0.0;
@@ -137,6 +140,7 @@ class ClothSimulator {
   std::unique_ptr<ClothForces> forces_;
   std::unique_ptr<Integrator> integrator_;
   std::unique_ptr<SelfCollision> selfCollision_;
+  std::unique_ptr<BodyFeatureContact> bodyFeatures_;  // body vertices against cloth triangles
   StretchLimiter stretchLimiter_;  // over forces_'s structural springs
   ClothState state_;
   std::vector<float> freeInvMass_;
