@@ -114,12 +114,14 @@ class ClothSimulator {
     int64_t bodyVertex = -1;
     glm::vec3 offset{0.0f};
   };
-  void substep(float h, float bodyFraction);
+  void substep(float h, float bodyFraction, bool firstOfStep);
   void preparePins(float h);
   void placePins();
   void findRestingContacts();
-  void findApproachingBody(float h);
-  int substepsForBodySpeed(float dt) const;
+  void findApproachingBody(float h, bool firstOfStep);
+  int substepsForBodySpeed(float dt);
+  // The nearest body contact of each free vertex within `radius` (found[i] = 0: none).
+  void findNearestBody(float radius, std::vector<BodyContact>& contacts, std::vector<uint8_t>& found) const;
   void applyRestingFriction(float h);
   void collideWithColliders(float h);
   bool limitStretchAfterContacts(float h);
@@ -142,6 +144,12 @@ class ClothSimulator {
   std::vector<uint8_t> touched_;
   std::vector<glm::vec3> approachNormal_, approachVelocity_;  // findApproachingBody(); empty: none
   std::vector<float> approachSpeed_;
+  // The body contacts at the step's start within approachReach_ (0: none
+  // this step), from substepsForBodySpeed(), reused by every try's first
+  // substep; the other substeps' in substepContacts_.
+  std::vector<BodyContact> stepStartContacts_, substepContacts_;
+  std::vector<uint8_t> stepStartFound_, substepFound_;
+  float approachReach_ = 0.0f;
   std::vector<glm::vec3> restingSurfaceVelocity_;  // vertices a collision moved in this substep
   std::vector<PrimitiveCollider> colliders_;
   BodyCollider body_;
