@@ -72,9 +72,14 @@ struct SceneCloth {
 
   cli::ClothNow now() const {
     cli::ClothNow n;
-    if (sheet) n.add(sheet->stats(), sheet->positions().size());
+    if (sheet) n.add(*sheet, sheet->positions().size());
     if (garments) garments->addTo(n);
     return n;
+  }
+  // now().maxStretch without counting penetrations (every frame).
+  float maxStretch() const {
+    float m = sheet ? sheet->stats().maxStretch : 1.0f;
+    return garments ? std::max(m, garments->maxStretch()) : m;
   }
 };
 
@@ -94,7 +99,7 @@ RunResult run(SceneCloth& cloth, PosedBody& body, float startTime, bool animateB
     }
     if (cloth.garments) cloth.garments->step(1.0f / fps, posed ? &bodyPositions : nullptr);
     r.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    r.maxStretch = std::max(r.maxStretch, cloth.now().maxStretch);
+    r.maxStretch = std::max(r.maxStretch, cloth.maxStretch());
     if (exportDir.empty()) continue;
     if (cloth.sheet)
       cloth::writeObj((std::filesystem::path(exportDir) / cloth::objFrameName("cloth", f + 1)).string(),

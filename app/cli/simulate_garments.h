@@ -21,7 +21,7 @@ struct ClothNow {
   int penetratingVertices = 0;
   size_t vertices = 0;
   glm::vec3 boundsMin{1e30f}, boundsMax{-1e30f};
-  void add(const cloth::ClothStats& stats, size_t vertexCount);
+  void add(const cloth::ClothSimulator& sim, size_t vertexCount);
 };
 
 struct DressingResult {
@@ -47,6 +47,7 @@ class SimulatedGarments {
   // <dir>/garment<i>_<name>_<frame>.obj, one per garment, in garment-mesh order.
   void exportFrame(const std::string& dir, int frame) const;
   void addTo(ClothNow& now) const;
+  float maxStretch() const;  // largest stretch of all garments now (addTo() also counts penetrations: dearer)
   // Per garment: name, vertices, welded, sewing_steps, seam_gap, max_stretch, penetrating_vertices, bbox.
   nlohmann::json stats() const;
 

@@ -88,11 +88,15 @@ ClothSimulator::~ClothSimulator() = default;
 
 // Colliders, body and pins -------------------------------------------------
 
-void ClothSimulator::addCollider(const PrimitiveCollider& collider) { colliders_.push_back(collider); }
+void ClothSimulator::addCollider(const PrimitiveCollider& collider) {
+  colliders_.push_back(collider);
+  penetrating_ = -1;
+}
 
 void ClothSimulator::setBody(const std::vector<float>& positions, const std::vector<uint32_t>& triangles) {
   body_.setMesh(positions, triangles, std::max(0.02f, 3.0f * settings_.collisionThickness));
   pendingBody_.clear();
+  penetrating_ = -1;
 }
 
 void ClothSimulator::updateBody(const std::vector<float>& posedPositions) {
@@ -515,10 +519,15 @@ int ClothSimulator::countPenetrating() const {
   }));
 }
 
+int ClothSimulator::penetratingVertices() const {
+  if (penetrating_ < 0) penetrating_ = countPenetrating();
+  return penetrating_;
+}
+
 void ClothSimulator::updateStats() {
   stats_.maxStretch = currentMaxStretch();
   stats_.maxStretchEver = std::max(stats_.maxStretchEver, stats_.maxStretch);
-  stats_.penetratingVertices = countPenetrating();
+  penetrating_ = -1;
   glm::vec3 lo(1e30f), hi(-1e30f);
   for (const glm::vec3& x : state_.x) {
     lo = glm::min(lo, x);

@@ -42,7 +42,6 @@ class ClothDiverged : public Error {
 struct ClothStats {
   float maxStretch = 1.0f;       // largest structural length / rest length now
   float maxStretchEver = 1.0f;   // ... over all steps so far
-  int penetratingVertices = 0;   // vertices inside a collider or the body now
   glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
   int substeps = 0;              // solver steps in the last step()
   int solverIterations = 0;      // CG iterations in the last step() (implicit)
@@ -95,8 +94,12 @@ class ClothSimulator {
   std::vector<float> flatPositions() const;
   const std::vector<uint32_t>& triangles() const { return triangles_; }
   const ClothState& state() const { return state_; }
-  ClothState& mutableState() { return state_; }  // tests and tools: edit, then step
+  ClothState& mutableState() { penetrating_ = -1; return state_; }  // tests and tools: edit, then step
   const ClothStats& stats() const { return stats_; }
+  // Vertices inside a collider or the body now: counted when asked (a body
+  // query per vertex, too dear for every step), kept until the cloth, the
+  // colliders or the body change. Not for concurrent callers.
+  int penetratingVertices() const;
   const ClothSettings& settings() const { return settings_; }
   const ClothForces& forces() const { return *forces_; }
   double kineticEnergy() const;
@@ -160,6 +163,7 @@ class ClothSimulator {
   float sewingStretchRelief_ = 1.0f;
   float activeMaxStretch() const { return sewing_.empty() ? settings_.maxStretch : settings_.maxStretch * sewingStretchRelief_; }
   ClothStats stats_;
+  mutable int penetrating_ = -1;  // penetratingVertices() since the last change; -1: not counted
   bool limitHeld_ = true;
   int passBudget_ = 100;   // elongation-limit passes per call in this try  // the elongation limit held in every substep of this try
 };
