@@ -5,8 +5,7 @@
 // and a child is either a node or a single primitive, so there are no leaf
 // lists to walk. Built once by median splits, refitted every move (the
 // topology of a skinned body never changes). Half the depth of the binary
-// AabbTree and a quarter of its nodes: far fewer, better-used cache lines
-// per nearest-point search, which is what the body's cost is made of.
+// AabbTree, and the boxes a visit compares are side by side in memory.
 
 #include <cstdint>
 #include <vector>
