@@ -73,7 +73,7 @@ struct SceneCloth {
 
   cli::ClothNow now() const {
     cli::ClothNow n;
-    if (sheet) n.add(sheet->stats(), sheet->positions().size());
+    if (sheet) n.add(*sheet, sheet->positions().size());
     if (garments) garments->addTo(n);
     return n;
   }

@@ -19,9 +19,10 @@ constexpr float kDressingMoveSeconds = 1.5f;
 
 }  // namespace
 
-void ClothNow::add(const cloth::ClothStats& stats, size_t vertexCount) {
+void ClothNow::add(const cloth::ClothSimulator& sim, size_t vertexCount) {
+  const cloth::ClothStats& stats = sim.stats();
   maxStretch = std::max(maxStretch, stats.maxStretch);
-  penetratingVertices += stats.penetratingVertices;
+  penetratingVertices += sim.penetratingVertices();
   vertices += vertexCount;
   boundsMin = glm::min(boundsMin, stats.boundsMin);
   boundsMax = glm::max(boundsMax, stats.boundsMax);
@@ -97,7 +98,7 @@ void SimulatedGarments::exportFrame(const std::string& dir, int frame) const {
 }
 
 void SimulatedGarments::addTo(ClothNow& now) const {
-  for (const auto& sim : sims_) now.add(sim->stats(), sim->vertexCount());
+  for (const auto& sim : sims_) now.add(sim->simulator(), sim->vertexCount());
 }
 
 nlohmann::json SimulatedGarments::stats() const {
@@ -114,7 +115,7 @@ nlohmann::json SimulatedGarments::stats() const {
                    {"cg_iterations_per_frame", frames_ ? double(solverIterations_[i]) / frames_ : 0.0},
                    {"seam_gap", sim.seamGap()},
                    {"max_stretch", st.maxStretch},
-                   {"penetrating_vertices", st.penetratingVertices},
+                   {"penetrating_vertices", sim.simulator().penetratingVertices()},
                    {"bbox_min", {st.boundsMin.x, st.boundsMin.y, st.boundsMin.z}},
                    {"bbox_max", {st.boundsMax.x, st.boundsMax.y, st.boundsMax.z}}});
   }

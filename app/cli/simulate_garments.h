@@ -21,7 +21,7 @@ struct ClothNow {
   int penetratingVertices = 0;
   size_t vertices = 0;
   glm::vec3 boundsMin{1e30f}, boundsMax{-1e30f};
-  void add(const cloth::ClothStats& stats, size_t vertexCount);
+  void add(const cloth::ClothSimulator& sim, size_t vertexCount);
 };
 
 struct DressingResult {

@@ -90,11 +90,15 @@ ClothSimulator::~ClothSimulator() = default;
 
 // Colliders, body and pins -------------------------------------------------
 
-void ClothSimulator::addCollider(const PrimitiveCollider& collider) { colliders_.push_back(collider); }
+void ClothSimulator::addCollider(const PrimitiveCollider& collider) {
+  colliders_.push_back(collider);
+  penetrating_ = -1;
+}
 
 void ClothSimulator::setBody(const std::vector<float>& positions, const std::vector<uint32_t>& triangles) {
   body_.setMesh(positions, triangles, std::max(0.02f, 3.0f * settings_.collisionThickness));
   pendingBody_.clear();
+  penetrating_ = -1;
 }
 
 void ClothSimulator::updateBody(const std::vector<float>& posedPositions) {
@@ -152,19 +156,24 @@ int ClothSimulator::substepsFor(float dt) const {
 // to 10 cm a frame at 30 fps, the walking T-shirt's arms under 2 cm): the
 // cloth it carries then moves less per step, and the elongation limit has
 // less to pull back over it.
-int ClothSimulator::substepsForBodySpeed(float dt) const {
+int ClothSimulator::substepsForBodySpeed(float dt) {
   if (body_.empty() || !(body_.maxSpeed() > 0.0f)) return 1;
-  const float radius = std::min(kMaxApproachReach, settings_.collisionThickness + body_.maxSpeed() * dt);
-  std::vector<float> approach(state_.size(), 0.0f);
-  forRange(state_.size(), [&](size_t b, size_t e) {
-    for (size_t i = b; i < e; ++i) {
-      BodyContact contact;
-      if (freeInvMass_[i] != 0.0f && body_.nearestContact(state_.x[i], contact, radius) && contact.signedDistance >= 0.0f)
-        approach[i] = glm::dot(contact.velocity, contact.normal);
-    }
-  });
-  const float fastest = approach.empty() ? 0.0f : *std::max_element(approach.begin(), approach.end());
+  approachReach_ = std::min(kMaxApproachReach, settings_.collisionThickness + body_.maxSpeed() * dt);
+  findNearestBody(approachReach_, stepStartContacts_, stepStartFound_);
+  float fastest = 0.0f;
+  for (size_t i = 0; i < state_.size(); ++i)
+    if (stepStartFound_[i] && stepStartContacts_[i].signedDistance >= 0.0f)
+      fastest = std::max(fastest, glm::dot(stepStartContacts_[i].velocity, stepStartContacts_[i].normal));
   return std::clamp(int(std::ceil(fastest * dt / kApproachPerSubstep)), 1, kMaxBodySpeedSubsteps);
+}
+
+void ClothSimulator::findNearestBody(float radius, std::vector<BodyContact>& contacts, std::vector<uint8_t>& found) const {
+  contacts.resize(state_.size());
+  found.assign(state_.size(), 0);
+  forRange(state_.size(), [&](size_t b, size_t e) {
+    for (size_t i = b; i < e; ++i)
+      found[i] = freeInvMass_[i] != 0.0f && body_.nearestContact(state_.x[i], contacts[i], radius);
+  });
 }
 
 void ClothSimulator::step(float dt) {
@@ -178,6 +187,7 @@ void ClothSimulator::step(float dt) {
   }
   // Adaptive refinement: when the elongation limit could not hold a step
   // (a violent impact), the step is redone with twice the substeps.
+  approachReach_ = 0.0f;
   const int baseSubsteps = std::max(substepsFor(dt), settings_.substeps > 0 ? 1 : substepsForBodySpeed(dt));
   int substeps = baseSubsteps;
   const ClothState start = state_;
@@ -188,7 +198,7 @@ void ClothSimulator::step(float dt) {
     // The last try may spend 20 times the passes on the limit.
     passBudget_ = settings_.stretchIterations * (substeps * 2 > settings_.maxRefinement * baseSubsteps ? 20 : 1);
     if (!body_.empty()) body_.restartStep();
-    for (int k = 0; k < substeps; ++k) substep(h, float(k + 1) / float(substeps));
+    for (int k = 0; k < substeps; ++k) substep(h, float(k + 1) / float(substeps), k == 0);
     if (limitHeld_ || substeps >= settings_.maxRefinement * baseSubsteps) break;
     state_ = start;
     substeps *= 2;
@@ -199,8 +209,8 @@ void ClothSimulator::step(float dt) {
   updateStats();
 }
 
-void ClothSimulator::substep(float h, float bodyFraction) {
-  findApproachingBody(h);
+void ClothSimulator::substep(float h, float bodyFraction, bool firstOfStep) {
+  findApproachingBody(h, firstOfStep);
   if (!body_.empty()) body_.moveTo(bodyFraction);
   preparePins(h);
   findRestingContacts();
@@ -374,19 +384,25 @@ void ClothSimulator::findRestingContacts() {
 // the springs drag the rest of the cloth along in the same implicit solve,
 // rather than the cloth being pushed out afterwards and the elongation limit
 // pulling its neighbours through the limb in straight lines.
-void ClothSimulator::findApproachingBody(float h) {
+void ClothSimulator::findApproachingBody(float h, bool firstOfStep) {
   approachNormal_.clear();
   if (body_.empty() || !(body_.maxSpeed() > 0.0f)) return;
   const float thickness = settings_.collisionThickness;
   const float radius = std::min(kMaxApproachReach, thickness + body_.maxSpeed() * h);
+  // The first substep starts where substepsForBodySpeed() looked, with the
+  // same body pose, within a reach at least this one: its nearest contacts
+  // are these ones where they are closer than `radius` (and none otherwise).
+  const bool reuse = firstOfStep && approachReach_ >= radius;
+  if (!reuse) findNearestBody(radius, substepContacts_, substepFound_);
+  const std::vector<BodyContact>& contacts = reuse ? stepStartContacts_ : substepContacts_;
+  const std::vector<uint8_t>& found = reuse ? stepStartFound_ : substepFound_;
   approachNormal_.assign(state_.size(), glm::vec3(0.0f));
   approachSpeed_.assign(state_.size(), 0.0f);
   approachVelocity_.assign(state_.size(), glm::vec3(0.0f));
   forRange(state_.size(), [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) {
-      if (freeInvMass_[i] == 0.0f) continue;
-      BodyContact contact;
-      if (!body_.nearestContact(state_.x[i], contact, radius) || contact.signedDistance < 0.0f) continue;
+      const BodyContact& contact = contacts[i];
+      if (!found[i] || contact.signedDistance < 0.0f || !(contact.signedDistance < radius)) continue;
       const float surfaceSpeed = glm::dot(contact.velocity, contact.normal);
       if (surfaceSpeed <= 0.0f) continue;  // not coming towards the vertex
       const float needed = surfaceSpeed - (contact.signedDistance - thickness) / h;
@@ -511,10 +527,15 @@ int ClothSimulator::countPenetrating() const {
   }));
 }
 
+int ClothSimulator::penetratingVertices() const {
+  if (penetrating_ < 0) penetrating_ = countPenetrating();
+  return penetrating_;
+}
+
 void ClothSimulator::updateStats() {
   stats_.maxStretch = currentMaxStretch();
   stats_.maxStretchEver = std::max(stats_.maxStretchEver, stats_.maxStretch);
-  stats_.penetratingVertices = countPenetrating();
+  penetrating_ = -1;
   glm::vec3 lo(1e30f), hi(-1e30f);
   for (const glm::vec3& x : state_.x) {
     lo = glm::min(lo, x);

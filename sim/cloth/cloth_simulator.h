@@ -44,7 +44,6 @@ class ClothDiverged : public Error {
 struct ClothStats {
   float maxStretch = 1.0f;       // largest structural length / rest length now
   float maxStretchEver = 1.0f;   // ... over all steps so far
-  int penetratingVertices = 0;   // vertices inside a collider or the body now
   glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
   int substeps = 0;              // solver steps in the last step()
   int solverIterations = 0;      // CG iterations in the last step() (implicit)
@@ -100,8 +99,12 @@ class ClothSimulator {
   std::vector<float> flatPositions() const;
   const std::vector<uint32_t>& triangles() const { return triangles_; }
   const ClothState& state() const { return state_; }
-  ClothState& mutableState() { return state_; }  // tests and tools: edit, then step
+  ClothState& mutableState() { penetrating_ = -1; return state_; }  // tests and tools: edit, then step
   const ClothStats& stats() const { return stats_; }
+  // Vertices inside a collider or the body now: counted when asked (a body
+  // query per vertex, too dear for every step), kept until the cloth, the
+  // colliders or the body change. Not for concurrent callers.
+  int penetratingVertices() const;
   const ClothSettings& settings() const { return settings_; }
   const ClothForces& forces() const { return *forces_; }
   double kineticEnergy() const;
@@ -119,12 +122,14 @@ class ClothSimulator {
     int64_t bodyVertex = -1;
     glm::vec3 offset{0.0f};
   };
-  void substep(float h, float bodyFraction);
+  void substep(float h, float bodyFraction, bool firstOfStep);
   void preparePins(float h);
   void placePins();
   void findRestingContacts();
-  void findApproachingBody(float h);
-  int substepsForBodySpeed(float dt) const;
+  void findApproachingBody(float h, bool firstOfStep);
+  int substepsForBodySpeed(float dt);
+  // The nearest body contact of each free vertex within `radius` (found[i] = 0: none).
+  void findNearestBody(float radius, std::vector<BodyContact>& contacts, std::vector<uint8_t>& found) const;
   void applyRestingFriction(float h);
   void collideWithColliders(float h);
   bool limitStretchAfterContacts(float h);
@@ -148,6 +153,12 @@ class ClothSimulator {
   std::vector<uint8_t> touched_;
   std::vector<glm::vec3> approachNormal_, approachVelocity_;  // findApproachingBody(); empty: none
   std::vector<float> approachSpeed_;
+  // The body contacts at the step's start within approachReach_ (0: none
+  // this step), from substepsForBodySpeed(), reused by every try's first
+  // substep; the other substeps' in substepContacts_.
+  std::vector<BodyContact> stepStartContacts_, substepContacts_;
+  std::vector<uint8_t> stepStartFound_, substepFound_;
+  float approachReach_ = 0.0f;
   std::vector<glm::vec3> restingSurfaceVelocity_;  // vertices a collision moved in this substep
   std::vector<PrimitiveCollider> colliders_;
   BodyCollider body_;
@@ -158,6 +169,7 @@ class ClothSimulator {
   float sewingStretchRelief_ = 1.0f;
   float activeMaxStretch() const { return sewing_.empty() ? settings_.maxStretch : settings_.maxStretch * sewingStretchRelief_; }
   ClothStats stats_;
+  mutable int penetrating_ = -1;  // penetratingVertices() since the last change; -1: not counted
   bool limitHeld_ = true;
   int passBudget_ = 100;   // elongation-limit passes per call in this try  // the elongation limit held in every substep of this try
 };

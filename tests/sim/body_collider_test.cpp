@@ -7,6 +7,7 @@
 #include <random>
 
 #include "sim/cloth/collision/body_collider.h"
+#include "sim/cloth/collision/proximity.h"
 
 namespace mq::cloth {
 namespace {
@@ -72,6 +73,65 @@ TEST(BodyCollider, PushesOutAlongTheShortestWayToTheSurface) {
   EXPECT_NEAR(contact.normal.x, std::sqrt(0.5f), 1e-3f);
   EXPECT_NEAR(contact.normal.y, std::sqrt(0.5f), 1e-3f);
   EXPECT_NEAR(contact.normal.z, 0.0f, 1e-3f);
+}
+
+// A closed, bumpy sphere (a UV sphere with a wavy radius), 1,600 triangles.
+void bumpySphere(float phase, std::vector<float>& positions, std::vector<uint32_t>& triangles) {
+  constexpr int kRings = 20, kSegments = 40;
+  positions.clear();
+  triangles.clear();
+  auto at = [&](float theta, float phi) {
+    const float r = 0.1f * (1.0f + 0.15f * std::sin(5.0f * phi + phase) * std::sin(3.0f * theta));
+    positions.insert(positions.end(), {r * std::sin(theta) * std::cos(phi), r * std::cos(theta), r * std::sin(theta) * std::sin(phi)});
+  };
+  at(0.0f, 0.0f);  // north pole: vertex 0
+  for (int i = 1; i < kRings; ++i)
+    for (int j = 0; j < kSegments; ++j) at(float(M_PI) * i / kRings, 2.0f * float(M_PI) * j / kSegments);
+  at(float(M_PI), 0.0f);  // south pole
+  const uint32_t south = uint32_t(positions.size() / 3 - 1);
+  auto ring = [](int i, int j) { return uint32_t(1 + (i - 1) * kSegments + (j % kSegments)); };
+  for (int j = 0; j < kSegments; ++j) {
+    triangles.insert(triangles.end(), {0, ring(1, j + 1), ring(1, j)});
+    triangles.insert(triangles.end(), {south, ring(kRings - 1, j), ring(kRings - 1, j + 1)});
+    for (int i = 1; i + 1 < kRings; ++i)
+      triangles.insert(triangles.end(), {ring(i, j), ring(i, j + 1), ring(i + 1, j + 1), ring(i, j), ring(i + 1, j + 1), ring(i + 1, j)});
+  }
+}
+
+// The tree only prunes: the nearest contact is the nearest of all triangles,
+// at rest and half way through a move (where the boxes have moved).
+TEST(BodyCollider, NearestContactIsTheNearestOfAllTriangles) {
+  std::vector<float> positions, target;
+  std::vector<uint32_t> triangles;
+  bumpySphere(0.0f, positions, triangles);
+  bumpySphere(0.7f, target, triangles);
+  BodyCollider body;
+  body.setMesh(positions, triangles, 0.02f);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<float> where(-0.13f, 0.13f);
+  int found = 0;
+  for (float fraction : {0.0f, 0.5f}) {
+    body.setTarget(target, 1.0f / 30.0f);
+    body.moveTo(fraction);
+    const std::vector<glm::vec3>& x = body.positions();
+    for (int q = 0; q < 3000; ++q) {
+      const glm::vec3 p(where(random), where(random), where(random));
+      float expected = 1e30f;
+      for (size_t t = 0; t < triangles.size() / 3; ++t) {
+        const glm::vec3 &a = x[triangles[3 * t]], &b = x[triangles[3 * t + 1]], &c = x[triangles[3 * t + 2]];
+        const glm::vec3 w = closestTriangleWeights(p, a, b, c);
+        expected = std::min(expected, glm::length(p - (w.x * a + w.y * b + w.z * c)));
+      }
+      BodyContact contact;
+      const bool hit = body.nearestContact(p, contact, 0.02f);
+      ASSERT_EQ(hit, expected < 0.02f) << "at " << p.x << " " << p.y << " " << p.z;
+      if (!hit) continue;
+      ++found;
+      EXPECT_NEAR(std::abs(contact.signedDistance), expected, 1e-6f);
+      EXPECT_NEAR(glm::length(p - contact.point), expected, 1e-6f);
+    }
+  }
+  EXPECT_GT(found, 1000);
 }
 
 }  // namespace

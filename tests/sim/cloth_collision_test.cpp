@@ -97,6 +97,28 @@ TEST(ClothCollision, AMovingBodyCarriesTheClothWithoutPenetration) {
   EXPECT_GT(sim.stats().boundsMax.y, 0.7f);  // lifted with the body
 }
 
+// The penetration count is taken when asked, for the cloth as it is then:
+// after a step, after the state was edited, after a collider was added.
+TEST(ClothCollision, PenetratingVerticesCountsTheClothAsItIsNow) {
+  std::vector<float> body;
+  std::vector<uint32_t> triangles;
+  uvSphere(0.3f, 32, 16, body, triangles);
+  ClothSimulator sim(test::horizontalSheetMesh(20, 0.8f, {0, 0.32f, 0}), fabricPreset("cotton"), ClothSettings{});
+  sim.setBody(body, triangles);
+  for (int frame = 0; frame < 6; ++frame) sim.step(1.0f / 24.0f);
+  EXPECT_EQ(sim.penetratingVertices(), sim.countPenetrating());
+  const int before = sim.penetratingVertices();
+  for (int i = 0; i < 10; ++i) sim.mutableState().x[size_t(i)] = glm::vec3(0.0f, 0.29f, 0.0f);  // 1 cm inside
+  EXPECT_EQ(sim.penetratingVertices(), sim.countPenetrating());
+  EXPECT_GE(sim.penetratingVertices(), before + 9);
+  sim.step(1.0f / 24.0f);
+  EXPECT_EQ(sim.penetratingVertices(), sim.countPenetrating());
+  const int stepped = sim.penetratingVertices();
+  sim.addCollider(PrimitiveCollider::sphere({0, 0.32f, 0}, 0.5f));  // swallows the sheet
+  EXPECT_GT(sim.penetratingVertices(), stepped);
+  EXPECT_EQ(sim.penetratingVertices(), sim.countPenetrating());
+}
+
 // A limb as fast as an arm while dressing: a small sphere moves 10 cm per
 // frame (its own diameter) up into a sheet falling onto it. Tested only at
 // the frame's end, the sheet's vertices would be deep inside the sphere and

@@ -103,7 +103,7 @@ SewnGarment sewOn(const Character& body, const std::string& type, float edge, in
   const std::vector<float> x = sim.positions();
   for (size_t i = 0; i < sim.vertexCount(); ++i)
     out.insideBody += insideClosedMesh(bodyPositions, bodyTriangles, vec3At(x, i)) ? 1 : 0;
-  out.penetrating = sim.stats().penetratingVertices;
+  out.penetrating = sim.simulator().penetratingVertices();
   out.finalStretch = sim.stats().maxStretch;
   out.bounds = boundsOf(x);
   std::printf("%s on %s: %zu vertices, seam gap %.3f m, welded after %d frames, bounds y %.3f..%.3f, stretch %.3f, "

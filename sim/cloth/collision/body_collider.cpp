@@ -56,6 +56,7 @@ void BodyCollider::setMesh(const std::vector<float>& positions, const std::vecto
   velocity_.assign(n, glm::vec3(0.0f));
   searchRadius_ = searchRadius;
   tree_.build(triangleBoxes(current_, triangles_, kBoxSlack));
+  sweptTree_ = tree_;
 }
 
 void BodyCollider::setTarget(const std::vector<float>& positions, float frameTime) {
@@ -79,18 +80,21 @@ void BodyCollider::moveTo(float fraction) {
     moved2 = std::max(moved2, glm::dot(d, d));
   }
   maxDisplacement_ = std::sqrt(moved2);
-  // Each triangle's box, extended by that box moved back by the triangle's
-  // mean displacement in this move: firstHitAlong() meets a triangle at a
-  // point p of it now with p - (1 - s) d on the vertex's segment, so such a
-  // box holds every hit; it also bounds the triangle now for nearestContact().
+  // nearestContact() needs the triangles' boxes now; firstHitAlong() each
+  // box extended by that box moved back by the triangle's mean displacement
+  // in this move: it meets a triangle at a point p of it now with
+  // p - (1 - s) d on the vertex's segment, so such a box holds every hit.
+  // (The swept boxes of a swinging arm are several times the size of its
+  // triangles: the nearest-point searches would visit far more of them.)
   std::vector<Box> boxes = triangleBoxes(current_, triangles_, kBoxSlack);
+  tree_.refit(boxes);
   if (maxDisplacement_ > 0.0f)
     for (size_t t = 0; t < boxes.size(); ++t) {
       const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
       const glm::vec3 back = (previous_[a] + previous_[b] + previous_[c] - current_[a] - current_[b] - current_[c]) / 3.0f;
       boxes[t].extend(Box{boxes[t].min + back, boxes[t].max + back});
     }
-  tree_.refit(boxes);
+  sweptTree_.refit(boxes);
 }
 
 std::vector<float> BodyCollider::flatPositions() const {
@@ -108,7 +112,7 @@ bool BodyCollider::firstHitAlong(const glm::vec3& from, const glm::vec3& to, Bod
   box.extend(to);
   float best = 1.0f;
   bool found = false;
-  tree_.query(box, [&](uint32_t t) {
+  sweptTree_.query(box, [&](uint32_t t) {
     const uint32_t ia = triangles_[3 * t], ib = triangles_[3 * t + 1], ic = triangles_[3 * t + 2];
     const glm::vec3 a = current_[ia], b = current_[ib], c = current_[ic];
     // Where the vertex started, seen from the triangle: moved with it.
@@ -166,18 +170,21 @@ glm::vec3 BodyCollider::pseudoNormal(uint32_t t, const glm::vec3& w) const {
 }
 
 bool BodyCollider::nearestContact(const glm::vec3& p, BodyContact& contact, float radius) const {
-  float best = radius;
+  float best2 = radius * radius;
   int64_t nearest = -1;
   glm::vec3 weights(0.0f);
-  // Distances only during the search; the contact of the nearest triangle after.
-  tree_.nearest(p, best, [&](uint32_t t) {
+  // Squared distances only during the search; the contact of the nearest
+  // triangle after. Of triangles equally near (a shared edge or vertex) the
+  // lowest index wins, so the answer does not depend on the visiting order.
+  tree_.nearest(p, best2, [&](uint32_t t) {
     const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
     const glm::vec3 w = closestTriangleWeights(p, current_[a], current_[b], current_[c]);
-    const float d = glm::length(p - (w.x * current_[a] + w.y * current_[b] + w.z * current_[c]));
-    if (d >= best) return;
+    const glm::vec3 offset = p - (w.x * current_[a] + w.y * current_[b] + w.z * current_[c]);
+    const float d2 = glm::dot(offset, offset);
+    if (d2 > best2 || (d2 == best2 && (nearest < 0 || t > nearest))) return;
     const glm::vec3 faceNormal = glm::cross(current_[b] - current_[a], current_[c] - current_[a]);
     if (!(glm::dot(faceNormal, faceNormal) > 0.0f)) return;
-    best = d;
+    best2 = d2;
     nearest = t;
     weights = w;
   });

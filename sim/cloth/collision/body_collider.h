@@ -1,7 +1,9 @@
 #pragma once
-// The animated skinned body as a collider: its triangles in a BVH refitted
-// every frame (boxes that hold each triangle now and its motion in the last
-// move, so both queries visit only the triangles they could meet). Between two frames the body moves linearly; a cloth vertex
+// The animated skinned body as a collider: its triangles in two 4-wide BVHs
+// of the same shape refitted every move, one over each triangle now (for
+// the nearest-point search), one over each triangle and its motion in the
+// last move (for the swept test), so both queries visit only the triangles
+// they could meet. Between two frames the body moves linearly; a cloth vertex
 // closer than `thickness` to the surface (or behind it) is pushed out with the
 // contact response, relative to the body's velocity at the contact point.
 // Inside/outside comes from the angle-weighted pseudo-normal of the nearest
@@ -15,7 +17,7 @@
 
 #include <glm/glm.hpp>
 
-#include "sim/cloth/collision/aabb_tree.h"
+#include "sim/cloth/collision/wide_tree.h"
 
 namespace mq::cloth {
 
@@ -69,7 +71,8 @@ class BodyCollider {
   std::vector<glm::vec3> from_, to_, current_, previous_, velocity_;
   float maxDisplacement_ = 0.0f;  // largest vertex move of the last moveTo()
   float maxSpeed_ = 0.0f;
-  AabbTree tree_;
+  WideTree tree_;       // the triangles' boxes now
+  WideTree sweptTree_;  // ... grown over their motion in the last move
   float searchRadius_ = 0.02f;
 };
 

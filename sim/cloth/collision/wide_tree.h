@@ -1,0 +1,146 @@
+#pragma once
+// A 4-wide bounding volume hierarchy for the body collider's queries. Each
+// node holds its four children's boxes side by side (rows of four x, y, z
+// minima and maxima), so one visit tests all four at once (SSE on x86-64),
+// and a child is either a node or a single primitive, so there are no leaf
+// lists to walk. Built once by median splits, refitted every move (the
+// topology of a skinned body never changes). Half the depth of the binary
+// AabbTree, and the boxes a visit compares are side by side in memory.
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "sim/cloth/collision/aabb_tree.h"
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#define MQ_WIDE_TREE_SSE 1
+#endif
+
+namespace mq::cloth {
+
+class WideTree {
+ public:
+  void build(const std::vector<Box>& boxes);
+  // New boxes for the same primitives.
+  void refit(const std::vector<Box>& boxes);
+  // Calls visit(primitive) for every primitive whose box overlaps `box`.
+  template <class Visit>
+  void query(const Box& box, Visit&& visit) const;
+  // Calls visit(primitive) for the primitives whose box is no farther from p
+  // than sqrt(best2), nearer boxes first; visit may lower the squared bound
+  // `best2` (a nearest-point search: farther boxes are then skipped). Boxes
+  // at the bound are visited, so a search can break ties by index.
+  template <class Visit>
+  void nearest(const glm::vec3& p, float& best2, Visit&& visit) const;
+
+  bool empty() const { return nodes_.empty(); }
+  size_t nodeCount() const { return nodes_.size(); }
+
+ private:
+  static constexpr int32_t kNoChild = INT32_MIN;  // an empty slot (its box is empty)
+  struct alignas(16) Node {
+    float minX[4], minY[4], minZ[4], maxX[4], maxY[4], maxZ[4];
+    int32_t child[4];  // >= 0: a node; kNoChild: empty; otherwise primitive ~child
+  };
+  int32_t buildNode(std::vector<uint32_t>& order, uint32_t first, uint32_t count, const std::vector<glm::vec3>& centres);
+  // Squared distances from p to the four boxes of n (huge for empty slots).
+  static void squaredDistances(const Node& n, const glm::vec3& p, float out[4]);
+  // Bit k set when the box of slot k overlaps `box`.
+  static int overlapMask(const Node& n, const Box& box);
+
+  std::vector<Node> nodes_;  // children after their parent (root first)
+};
+
+inline void WideTree::squaredDistances(const Node& n, const glm::vec3& p, float out[4]) {
+#ifdef MQ_WIDE_TREE_SSE
+  const __m128 zero = _mm_setzero_ps();
+  const __m128 px = _mm_set1_ps(p.x), py = _mm_set1_ps(p.y), pz = _mm_set1_ps(p.z);
+  const __m128 dx = _mm_max_ps(_mm_max_ps(_mm_sub_ps(_mm_load_ps(n.minX), px), _mm_sub_ps(px, _mm_load_ps(n.maxX))), zero);
+  const __m128 dy = _mm_max_ps(_mm_max_ps(_mm_sub_ps(_mm_load_ps(n.minY), py), _mm_sub_ps(py, _mm_load_ps(n.maxY))), zero);
+  const __m128 dz = _mm_max_ps(_mm_max_ps(_mm_sub_ps(_mm_load_ps(n.minZ), pz), _mm_sub_ps(pz, _mm_load_ps(n.maxZ))), zero);
+  _mm_storeu_ps(out, _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz)));
+#else
+  for (int k = 0; k < 4; ++k) {
+    const float dx = std::max(std::max(n.minX[k] - p.x, p.x - n.maxX[k]), 0.0f);
+    const float dy = std::max(std::max(n.minY[k] - p.y, p.y - n.maxY[k]), 0.0f);
+    const float dz = std::max(std::max(n.minZ[k] - p.z, p.z - n.maxZ[k]), 0.0f);
+    out[k] = dx * dx + dy * dy + dz * dz;
+  }
+#endif
+}
+
+inline int WideTree::overlapMask(const Node& n, const Box& b) {
+#ifdef MQ_WIDE_TREE_SSE
+  __m128 m = _mm_and_ps(_mm_cmple_ps(_mm_load_ps(n.minX), _mm_set1_ps(b.max.x)),
+                        _mm_cmple_ps(_mm_set1_ps(b.min.x), _mm_load_ps(n.maxX)));
+  m = _mm_and_ps(m, _mm_and_ps(_mm_cmple_ps(_mm_load_ps(n.minY), _mm_set1_ps(b.max.y)),
+                               _mm_cmple_ps(_mm_set1_ps(b.min.y), _mm_load_ps(n.maxY))));
+  m = _mm_and_ps(m, _mm_and_ps(_mm_cmple_ps(_mm_load_ps(n.minZ), _mm_set1_ps(b.max.z)),
+                               _mm_cmple_ps(_mm_set1_ps(b.min.z), _mm_load_ps(n.maxZ))));
+  return _mm_movemask_ps(m);
+#else
+  int mask = 0;
+  for (int k = 0; k < 4; ++k)
+    if (n.minX[k] <= b.max.x && b.min.x <= n.maxX[k] && n.minY[k] <= b.max.y && b.min.y <= n.maxY[k] &&
+        n.minZ[k] <= b.max.z && b.min.z <= n.maxZ[k])
+      mask |= 1 << k;
+  return mask;
+#endif
+}
+
+template <class Visit>
+void WideTree::query(const Box& box, Visit&& visit) const {
+  if (nodes_.empty()) return;
+  int32_t stack[256];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& n = nodes_[stack[--top]];
+    const int mask = overlapMask(n, box);
+    for (int k = 0; k < 4; ++k) {
+      if (!(mask & (1 << k))) continue;
+      if (n.child[k] >= 0)
+        stack[top++] = n.child[k];
+      else
+        visit(uint32_t(~n.child[k]));
+    }
+  }
+}
+
+template <class Visit>
+void WideTree::nearest(const glm::vec3& p, float& best2, Visit&& visit) const {
+  if (nodes_.empty()) return;
+  struct Entry {
+    int32_t child;
+    float distance2;
+  };
+  Entry stack[256];
+  int top = 0;
+  stack[top++] = {0, 0.0f};
+  while (top > 0) {
+    const Entry e = stack[--top];
+    if (e.distance2 > best2) continue;
+    if (e.child < 0) {
+      visit(uint32_t(~e.child));
+      continue;
+    }
+    const Node& n = nodes_[e.child];
+    float d2[4];
+    squaredDistances(n, p, d2);
+    // The children within the bound, farthest first: the nearest ends on top.
+    Entry near[4];
+    int count = 0;
+    for (int k = 0; k < 4; ++k) {
+      if (!(d2[k] <= best2)) continue;
+      int j = count++;
+      for (; j > 0 && near[j - 1].distance2 < d2[k]; --j) near[j] = near[j - 1];
+      near[j] = {n.child[k], d2[k]};
+    }
+    for (int j = 0; j < count; ++j) stack[top++] = near[j];
+  }
+}
+
+}  // namespace mq::cloth

@@ -1,0 +1,102 @@
+// Body collider queries, the cloth's body cost: the default mannequin in a
+// frame of its walk (moved to the next frame, as a simulation step moves it),
+// queried from points around its skin, one thread. Points: every second body
+// vertex pushed out along its normal by 0 to 3 cm (and a few 5 mm in), where
+// a garment's vertices are. Counter ns_per_query: CPU time per query.
+//
+//   BM_BodyNearest/<radius mm>    nearestContact (20: the contact radius, 80:
+//                                 the widest approach radius)
+//   BM_BodyFirstHit               firstHitAlong over a 1 cm move of each point
+//
+//   mannequin-bench --benchmark_filter=Body
+#include <benchmark/benchmark.h>
+
+#include <ctime>
+
+#include "core/character/default_mannequin.h"
+#include "core/character/posed_character.h"
+#include "sim/cloth/collision/body_collider.h"
+
+namespace {
+
+using namespace mq::cloth;
+
+struct BodyScene {
+  BodyCollider body;
+  std::vector<glm::vec3> points, moves;
+};
+
+const BodyScene& walkingBody() {
+  static const BodyScene scene = [] {
+    BodyScene s;
+    const mq::Character mannequin = mq::makeDefaultMannequin();
+    const int walk = mannequin.findClip("walk");
+    mq::PosedCharacter posed;
+    posed.evaluate(mannequin, walk, 0.5f, nullptr, nullptr);
+    const std::vector<float> start = concatenatedPositions(posed.meshes());
+    std::vector<float> normals;
+    for (const mq::PosedMesh& m : posed.meshes()) normals.insert(normals.end(), m.normals.begin(), m.normals.end());
+    s.body.setMesh(start, concatenatedTriangles(mannequin), 0.02f);
+    posed.evaluate(mannequin, walk, 0.5f + 1.0f / 30.0f, nullptr, nullptr);
+    s.body.setTarget(concatenatedPositions(posed.meshes()), 1.0f / 30.0f);
+    s.body.moveTo(1.0f);
+    uint32_t random = 12345;
+    auto next = [&] { return float((random = random * 1664525u + 1013904223u) >> 8) / float(1 << 24); };
+    for (size_t v = 0; 3 * v + 2 < start.size(); v += 2) {
+      const glm::vec3 p(start[3 * v], start[3 * v + 1], start[3 * v + 2]);
+      const glm::vec3 n = glm::normalize(glm::vec3(normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]));
+      const float offset = next() < 0.05f ? -0.005f : 0.03f * next();
+      s.points.push_back(p + offset * n);
+      s.moves.push_back(0.01f * glm::normalize(glm::vec3(next() - 0.5f, next() - 0.5f, next() - 0.5f)));
+    }
+    return s;
+  }();
+  return scene;
+}
+
+void reportPerQuery(benchmark::State& state, double cpuSeconds, size_t queries, int hits) {
+  state.counters["ns_per_query"] = 1e9 * cpuSeconds / double(std::max<size_t>(1, queries));
+  state.counters["queries"] = double(queries) / double(std::max<int64_t>(1, state.iterations()));
+  state.counters["hits"] = hits;
+}
+
+void BM_BodyNearest(benchmark::State& state) {
+  const BodyScene& s = walkingBody();
+  const float radius = 0.001f * float(state.range(0));
+  double cpuSeconds = 0.0;
+  size_t queries = 0;
+  int hits = 0;
+  for (auto _ : state) {
+    const std::clock_t cpuStart = std::clock();
+    hits = 0;
+    for (const glm::vec3& p : s.points) {
+      BodyContact contact;
+      hits += s.body.nearestContact(p, contact, radius);
+    }
+    cpuSeconds += double(std::clock() - cpuStart) / CLOCKS_PER_SEC;
+    queries += s.points.size();
+  }
+  reportPerQuery(state, cpuSeconds, queries, hits);
+}
+BENCHMARK(BM_BodyNearest)->Arg(20)->Arg(80)->Unit(benchmark::kMillisecond);
+
+void BM_BodyFirstHit(benchmark::State& state) {
+  const BodyScene& s = walkingBody();
+  double cpuSeconds = 0.0;
+  size_t queries = 0;
+  int hits = 0;
+  for (auto _ : state) {
+    const std::clock_t cpuStart = std::clock();
+    hits = 0;
+    for (size_t i = 0; i < s.points.size(); ++i) {
+      BodyContact contact;
+      hits += s.body.firstHitAlong(s.points[i], s.points[i] + s.moves[i], contact);
+    }
+    cpuSeconds += double(std::clock() - cpuStart) / CLOCKS_PER_SEC;
+    queries += s.points.size();
+  }
+  reportPerQuery(state, cpuSeconds, queries, hits);
+}
+BENCHMARK(BM_BodyFirstHit)->Unit(benchmark::kMillisecond);
+
+}  // namespace
