@@ -40,11 +40,9 @@ int32_t AabbTree::buildNode(uint32_t first, uint32_t count, const std::vector<Bo
   Box box;
   for (uint32_t k = first; k < first + count; ++k) box.extend(boxes[order_[k]]);
   nodes_[index].box = box;
-  if (count <= kLeafSize) {
-    nodes_[index].first = first;
-    nodes_[index].count = count;
-    return index;
-  }
+  nodes_[index].first = first;
+  nodes_[index].count = count;
+  if (count <= kLeafSize) return index;
   const glm::vec3 extent = box.max - box.min;
   const int axis = extent.x > extent.y ? (extent.x > extent.z ? 0 : 2) : (extent.y > extent.z ? 1 : 2);
   const uint32_t half = count / 2;

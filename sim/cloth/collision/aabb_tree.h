@@ -46,6 +46,25 @@ class AabbTree {
   std::vector<PairJob> pairJobs(size_t minJobs) const;
   template <class Visit>
   void runJob(const PairJob& job, Visit&& visit) const;
+  // The same, but the pairs within a node for which skipWithin(node) is true
+  // are not visited (a part known to hold no pair of interest).
+  template <class Visit, class SkipWithin>
+  void runJob(const PairJob& job, Visit&& visit, SkipWithin&& skipWithin) const;
+
+  // The nodes, for data kept alongside them: node 0 is the root, children
+  // follow their parent (a reverse sweep is bottom-up), a node covers the
+  // primitives primitive(first) .. primitive(first + count - 1) and is a leaf
+  // when left < 0.
+  struct NodeInfo {
+    int32_t left, right;
+    uint32_t first, count;
+  };
+  size_t nodeCount() const { return nodes_.size(); }
+  NodeInfo nodeInfo(size_t node) const {
+    const Node& n = nodes_[node];
+    return {n.left, n.right, n.first, n.count};
+  }
+  uint32_t primitive(uint32_t k) const { return order_[k]; }
 
   bool empty() const { return nodes_.empty(); }
 
@@ -53,11 +72,11 @@ class AabbTree {
   struct Node {
     Box box;
     int32_t left = -1, right = -1;  // children; leaves have left = -1
-    uint32_t first = 0, count = 0;  // leaf: range in order_
+    uint32_t first = 0, count = 0;  // the node's range in order_
   };
   int32_t buildNode(uint32_t first, uint32_t count, const std::vector<Box>& boxes);
-  template <class Visit>
-  void pairsWithin(int32_t node, Visit& visit) const;
+  template <class Visit, class SkipWithin>
+  void pairsWithin(int32_t node, Visit& visit, SkipWithin& skipWithin) const;
   template <class Visit>
   void pairsBetween(int32_t a, int32_t b, Visit& visit) const;
   void gatherLeafBoxes(const std::vector<Box>& boxes);
@@ -128,18 +147,24 @@ void AabbTree::nearest(const glm::vec3& p, float& best, Visit&& visit) const {
 
 template <class Visit>
 void AabbTree::runJob(const PairJob& job, Visit&& visit) const {
+  runJob(job, visit, [](int32_t) { return false; });
+}
+
+template <class Visit, class SkipWithin>
+void AabbTree::runJob(const PairJob& job, Visit&& visit, SkipWithin&& skipWithin) const {
   if (job.a == job.b)
-    pairsWithin(job.a, visit);
+    pairsWithin(job.a, visit, skipWithin);
   else
     pairsBetween(job.a, job.b, visit);
 }
 
-template <class Visit>
-void AabbTree::pairsWithin(int32_t node, Visit& visit) const {
+template <class Visit, class SkipWithin>
+void AabbTree::pairsWithin(int32_t node, Visit& visit, SkipWithin& skipWithin) const {
+  if (skipWithin(node)) return;
   const Node& n = nodes_[node];
   if (n.left >= 0) {
-    pairsWithin(n.left, visit);
-    pairsWithin(n.right, visit);
+    pairsWithin(n.left, visit, skipWithin);
+    pairsWithin(n.right, visit, skipWithin);
     pairsBetween(n.left, n.right, visit);
     return;
   }

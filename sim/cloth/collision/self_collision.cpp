@@ -17,6 +17,47 @@ bool sharesVertex(uint32_t a0, uint32_t a1, uint32_t b0, uint32_t b1) {
   return a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1;
 }
 
+constexpr uint32_t kNoTriangle = UINT32_MAX;
+constexpr float kFlatCosine = 0.7071f;  // cos 45 degrees: a patch's normals within it of its axis are flat
+
+// Unit normals within a cone: its axis and the cosine of its half-angle.
+// Cones wider than 90 degrees are all "wide" (cosine -1): only narrow ones
+// matter, and sums of half-angles up to 90 degrees each stay below 180.
+struct NormalCone {
+  glm::vec3 axis{0.0f};
+  float cosine = -1.0f;
+};
+
+NormalCone merged(const NormalCone& a, const NormalCone& b) {
+  if (a.cosine < 0.0f || b.cosine < 0.0f) return {};
+  const glm::vec3 sum = a.axis + b.axis;
+  const float length = glm::length(sum);
+  if (length < 1e-6f) return {};
+  const glm::vec3 axis = sum / length;
+  // cos(angle(axis, c.axis) + half-angle of c), from the sines and cosines.
+  auto reach = [&](const NormalCone& c) {
+    const float cd = std::min(1.0f, glm::dot(axis, c.axis));
+    const float sd = std::sqrt(std::max(0.0f, 1.0f - cd * cd));
+    const float sc = std::sqrt(std::max(0.0f, 1.0f - c.cosine * c.cosine));
+    return cd * c.cosine - sd * sc;
+  };
+  const float cosine = std::min(reach(a), reach(b));
+  return cosine < 0.0f ? NormalCone{} : NormalCone{axis, cosine};
+}
+
+// The cone of a triangle's normals at the start and the end of the step.
+NormalCone triangleCone(const glm::vec3& a0, const glm::vec3& b0, const glm::vec3& c0, const glm::vec3& a1,
+                        const glm::vec3& b1, const glm::vec3& c1) {
+  const glm::vec3 n0 = glm::cross(b0 - a0, c0 - a0), n1 = glm::cross(b1 - a1, c1 - a1);
+  const float l0 = glm::length(n0), l1 = glm::length(n1);
+  if (l0 < 1e-12f || l1 < 1e-12f) return {};
+  const glm::vec3 u0 = n0 / l0, sum = u0 + n1 / l1;
+  const float length = glm::length(sum);
+  if (length < 1e-6f) return {};
+  const glm::vec3 axis = sum / length;
+  return {axis, glm::dot(axis, u0)};
+}
+
 // Runs body(item, outBlock) over [0, count) in fixed blocks, in parallel, and
 // concatenates the blocks' outputs in order: deterministic.
 template <class T, class Body>
@@ -37,7 +78,8 @@ std::vector<T> collectInBlocks(size_t count, Body&& body) {
 
 }  // namespace
 
-SelfCollision::SelfCollision(const std::vector<uint32_t>& triangles, size_t vertexCount) : triangles_(triangles) {
+SelfCollision::SelfCollision(const std::vector<uint32_t>& triangles, size_t vertexCount)
+    : triangles_(triangles), vertexCount_(vertexCount) {
   std::map<std::pair<uint32_t, uint32_t>, uint32_t> index;
   triangleEdges_.resize(triangles.size());
   for (size_t t = 0; t < triangles.size(); t += 3)
@@ -45,9 +87,71 @@ SelfCollision::SelfCollision(const std::vector<uint32_t>& triangles, size_t vert
       const uint32_t a = triangles[t + c], b = triangles[t + (c + 1) % 3];
       const auto key = std::minmax(a, b);
       auto [it, added] = index.emplace(std::make_pair(key.first, key.second), uint32_t(edges_.size()));
-      if (added) edges_.push_back({key.first, key.second});
+      if (added) edges_.push_back({key.first, key.second}), edgeTriangles_.push_back({kNoTriangle, kNoTriangle});
       triangleEdges_[t + c] = it->second;
+      auto& sides = edgeTriangles_[it->second];
+      // A third triangle on an edge (non-manifold) makes no patch flat: its edge's second side is left unknown.
+      if (sides[0] == kNoTriangle)
+        sides[0] = uint32_t(t / 3);
+      else if (sides[1] == kNoTriangle)
+        sides[1] = uint32_t(t / 3);
+      else
+        sides[0] = sides[1] = kNoTriangle - 1;
     }
+}
+
+// Which nodes of the edge tree hold connected edges (through shared
+// vertices): a union-find over each node's edges.
+void SelfCollision::findConnectedPatches() {
+  const size_t nodes = edgeTree_.nodeCount();
+  connectedPatch_.assign(nodes, 0);
+  std::vector<uint32_t> parent(vertexCount_), seenAt(vertexCount_, UINT32_MAX);
+  auto root = [&](uint32_t v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (size_t i = 0; i < nodes; ++i) {
+    const AabbTree::NodeInfo node = edgeTree_.nodeInfo(i);
+    size_t components = 0;
+    for (uint32_t k = node.first; k < node.first + node.count; ++k) {
+      const auto [a, b] = edges_[edgeTree_.primitive(k)];
+      for (uint32_t v : {a, b})
+        if (seenAt[v] != i) seenAt[v] = uint32_t(i), parent[v] = v, ++components;
+      const uint32_t ra = root(a), rb = root(b);
+      if (ra != rb) parent[ra] = rb, --components;
+    }
+    connectedPatch_[i] = components == 1;
+  }
+}
+
+// Which nodes of the edge tree are connected patches whose triangles' normals
+// stay within a narrow cone over the step (bottom-up).
+void SelfCollision::findFlatPatches(const ClothState& s, const std::vector<glm::vec3>& x0) {
+  const size_t triangleCount = triangles_.size() / 3;
+  std::vector<NormalCone> triangleCones(triangleCount);
+  for (size_t t = 0; t < triangleCount; ++t) {
+    const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
+    triangleCones[t] = triangleCone(x0[a], x0[b], x0[c], s.x[a], s.x[b], s.x[c]);
+  }
+  auto edgeCone = [&](uint32_t e) {
+    const auto [t0, t1] = edgeTriangles_[e];
+    if (t0 >= kNoTriangle - 1) return NormalCone{};
+    return t1 == kNoTriangle ? triangleCones[t0] : merged(triangleCones[t0], triangleCones[t1]);
+  };
+  const size_t nodes = edgeTree_.nodeCount();
+  std::vector<NormalCone> cones(nodes);
+  flatPatch_.assign(nodes, 0);
+  for (size_t i = nodes; i-- > 0;) {
+    const AabbTree::NodeInfo node = edgeTree_.nodeInfo(i);
+    if (node.left >= 0) {
+      cones[i] = merged(cones[node.left], cones[node.right]);
+    } else {
+      cones[i] = edgeCone(edgeTree_.primitive(node.first));
+      for (uint32_t k = node.first + 1; k < node.first + node.count; ++k)
+        cones[i] = merged(cones[i], edgeCone(edgeTree_.primitive(k)));
+    }
+    flatPatch_[i] = connectedPatch_[i] && cones[i].cosine >= kFlatCosine;
+  }
 }
 
 void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::vec3>& x0, float thickness) {
@@ -131,12 +235,14 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
   if (stepsSinceBuild_ >= kRebuildEvery || tree_.empty()) {
     tree_.build(boxes);
     edgeTree_.build(edgeBoxes);
+    findConnectedPatches();
     stepsSinceBuild_ = 0;
   } else {
     tree_.refit(boxes);
     edgeTree_.refit(edgeBoxes);
   }
   ++stepsSinceBuild_;
+  findFlatPatches(s, x0);
   vertexTriangle_ = collectInBlocks<VertexTriangle>(n, [&](size_t v, std::vector<VertexTriangle>& out) {
     const size_t first = out.size();
     const Box vertexSwept = sweptBox({uint32_t(v)});
@@ -197,7 +303,7 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
         const float l = glm::length(d);
         if (l < 1e-9f || l > reach) return;
         out.push_back({e, f, st, d / l});
-      });
+      }, [&](int32_t node) { return flatPatch_[node] != 0; });
     }
   });
   // In order of the first edge, then the other (the jobs' order depends on the tree).

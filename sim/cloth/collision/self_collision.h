@@ -8,7 +8,16 @@
 // thickness along that side's normal is pushed apart (mass-weighted, like a
 // position constraint) and loses its approaching relative normal velocity.
 // Pairs are processed in a fixed order: deterministic.
+//
+// Edge pairs within a flat patch are not looked for (after Volino and
+// Magnenat-Thalmann's curvature test): a node of the edge tree whose edges are
+// connected and whose triangles' normals, at the start and the end of the
+// step, lie within 45 degrees of one axis is a surface that cannot fold onto
+// itself, so its edges keep their mesh distances from each other (their
+// contour is not tested: a patch that closes on itself in its plane is taken
+// as flat too).
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -37,16 +46,22 @@ class SelfCollision {
   void findCandidates(const ClothState& s, const std::vector<glm::vec3>& x0, float thickness);
   int applyVertexTriangle(ClothState& s, const VertexTriangle& c, float thickness) const;
   int applyEdgeEdge(ClothState& s, const EdgeEdge& c, float thickness) const;
+  void findConnectedPatches();
+  void findFlatPatches(const ClothState& s, const std::vector<glm::vec3>& x0);
 
   std::vector<uint32_t> triangles_;
   std::vector<std::pair<uint32_t, uint32_t>> edges_;
   std::vector<uint32_t> triangleEdges_;  // 3 per triangle
+  std::vector<std::array<uint32_t, 2>> edgeTriangles_;  // the (one or two) triangles of each edge
+  size_t vertexCount_;
   AabbTree tree_;      // over the triangles' boxes
   AabbTree edgeTree_;  // over the edges' boxes
   std::vector<VertexTriangle> vertexTriangle_;
   std::vector<EdgeEdge> edgeEdge_;
   static constexpr int kRebuildEvery = 16;  // steps between tree rebuilds (refitted in between)
   int stepsSinceBuild_ = 0;
+  std::vector<uint8_t> connectedPatch_;  // per edge tree node: its edges are connected (found at each build)
+  std::vector<uint8_t> flatPatch_;       // per edge tree node: connected and flat in this step
   std::vector<uint32_t> moved_, checkedVT_, checkedEE_;  // resolve()'s pass clocks
 };
 
