@@ -30,6 +30,10 @@ class AabbTree {
   // Calls visit(primitive) for every primitive whose box overlaps `box`.
   template <class Visit>
   void query(const Box& box, Visit&& visit) const;
+  // The same, but the subtrees of the nodes for which skip(node) is true are
+  // not entered.
+  template <class Visit, class Skip>
+  void query(const Box& box, Visit&& visit, Skip&& skip) const;
   // Calls visit(primitive) for the primitives whose box is closer to p than
   // `best`, nearer subtrees first; visit may lower `best` (a nearest-point
   // search: far subtrees are then skipped).
@@ -43,7 +47,9 @@ class AabbTree {
   struct PairJob {
     int32_t a, b;  // a == b: the pairs within node a; otherwise between a and b
   };
-  std::vector<PairJob> pairJobs(size_t minJobs) const;
+  // With skipWithin, a node's own pairs are left out wherever skipWithin(node)
+  // is true (pass the same to runJob).
+  std::vector<PairJob> pairJobs(size_t minJobs, const std::function<bool(int32_t)>& skipWithin = {}) const;
   template <class Visit>
   void runJob(const PairJob& job, Visit&& visit) const;
   // The same, but the pairs within a node for which skipWithin(node) is true
@@ -97,13 +103,19 @@ std::vector<Box> triangleBoxes(const std::vector<glm::vec3>& positions, const st
 
 template <class Visit>
 void AabbTree::query(const Box& box, Visit&& visit) const {
+  query(box, visit, [](int32_t) { return false; });
+}
+
+template <class Visit, class Skip>
+void AabbTree::query(const Box& box, Visit&& visit, Skip&& skip) const {
   if (nodes_.empty()) return;
   int32_t stack[64];
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
-    const Node& n = nodes_[stack[--top]];
-    if (!n.box.overlaps(box)) continue;
+    const int32_t index = stack[--top];
+    const Node& n = nodes_[index];
+    if (!n.box.overlaps(box) || skip(index)) continue;
     if (n.left < 0) {
       for (uint32_t k = n.first; k < n.first + n.count; ++k)
         if (leafBoxes_[k].overlaps(box)) visit(order_[k]);

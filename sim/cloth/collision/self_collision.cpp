@@ -20,29 +20,20 @@ bool sharesVertex(uint32_t a0, uint32_t a1, uint32_t b0, uint32_t b1) {
 constexpr uint32_t kNoTriangle = UINT32_MAX;
 constexpr float kFlatCosine = 0.7071f;  // cos 45 degrees: a patch's normals within it of its axis are flat
 
-// Unit normals within a cone: its axis and the cosine of its half-angle.
-// Cones wider than 90 degrees are all "wide" (cosine -1): only narrow ones
-// matter, and sums of half-angles up to 90 degrees each stay below 180.
-struct NormalCone {
-  glm::vec3 axis{0.0f};
-  float cosine = -1.0f;
-};
-
 NormalCone merged(const NormalCone& a, const NormalCone& b) {
   if (a.cosine < 0.0f || b.cosine < 0.0f) return {};
   const glm::vec3 sum = a.axis + b.axis;
   const float length = glm::length(sum);
   if (length < 1e-6f) return {};
   const glm::vec3 axis = sum / length;
-  // cos(angle(axis, c.axis) + half-angle of c), from the sines and cosines.
+  // The angle from axis to the far side of c: angle(axis, c.axis) + c's half-angle.
   auto reach = [&](const NormalCone& c) {
-    const float cd = std::min(1.0f, glm::dot(axis, c.axis));
-    const float sd = std::sqrt(std::max(0.0f, 1.0f - cd * cd));
-    const float sc = std::sqrt(std::max(0.0f, 1.0f - c.cosine * c.cosine));
-    return cd * c.cosine - sd * sc;
+    const float cd = std::min(1.0f, glm::dot(axis, c.axis)), sd = std::sqrt(std::max(0.0f, 1.0f - cd * cd));
+    return NormalCone{axis, cd * c.cosine - sd * c.sine, sd * c.cosine + cd * c.sine};
   };
-  const float cosine = std::min(reach(a), reach(b));
-  return cosine < 0.0f ? NormalCone{} : NormalCone{axis, cosine};
+  const NormalCone ra = reach(a), rb = reach(b);
+  const NormalCone& wider = ra.cosine < rb.cosine ? ra : rb;
+  return wider.cosine < 0.0f ? NormalCone{} : wider;
 }
 
 // The cone of a triangle's normals at the start and the end of the step.
@@ -55,7 +46,60 @@ NormalCone triangleCone(const glm::vec3& a0, const glm::vec3& b0, const glm::vec
   const float length = glm::length(sum);
   if (length < 1e-6f) return {};
   const glm::vec3 axis = sum / length;
-  return {axis, glm::dot(axis, u0)};
+  const float cosine = std::min(1.0f, glm::dot(axis, u0));
+  return {axis, cosine, std::sqrt(std::max(0.0f, 1.0f - cosine * cosine))};
+}
+
+// Per node of `tree`: whether its primitives are connected through shared
+// vertices (a union-find over each node's primitives; vertices(primitive)
+// gives a primitive's vertices).
+template <class Vertices>
+std::vector<uint8_t> connectedNodes(const AabbTree& tree, size_t vertexCount, Vertices&& vertices) {
+  std::vector<uint8_t> connected(tree.nodeCount(), 0);
+  std::vector<uint32_t> parent(vertexCount), seenAt(vertexCount, UINT32_MAX);
+  auto root = [&](uint32_t v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (size_t i = 0; i < connected.size(); ++i) {
+    const AabbTree::NodeInfo node = tree.nodeInfo(i);
+    size_t components = 0;
+    for (uint32_t k = node.first; k < node.first + node.count; ++k) {
+      const auto corners = vertices(tree.primitive(k));
+      for (uint32_t v : corners)
+        if (seenAt[v] != i) seenAt[v] = uint32_t(i), parent[v] = v, ++components;
+      for (size_t c = 1; c < corners.size(); ++c) {
+        const uint32_t r0 = root(corners[0]), rc = root(corners[c]);
+        if (r0 != rc) parent[r0] = rc, --components;
+      }
+    }
+    connected[i] = components == 1;
+  }
+  return connected;
+}
+
+// Per node of `tree`: connected and its primitives' normal cones (cone(p))
+// within kFlatCosine of one axis. Leaves in parallel, then bottom-up.
+template <class Cone>
+void findFlatNodes(const AabbTree& tree, const std::vector<uint8_t>& connected, Cone&& cone,
+                   std::vector<NormalCone>& cones, std::vector<uint8_t>& flat) {
+  const size_t nodes = tree.nodeCount();
+  cones.resize(nodes);
+  flat.assign(nodes, 0);
+  ThreadPool::shared().parallelFor(0, nodes, 256, [&](size_t i0, size_t i1) {
+    for (size_t i = i0; i < i1; ++i) {
+      const AabbTree::NodeInfo node = tree.nodeInfo(i);
+      if (node.left >= 0) continue;
+      cones[i] = cone(tree.primitive(node.first));
+      for (uint32_t k = node.first + 1; k < node.first + node.count; ++k)
+        cones[i] = merged(cones[i], cone(tree.primitive(k)));
+    }
+  });
+  for (size_t i = nodes; i-- > 0;) {
+    const AabbTree::NodeInfo node = tree.nodeInfo(i);
+    if (node.left >= 0) cones[i] = merged(cones[node.left], cones[node.right]);
+    flat[i] = connected[i] && cones[i].cosine >= kFlatCosine;
+  }
 }
 
 // Runs body(item, outBlock) over [0, count) in fixed blocks, in parallel, and
@@ -100,58 +144,41 @@ SelfCollision::SelfCollision(const std::vector<uint32_t>& triangles, size_t vert
     }
 }
 
-// Which nodes of the edge tree hold connected edges (through shared
-// vertices): a union-find over each node's edges.
+// Which nodes of the trees hold connected primitives (after each build), and
+// where each vertex is in the triangle tree (the place of one of its triangles).
 void SelfCollision::findConnectedPatches() {
-  const size_t nodes = edgeTree_.nodeCount();
-  connectedPatch_.assign(nodes, 0);
-  std::vector<uint32_t> parent(vertexCount_), seenAt(vertexCount_, UINT32_MAX);
-  auto root = [&](uint32_t v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
-  for (size_t i = 0; i < nodes; ++i) {
-    const AabbTree::NodeInfo node = edgeTree_.nodeInfo(i);
-    size_t components = 0;
-    for (uint32_t k = node.first; k < node.first + node.count; ++k) {
-      const auto [a, b] = edges_[edgeTree_.primitive(k)];
-      for (uint32_t v : {a, b})
-        if (seenAt[v] != i) seenAt[v] = uint32_t(i), parent[v] = v, ++components;
-      const uint32_t ra = root(a), rb = root(b);
-      if (ra != rb) parent[ra] = rb, --components;
+  connectedEdgePatch_ = connectedNodes(edgeTree_, vertexCount_, [&](uint32_t e) {
+    return std::array<uint32_t, 2>{edges_[e].first, edges_[e].second};
+  });
+  connectedTrianglePatch_ = connectedNodes(tree_, vertexCount_, [&](uint32_t t) {
+    return std::array<uint32_t, 3>{triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]};
+  });
+  vertexPlace_.assign(vertexCount_, UINT32_MAX);
+  for (uint32_t k = 0; k < triangles_.size() / 3; ++k)
+    for (int c = 0; c < 3; ++c) {
+      uint32_t& place = vertexPlace_[triangles_[3 * tree_.primitive(k) + c]];
+      place = std::min(place, k);
     }
-    connectedPatch_[i] = components == 1;
-  }
 }
 
-// Which nodes of the edge tree are connected patches whose triangles' normals
-// stay within a narrow cone over the step (bottom-up).
+// Which nodes of the trees are connected patches whose triangles' normals
+// stay within a narrow cone over the step.
 void SelfCollision::findFlatPatches(const ClothState& s, const std::vector<glm::vec3>& x0) {
   const size_t triangleCount = triangles_.size() / 3;
-  std::vector<NormalCone> triangleCones(triangleCount);
-  for (size_t t = 0; t < triangleCount; ++t) {
-    const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
-    triangleCones[t] = triangleCone(x0[a], x0[b], x0[c], s.x[a], s.x[b], s.x[c]);
-  }
-  auto edgeCone = [&](uint32_t e) {
+  triangleCones_.resize(triangleCount);
+  ThreadPool::shared().parallelFor(0, triangleCount, 1024, [&](size_t t0, size_t t1) {
+    for (size_t t = t0; t < t1; ++t) {
+      const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
+      triangleCones_[t] = triangleCone(x0[a], x0[b], x0[c], s.x[a], s.x[b], s.x[c]);
+    }
+  });
+  findFlatNodes(edgeTree_, connectedEdgePatch_, [&](uint32_t e) {
     const auto [t0, t1] = edgeTriangles_[e];
     if (t0 >= kNoTriangle - 1) return NormalCone{};
-    return t1 == kNoTriangle ? triangleCones[t0] : merged(triangleCones[t0], triangleCones[t1]);
-  };
-  const size_t nodes = edgeTree_.nodeCount();
-  std::vector<NormalCone> cones(nodes);
-  flatPatch_.assign(nodes, 0);
-  for (size_t i = nodes; i-- > 0;) {
-    const AabbTree::NodeInfo node = edgeTree_.nodeInfo(i);
-    if (node.left >= 0) {
-      cones[i] = merged(cones[node.left], cones[node.right]);
-    } else {
-      cones[i] = edgeCone(edgeTree_.primitive(node.first));
-      for (uint32_t k = node.first + 1; k < node.first + node.count; ++k)
-        cones[i] = merged(cones[i], edgeCone(edgeTree_.primitive(k)));
-    }
-    flatPatch_[i] = connectedPatch_[i] && cones[i].cosine >= kFlatCosine;
-  }
+    return t1 == kNoTriangle ? triangleCones_[t0] : merged(triangleCones_[t0], triangleCones_[t1]);
+  }, nodeCones_, flatEdgePatch_);
+  findFlatNodes(tree_, connectedTrianglePatch_, [&](uint32_t t) { return triangleCones_[t]; }, nodeCones_,
+                flatTrianglePatch_);
 }
 
 void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::vec3>& x0, float thickness) {
@@ -246,6 +273,12 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
   vertexTriangle_ = collectInBlocks<VertexTriangle>(n, [&](size_t v, std::vector<VertexTriangle>& out) {
     const size_t first = out.size();
     const Box vertexSwept = sweptBox({uint32_t(v)});
+    // Not into a flat patch that holds the vertex: no triangle there can reach it.
+    auto ownFlatPatch = [&](int32_t node) {
+      if (!flatTrianglePatch_[node]) return false;
+      const AabbTree::NodeInfo info = tree_.nodeInfo(node);
+      return vertexPlace_[v] - info.first < info.count;
+    };
     tree_.query(swept && !checkSwept ? vertexSwept : relativeBox({uint32_t(v)}), [&](uint32_t t) {
       const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
       if (v == a || v == b || v == c) return;
@@ -257,7 +290,7 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
       if (glm::dot(offset, offset) > reach * reach) return;
       const float side = glm::dot(offset, normal) >= 0.0f ? 1.0f : -1.0f;
       out.push_back({uint32_t(v), t, w, side});
-    });
+    }, ownFlatPatch);
     // In order of the triangle (the tree's order depends on the boxes).
     std::sort(out.begin() + first, out.end(),
               [](const VertexTriangle& a, const VertexTriangle& b) { return a.triangle < b.triangle; });
@@ -278,7 +311,8 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     bounds[e] = {0.5f * (x0[p0] + x0[p1]), 0.5f * glm::length(x0[p0] - x0[p1]), 0.5f * (move[p0] + move[p1]),
                  0.5f * glm::length(move[p0] - move[p1])};
   }
-  const std::vector<AabbTree::PairJob> jobs = edgeTree_.pairJobs(4 * kBlocks);
+  auto flatEdgePatch = [&](int32_t node) { return flatEdgePatch_[node] != 0; };
+  const std::vector<AabbTree::PairJob> jobs = edgeTree_.pairJobs(4 * kBlocks, flatEdgePatch);
   std::vector<std::vector<EdgeEdge>> found(jobs.size());
   ThreadPool::shared().parallelFor(0, jobs.size(), 1, [&](size_t j0, size_t j1) {
     for (size_t j = j0; j < j1; ++j) {
@@ -303,7 +337,7 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
         const float l = glm::length(d);
         if (l < 1e-9f || l > reach) return;
         out.push_back({e, f, st, d / l});
-      }, [&](int32_t node) { return flatPatch_[node] != 0; });
+      }, flatEdgePatch);
     }
   });
   // In order of the first edge, then the other (the jobs' order depends on the tree).
