@@ -50,6 +50,13 @@ NormalCone triangleCone(const glm::vec3& a0, const glm::vec3& b0, const glm::vec
   return {axis, cosine, std::sqrt(std::max(0.0f, 1.0f - cosine * cosine))};
 }
 
+// Runs body(begin, end) over [0, count) in chunks of `chunk`, in parallel.
+template <class Body>
+void inChunks(size_t count, size_t chunk, Body&& body) {
+  ThreadPool::shared().parallelBlocks((count + chunk - 1) / chunk,
+                                      [&](size_t b) { body(b * chunk, std::min(count, (b + 1) * chunk)); });
+}
+
 // Per node of `tree`: whether its primitives are connected through shared
 // vertices (a union-find over each node's primitives; vertices(primitive)
 // gives a primitive's vertices).
@@ -86,7 +93,7 @@ void findFlatNodes(const AabbTree& tree, const std::vector<uint8_t>& connected, 
   const size_t nodes = tree.nodeCount();
   cones.resize(nodes);
   flat.assign(nodes, 0);
-  ThreadPool::shared().parallelFor(0, nodes, 256, [&](size_t i0, size_t i1) {
+  inChunks(nodes, 256, [&](size_t i0, size_t i1) {
     for (size_t i = i0; i < i1; ++i) {
       const AabbTree::NodeInfo node = tree.nodeInfo(i);
       if (node.left >= 0) continue;
@@ -108,9 +115,8 @@ template <class T, class Body>
 std::vector<T> collectInBlocks(size_t count, Body&& body) {
   std::vector<std::vector<T>> blocks(kBlocks);
   const size_t size = (count + kBlocks - 1) / kBlocks;
-  ThreadPool::shared().parallelFor(0, kBlocks, 1, [&](size_t b0, size_t b1) {
-    for (size_t b = b0; b < b1; ++b)
-      for (size_t i = b * size; i < std::min(count, (b + 1) * size); ++i) body(i, blocks[b]);
+  ThreadPool::shared().parallelBlocks(kBlocks, [&](size_t b) {
+    for (size_t i = b * size; i < std::min(count, (b + 1) * size); ++i) body(i, blocks[b]);
   });
   size_t total = 0;
   for (const auto& b : blocks) total += b.size();
@@ -166,7 +172,7 @@ void SelfCollision::findConnectedPatches() {
 void SelfCollision::findFlatPatches(const ClothState& s, const std::vector<glm::vec3>& x0) {
   const size_t triangleCount = triangles_.size() / 3;
   triangleCones_.resize(triangleCount);
-  ThreadPool::shared().parallelFor(0, triangleCount, 1024, [&](size_t t0, size_t t1) {
+  inChunks(triangleCount, 1024, [&](size_t t0, size_t t1) {
     for (size_t t = t0; t < t1; ++t) {
       const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
       triangleCones_[t] = triangleCone(x0[a], x0[b], x0[c], s.x[a], s.x[b], s.x[c]);
@@ -314,31 +320,29 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
   auto flatEdgePatch = [&](int32_t node) { return flatEdgePatch_[node] != 0; };
   const std::vector<AabbTree::PairJob> jobs = edgeTree_.pairJobs(4 * kBlocks, flatEdgePatch);
   std::vector<std::vector<EdgeEdge>> found(jobs.size());
-  ThreadPool::shared().parallelFor(0, jobs.size(), 1, [&](size_t j0, size_t j1) {
-    for (size_t j = j0; j < j1; ++j) {
-      std::vector<EdgeEdge>& out = found[j];
-      edgeTree_.runJob(jobs[j], [&](uint32_t i, uint32_t k) {
-        const uint32_t e = std::min(i, k), f = std::max(i, k);
-        const auto [p0, p1] = edges_[e];
-        const auto [q0, q1] = edges_[f];
-        if (sharesVertex(p0, p1, q0, q1)) return;
-        if (checkSwept && !sweptEdgeBoxes[e].overlaps(sweptEdgeBoxes[f])) return;
-        const EdgeBound &be = bounds[e], &bf = bounds[f];
-        const float bound = thickness + glm::length(be.meanMove - bf.meanMove) + be.spread + bf.spread;
-        if (glm::length(be.mid - bf.mid) - (be.halfLength + bf.halfLength) > 1.0001f * bound + 1e-6f) return;
-        const float reach = thickness + closing({p0, p1}, {q0, q1});
-        // Bounding balls first: the segments' points lie within half their
-        // lengths of their midpoints.
-        const float apart = glm::length(0.5f * (x0[p0] + x0[p1] - x0[q0] - x0[q1])) -
-                            0.5f * (glm::length(x0[p0] - x0[p1]) + glm::length(x0[q0] - x0[q1]));
-        if (apart > reach) return;
-        const glm::vec2 st = closestSegmentParameters(x0[p0], x0[p1], x0[q0], x0[q1]);
-        const glm::vec3 d = glm::mix(x0[p0], x0[p1], st.x) - glm::mix(x0[q0], x0[q1], st.y);
-        const float l = glm::length(d);
-        if (l < 1e-9f || l > reach) return;
-        out.push_back({e, f, st, d / l});
-      }, flatEdgePatch);
-    }
+  ThreadPool::shared().parallelBlocks(jobs.size(), [&](size_t j) {
+    std::vector<EdgeEdge>& out = found[j];
+    edgeTree_.runJob(jobs[j], [&](uint32_t i, uint32_t k) {
+      const uint32_t e = std::min(i, k), f = std::max(i, k);
+      const auto [p0, p1] = edges_[e];
+      const auto [q0, q1] = edges_[f];
+      if (sharesVertex(p0, p1, q0, q1)) return;
+      if (checkSwept && !sweptEdgeBoxes[e].overlaps(sweptEdgeBoxes[f])) return;
+      const EdgeBound &be = bounds[e], &bf = bounds[f];
+      const float bound = thickness + glm::length(be.meanMove - bf.meanMove) + be.spread + bf.spread;
+      if (glm::length(be.mid - bf.mid) - (be.halfLength + bf.halfLength) > 1.0001f * bound + 1e-6f) return;
+      const float reach = thickness + closing({p0, p1}, {q0, q1});
+      // Bounding balls first: the segments' points lie within half their
+      // lengths of their midpoints.
+      const float apart = glm::length(0.5f * (x0[p0] + x0[p1] - x0[q0] - x0[q1])) -
+                          0.5f * (glm::length(x0[p0] - x0[p1]) + glm::length(x0[q0] - x0[q1]));
+      if (apart > reach) return;
+      const glm::vec2 st = closestSegmentParameters(x0[p0], x0[p1], x0[q0], x0[q1]);
+      const glm::vec3 d = glm::mix(x0[p0], x0[p1], st.x) - glm::mix(x0[q0], x0[q1], st.y);
+      const float l = glm::length(d);
+      if (l < 1e-9f || l > reach) return;
+      out.push_back({e, f, st, d / l});
+    }, flatEdgePatch);
   });
   // In order of the first edge, then the other (the jobs' order depends on the tree).
   edgeEdge_.clear();
