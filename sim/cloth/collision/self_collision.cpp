@@ -264,7 +264,8 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
   }
   // The mesh keeps its topology: the trees are refitted to the new boxes and
   // rebuilt now and then, as the cloth's shape drifts from the one they were
-  // built for (the candidates do not depend on the tree, only the speed).
+  // built for (the candidates depend on the tree only through its flat
+  // patches, whose pairs left out are neighbours in the cloth's plane).
   if (stepsSinceBuild_ >= kRebuildEvery || tree_.empty()) {
     tree_.build(boxes);
     edgeTree_.build(edgeBoxes);
