@@ -51,6 +51,34 @@ TEST(AabbTree, PairJobsFindEveryOverlappingPairOnce) {
   EXPECT_EQ(found, expected);
 }
 
+TEST(AabbTree, SkippedNodesLeaveOutExactlyTheirOwnPairs) {
+  const std::vector<Box> boxes = randomBoxes(1500, 5);
+  AabbTree tree;
+  tree.build(boxes);
+  // Skip the pairs within the root's left child, and queries into its right child.
+  const AabbTree::NodeInfo root = tree.nodeInfo(0);
+  ASSERT_GE(root.left, 0);
+  const AabbTree::NodeInfo left = tree.nodeInfo(size_t(root.left)), right = tree.nodeInfo(size_t(root.right));
+  std::vector<int> side(boxes.size(), 0);  // 1: under the left child, 2: under the right
+  for (uint32_t k = left.first; k < left.first + left.count; ++k) side[tree.primitive(k)] = 1;
+  for (uint32_t k = right.first; k < right.first + right.count; ++k) side[tree.primitive(k)] = 2;
+  std::set<std::pair<uint32_t, uint32_t>> expected, found;
+  for (uint32_t i = 0; i < boxes.size(); ++i)
+    for (uint32_t j = i + 1; j < boxes.size(); ++j)
+      if (boxes[i].overlaps(boxes[j]) && !(side[i] == 1 && side[j] == 1)) expected.insert({i, j});
+  auto skipLeft = [&](int32_t node) { return node == root.left; };
+  for (const AabbTree::PairJob& job : tree.pairJobs(16, skipLeft))
+    tree.runJob(job, [&](uint32_t i, uint32_t j) { found.insert(std::minmax(i, j)); }, skipLeft);
+  EXPECT_EQ(found, expected);
+  const Box probe{glm::vec3(0.3f), glm::vec3(0.7f)};
+  std::set<uint32_t> expectedHits, hits;
+  for (uint32_t i = 0; i < boxes.size(); ++i)
+    if (boxes[i].overlaps(probe) && side[i] != 2) expectedHits.insert(i);
+  tree.query(probe, [&](uint32_t i) { hits.insert(i); }, [&](int32_t node) { return node == root.right; });
+  ASSERT_FALSE(expectedHits.empty());
+  EXPECT_EQ(hits, expectedHits);
+}
+
 TEST(AabbTree, NearestSearchMatchesBruteForce) {
   const std::vector<Box> boxes = randomBoxes(2000, 11);
   AabbTree tree;
@@ -166,6 +194,58 @@ TEST(SelfCollision, CandidatesDoNotDependOnTreeRefits) {
     EXPECT_EQ(a.x, b.x) << "step " << step;
     EXPECT_EQ(a.v, b.v) << "step " << step;
   }
+}
+
+TEST(SelfCollision, AFlatSheetHasNoCandidatesEvenWithAThicknessAboveItsEdges) {
+  // 1.4 cm between vertices, 2 cm thickness: without the flat patch test its
+  // neighbours beyond the one-ring would be candidates, pushed out of its plane.
+  const ClothMesh mesh = test::horizontalSheetMesh(30, 0.4f, glm::vec3(0.0f));
+  ClothSimulator sim(mesh, fabricPreset("cotton"), ClothSettings());
+  const ClothState start = sim.state();
+  ClothState moved = start;
+  for (size_t i = 0; i < moved.size(); ++i)
+    moved.x[i] += glm::vec3(0.002f * std::sin(float(i)), 0.0f, 0.002f * std::cos(0.7f * float(i)));
+  ClothState resolved = moved;
+  SelfCollision selfCollision(mesh.triangles, mesh.vertexCount());
+  EXPECT_EQ(selfCollision.resolve(resolved, start.x, 0.02f, 20), 0);
+  EXPECT_EQ(selfCollision.vertexTriangleCandidates(), 0u);
+  EXPECT_EQ(selfCollision.edgeEdgeCandidates(), 0u);
+  size_t pushed = 0;
+  for (size_t i = 0; i < moved.size(); ++i) pushed += resolved.x[i] != moved.x[i];
+  EXPECT_EQ(pushed, 0u);
+}
+
+TEST(SelfCollision, AConnectedFoldIsNotTakenForAFlatPatch) {
+  // One sheet folded over itself at x = 0, its upper layer 3 mm above the
+  // lower one (and facing down), then moved 6 mm down, through it: the layers
+  // are one connected patch whose normals are opposite, so its pairs are
+  // found and the upper layer ends above the lower one (away from the crease
+  // column, whose vertical triangles the layers' vertices straddle).
+  const int n = 30;
+  ClothMesh mesh = test::horizontalSheetMesh(n, 0.4f, glm::vec3(0.0f));
+  std::vector<bool> upper(mesh.vertexCount(), false);
+  for (size_t i = 0; i < mesh.vertexCount(); ++i) {
+    float& x = mesh.positions[3 * i];
+    if (x > 0.0f) mesh.positions[3 * i + 1] = 0.003f, x = -x, upper[i] = true;
+  }
+  ClothSimulator sim(mesh, fabricPreset("cotton"), ClothSettings());
+  const ClothState start = sim.state();
+  ClothState s = start;
+  for (size_t i = 0; i < s.size(); ++i)
+    if (upper[i]) s.x[i].y -= 0.006f;
+  SelfCollision selfCollision(mesh.triangles, mesh.vertexCount());
+  EXPECT_GT(selfCollision.resolve(s, start.x, 0.004f, 20), 0);
+  EXPECT_GT(selfCollision.vertexTriangleCandidates(), 0u);
+  int checked = 0;
+  for (size_t i = 0; i < s.size(); ++i) {
+    if (!upper[i] || start.x[i].x > -0.01f) continue;
+    for (size_t j = 0; j < s.size(); ++j)  // the lower vertex under it
+      if (!upper[j] && std::abs(start.x[j].x - start.x[i].x) < 1e-6f && std::abs(start.x[j].z - start.x[i].z) < 1e-6f) {
+        EXPECT_GT(s.x[i].y, s.x[j].y) << "upper vertex " << i << " went through the lower layer";
+        ++checked;
+      }
+  }
+  EXPECT_EQ(checked, n * (n / 2 - 1));
 }
 
 }  // namespace

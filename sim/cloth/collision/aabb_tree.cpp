@@ -40,11 +40,9 @@ int32_t AabbTree::buildNode(uint32_t first, uint32_t count, const std::vector<Bo
   Box box;
   for (uint32_t k = first; k < first + count; ++k) box.extend(boxes[order_[k]]);
   nodes_[index].box = box;
-  if (count <= kLeafSize) {
-    nodes_[index].first = first;
-    nodes_[index].count = count;
-    return index;
-  }
+  nodes_[index].first = first;
+  nodes_[index].count = count;
+  if (count <= kLeafSize) return index;
   const glm::vec3 extent = box.max - box.min;
   const int axis = extent.x > extent.y ? (extent.x > extent.z ? 0 : 2) : (extent.y > extent.z ? 1 : 2);
   const uint32_t half = count / 2;
@@ -74,9 +72,11 @@ void AabbTree::refit(const std::vector<Box>& boxes) {
   gatherLeafBoxes(boxes);
 }
 
-std::vector<AabbTree::PairJob> AabbTree::pairJobs(size_t minJobs) const {
+std::vector<AabbTree::PairJob> AabbTree::pairJobs(size_t minJobs,
+                                                  const std::function<bool(int32_t)>& skipWithin) const {
   std::vector<PairJob> jobs;
   if (nodes_.empty()) return jobs;
+  auto skipped = [&](const PairJob& j) { return j.a == j.b && skipWithin && skipWithin(j.a); };
   jobs.push_back({0, 0});
   // Breadth-first: split every job whose nodes are inner, as pairsWithin()
   // and pairsBetween() would, until there are enough.
@@ -84,6 +84,7 @@ std::vector<AabbTree::PairJob> AabbTree::pairJobs(size_t minJobs) const {
     split = false;
     std::vector<PairJob> next;
     for (const PairJob& j : jobs) {
+      if (skipped(j)) continue;
       const Node &na = nodes_[j.a], &nb = nodes_[j.b];
       if (j.a == j.b && na.left >= 0) {
         next.push_back({na.left, na.left});
@@ -101,6 +102,7 @@ std::vector<AabbTree::PairJob> AabbTree::pairJobs(size_t minJobs) const {
     }
     jobs = std::move(next);
   }
+  jobs.erase(std::remove_if(jobs.begin(), jobs.end(), skipped), jobs.end());
   return jobs;
 }
 

@@ -30,6 +30,10 @@ class AabbTree {
   // Calls visit(primitive) for every primitive whose box overlaps `box`.
   template <class Visit>
   void query(const Box& box, Visit&& visit) const;
+  // The same, but the subtrees of the nodes for which skip(node) is true are
+  // not entered.
+  template <class Visit, class Skip>
+  void query(const Box& box, Visit&& visit, Skip&& skip) const;
   // Calls visit(primitive) for the primitives whose box is closer to p than
   // `best`, nearer subtrees first; visit may lower `best` (a nearest-point
   // search: far subtrees are then skipped).
@@ -43,9 +47,30 @@ class AabbTree {
   struct PairJob {
     int32_t a, b;  // a == b: the pairs within node a; otherwise between a and b
   };
-  std::vector<PairJob> pairJobs(size_t minJobs) const;
+  // With skipWithin, a node's own pairs are left out wherever skipWithin(node)
+  // is true (pass the same to runJob).
+  std::vector<PairJob> pairJobs(size_t minJobs, const std::function<bool(int32_t)>& skipWithin = {}) const;
   template <class Visit>
   void runJob(const PairJob& job, Visit&& visit) const;
+  // The same, but the pairs within a node for which skipWithin(node) is true
+  // are not visited (a part known to hold no pair of interest).
+  template <class Visit, class SkipWithin>
+  void runJob(const PairJob& job, Visit&& visit, SkipWithin&& skipWithin) const;
+
+  // The nodes, for data kept alongside them: node 0 is the root, children
+  // follow their parent (a reverse sweep is bottom-up), a node covers the
+  // primitives primitive(first) .. primitive(first + count - 1) and is a leaf
+  // when left < 0.
+  struct NodeInfo {
+    int32_t left, right;
+    uint32_t first, count;
+  };
+  size_t nodeCount() const { return nodes_.size(); }
+  NodeInfo nodeInfo(size_t node) const {
+    const Node& n = nodes_[node];
+    return {n.left, n.right, n.first, n.count};
+  }
+  uint32_t primitive(uint32_t k) const { return order_[k]; }
 
   bool empty() const { return nodes_.empty(); }
 
@@ -53,11 +78,11 @@ class AabbTree {
   struct Node {
     Box box;
     int32_t left = -1, right = -1;  // children; leaves have left = -1
-    uint32_t first = 0, count = 0;  // leaf: range in order_
+    uint32_t first = 0, count = 0;  // the node's range in order_
   };
   int32_t buildNode(uint32_t first, uint32_t count, const std::vector<Box>& boxes);
-  template <class Visit>
-  void pairsWithin(int32_t node, Visit& visit) const;
+  template <class Visit, class SkipWithin>
+  void pairsWithin(int32_t node, Visit& visit, SkipWithin& skipWithin) const;
   template <class Visit>
   void pairsBetween(int32_t a, int32_t b, Visit& visit) const;
   void gatherLeafBoxes(const std::vector<Box>& boxes);
@@ -78,13 +103,19 @@ std::vector<Box> triangleBoxes(const std::vector<glm::vec3>& positions, const st
 
 template <class Visit>
 void AabbTree::query(const Box& box, Visit&& visit) const {
+  query(box, visit, [](int32_t) { return false; });
+}
+
+template <class Visit, class Skip>
+void AabbTree::query(const Box& box, Visit&& visit, Skip&& skip) const {
   if (nodes_.empty()) return;
   int32_t stack[64];
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
-    const Node& n = nodes_[stack[--top]];
-    if (!n.box.overlaps(box)) continue;
+    const int32_t index = stack[--top];
+    const Node& n = nodes_[index];
+    if (!n.box.overlaps(box) || skip(index)) continue;
     if (n.left < 0) {
       for (uint32_t k = n.first; k < n.first + n.count; ++k)
         if (leafBoxes_[k].overlaps(box)) visit(order_[k]);
@@ -128,18 +159,24 @@ void AabbTree::nearest(const glm::vec3& p, float& best, Visit&& visit) const {
 
 template <class Visit>
 void AabbTree::runJob(const PairJob& job, Visit&& visit) const {
+  runJob(job, visit, [](int32_t) { return false; });
+}
+
+template <class Visit, class SkipWithin>
+void AabbTree::runJob(const PairJob& job, Visit&& visit, SkipWithin&& skipWithin) const {
   if (job.a == job.b)
-    pairsWithin(job.a, visit);
+    pairsWithin(job.a, visit, skipWithin);
   else
     pairsBetween(job.a, job.b, visit);
 }
 
-template <class Visit>
-void AabbTree::pairsWithin(int32_t node, Visit& visit) const {
+template <class Visit, class SkipWithin>
+void AabbTree::pairsWithin(int32_t node, Visit& visit, SkipWithin& skipWithin) const {
+  if (skipWithin(node)) return;
   const Node& n = nodes_[node];
   if (n.left >= 0) {
-    pairsWithin(n.left, visit);
-    pairsWithin(n.right, visit);
+    pairsWithin(n.left, visit, skipWithin);
+    pairsWithin(n.right, visit, skipWithin);
     pairsBetween(n.left, n.right, visit);
     return;
   }

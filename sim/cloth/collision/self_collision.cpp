@@ -17,15 +17,106 @@ bool sharesVertex(uint32_t a0, uint32_t a1, uint32_t b0, uint32_t b1) {
   return a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1;
 }
 
+constexpr uint32_t kNoTriangle = UINT32_MAX;
+constexpr float kFlatCosine = 0.7071f;  // cos 45 degrees: a patch's normals within it of its axis are flat
+
+NormalCone merged(const NormalCone& a, const NormalCone& b) {
+  if (a.cosine < 0.0f || b.cosine < 0.0f) return {};
+  const glm::vec3 sum = a.axis + b.axis;
+  const float length = glm::length(sum);
+  if (length < 1e-6f) return {};
+  const glm::vec3 axis = sum / length;
+  // The angle from axis to the far side of c: angle(axis, c.axis) + c's half-angle.
+  auto reach = [&](const NormalCone& c) {
+    const float cd = std::min(1.0f, glm::dot(axis, c.axis)), sd = std::sqrt(std::max(0.0f, 1.0f - cd * cd));
+    return NormalCone{axis, cd * c.cosine - sd * c.sine, sd * c.cosine + cd * c.sine};
+  };
+  const NormalCone ra = reach(a), rb = reach(b);
+  const NormalCone& wider = ra.cosine < rb.cosine ? ra : rb;
+  return wider.cosine < 0.0f ? NormalCone{} : wider;
+}
+
+// The cone of a triangle's normals at the start and the end of the step.
+NormalCone triangleCone(const glm::vec3& a0, const glm::vec3& b0, const glm::vec3& c0, const glm::vec3& a1,
+                        const glm::vec3& b1, const glm::vec3& c1) {
+  const glm::vec3 n0 = glm::cross(b0 - a0, c0 - a0), n1 = glm::cross(b1 - a1, c1 - a1);
+  const float l0 = glm::length(n0), l1 = glm::length(n1);
+  if (l0 < 1e-12f || l1 < 1e-12f) return {};
+  const glm::vec3 u0 = n0 / l0, sum = u0 + n1 / l1;
+  const float length = glm::length(sum);
+  if (length < 1e-6f) return {};
+  const glm::vec3 axis = sum / length;
+  const float cosine = std::min(1.0f, glm::dot(axis, u0));
+  return {axis, cosine, std::sqrt(std::max(0.0f, 1.0f - cosine * cosine))};
+}
+
+// Runs body(begin, end) over [0, count) in chunks of `chunk`, in parallel.
+template <class Body>
+void inChunks(size_t count, size_t chunk, Body&& body) {
+  ThreadPool::shared().parallelBlocks((count + chunk - 1) / chunk,
+                                      [&](size_t b) { body(b * chunk, std::min(count, (b + 1) * chunk)); });
+}
+
+// Per node of `tree`: whether its primitives are connected through shared
+// vertices (a union-find over each node's primitives; vertices(primitive)
+// gives a primitive's vertices).
+template <class Vertices>
+std::vector<uint8_t> connectedNodes(const AabbTree& tree, size_t vertexCount, Vertices&& vertices) {
+  std::vector<uint8_t> connected(tree.nodeCount(), 0);
+  std::vector<uint32_t> parent(vertexCount), seenAt(vertexCount, UINT32_MAX);
+  auto root = [&](uint32_t v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (size_t i = 0; i < connected.size(); ++i) {
+    const AabbTree::NodeInfo node = tree.nodeInfo(i);
+    size_t components = 0;
+    for (uint32_t k = node.first; k < node.first + node.count; ++k) {
+      const auto corners = vertices(tree.primitive(k));
+      for (uint32_t v : corners)
+        if (seenAt[v] != i) seenAt[v] = uint32_t(i), parent[v] = v, ++components;
+      for (size_t c = 1; c < corners.size(); ++c) {
+        const uint32_t r0 = root(corners[0]), rc = root(corners[c]);
+        if (r0 != rc) parent[r0] = rc, --components;
+      }
+    }
+    connected[i] = components == 1;
+  }
+  return connected;
+}
+
+// Per node of `tree`: connected and its primitives' normal cones (cone(p))
+// within kFlatCosine of one axis. Leaves in parallel, then bottom-up.
+template <class Cone>
+void findFlatNodes(const AabbTree& tree, const std::vector<uint8_t>& connected, Cone&& cone,
+                   std::vector<NormalCone>& cones, std::vector<uint8_t>& flat) {
+  const size_t nodes = tree.nodeCount();
+  cones.resize(nodes);
+  flat.assign(nodes, 0);
+  inChunks(nodes, 256, [&](size_t i0, size_t i1) {
+    for (size_t i = i0; i < i1; ++i) {
+      const AabbTree::NodeInfo node = tree.nodeInfo(i);
+      if (node.left >= 0) continue;
+      cones[i] = cone(tree.primitive(node.first));
+      for (uint32_t k = node.first + 1; k < node.first + node.count; ++k)
+        cones[i] = merged(cones[i], cone(tree.primitive(k)));
+    }
+  });
+  for (size_t i = nodes; i-- > 0;) {
+    const AabbTree::NodeInfo node = tree.nodeInfo(i);
+    if (node.left >= 0) cones[i] = merged(cones[node.left], cones[node.right]);
+    flat[i] = connected[i] && cones[i].cosine >= kFlatCosine;
+  }
+}
+
 // Runs body(item, outBlock) over [0, count) in fixed blocks, in parallel, and
 // concatenates the blocks' outputs in order: deterministic.
 template <class T, class Body>
 std::vector<T> collectInBlocks(size_t count, Body&& body) {
   std::vector<std::vector<T>> blocks(kBlocks);
   const size_t size = (count + kBlocks - 1) / kBlocks;
-  ThreadPool::shared().parallelFor(0, kBlocks, 1, [&](size_t b0, size_t b1) {
-    for (size_t b = b0; b < b1; ++b)
-      for (size_t i = b * size; i < std::min(count, (b + 1) * size); ++i) body(i, blocks[b]);
+  ThreadPool::shared().parallelBlocks(kBlocks, [&](size_t b) {
+    for (size_t i = b * size; i < std::min(count, (b + 1) * size); ++i) body(i, blocks[b]);
   });
   size_t total = 0;
   for (const auto& b : blocks) total += b.size();
@@ -37,7 +128,8 @@ std::vector<T> collectInBlocks(size_t count, Body&& body) {
 
 }  // namespace
 
-SelfCollision::SelfCollision(const std::vector<uint32_t>& triangles, size_t vertexCount) : triangles_(triangles) {
+SelfCollision::SelfCollision(const std::vector<uint32_t>& triangles, size_t vertexCount)
+    : triangles_(triangles), vertexCount_(vertexCount) {
   std::map<std::pair<uint32_t, uint32_t>, uint32_t> index;
   triangleEdges_.resize(triangles.size());
   for (size_t t = 0; t < triangles.size(); t += 3)
@@ -45,9 +137,54 @@ SelfCollision::SelfCollision(const std::vector<uint32_t>& triangles, size_t vert
       const uint32_t a = triangles[t + c], b = triangles[t + (c + 1) % 3];
       const auto key = std::minmax(a, b);
       auto [it, added] = index.emplace(std::make_pair(key.first, key.second), uint32_t(edges_.size()));
-      if (added) edges_.push_back({key.first, key.second});
+      if (added) edges_.push_back({key.first, key.second}), edgeTriangles_.push_back({kNoTriangle, kNoTriangle});
       triangleEdges_[t + c] = it->second;
+      auto& sides = edgeTriangles_[it->second];
+      // A third triangle on an edge (non-manifold) makes no patch flat: its edge's second side is left unknown.
+      if (sides[0] == kNoTriangle)
+        sides[0] = uint32_t(t / 3);
+      else if (sides[1] == kNoTriangle)
+        sides[1] = uint32_t(t / 3);
+      else
+        sides[0] = sides[1] = kNoTriangle - 1;
     }
+}
+
+// Which nodes of the trees hold connected primitives (after each build), and
+// where each vertex is in the triangle tree (the place of one of its triangles).
+void SelfCollision::findConnectedPatches() {
+  connectedEdgePatch_ = connectedNodes(edgeTree_, vertexCount_, [&](uint32_t e) {
+    return std::array<uint32_t, 2>{edges_[e].first, edges_[e].second};
+  });
+  connectedTrianglePatch_ = connectedNodes(tree_, vertexCount_, [&](uint32_t t) {
+    return std::array<uint32_t, 3>{triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]};
+  });
+  vertexPlace_.assign(vertexCount_, UINT32_MAX);
+  for (uint32_t k = 0; k < triangles_.size() / 3; ++k)
+    for (int c = 0; c < 3; ++c) {
+      uint32_t& place = vertexPlace_[triangles_[3 * tree_.primitive(k) + c]];
+      place = std::min(place, k);
+    }
+}
+
+// Which nodes of the trees are connected patches whose triangles' normals
+// stay within a narrow cone over the step.
+void SelfCollision::findFlatPatches(const ClothState& s, const std::vector<glm::vec3>& x0) {
+  const size_t triangleCount = triangles_.size() / 3;
+  triangleCones_.resize(triangleCount);
+  inChunks(triangleCount, 1024, [&](size_t t0, size_t t1) {
+    for (size_t t = t0; t < t1; ++t) {
+      const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
+      triangleCones_[t] = triangleCone(x0[a], x0[b], x0[c], s.x[a], s.x[b], s.x[c]);
+    }
+  });
+  findFlatNodes(edgeTree_, connectedEdgePatch_, [&](uint32_t e) {
+    const auto [t0, t1] = edgeTriangles_[e];
+    if (t0 >= kNoTriangle - 1) return NormalCone{};
+    return t1 == kNoTriangle ? triangleCones_[t0] : merged(triangleCones_[t0], triangleCones_[t1]);
+  }, nodeCones_, flatEdgePatch_);
+  findFlatNodes(tree_, connectedTrianglePatch_, [&](uint32_t t) { return triangleCones_[t]; }, nodeCones_,
+                flatTrianglePatch_);
 }
 
 void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::vec3>& x0, float thickness) {
@@ -127,19 +264,28 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
   }
   // The mesh keeps its topology: the trees are refitted to the new boxes and
   // rebuilt now and then, as the cloth's shape drifts from the one they were
-  // built for (the candidates do not depend on the tree, only the speed).
+  // built for (the candidates depend on the tree only through its flat
+  // patches, whose pairs left out are neighbours in the cloth's plane).
   if (stepsSinceBuild_ >= kRebuildEvery || tree_.empty()) {
     tree_.build(boxes);
     edgeTree_.build(edgeBoxes);
+    findConnectedPatches();
     stepsSinceBuild_ = 0;
   } else {
     tree_.refit(boxes);
     edgeTree_.refit(edgeBoxes);
   }
   ++stepsSinceBuild_;
+  findFlatPatches(s, x0);
   vertexTriangle_ = collectInBlocks<VertexTriangle>(n, [&](size_t v, std::vector<VertexTriangle>& out) {
     const size_t first = out.size();
     const Box vertexSwept = sweptBox({uint32_t(v)});
+    // Not into a flat patch that holds the vertex: no triangle there can reach it.
+    auto ownFlatPatch = [&](int32_t node) {
+      if (!flatTrianglePatch_[node]) return false;
+      const AabbTree::NodeInfo info = tree_.nodeInfo(node);
+      return vertexPlace_[v] - info.first < info.count;
+    };
     tree_.query(swept && !checkSwept ? vertexSwept : relativeBox({uint32_t(v)}), [&](uint32_t t) {
       const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
       if (v == a || v == b || v == c) return;
@@ -151,7 +297,7 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
       if (glm::dot(offset, offset) > reach * reach) return;
       const float side = glm::dot(offset, normal) >= 0.0f ? 1.0f : -1.0f;
       out.push_back({uint32_t(v), t, w, side});
-    });
+    }, ownFlatPatch);
     // In order of the triangle (the tree's order depends on the boxes).
     std::sort(out.begin() + first, out.end(),
               [](const VertexTriangle& a, const VertexTriangle& b) { return a.triangle < b.triangle; });
@@ -172,33 +318,32 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     bounds[e] = {0.5f * (x0[p0] + x0[p1]), 0.5f * glm::length(x0[p0] - x0[p1]), 0.5f * (move[p0] + move[p1]),
                  0.5f * glm::length(move[p0] - move[p1])};
   }
-  const std::vector<AabbTree::PairJob> jobs = edgeTree_.pairJobs(4 * kBlocks);
+  auto flatEdgePatch = [&](int32_t node) { return flatEdgePatch_[node] != 0; };
+  const std::vector<AabbTree::PairJob> jobs = edgeTree_.pairJobs(4 * kBlocks, flatEdgePatch);
   std::vector<std::vector<EdgeEdge>> found(jobs.size());
-  ThreadPool::shared().parallelFor(0, jobs.size(), 1, [&](size_t j0, size_t j1) {
-    for (size_t j = j0; j < j1; ++j) {
-      std::vector<EdgeEdge>& out = found[j];
-      edgeTree_.runJob(jobs[j], [&](uint32_t i, uint32_t k) {
-        const uint32_t e = std::min(i, k), f = std::max(i, k);
-        const auto [p0, p1] = edges_[e];
-        const auto [q0, q1] = edges_[f];
-        if (sharesVertex(p0, p1, q0, q1)) return;
-        if (checkSwept && !sweptEdgeBoxes[e].overlaps(sweptEdgeBoxes[f])) return;
-        const EdgeBound &be = bounds[e], &bf = bounds[f];
-        const float bound = thickness + glm::length(be.meanMove - bf.meanMove) + be.spread + bf.spread;
-        if (glm::length(be.mid - bf.mid) - (be.halfLength + bf.halfLength) > 1.0001f * bound + 1e-6f) return;
-        const float reach = thickness + closing({p0, p1}, {q0, q1});
-        // Bounding balls first: the segments' points lie within half their
-        // lengths of their midpoints.
-        const float apart = glm::length(0.5f * (x0[p0] + x0[p1] - x0[q0] - x0[q1])) -
-                            0.5f * (glm::length(x0[p0] - x0[p1]) + glm::length(x0[q0] - x0[q1]));
-        if (apart > reach) return;
-        const glm::vec2 st = closestSegmentParameters(x0[p0], x0[p1], x0[q0], x0[q1]);
-        const glm::vec3 d = glm::mix(x0[p0], x0[p1], st.x) - glm::mix(x0[q0], x0[q1], st.y);
-        const float l = glm::length(d);
-        if (l < 1e-9f || l > reach) return;
-        out.push_back({e, f, st, d / l});
-      });
-    }
+  ThreadPool::shared().parallelBlocks(jobs.size(), [&](size_t j) {
+    std::vector<EdgeEdge>& out = found[j];
+    edgeTree_.runJob(jobs[j], [&](uint32_t i, uint32_t k) {
+      const uint32_t e = std::min(i, k), f = std::max(i, k);
+      const auto [p0, p1] = edges_[e];
+      const auto [q0, q1] = edges_[f];
+      if (sharesVertex(p0, p1, q0, q1)) return;
+      if (checkSwept && !sweptEdgeBoxes[e].overlaps(sweptEdgeBoxes[f])) return;
+      const EdgeBound &be = bounds[e], &bf = bounds[f];
+      const float bound = thickness + glm::length(be.meanMove - bf.meanMove) + be.spread + bf.spread;
+      if (glm::length(be.mid - bf.mid) - (be.halfLength + bf.halfLength) > 1.0001f * bound + 1e-6f) return;
+      const float reach = thickness + closing({p0, p1}, {q0, q1});
+      // Bounding balls first: the segments' points lie within half their
+      // lengths of their midpoints.
+      const float apart = glm::length(0.5f * (x0[p0] + x0[p1] - x0[q0] - x0[q1])) -
+                          0.5f * (glm::length(x0[p0] - x0[p1]) + glm::length(x0[q0] - x0[q1]));
+      if (apart > reach) return;
+      const glm::vec2 st = closestSegmentParameters(x0[p0], x0[p1], x0[q0], x0[q1]);
+      const glm::vec3 d = glm::mix(x0[p0], x0[p1], st.x) - glm::mix(x0[q0], x0[q1], st.y);
+      const float l = glm::length(d);
+      if (l < 1e-9f || l > reach) return;
+      out.push_back({e, f, st, d / l});
+    }, flatEdgePatch);
   });
   // In order of the first edge, then the other (the jobs' order depends on the tree).
   edgeEdge_.clear();

@@ -8,7 +8,18 @@
 // thickness along that side's normal is pushed apart (mass-weighted, like a
 // position constraint) and loses its approaching relative normal velocity.
 // Pairs are processed in a fixed order: deterministic.
+//
+// Pairs within a flat patch are not looked for (after Volino and
+// Magnenat-Thalmann's curvature test): a node of the edge or triangle tree
+// whose elements are connected and whose triangles' normals, at the start and
+// the end of the step, lie within 45 degrees of one axis is a surface that
+// cannot fold onto itself, so its elements keep their mesh distances from each
+// other. Edge pairs are skipped within such edge tree nodes, vertex-triangle
+// pairs when the triangle and one of the vertex's triangles are in such a
+// triangle tree node. The patch's contour is not tested (a patch that closes
+// on itself in its plane is taken as flat too).
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -17,11 +28,23 @@
 
 namespace mq::cloth {
 
+// Unit normals within a cone: its axis and the cosine and sine of its
+// half-angle. Cones wider than 90 degrees are all "wide" (cosine -1): only
+// narrow ones matter, and sums of two half-angles up to 90 degrees stay below
+// 180 (the sum formulas hold).
+struct NormalCone {
+  glm::vec3 axis{0.0f};
+  float cosine = -1.0f, sine = 0.0f;
+};
+
 class SelfCollision {
  public:
   SelfCollision(const std::vector<uint32_t>& triangles, size_t vertexCount);
   // Returns the number of pairs that were closer than `thickness`.
   int resolve(ClothState& s, const std::vector<glm::vec3>& x0, float thickness, int passes);
+  // The last resolve()'s candidate pairs.
+  size_t vertexTriangleCandidates() const { return vertexTriangle_.size(); }
+  size_t edgeEdgeCandidates() const { return edgeEdge_.size(); }
 
  private:
   struct VertexTriangle {
@@ -37,16 +60,25 @@ class SelfCollision {
   void findCandidates(const ClothState& s, const std::vector<glm::vec3>& x0, float thickness);
   int applyVertexTriangle(ClothState& s, const VertexTriangle& c, float thickness) const;
   int applyEdgeEdge(ClothState& s, const EdgeEdge& c, float thickness) const;
+  void findConnectedPatches();
+  void findFlatPatches(const ClothState& s, const std::vector<glm::vec3>& x0);
 
   std::vector<uint32_t> triangles_;
   std::vector<std::pair<uint32_t, uint32_t>> edges_;
   std::vector<uint32_t> triangleEdges_;  // 3 per triangle
+  std::vector<std::array<uint32_t, 2>> edgeTriangles_;  // the (one or two) triangles of each edge
+  size_t vertexCount_;
   AabbTree tree_;      // over the triangles' boxes
   AabbTree edgeTree_;  // over the edges' boxes
   std::vector<VertexTriangle> vertexTriangle_;
   std::vector<EdgeEdge> edgeEdge_;
   static constexpr int kRebuildEvery = 16;  // steps between tree rebuilds (refitted in between)
   int stepsSinceBuild_ = 0;
+  // Per node of the edge and triangle trees: its primitives are connected
+  // (found at each build), and connected and flat in this step.
+  std::vector<uint8_t> connectedEdgePatch_, connectedTrianglePatch_, flatEdgePatch_, flatTrianglePatch_;
+  std::vector<uint32_t> vertexPlace_;  // per vertex: the place of one of its triangles in the triangle tree
+  std::vector<NormalCone> triangleCones_, nodeCones_;
   std::vector<uint32_t> moved_, checkedVT_, checkedEE_;  // resolve()'s pass clocks
 };
 
