@@ -70,21 +70,32 @@ void CoarseCorrection::assemble(const ClothState& s, const std::vector<glm::mat3
                                 const SpringForce& springs) {
   std::fill(matrix_.begin(), matrix_.end(), 0.0);
   auto addBlock = [&](uint32_t pi, uint32_t pj, const glm::mat3& block) {
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) at(3 * pi + r, 3 * pj + c) += double(block[c][r]);  // glm: [column][row]
+    double* row = &matrix_[3 * pi * order_ + 3 * pj];
+    for (int r = 0; r < 3; ++r, row += order_)
+      for (int c = 0; c < 3; ++c) row[c] += double(block[c][r]);  // glm: [column][row]
+  };
+  // Most vertices are free (S = I): only pins and contacts pay for the products.
+  const bool anyContact = !s.contactNormal.empty();
+  auto constrained = [&](size_t v) {
+    return s.invMass[v] == 0.0f || (anyContact && s.contactNormal[v] != glm::vec3(0.0f));
   };
   for (size_t v = 0; v < s.size(); ++v) {
+    if (!constrained(v)) {
+      addBlock(patchOf_[v], patchOf_[v], diagonal[v]);
+      continue;
+    }
     const glm::mat3 S = filterMatrix(s, v);
     addBlock(patchOf_[v], patchOf_[v], S * diagonal[v] * S);
   }
   const auto& list = springs.springs();
   for (size_t k = 0; k < list.size(); ++k) {
     const SpringForce::ImplicitBlock& b = springs.implicitBlock(k);
-    const glm::mat3 K = b.alpha * glm::outerProduct(b.d, b.d) + glm::mat3(b.beta);
-    // The off-diagonal blocks of the spring's -K (a, b) and its transpose.
-    const glm::mat3 offDiagonal = -(filterMatrix(s, list[k].a) * K * filterMatrix(s, list[k].b));
-    addBlock(patchOf_[list[k].a], patchOf_[list[k].b], offDiagonal);
-    addBlock(patchOf_[list[k].b], patchOf_[list[k].a], glm::transpose(offDiagonal));
+    const uint32_t va = list[k].a, vb = list[k].b;
+    glm::mat3 K = b.alpha * glm::outerProduct(b.d, b.d) + glm::mat3(b.beta);
+    // The spring's off-diagonal blocks: -S_a K S_b at (a, b), its transpose at (b, a).
+    if (constrained(va) || constrained(vb)) K = filterMatrix(s, va) * K * filterMatrix(s, vb);
+    addBlock(patchOf_[va], patchOf_[vb], -K);
+    addBlock(patchOf_[vb], patchOf_[va], -glm::transpose(K));
   }
   factorise();
 }
