@@ -151,6 +151,10 @@ void parseSettings(const SectionReader& r, ClothSettings& st) {
   st.friction = r.has("friction") ? r.nonNegative("friction", 0.0f) : st.friction;
   st.cgMaxIterations = r.integer("cg_max_iterations", st.cgMaxIterations, 1);
   st.cgTolerance = r.positive("cg_tolerance", st.cgTolerance);
+  const std::string preconditioner = r.string("cg_preconditioner", cgPreconditionerName(st.cgPreconditioner));
+  if (!parseCgPreconditioner(preconditioner, st.cgPreconditioner))
+    r.fail("cg_preconditioner", "unknown preconditioner '" + preconditioner + "' " +
+                                    knownNames({"block_jacobi", "two_level"}));
 }
 
 void parsePins(const SectionReader& r, ClothSceneSpec& spec) {
@@ -256,6 +260,7 @@ void writeClothScene(const ClothSceneSpec& spec, json& cloth, json& colliders) {
   if (s.friction >= 0.0f) cloth["friction"] = s.friction;
   cloth["cg_max_iterations"] = s.cgMaxIterations;
   cloth["cg_tolerance"] = s.cgTolerance;
+  cloth["cg_preconditioner"] = cgPreconditionerName(s.cgPreconditioner);
   cloth["pins"] = {{"rows", spec.pinnedRows}, {"vertices", spec.pinnedVertices}};
   cloth["fps"] = spec.fps;
   cloth["animate_body"] = spec.animateBody;

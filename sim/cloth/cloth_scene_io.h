@@ -19,6 +19,7 @@
 //     "stretch_limit": "position" | "velocity" | "off", "max_stretch": 1.1,
 //     "stretch_iterations": 100, "max_refinement": 8, "self_collisions": false, "thickness": 0.005,
 //     "self_thickness": 0.004, "friction": 0.3, "cg_max_iterations": 100, "cg_tolerance": 0.001,
+//     "cg_preconditioner": "block_jacobi" | "two_level",
 //     "pins": {"rows": [0], "vertices": [12, 13]},   sheet rows (0 = first row) and/or vertex indices
 //     "fps": 24, "animate_body": true,
 //     "bake_frames": 120 },                    frames the editor bakes when there is no clip to follow

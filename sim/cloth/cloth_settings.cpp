@@ -31,6 +31,8 @@ const std::pair<const char*, BendingModel> kBending[] = {{"springs", BendingMode
 const std::pair<const char*, StretchLimitMode> kLimits[] = {{"off", StretchLimitMode::Off},
                                                             {"position", StretchLimitMode::PositionCorrection},
                                                             {"velocity", StretchLimitMode::VelocityCorrection}};
+const std::pair<const char*, CgPreconditioner> kPreconditioners[] = {{"block_jacobi", CgPreconditioner::BlockJacobi},
+                                                                    {"two_level", CgPreconditioner::TwoLevel}};
 
 }  // namespace
 
@@ -40,5 +42,9 @@ const char* stretchLimitName(StretchLimitMode mode) { return nameOf(mode, kLimit
 bool parseIntegrator(const std::string& name, IntegratorKind& kind) { return parseName(name, kIntegrators, kind); }
 bool parseBendingModel(const std::string& name, BendingModel& model) { return parseName(name, kBending, model); }
 bool parseStretchLimit(const std::string& name, StretchLimitMode& mode) { return parseName(name, kLimits, mode); }
+const char* cgPreconditionerName(CgPreconditioner preconditioner) { return nameOf(preconditioner, kPreconditioners); }
+bool parseCgPreconditioner(const std::string& name, CgPreconditioner& preconditioner) {
+  return parseName(name, kPreconditioners, preconditioner);
+}
 
 }  // namespace mq::cloth

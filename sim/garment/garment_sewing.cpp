@@ -70,7 +70,7 @@ WeldedCloth weldClothSeams(const ClothMesh& mesh, const ClothTopology& topology)
 }
 
 std::unique_ptr<ClothSimulator> continueWelded(const ClothSimulator& sewing, const WeldedCloth& welded,
-                                               const Fabric& fabric) {
+                                               const Fabric& fabric, const ClothSettings* settings) {
   const ClothState& old = sewing.state();
   std::vector<float> x(3 * old.size()), v(3 * old.size());
   for (size_t i = 0; i < old.size(); ++i)
@@ -78,7 +78,7 @@ std::unique_ptr<ClothSimulator> continueWelded(const ClothSimulator& sewing, con
   ClothMesh mesh = welded.mesh;
   mesh.positions = weldAverage(welded.weld, x, 3);
   mesh.masses = weldSum(welded.weld, old.mass);
-  auto sim = std::make_unique<ClothSimulator>(mesh, welded.topology, fabric, sewing.settings());
+  auto sim = std::make_unique<ClothSimulator>(mesh, welded.topology, fabric, settings ? *settings : sewing.settings());
   std::vector<float> velocities = weldAverage(welded.weld, v, 3);
   ClothState& state = sim->mutableState();
   for (size_t i = 0; i < state.size(); ++i) state.v[i] = vec3At(velocities, i);

@@ -41,8 +41,9 @@ WeldedCloth weldClothSeams(const ClothMesh& mesh, const ClothTopology& topology)
 
 // A simulator over the welded cloth that continues `sewing`: positions and
 // velocities averaged over each welded group, masses summed, colliders
-// copied. The body and pins are not carried over: set them again.
+// copied. The body and pins are not carried over: set them again. The
+// welded cloth gets `settings` when given, else the sewing one's.
 std::unique_ptr<ClothSimulator> continueWelded(const ClothSimulator& sewing, const WeldedCloth& welded,
-                                               const Fabric& fabric);
+                                               const Fabric& fabric, const ClothSettings* settings = nullptr);
 
 }  // namespace mq::cloth

@@ -78,7 +78,7 @@ struct GarmentSimulation::Impl {
   void weldNow() {
     weldPositions = sim->positions();
     WeldedCloth w = weldClothSeams(mesh, buildClothTopology(mesh));
-    std::unique_ptr<ClothSimulator> next = continueWelded(*sim, w, settings.fabric);
+    std::unique_ptr<ClothSimulator> next = continueWelded(*sim, w, settings.fabric, &settings.cloth);
     // A fixed pin keeps its target (where it was pinned), not where the weld averaged it.
     std::vector<std::pair<uint32_t, glm::vec3>> fixedTargets;
     for (const Pin& p : pins)
@@ -114,7 +114,12 @@ GarmentSimulation::GarmentSimulation(const GarmentMesh& garment, const GarmentSi
   // The sewing solver gets no seam springs: the seams close in its position pass.
   ClothMesh unsewn = m.mesh;
   unsewn.seams.clear();
-  m.sim = std::make_unique<ClothSimulator>(unsewn, buildClothTopology(unsewn), settings.fabric, settings.cloth);
+  // Gentle sewing is tuned to the block-Jacobi solve, which leaves the panels'
+  // large slow motions out at its iteration cap (sewn with the two-level one,
+  // the walking T-shirt ends with 170 vertices in the body).
+  ClothSettings sewingCloth = settings.cloth;
+  sewingCloth.cgPreconditioner = CgPreconditioner::BlockJacobi;
+  m.sim = std::make_unique<ClothSimulator>(unsewn, buildClothTopology(unsewn), settings.fabric, sewingCloth);
   m.weld = computeSeamWeld(m.mesh.vertexCount(), {});
   if (!bodyTriangles.empty()) {
     m.body = bodyPositions;

@@ -10,6 +10,10 @@
 // sheet (N = 100: 10,000 vertices, the size of the T-shirt) dropped onto the
 // default mannequin's triangle mesh with self-collisions, 24 frames (1 s):
 // the body collider and self-collision costs a garment has.
+// BM_ClothImplicitSolve/<preconditioner>: pinned_64 at 100 x 100 vertices
+// (the T-shirt's size), no elongation limit, the CG always at its cap of 100
+// iterations: wall and CPU ms per CG iteration (what the solver costs per
+// iteration; the step's force evaluation is a few percent of it).
 //
 //   mannequin-bench --benchmark_filter=Cloth
 //
@@ -111,6 +115,37 @@ void BM_ClothSheetOnMannequin(benchmark::State& state) {
   state.counters["penetrating"] = penetrating;
 }
 BENCHMARK(BM_ClothSheetOnMannequin)->Arg(100)->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();
+
+void BM_ClothImplicitSolve(benchmark::State& state) {
+  ClothSceneSpec spec = loadScene("pinned_64");
+  spec.sheet.columns = spec.sheet.rows = 100;
+  spec.settings.stretchLimit = StretchLimitMode::Off;
+  spec.settings.cgMaxIterations = 100;
+  spec.settings.cgTolerance = 1e-9f;
+  spec.settings.cgPreconditioner = state.range(0) ? CgPreconditioner::TwoLevel : CgPreconditioner::BlockJacobi;
+  constexpr int kFrames = 12;
+  double stepSeconds = 0.0, cpuSeconds = 0.0;
+  long long iterations = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    std::vector<uint32_t> pinned;
+    ClothSimulator sim(buildClothMesh(spec, pinned), spec.fabric, spec.settings);
+    for (uint32_t v : pinned) sim.pinVertex(v);
+    state.ResumeTiming();
+    const auto start = std::chrono::steady_clock::now();
+    const std::clock_t cpuStart = std::clock();
+    for (int f = 0; f < kFrames; ++f) {
+      sim.step(1.0f / spec.fps);
+      iterations += sim.stats().solverIterations;
+    }
+    stepSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    cpuSeconds += double(std::clock() - cpuStart) / CLOCKS_PER_SEC;
+  }
+  state.counters["ms_per_iteration"] = 1000.0 * stepSeconds / double(std::max(1LL, iterations));
+  state.counters["cpu_ms_per_iteration"] = 1000.0 * cpuSeconds / double(std::max(1LL, iterations));
+  state.counters["iterations_per_frame"] = double(iterations) / (double(kFrames) * double(state.iterations()));
+}
+BENCHMARK(BM_ClothImplicitSolve)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3)->UseRealTime();
 
 void BM_ClothDrape64(benchmark::State& s) { runScene(s, "drape_64", 120); }
 void BM_ClothDrape128(benchmark::State& s) { runScene(s, "drape_128", 120); }

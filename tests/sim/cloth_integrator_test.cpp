@@ -144,17 +144,99 @@ TEST(ClothIntegrators, ExplicitBlowUpIsReportedAsDivergence) {
 }
 
 TEST(ClothIntegrators, DeterministicForTheSameInput) {
-  auto run = [] {
-    ClothSettings settings;
-    ClothSimulator sim(test::horizontalSheetMesh(40, 1.0f, {0, 0.5f, 0}), fabricPreset("silk"), settings);
-    sim.addCollider(PrimitiveCollider::sphere({0, 0, 0}, 0.3f));
-    for (int frame = 0; frame < 12; ++frame) sim.step(1.0f / 24.0f);
-    return sim.positions();
-  };
-  const auto a = run(), b = run();
-  ASSERT_EQ(a.size(), b.size());
-  EXPECT_EQ(0, std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec3)));
+  for (CgPreconditioner preconditioner : {CgPreconditioner::BlockJacobi, CgPreconditioner::TwoLevel}) {
+    auto run = [preconditioner] {
+      ClothSettings settings;
+      settings.cgPreconditioner = preconditioner;
+      ClothSimulator sim(test::horizontalSheetMesh(40, 1.0f, {0, 0.5f, 0}), fabricPreset("silk"), settings);
+      sim.addCollider(PrimitiveCollider::sphere({0, 0, 0}, 0.3f));
+      for (int frame = 0; frame < 12; ++frame) sim.step(1.0f / 24.0f);
+      return sim.positions();
+    };
+    const auto a = run(), b = run();
+    ASSERT_EQ(a.size(), b.size());
+    EXPECT_EQ(0, std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec3))) << cgPreconditionerName(preconditioner);
+  }
 }
 
+
+// The two-level preconditioner (block Jacobi plus rigidly moving patches) is
+// a better preconditioner for the same system: on a stiff sheet draped over
+// a sphere (resting contacts filtered) with its first rows pinned, it
+// reaches the same tolerance in far
+// fewer CG iterations, and nearer the exact motion (block Jacobi's
+// preconditioned residual hides the error of slow, smooth motions).
+std::vector<glm::vec3> drapeWithPreconditioner(CgPreconditioner preconditioner, float tolerance, int& iterations) {
+  ClothSettings settings;
+  settings.stretchLimit = StretchLimitMode::Off;
+  settings.cgMaxIterations = 20000;
+  settings.cgTolerance = tolerance;
+  settings.cgPreconditioner = preconditioner;
+  const int columns = 48;
+  ClothSimulator sim(test::horizontalSheetMesh(columns, 1.0f, {0, 0.32f, 0}), fabricPreset("denim"), settings);
+  sim.addCollider(PrimitiveCollider::sphere({0, 0, 0}, 0.3f));
+  for (uint32_t v = 0; v < uint32_t(3 * columns); ++v) sim.pinVertex(v);
+  iterations = 0;
+  for (int frame = 0; frame < 6; ++frame) {
+    sim.step(1.0f / 24.0f);
+    iterations += sim.stats().solverIterations;
+  }
+  EXPECT_TRUE(test::allFinite(sim));
+  return sim.positions();
+}
+
+float largestDistance(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b) {
+  float d = 0.0f;
+  for (size_t i = 0; i < a.size(); ++i) d = std::max(d, glm::length(a[i] - b[i]));
+  return d;
+}
+
+TEST(ClothIntegrators, TwoLevelPreconditionerConvergesInFewerIterationsNearerTheExactMotion) {
+  int exactIterations = 0, jacobiIterations = 0, twoLevelIterations = 0;
+  // (1e-6: below that the float solve loses the recursion's accuracy.)
+  const auto exact = drapeWithPreconditioner(CgPreconditioner::TwoLevel, 1e-6f, exactIterations);
+  const auto jacobi = drapeWithPreconditioner(CgPreconditioner::BlockJacobi, 1e-3f, jacobiIterations);
+  const auto twoLevel = drapeWithPreconditioner(CgPreconditioner::TwoLevel, 1e-3f, twoLevelIterations);
+  EXPECT_LT(twoLevelIterations, jacobiIterations / 2) << jacobiIterations << " vs " << twoLevelIterations;
+  std::vector<glm::vec3> start;
+  const ClothMesh mesh = test::horizontalSheetMesh(48, 1.0f, {0, 0.32f, 0});
+  for (size_t i = 0; i < mesh.vertexCount(); ++i) start.push_back(vec3At(mesh.positions, i));
+  const float moved = largestDistance(exact, start);
+  EXPECT_GT(moved, 0.05f);
+  // Measured: 830 iterations 7.5 cm off, 271 iterations 4.2 cm off, of 18 cm moved.
+  EXPECT_LT(largestDistance(twoLevel, exact), largestDistance(jacobi, exact)) << "moved " << moved;
+}
+
+// Patches whose vertices are all pinned have no coarse unknowns (their rows
+// of A_c are zero): the solve drops them and the free rows still move as
+// block Jacobi moves them.
+TEST(ClothIntegrators, TwoLevelHandlesPatchesWithoutAFreeVertex) {
+  auto run = [](CgPreconditioner preconditioner) {
+    ClothSettings settings = settingsFor(IntegratorKind::ImplicitEuler);
+    settings.cgPreconditioner = preconditioner;
+    const int columns = 24;
+    ClothSimulator sim(test::horizontalSheetMesh(columns, 0.5f, {0, 1, 0}), lightlyDampedCotton(), settings);
+    for (uint32_t v = 0; v < uint32_t(columns * (columns - 3)); ++v) sim.pinVertex(v);
+    for (int frame = 0; frame < 12; ++frame) sim.step(1.0f / 24.0f);
+    EXPECT_TRUE(test::allFinite(sim)) << cgPreconditionerName(preconditioner);
+    return sim.positions();
+  };
+  const auto jacobi = run(CgPreconditioner::BlockJacobi), twoLevel = run(CgPreconditioner::TwoLevel);
+  const ClothMesh mesh = test::horizontalSheetMesh(24, 0.5f, {0, 1, 0});
+  float moved = 0.0f;
+  for (size_t i = 0; i < mesh.vertexCount(); ++i) moved = std::max(moved, glm::length(jacobi[i] - vec3At(mesh.positions, i)));
+  EXPECT_GT(moved, 0.02f);  // the free edge bends down
+  EXPECT_LT(largestDistance(jacobi, twoLevel), 0.01f * moved) << "moved " << moved;
+}
+
+TEST(ClothIntegrators, PreconditionerNamesRoundTrip) {
+  for (CgPreconditioner p : {CgPreconditioner::BlockJacobi, CgPreconditioner::TwoLevel}) {
+    CgPreconditioner parsed{};
+    ASSERT_TRUE(parseCgPreconditioner(cgPreconditionerName(p), parsed));
+    EXPECT_EQ(parsed, p);
+  }
+  CgPreconditioner unused{};
+  EXPECT_FALSE(parseCgPreconditioner("multigrid", unused));
+}
 }  // namespace
 }  // namespace mq::cloth

@@ -64,6 +64,19 @@ TEST(ClothScene, WriteThenParseGivesTheSameSpec) {
   EXPECT_EQ(b.settings.integrator, a.settings.integrator);
   EXPECT_EQ(b.pinnedRows, a.pinnedRows);
   EXPECT_EQ(b.bakeFrames, 48);
+  EXPECT_EQ(b.settings.cgPreconditioner, a.settings.cgPreconditioner);
+}
+
+TEST(ClothScene, ThePreconditionerIsReadAndWritten) {
+  json doc = readJson(benchScene("pinned_64"));
+  EXPECT_EQ(parseClothScene(doc["cloth"], doc["colliders"], "pinned_64").settings.cgPreconditioner,
+            CgPreconditioner::BlockJacobi);
+  doc["cloth"]["cg_preconditioner"] = "two_level";
+  const ClothSceneSpec a = parseClothScene(doc["cloth"], doc["colliders"], "pinned_64");
+  EXPECT_EQ(a.settings.cgPreconditioner, CgPreconditioner::TwoLevel);
+  json cloth, colliders;
+  writeClothScene(a, cloth, colliders);
+  EXPECT_EQ(cloth["cg_preconditioner"], "two_level");
 }
 
 std::string errorFor(const json& cloth, const json& colliders = json()) {
@@ -88,6 +101,9 @@ TEST(ClothScene, BadValuesNameTheFileAndTheKey) {
             std::string::npos);
   EXPECT_NE(errorFor(json()).find("no cloth section"), std::string::npos);
   EXPECT_NE(errorFor({{"bake_frames", 0}}).find("cloth.bake_frames: must be an integer >= 1"), std::string::npos);
+  EXPECT_NE(errorFor({{"cg_preconditioner", "multigrid"}})
+                .find("cloth.cg_preconditioner: unknown preconditioner 'multigrid' (known: block_jacobi, two_level)"),
+            std::string::npos);
   // Numbers too large for a float are not finite.
   EXPECT_NE(errorFor({{"wind", {0, 1e300, 0}}}).find("cloth.wind"), std::string::npos);
 }

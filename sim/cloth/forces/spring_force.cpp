@@ -100,7 +100,7 @@ void SpringForce::prepareImplicit(const ClothState& st, float h, std::vector<glm
       for (uint32_t k = incidenceStart_[v]; k < incidenceStart_[v + 1]; ++k) {
         const int32_t signedIndex = incidence_[k];
         const uint32_t spring = uint32_t(std::abs(signedIndex) - 1);
-        const SpringBlock& block = blocks_[spring];
+        const ImplicitBlock& block = blocks_[spring];
         sum += block.alpha * glm::outerProduct(block.d, block.d) + glm::mat3(block.beta);
       }
       diagonal[v] += sum;
@@ -109,7 +109,7 @@ void SpringForce::prepareImplicit(const ClothState& st, float h, std::vector<glm
   forRange(rowSpring_.size(), [&](size_t b, size_t e) {
     for (size_t slot = b; slot < e; ++slot) {
       const int32_t spring = rowSpring_[slot];
-      const SpringBlock block = spring >= 0 ? blocks_[spring] : SpringBlock{glm::vec3(0.0f), 0.0f, 0.0f};
+      const ImplicitBlock block = spring >= 0 ? blocks_[spring] : ImplicitBlock{glm::vec3(0.0f), 0.0f, 0.0f};
       rowDx_[slot] = block.d.x;
       rowDy_[slot] = block.d.y;
       rowDz_[slot] = block.d.z;

@@ -41,6 +41,14 @@ class SpringForce : public ForceTerm {
   glm::vec3 productAt(size_t vertex) const override;
   void addProductRange(size_t begin, size_t end, glm::vec3* y) const override;
 
+  // One spring's block of the implicit matrix after prepareImplicit():
+  // h^2 k S + h kd d d^T = alpha d d^T + beta I, acting on p_a - p_b.
+  struct ImplicitBlock {
+    glm::vec3 d;
+    float alpha, beta;
+  };
+  const ImplicitBlock& implicitBlock(size_t spring) const { return blocks_[spring]; }
+
   // df_a/dx_a of one spring (exact, or filtered as the solver uses it).
   glm::mat3 stiffnessBlock(size_t spring, const std::vector<glm::vec3>& x, bool filtered) const;
 
@@ -69,11 +77,7 @@ class SpringForce : public ForceTerm {
   std::vector<uint32_t> rowStart_, rowWidth_;
   std::vector<int32_t> rowSpring_, rowOther_;  // rowSpring_ -1: spare
   std::vector<float> rowDx_, rowDy_, rowDz_, rowAlpha_, rowBeta_;
-  struct SpringBlock {
-    glm::vec3 d;
-    float alpha, beta;
-  };
-  std::vector<SpringBlock> blocks_;  // per spring, filled by prepareImplicit
+  std::vector<ImplicitBlock> blocks_;  // per spring, filled by prepareImplicit
   mutable std::vector<glm::vec3> perSpring_;
   mutable const std::vector<glm::vec3>* product_ = nullptr;
 };

@@ -27,7 +27,8 @@ std::unique_ptr<Integrator> makeIntegrator(const ClothSettings& settings) {
     case IntegratorKind::Verlet: return std::make_unique<VelocityVerlet>();
     case IntegratorKind::RK4: return std::make_unique<RungeKutta4>();
     case IntegratorKind::ImplicitEuler:
-      return std::make_unique<ImplicitEuler>(settings.cgMaxIterations, settings.cgTolerance);
+      return std::make_unique<ImplicitEuler>(settings.cgMaxIterations, settings.cgTolerance,
+                                             settings.cgPreconditioner == CgPreconditioner::TwoLevel);
   }
   return nullptr;
 }

@@ -59,6 +59,13 @@ IntegratorReport ImplicitEuler::step(ClothState& s, float h, ClothForces& forces
         dv_[i] = (s.contactSpeed[i] - glm::dot(s.v[i], s.contactNormal[i])) * s.contactNormal[i];
     }
   });
+  if (twoLevel_) {
+    if (!coarse_.built(n)) coarse_.build(forces.springs(), n);
+    forRange(n, [&](size_t bb, size_t e) {
+      for (size_t i = bb; i < e; ++i) diagonal_[i] += glm::mat3(s.mass[i]);
+    });
+    coarse_.assemble(s, diagonal_, forces.springs());
+  }
   const IntegratorReport report = solve(s, forces);
   forRange(n, [&](size_t bb, size_t e) {
     for (size_t i = bb; i < e; ++i) {
@@ -69,23 +76,34 @@ IntegratorReport ImplicitEuler::step(ClothState& s, float h, ClothForces& forces
   return report;
 }
 
+double ImplicitEuler::coarseSolve() { return twoLevel_ ? coarse_.solve(r_, coarseZ_) : 0.0; }
+
 IntegratorReport ImplicitEuler::solve(const ClothState& s, ClothForces& forces) {
   const size_t n = s.size();
   r_.resize(n);
   z_.resize(n);
   q_.resize(n);
   c_.resize(n);
-  // r = filter(b - A z), c = P r.
+  // z = P r is z_ (block Jacobi) plus the coarse level's per-patch part.
+  auto coarseAt = [&](size_t i) { return twoLevel_ ? coarseZ_[coarse_.patchOf()[i]] : glm::vec3(0.0f); };
+  // r = filter(b - A z), c = filter(P r).
   multiplyFiltered(s, forces, dv_, q_);
   double delta = blockReduce(n, [&](size_t b, size_t e) {
     double dot = 0.0;
     for (size_t i = b; i < e; ++i) {
       r_[i] = filtered(s, i, b_[i]) - q_[i];
-      c_[i] = filtered(s, i, preconditioner_[i] * r_[i]);
+      z_[i] = preconditioner_[i] * r_[i];
+      c_[i] = filtered(s, i, z_[i]);
       dot += double(glm::dot(r_[i], c_[i]));
     }
     return dot;
   });
+  if (twoLevel_) {
+    delta += coarseSolve();
+    forRange(n, [&](size_t b, size_t e) {
+      for (size_t i = b; i < e; ++i) c_[i] = filtered(s, i, z_[i] + coarseAt(i));
+    });
+  }
   const double delta0 = delta;
   const double stop = double(tolerance_) * double(tolerance_) * delta0;
   int it = 0;
@@ -93,7 +111,7 @@ IntegratorReport ImplicitEuler::solve(const ClothState& s, ClothForces& forces) 
     const double cq = multiplyFiltered(s, forces, c_, q_);
     if (!(cq > 0.0)) break;
     const float alpha = float(delta / cq);
-    const double deltaNew = blockReduce(n, [&](size_t b, size_t e) {
+    double deltaNew = blockReduce(n, [&](size_t b, size_t e) {
       double dot = 0.0;
       for (size_t i = b; i < e; ++i) {
         dv_[i] += alpha * c_[i];
@@ -103,10 +121,11 @@ IntegratorReport ImplicitEuler::solve(const ClothState& s, ClothForces& forces) 
       }
       return dot;
     });
+    deltaNew += coarseSolve();
     const float beta = float(deltaNew / delta);
     delta = deltaNew;
     forRange(n, [&](size_t b, size_t e) {
-      for (size_t i = b; i < e; ++i) c_[i] = filtered(s, i, z_[i] + beta * c_[i]);
+      for (size_t i = b; i < e; ++i) c_[i] = filtered(s, i, z_[i] + coarseAt(i) + beta * c_[i]);
     });
   }
   return {it, delta0 > 0.0 ? float(std::sqrt(std::max(delta, 0.0) / delta0)) : 0.0f};

@@ -9,19 +9,22 @@
 // "modified" preconditioned conjugate gradients: constrained vertices are
 // filtered (S_i = 0 for pins, I - n n^T for a resting contact with normal n,
 // whose normal velocity is set to zero through the start value z), the
-// preconditioner is the inverse of A's 3x3 diagonal blocks. Each CG iteration
-// is three fused vertex loops (product and dot, update and dot, direction),
-// in parallel on large cloths.
+// preconditioner is the inverse of A's 3x3 diagonal blocks, optionally plus a
+// coarse level (coarse_correction.h). Each CG iteration is three fused vertex
+// loops (product and dot, update and dot, direction), in parallel on large
+// cloths, and with the coarse level one small sequential solve.
 
 #include <vector>
 
+#include "sim/cloth/integrators/coarse_correction.h"
 #include "sim/cloth/integrators/integrator.h"
 
 namespace mq::cloth {
 
 class ImplicitEuler : public Integrator {
  public:
-  ImplicitEuler(int maxIterations, float tolerance) : maxIterations_(maxIterations), tolerance_(tolerance) {}
+  ImplicitEuler(int maxIterations, float tolerance, bool twoLevel = false)
+      : maxIterations_(maxIterations), tolerance_(tolerance), twoLevel_(twoLevel) {}
   IntegratorReport step(ClothState& s, float h, ClothForces& forces) override;
   float stableStep(const ClothState& s, const ClothForces& forces) const override;
 
@@ -30,9 +33,14 @@ class ImplicitEuler : public Integrator {
   // y_i = filter(M p + sum of the terms' products)_i; returns p . y.
   double multiplyFiltered(const ClothState& s, ClothForces& forces, const std::vector<glm::vec3>& p,
                           std::vector<glm::vec3>& y) const;
+  // Adds the coarse level's part of z = P r (per patch, in coarseZ_); returns its share of r . z.
+  double coarseSolve();
 
   int maxIterations_;
   float tolerance_;
+  bool twoLevel_;
+  CoarseCorrection coarse_;
+  std::vector<glm::vec3> coarseZ_;
   std::vector<glm::vec3> f_, b_, dv_, r_, z_, c_, q_;
   std::vector<glm::mat3> diagonal_, preconditioner_;
 };

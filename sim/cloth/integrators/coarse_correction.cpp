@@ -1,0 +1,164 @@
+#include "sim/cloth/integrators/coarse_correction.h"
+
+#include <algorithm>
+#include <queue>
+
+namespace mq::cloth {
+
+namespace {
+
+constexpr uint32_t kNone = ~0u;
+
+// Baraff-Witkin's filter of vertex i as a matrix (0 for a pin, the tangent
+// plane's projector for a resting contact).
+glm::mat3 filterMatrix(const ClothState& s, size_t i) {
+  if (s.invMass[i] == 0.0f) return glm::mat3(0.0f);
+  if (s.contactNormal.empty()) return glm::mat3(1.0f);
+  const glm::vec3& n = s.contactNormal[i];
+  return glm::mat3(1.0f) - glm::outerProduct(n, n);
+}
+
+}  // namespace
+
+void CoarseCorrection::build(const SpringForce& springs, size_t vertexCount) {
+  std::vector<std::vector<uint32_t>> neighbours(vertexCount);
+  for (const Spring& s : springs.springs()) {
+    neighbours[s.a].push_back(s.b);
+    neighbours[s.b].push_back(s.a);
+  }
+  // Walk the cloth breadth first (so neighbouring patches get close numbers
+  // and A_c is banded); the first vertex not yet in a patch seeds a new one,
+  // grown breadth first over vertices not yet in a patch.
+  patchOf_.assign(vertexCount, kNone);
+  patchCount_ = 0;
+  std::vector<uint8_t> visited(vertexCount, 0);
+  std::vector<uint32_t> grow;
+  for (uint32_t root = 0; root < vertexCount; ++root) {
+    if (visited[root]) continue;
+    std::queue<uint32_t> walk;
+    walk.push(root);
+    visited[root] = 1;
+    while (!walk.empty()) {
+      const uint32_t seed = walk.front();
+      walk.pop();
+      for (uint32_t n : neighbours[seed])
+        if (!visited[n]) visited[n] = 1, walk.push(n);
+      if (patchOf_[seed] != kNone) continue;
+      const uint32_t patch = uint32_t(patchCount_++);
+      grow.assign(1, seed);
+      patchOf_[seed] = patch;
+      for (size_t k = 0; k < grow.size() && grow.size() < kPatchSize; ++k)
+        for (uint32_t n : neighbours[grow[k]])
+          if (patchOf_[n] == kNone && grow.size() < kPatchSize) patchOf_[n] = patch, grow.push_back(n);
+    }
+  }
+  order_ = 3 * patchCount_;
+  std::vector<uint32_t> firstPatch(patchCount_);
+  for (uint32_t p = 0; p < patchCount_; ++p) firstPatch[p] = p;
+  for (const Spring& s : springs.springs()) {
+    const uint32_t i = patchOf_[s.a], j = patchOf_[s.b];
+    firstPatch[std::max(i, j)] = std::min(firstPatch[std::max(i, j)], std::min(i, j));
+  }
+  firstColumn_.resize(order_);
+  for (size_t row = 0; row < order_; ++row) firstColumn_[row] = 3 * firstPatch[row / 3];
+  matrix_.assign(order_ * order_, 0.0);
+  rhs_.assign(order_, 0.0);
+  dead_.assign(order_, 0);
+}
+
+void CoarseCorrection::assemble(const ClothState& s, const std::vector<glm::mat3>& diagonal,
+                                const SpringForce& springs) {
+  std::fill(matrix_.begin(), matrix_.end(), 0.0);
+  auto addBlock = [&](uint32_t pi, uint32_t pj, const glm::mat3& block) {
+    double* row = &matrix_[3 * pi * order_ + 3 * pj];
+    for (int r = 0; r < 3; ++r, row += order_)
+      for (int c = 0; c < 3; ++c) row[c] += double(block[c][r]);  // glm: [column][row]
+  };
+  // Most vertices are free (S = I): only pins and contacts pay for the products.
+  const bool anyContact = !s.contactNormal.empty();
+  auto constrained = [&](size_t v) {
+    return s.invMass[v] == 0.0f || (anyContact && s.contactNormal[v] != glm::vec3(0.0f));
+  };
+  for (size_t v = 0; v < s.size(); ++v) {
+    if (!constrained(v)) {
+      addBlock(patchOf_[v], patchOf_[v], diagonal[v]);
+      continue;
+    }
+    const glm::mat3 S = filterMatrix(s, v);
+    addBlock(patchOf_[v], patchOf_[v], S * diagonal[v] * S);
+  }
+  const auto& list = springs.springs();
+  for (size_t k = 0; k < list.size(); ++k) {
+    const SpringForce::ImplicitBlock& b = springs.implicitBlock(k);
+    const uint32_t va = list[k].a, vb = list[k].b;
+    glm::mat3 K = b.alpha * glm::outerProduct(b.d, b.d) + glm::mat3(b.beta);
+    // The spring's off-diagonal blocks: -S_a K S_b at (a, b), its transpose at (b, a).
+    if (constrained(va) || constrained(vb)) K = filterMatrix(s, va) * K * filterMatrix(s, vb);
+    addBlock(patchOf_[va], patchOf_[vb], -K);
+    addBlock(patchOf_[vb], patchOf_[va], -glm::transpose(K));
+  }
+  factorise();
+}
+
+// In-place envelope Cholesky A_c = L L^T (lower triangle). An unknown without
+// stiffness (every vertex of its patch pinned, or all held along the same
+// contact normal) is dropped: its row and column become the identity's and
+// its coarse correction is zero.
+void CoarseCorrection::factorise() {
+  for (size_t i = 0; i < order_; ++i) {
+    const size_t fi = firstColumn_[i];
+    for (size_t j = fi; j <= i; ++j) {
+      if (j < i && dead_[j]) {
+        at(i, j) = 0.0;
+        continue;
+      }
+      double sum = at(i, j);
+      const double* li = &matrix_[i * order_];
+      const double* lj = &matrix_[j * order_];
+      for (size_t k = std::max(fi, size_t(firstColumn_[j])); k < j; ++k) sum -= li[k] * lj[k];
+      if (j < i) {
+        at(i, j) = sum / at(j, j);
+      } else {
+        const double original = at(i, i);
+        dead_[i] = !(original > 0.0) || !(sum > 1e-9 * original);
+        at(i, i) = dead_[i] ? 1.0 : std::sqrt(sum);
+        if (dead_[i])
+          for (size_t k = fi; k < i; ++k) at(i, k) = 0.0;
+      }
+    }
+  }
+}
+
+double CoarseCorrection::solve(const std::vector<glm::vec3>& r, std::vector<glm::vec3>& perPatch) {
+  std::fill(rhs_.begin(), rhs_.end(), 0.0);
+  for (size_t v = 0; v < r.size(); ++v)
+    for (int c = 0; c < 3; ++c) rhs_[3 * patchOf_[v] + c] += double(r[v][c]);
+  std::vector<double> x(rhs_);
+  for (size_t i = 0; i < order_; ++i) {
+    if (dead_[i]) {
+      x[i] = 0.0;
+      continue;
+    }
+    double sum = x[i];
+    const double* li = &matrix_[i * order_];
+    for (size_t k = firstColumn_[i]; k < i; ++k) sum -= li[k] * x[k];
+    x[i] = sum / li[i];
+  }
+  for (size_t i = order_; i-- > 0;) {
+    const double* li = &matrix_[i * order_];
+    x[i] /= li[i];
+    for (size_t k = firstColumn_[i]; k < i; ++k) x[k] -= li[k] * x[i];
+  }
+  perPatch.resize(patchCount_);
+  double dot = 0.0;
+  for (size_t p = 0; p < patchCount_; ++p) {
+    for (int c = 0; c < 3; ++c) {
+      const double value = dead_[3 * p + c] ? 0.0 : x[3 * p + c];
+      perPatch[p][c] = float(value);
+      dot += rhs_[3 * p + c] * value;
+    }
+  }
+  return dot;
+}
+
+}  // namespace mq::cloth
