@@ -342,7 +342,11 @@ void ClothSimulator::findRestingContacts() {
   restingSurfaceVelocity_.assign(state_.size(), glm::vec3(0.0f));
   if (colliders_.empty() && body_.empty()) return;
   // A vertex resting on a surface: within twice the thickness, not moving
-  // away, and pressed onto it by gravity (so it can still fall off an overhang).
+  // away, and pressed onto it by gravity, or on a surface facing down only
+  // while it comes towards it (so it can still fall off an overhang). Held on
+  // upward-facing surfaces alone, a tight band (trousers on the hips) is
+  // squeezed up by their reactions with nothing holding it from above: a
+  // converged solve (the two-level preconditioner) lifted it into the body.
   const float reach = 2.0f * settings_.collisionThickness + 1e-4f;
   forRange(state_.size(), [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) {
@@ -360,7 +364,9 @@ void ClothSimulator::findRestingContacts() {
         speed = glm::dot(contact.velocity, normal);
         surfaceVelocity = contact.velocity;
       }
-      if (glm::dot(normal, settings_.gravity) < 0.0f && glm::dot(state_.v[i], normal) <= speed + 1e-3f) {
+      const float approach = glm::dot(state_.v[i], normal) - speed;
+      const bool facingUp = glm::dot(normal, settings_.gravity) < 0.0f;
+      if (normal != glm::vec3(0.0f) && (facingUp ? approach <= 1e-3f : approach < -1e-3f)) {
         state_.contactNormal[i] = normal;
         state_.contactSpeed[i] = speed;
         restingSurfaceVelocity_[i] = surfaceVelocity;
