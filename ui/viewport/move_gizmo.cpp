@@ -62,16 +62,8 @@ MoveGizmo::MoveGizmo() : ViewportGizmo(kScreenFraction) {
   addHandle(makeDisc(), kColors[kScreenPlane]);
 }
 
-void MoveGizmo::setFrame(const glm::vec3& center, const glm::quat& orientation) {
-  orientation_ = glm::normalize(orientation);
-  setCenter(center);
-}
-
 glm::vec3 MoveGizmo::axis(int handle) const {
-  if (handle == kScreenPlane) return toCamera();
-  glm::vec3 a(0.0f);
-  a[handle] = 1.0f;
-  return glm::normalize(orientation_ * a);
+  return handle == kScreenPlane ? toCamera() : frameAxis(handle);
 }
 
 void MoveGizmo::placeHandles() {

@@ -21,15 +21,11 @@ class MoveGizmo : public ViewportGizmo {
 
   MoveGizmo();
 
-  // Centre and orientation (the arrows point along the rotated X, Y, Z axes).
-  void setFrame(const glm::vec3& center, const glm::quat& orientation);
   // World space, unit: an arrow's direction; kScreenPlane: towards the camera.
   glm::vec3 axis(int handle) const;
 
  private:
   void placeHandles() override;
-
-  glm::quat orientation_{1.0f, 0.0f, 0.0f, 0.0f};
 };
 
 }  // namespace mq::ui

@@ -51,21 +51,13 @@ RotationGizmo::RotationGizmo() : ViewportGizmo(kScreenFraction) {
   for (int axis = 0; axis < kRingCount; ++axis) addHandle(makeRing(axis), kAxisColors[axis]);
 }
 
-void RotationGizmo::setFrame(const glm::vec3& center, const glm::quat& orientation) {
-  orientation_ = glm::normalize(orientation);
-  setCenter(center);
-}
-
 glm::vec3 RotationGizmo::axis(int index) const {
-  if (index == kViewAxis) return toCamera();
-  glm::vec3 a(0.0f);
-  a[index] = 1.0f;
-  return glm::normalize(orientation_ * a);
+  return index == kViewAxis ? toCamera() : frameAxis(index);
 }
 
 void RotationGizmo::placeHandles() {
   const glm::mat4 place = glm::translate(glm::mat4(1.0f), center());
-  const glm::mat4 axes = place * glm::mat4_cast(orientation_) * glm::scale(glm::mat4(1.0f), glm::vec3(size()));
+  const glm::mat4 axes = place * glm::mat4_cast(orientation()) * glm::scale(glm::mat4(1.0f), glm::vec3(size()));
   const vtkSmartPointer<vtkMatrix4x4> axesMatrix = toVtkMatrix(axes);
   for (int a = 0; a < 3; ++a) handle(a)->SetUserMatrix(axesMatrix);
   // The view ring's local Z is the direction to the camera.

@@ -16,8 +16,6 @@ class RotationGizmo : public ViewportGizmo {
  public:
   RotationGizmo();
 
-  // Centre and orientation (the ring normals are the rotated X, Y, Z axes).
-  void setFrame(const glm::vec3& center, const glm::quat& orientation);
   static constexpr int kViewAxis = 3;  // the ring facing the viewer
   static constexpr int kRingCount = 4;
   // World space, unit; kViewAxis points from the centre towards the camera.
@@ -32,8 +30,6 @@ class RotationGizmo : public ViewportGizmo {
 
  private:
   void placeHandles() override;
-
-  glm::quat orientation_{1.0f, 0.0f, 0.0f, 0.0f};
 };
 
 }  // namespace mq::ui

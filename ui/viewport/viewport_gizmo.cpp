@@ -84,6 +84,17 @@ void ViewportGizmo::setCenter(const glm::vec3& center) {
   placeHandles();
 }
 
+void ViewportGizmo::setFrame(const glm::vec3& center, const glm::quat& orientation) {
+  orientation_ = glm::normalize(orientation);
+  setCenter(center);
+}
+
+glm::vec3 ViewportGizmo::frameAxis(int index) const {
+  glm::vec3 a(0.0f);
+  a[index] = 1.0f;
+  return glm::normalize(orientation_ * a);
+}
+
 void ViewportGizmo::syncWithCamera() {
   if (!scene_) return;
   vtkCamera* camera = scene_->GetActiveCamera();

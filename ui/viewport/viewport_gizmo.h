@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
 #include <vtkSmartPointer.h>
 
 class vtkActor;
@@ -35,7 +36,12 @@ class ViewportGizmo {
   bool visible() const { return visible_; }
   // A handle that is hidden on its own (e.g. the arrows a plane cannot move along); shown by default.
   void setHandleShown(int handle, bool shown);
+  // Centre and orientation (the handles' X, Y, Z are the rotated world axes).
+  void setFrame(const glm::vec3& center, const glm::quat& orientation);
   glm::vec3 center() const { return center_; }
+  glm::quat orientation() const { return orientation_; }
+  // World space, unit: the rotated X, Y or Z axis (index 0, 1, 2).
+  glm::vec3 frameAxis(int index) const;
   // World units at the current camera distance (ring radius, arrow length).
   float size() const { return size_; }
   // Unit, from the centre towards the camera.
@@ -73,6 +79,7 @@ class ViewportGizmo {
   std::vector<Handle> handles_;
   double screenFraction_;
   glm::vec3 center_{0.0f};
+  glm::quat orientation_{1.0f, 0.0f, 0.0f, 0.0f};
   glm::vec3 lastPick_{0.0f};
   glm::vec3 toCamera_{0.0f, 0.0f, 1.0f};
   float size_ = 0.1f;
