@@ -54,7 +54,20 @@ const BodyScene& walkingBody() {
   return scene;
 }
 
-void reportPerQuery(benchmark::State& state, double cpuSeconds, size_t queries, int hits) {
+// Runs query(i) for every point of the scene per iteration (query returns
+// whether it hit) and reports the CPU time per query and the hits.
+template <class Query>
+void timeQueries(benchmark::State& state, size_t count, Query&& query) {
+  double cpuSeconds = 0.0;
+  size_t queries = 0;
+  int hits = 0;
+  for (auto _ : state) {
+    const std::clock_t cpuStart = std::clock();
+    hits = 0;
+    for (size_t i = 0; i < count; ++i) hits += query(i) ? 1 : 0;
+    cpuSeconds += double(std::clock() - cpuStart) / CLOCKS_PER_SEC;
+    queries += count;
+  }
   state.counters["ns_per_query"] = 1e9 * cpuSeconds / double(std::max<size_t>(1, queries));
   state.counters["queries"] = double(queries) / double(std::max<int64_t>(1, state.iterations()));
   state.counters["hits"] = hits;
@@ -63,39 +76,19 @@ void reportPerQuery(benchmark::State& state, double cpuSeconds, size_t queries, 
 void BM_BodyNearest(benchmark::State& state) {
   const BodyScene& s = walkingBody();
   const float radius = 0.001f * float(state.range(0));
-  double cpuSeconds = 0.0;
-  size_t queries = 0;
-  int hits = 0;
-  for (auto _ : state) {
-    const std::clock_t cpuStart = std::clock();
-    hits = 0;
-    for (const glm::vec3& p : s.points) {
-      BodyContact contact;
-      hits += s.body.nearestContact(p, contact, radius);
-    }
-    cpuSeconds += double(std::clock() - cpuStart) / CLOCKS_PER_SEC;
-    queries += s.points.size();
-  }
-  reportPerQuery(state, cpuSeconds, queries, hits);
+  timeQueries(state, s.points.size(), [&](size_t i) {
+    BodyContact contact;
+    return s.body.nearestContact(s.points[i], contact, radius);
+  });
 }
 BENCHMARK(BM_BodyNearest)->Arg(20)->Arg(80)->Unit(benchmark::kMillisecond);
 
 void BM_BodyFirstHit(benchmark::State& state) {
   const BodyScene& s = walkingBody();
-  double cpuSeconds = 0.0;
-  size_t queries = 0;
-  int hits = 0;
-  for (auto _ : state) {
-    const std::clock_t cpuStart = std::clock();
-    hits = 0;
-    for (size_t i = 0; i < s.points.size(); ++i) {
-      BodyContact contact;
-      hits += s.body.firstHitAlong(s.points[i], s.points[i] + s.moves[i], contact);
-    }
-    cpuSeconds += double(std::clock() - cpuStart) / CLOCKS_PER_SEC;
-    queries += s.points.size();
-  }
-  reportPerQuery(state, cpuSeconds, queries, hits);
+  timeQueries(state, s.points.size(), [&](size_t i) {
+    BodyContact contact;
+    return s.body.firstHitAlong(s.points[i], s.points[i] + s.moves[i], contact);
+  });
 }
 BENCHMARK(BM_BodyFirstHit)->Unit(benchmark::kMillisecond);
 

@@ -6,7 +6,6 @@
 #include <vtkActor.h>
 #include <vtkArrowSource.h>
 #include <vtkMatrix4x4.h>
-#include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRegularPolygonSource.h>
 
@@ -21,17 +20,6 @@ const double kScreenFraction = 0.22;
 const double kArrowStart = 0.22;
 const double kDiscRadius = 0.09;
 
-vtkSmartPointer<vtkActor> makeActor(vtkAlgorithm* source) {
-  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-  mapper->SetInputConnection(source->GetOutputPort());
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetAmbient(0.6);
-  actor->GetProperty()->SetDiffuse(0.5);
-  actor->GetProperty()->SetSpecular(0.0);
-  return actor;
-}
-
 // A unit arrow along local +X (placeHandles moves its start out to kArrowStart).
 vtkSmartPointer<vtkActor> makeArrow() {
   auto arrow = vtkSmartPointer<vtkArrowSource>::New();
@@ -40,7 +28,7 @@ vtkSmartPointer<vtkActor> makeArrow() {
   arrow->SetTipLength(0.28);
   arrow->SetShaftResolution(12);
   arrow->SetTipResolution(24);
-  return makeActor(arrow);
+  return handleActor(arrow);
 }
 
 // A unit disc in the XY plane (turned towards the camera by its matrix).
@@ -50,7 +38,7 @@ vtkSmartPointer<vtkActor> makeDisc() {
   disc->SetRadius(1.0);
   disc->GeneratePolygonOn();
   disc->GeneratePolylineOff();
-  auto actor = makeActor(disc);
+  auto actor = handleActor(disc);
   actor->GetProperty()->SetOpacity(0.8);
   return actor;
 }

@@ -5,7 +5,6 @@
 
 #include <vtkActor.h>
 #include <vtkMatrix4x4.h>
-#include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRegularPolygonSource.h>
 #include <vtkTubeFilter.h>
@@ -35,14 +34,7 @@ vtkSmartPointer<vtkActor> makeRing(int axis) {
   tube->SetInputConnection(circle->GetOutputPort());
   tube->SetRadius(axis < 3 ? 0.025 : 0.016);
   tube->SetNumberOfSides(8);
-  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-  mapper->SetInputConnection(tube->GetOutputPort());
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetAmbient(0.6);
-  actor->GetProperty()->SetDiffuse(0.5);
-  actor->GetProperty()->SetSpecular(0.0);
-  return actor;
+  return handleActor(tube);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <vtkCellPicker.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
+#include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
@@ -127,6 +128,17 @@ void ViewportGizmo::setHighlightedHandle(int handle) {
   highlighted_ = handle;
   for (int i = 0; i < handleCount(); ++i)
     handles_[i].actor->GetProperty()->SetColor(const_cast<double*>(i == handle ? kHighlightColor : handles_[i].color));
+}
+
+vtkSmartPointer<vtkActor> handleActor(vtkAlgorithm* source) {
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  mapper->SetInputConnection(source->GetOutputPort());
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetAmbient(0.6);
+  actor->GetProperty()->SetDiffuse(0.5);
+  actor->GetProperty()->SetSpecular(0.0);
+  return actor;
 }
 
 }  // namespace mq::ui

@@ -14,6 +14,7 @@
 #include <vtkSmartPointer.h>
 
 class vtkActor;
+class vtkAlgorithm;
 class vtkCellPicker;
 class vtkMatrix4x4;
 class vtkRenderWindow;
@@ -87,6 +88,10 @@ class ViewportGizmo {
   bool visible_ = false;
   unsigned long observer_ = 0;
 };
+
+// A handle's actor for the output of `source`: mostly ambient, no specular
+// (flat, readable colours whatever the lights).
+vtkSmartPointer<vtkActor> handleActor(vtkAlgorithm* source);
 
 // The same matrix for VTK (row major).
 vtkSmartPointer<vtkMatrix4x4> toVtkMatrix(const glm::mat4& m);
