@@ -137,17 +137,19 @@ void ColliderActors::set(const std::vector<cloth::PrimitiveCollider>& colliders,
   }
 }
 
-int ColliderActors::pick(int x, int y) const {
+int ColliderActors::pick(int x, int y, const std::vector<vtkActor*>& occluders) const {
   if (!visible_ || actors_.empty() || !view_->renderer()->GetRenderWindow()) return -1;
   vtkNew<vtkCellPicker> picker;
   picker->SetTolerance(0.0005);
   picker->PickFromListOn();
   for (const auto& actor : actors_) picker->AddPickList(actor);
   for (int mesh = 0; vtkActor* body = view_->meshActor(mesh); ++mesh) picker->AddPickList(body);
+  for (vtkActor* occluder : occluders)
+    if (occluder->GetVisibility()) picker->AddPickList(occluder);
   if (!picker->Pick(x, y, 0.0, view_->renderer())) return -1;
   for (size_t i = 0; i < actors_.size(); ++i)
     if (actors_[i] == picker->GetActor()) return int(i);
-  return -1;  // the character
+  return -1;  // the character or the cloth
 }
 
 void ColliderActors::setVisible(bool visible) {

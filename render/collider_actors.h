@@ -3,7 +3,7 @@
 // actor per collider (a sphere, a capsule, a finite square of the plane with
 // its normal), the selected one brighter. Rebuilt from the colliders on
 // every edit; the colliders are few, so that is cheap. pick() finds the
-// collider under the cursor (the character in front of it hides it).
+// collider under the cursor (the character or cloth in front of it hides it).
 
 #include <vector>
 
@@ -36,8 +36,9 @@ class ColliderActors {
   vtkActor* actor(size_t i) const { return actors_[i]; }
   // The collider drawn under display position (x, y) (pixels, origin bottom
   // left), nearest the viewer; -1 for none, or when the character's surface
-  // is nearer there. Needs the renderer in a window.
-  int pick(int x, int y) const;
+  // or one of the `occluders` (the cloth) is nearer there. Needs the
+  // renderer in a window.
+  int pick(int x, int y, const std::vector<vtkActor*>& occluders = {}) const;
 
  private:
   SceneView* view_;

@@ -206,7 +206,7 @@ class ColliderDragTest : public QObject {
     for (int y = 5; y < viewport()->height() && empty.x() < 0; y += 20)
       for (int x = 5; x < viewport()->width() && empty.x() < 0; x += 20) {
         const QPoint d = widgetToDisplay(viewport(), QPoint(x, y));
-        if (tool_->colliderActors().pick(d.x(), d.y()) < 0) empty = QPoint(x, y);
+        if (tool_->pickCollider(d.x(), d.y()) < 0) empty = QPoint(x, y);
       }
     QVERIFY(empty.x() >= 0);
     click(empty);
@@ -261,6 +261,33 @@ class ColliderDragTest : public QObject {
     renderNow(window_);
     keepShot("collider_dragged_under_sheet");
     undo()->undo();
+  }
+
+  // A sphere right behind the sheet, seen from the camera: a click on the
+  // sheet there clears the selection rather than selecting the sphere behind.
+  void theSheetHidesTheSphereBehindIt() {
+    QVERIFY(tool_->hasSheet());
+    const std::vector<float>& sheet = tool_->shownSheetPositions();
+    glm::vec3 centre(0.0f);
+    for (size_t v = 0; v < sheet.size() / 3; ++v) centre += vertex(sheet, v);
+    centre /= float(sheet.size() / 3);
+    const glm::vec3 camera = window_->sceneView()->cameraPosition();
+    cloth::PrimitiveCollider sphere = collider(0);
+    sphere.radius = 0.05f;
+    sphere.a = centre + 0.15f * glm::normalize(centre - camera);
+    QVERIFY(tool_->setCollider(0, sphere));
+    tool_->setCurrentCollider(1);  // the capsule's gizmo is elsewhere
+    renderNow(window_);
+    const QPoint at = toWidget(window_, centre);
+    const QPoint d = widgetToDisplay(viewport(), at);
+    QCOMPARE(tool_->colliderActors().pick(d.x(), d.y()), 0);  // the sphere is there, behind
+    QCOMPARE(tool_->pickCollider(d.x(), d.y()), -1);          // the sheet is in front
+    click(at);
+    QCOMPARE(tool_->currentCollider(), -1);
+    QVERIFY(!gizmo().visible());
+    undo()->undo();
+    QVERIFY(std::abs(collider(0).radius - 0.05f) > 1e-3f);
+    tool_->setCurrentCollider(0);
   }
 
   // With a character: the body in front of a collider takes the click (a

@@ -164,7 +164,7 @@ bool ColliderDragTool::onRelease(QMouseEvent* event) {
   pressed_ = false;
   if (!click) return false;
   const QPoint display = widgetToDisplay(window_->viewport(), event->position());
-  const int picked = tool_->colliderActors().pick(display.x(), display.y());
+  const int picked = tool_->pickCollider(display.x(), display.y());
   tool_->setCurrentCollider(picked);
   if (picked < 0) return false;  // the pose tool picks a bone or clears its selection
   window_->document()->selectBone(-1);

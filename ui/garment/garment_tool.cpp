@@ -549,6 +549,14 @@ void GarmentTool::updateTimeAxis() {
   window_->document()->setNoClipDuration(axis ? float(scene_.cloth.bakeFrames - 1) / scene_.cloth.fps : 0.0f);
 }
 
+int GarmentTool::pickCollider(int x, int y) const {
+  std::vector<vtkActor*> cloth;
+  auto add = [&](View& view) { cloth.push_back(view.actor.actor()), cloth.push_back(view.overlay.stretchActor()); };
+  for (const auto& view : views_) add(*view);
+  if (sheet_) add(*sheet_);
+  return colliderActors_->pick(x, y, cloth);
+}
+
 const std::vector<float>& GarmentTool::shownSheetPositions() const {
   static const std::vector<float> none;
   return sheet_ ? sheet_->positions : none;

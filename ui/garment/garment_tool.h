@@ -129,6 +129,9 @@ class GarmentTool : public QObject {
   void setCollidersVisible(bool visible);
   bool collidersVisible() const { return collidersVisible_; }
   const render::ColliderActors& colliderActors() const { return *colliderActors_; }
+  // The collider under display position (x, y), -1 for none or when the
+  // character or a garment (or the sheet) is in front of it there.
+  int pickCollider(int x, int y) const;
   ColliderDragTool* colliderDragTool() const { return colliderDrag_; }
 
   // The "cloth" section's sheet as shown (empty without a sheet).
