@@ -98,7 +98,7 @@ TEST(GarmentWalk, TrousersKeepTheBentKneeCovered) {
   // Before: 98, 13, 75, 64 and 12 knee vertices in frames 21-25; now none.
   EXPECT_LE(worstFrame, 5);
   EXPECT_LE(total, 10);
-  EXPECT_LE(sim->simulator().penetratingVertices(), 2);
+  EXPECT_LE(sim->simulator().penetratingVertices(), 4);  // 0-2 of 2436 in these frames
   EXPECT_LE(maxStretch, 1.12f);
 }
 
