@@ -286,7 +286,8 @@ bool ClothSimulator::limitStretchAfterContacts(float h) {
 // touched vertex that went in deeper than half the thickness is put back
 // along its contact normal (it still slides along the surface) and the
 // body-vertex contacts are pushed out again, so the next round pulls the
-// cloth around them instead. The last round ends with the limit.
+// cloth around them instead. The last round (the limit, with the rest of the
+// pass budget) ends it.
 bool ClothSimulator::limitStretchKeepingContactsOut(float h, const std::vector<float>& freeInvMass) {
   const float thickness = settings_.collisionThickness;
   const bool body = !body_.empty() && sewing_.empty();
@@ -305,6 +306,7 @@ bool ClothSimulator::limitStretchKeepingContactsOut(float h, const std::vector<f
     });
   const int rounds = body ? kContactLimitRounds : 1;
   StretchLimitResult r;
+  int used = 0;
   for (int round = 0; round < rounds; ++round) {
     if (round > 0) {
       for (size_t i = 0; i < normal.size(); ++i) {
@@ -317,9 +319,12 @@ bool ClothSimulator::limitStretchKeepingContactsOut(float h, const std::vector<f
     }
     for (size_t i = 0; i < state_.size(); ++i)
       if (touched_[i]) state_.invMass[i] = kContactInvMassScale * freeInvMass[i];
-    r = stretchLimiter_.limitByPositions(state_, activeMaxStretch(), std::max(1, passBudget_ / rounds), h);
+    // The last round gets what the others left of the budget.
+    const int passes = round + 1 < rounds ? std::max(1, passBudget_ / rounds) : std::max(1, passBudget_ - used);
+    r = stretchLimiter_.limitByPositions(state_, activeMaxStretch(), passes, h);
     state_.invMass = freeInvMass;
     stats_.stretchPasses += r.passes;
+    used += r.passes;
   }
   return r.maxStretchAfter <= activeMaxStretch();
 }
