@@ -22,7 +22,8 @@
 // found in parallel and applied in a fixed order, Gauss-Seidel:
 // deterministic. The simulator calls it after the vertex contacts, before the
 // final elongation limit, which holds the vertices of pierced triangles like
-// those a moving body part swept along.
+// those a moving body part swept along; when that fails, reapply() pushes the
+// same pairs out again between the rounds of the limit.
 
 #include <cstdint>
 #include <vector>
