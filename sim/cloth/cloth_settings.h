@@ -39,17 +39,15 @@ struct ClothSettings {
   // Two-level: far fewer iterations on stiff sheets (bench drape and pinned
   // scenes: 35 -> 22, 40 -> 17 to their tolerance), nearer the exact motion,
   // and on the walking T-shirt it holds the cloth out of the body at a cap of
-  // 50 (block Jacobi needs 100). The trousers that settled on the waist
-  // with it rode up (6 cm on the mannequin, 0.5 m on CesiumMan) into the
-  // body: no fault of the preconditioner (its CG reaches the same true
-  // residual; block Jacobi converged to 1e-6 fails too) but resting contacts
-  // held on upward-facing surfaces only, whose reactions squeezed the tight
-  // band up once the solve carried its tension (block Jacobi at its cap does
-  // not); with contacts on downward-facing surfaces too, every garment test
-  // passes with it. Still not the default: the leg swinging in a trouser leg
-  // (cloth_collision_test) has cloth inside in 10 of 45 frames (6 allowed).
-  // Garment sewing always uses block Jacobi (GarmentSimulation).
-  CgPreconditioner cgPreconditioner = CgPreconditioner::BlockJacobi;
+  // 50 (block Jacobi needs 100). Its converged solve carries more of the
+  // cloth's momentum: a trouser leg overshoots a swinging leg that stops, and
+  // the elongation limit after the contacts then pulled the touched vertices
+  // back into the leg (10 of 45 frames with cloth inside in
+  // cloth_collision_test) until that limit kept them out (ClothSimulator::
+  // limitStretchKeepingContactsOut). Resting contacts hold on downward-facing
+  // surfaces too, or the converged solve squeezes a tight waistband up into
+  // the body. Garment sewing always uses block Jacobi (GarmentSimulation).
+  CgPreconditioner cgPreconditioner = CgPreconditioner::TwoLevel;
 };
 
 const char* integratorName(IntegratorKind kind);

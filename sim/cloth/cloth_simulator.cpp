@@ -19,6 +19,7 @@ constexpr float kContactInvMassScale = 0.05f;
 constexpr float kMaxApproachReach = 0.08f;  // m: how far ahead findApproachingBody() looks at most
 constexpr float kApproachPerSubstep = 0.03f;  // m: see substepsForBodySpeed()
 constexpr int kMaxBodySpeedSubsteps = 4;
+constexpr int kContactLimitRounds = 8;  // see limitStretchKeepingContactsOut()
 constexpr uint8_t kContact = 1, kSweptContact = 2;  // touched_ values
 
 ClothState initialState(const ClothMesh& mesh, const ClothTopology& topology, const Fabric& fabric) {
@@ -259,23 +260,73 @@ void ClothSimulator::substep(float h, float bodyFraction, bool firstOfStep) {
 bool ClothSimulator::limitStretchAfterContacts(float h) {
   const std::vector<float> freeInvMass = state_.invMass;
   const bool anySwept = std::find(touched_.begin(), touched_.end(), kSweptContact) != touched_.end();
-  const std::vector<glm::vec3> x = anySwept ? state_.x : std::vector<glm::vec3>{};
-  const std::vector<glm::vec3> v = anySwept ? state_.v : std::vector<glm::vec3>{};
-  for (int attempt = anySwept ? 0 : 1; attempt < 2; ++attempt) {
+  if (anySwept) {
+    // The held try gets the plain budget: pinched cloth fails it whatever the passes.
+    const std::vector<glm::vec3> x = state_.x, v = state_.v;
     for (size_t i = 0; i < state_.size(); ++i)
-      if (touched_[i] == kSweptContact && attempt == 0)
+      if (touched_[i] == kSweptContact)
         state_.invMass[i] = 0.0f;
       else if (touched_[i])
         state_.invMass[i] = kContactInvMassScale * freeInvMass[i];
-    // The held try gets the plain budget: pinched cloth fails it whatever the passes.
-    const int passes = attempt == 0 ? std::min(passBudget_, settings_.stretchIterations) : passBudget_;
-    const StretchLimitResult r = stretchLimiter_.limitByPositions(state_, activeMaxStretch(), passes, h);
+    const StretchLimitResult r =
+        stretchLimiter_.limitByPositions(state_, activeMaxStretch(), std::min(passBudget_, settings_.stretchIterations), h);
     state_.invMass = freeInvMass;
     stats_.stretchPasses += r.passes;
     if (r.maxStretchAfter <= activeMaxStretch()) return true;
-    if (attempt == 0) state_.x = x, state_.v = v;
+    state_.x = x, state_.v = v;
   }
-  return false;
+  return limitStretchKeepingContactsOut(h, freeInvMass);
+}
+
+// The vertices in contact heavy, not held: the limit pulls them along the
+// springs, which over a convex body part is partly into it (a leg swinging in
+// a trouser leg: up to 13 tube vertices inside after the limit with the
+// two-level solve; trousers stretched over a bent knee: the skin showing
+// through their triangles). So the limit runs in rounds, and between two a
+// touched vertex that went in deeper than half the thickness is put back
+// along its contact normal (it still slides along the surface) and the
+// body-vertex contacts are pushed out again, so the next round pulls the
+// cloth around them instead. The last round (the limit, with the rest of the
+// pass budget) ends it.
+bool ClothSimulator::limitStretchKeepingContactsOut(float h, const std::vector<float>& freeInvMass) {
+  const float thickness = settings_.collisionThickness;
+  const bool body = !body_.empty() && sewing_.empty();
+  std::vector<glm::vec3> normal(body ? state_.size() : 0, glm::vec3(0.0f));
+  std::vector<float> allowedIn(normal.size(), 0.0f);  // how far along -normal a vertex may go
+  const std::vector<glm::vec3> start = body ? state_.x : std::vector<glm::vec3>{};
+  if (body)
+    forRange(state_.size(), [&](size_t b, size_t e) {
+      for (size_t i = b; i < e; ++i) {
+        BodyContact contact;
+        if (!touched_[i] || freeInvMass[i] == 0.0f || !body_.nearestContact(state_.x[i], contact, 2.0f * thickness))
+          continue;
+        normal[i] = contact.normal;
+        allowedIn[i] = std::max(0.0f, contact.signedDistance - 0.5f * thickness);
+      }
+    });
+  const int rounds = body ? kContactLimitRounds : 1;
+  StretchLimitResult r;
+  int used = 0;
+  for (int round = 0; round < rounds; ++round) {
+    if (round > 0) {
+      for (size_t i = 0; i < normal.size(); ++i) {
+        const float in = -glm::dot(state_.x[i] - start[i], normal[i]) - allowedIn[i];
+        if (normal[i] == glm::vec3(0.0f) || in <= 0.0f) continue;
+        state_.x[i] += in * normal[i];
+        state_.v[i] += (in / h) * normal[i];
+      }
+      bodyFeatures_->reapply(state_, body_, thickness, touched_);
+    }
+    for (size_t i = 0; i < state_.size(); ++i)
+      if (touched_[i]) state_.invMass[i] = kContactInvMassScale * freeInvMass[i];
+    // The last round gets what the others left of the budget.
+    const int passes = round + 1 < rounds ? std::max(1, passBudget_ / rounds) : std::max(1, passBudget_ - used);
+    r = stretchLimiter_.limitByPositions(state_, activeMaxStretch(), passes, h);
+    state_.invMass = freeInvMass;
+    stats_.stretchPasses += r.passes;
+    used += r.passes;
+  }
+  return r.maxStretchAfter <= activeMaxStretch();
 }
 
 void ClothSimulator::sewSeams(const std::vector<std::pair<uint32_t, uint32_t>>& seams, float closingSpeed,

@@ -133,6 +133,7 @@ class ClothSimulator {
   void applyRestingFriction(float h);
   void collideWithColliders(float h);
   bool limitStretchAfterContacts(float h);
+  bool limitStretchKeepingContactsOut(float h, const std::vector<float>& freeInvMass);
   bool limitStretchWhileSewing(float h);
   void checkFinite(const char* where) const;
   void updateStats();

@@ -69,14 +69,15 @@ TEST(ClothScene, WriteThenParseGivesTheSameSpec) {
 
 TEST(ClothScene, ThePreconditionerIsReadAndWritten) {
   json doc = readJson(benchScene("pinned_64"));
+  ASSERT_FALSE(doc["cloth"].contains("cg_preconditioner"));
   EXPECT_EQ(parseClothScene(doc["cloth"], doc["colliders"], "pinned_64").settings.cgPreconditioner,
-            CgPreconditioner::BlockJacobi);
-  doc["cloth"]["cg_preconditioner"] = "two_level";
+            CgPreconditioner::TwoLevel);  // the default
+  doc["cloth"]["cg_preconditioner"] = "block_jacobi";
   const ClothSceneSpec a = parseClothScene(doc["cloth"], doc["colliders"], "pinned_64");
-  EXPECT_EQ(a.settings.cgPreconditioner, CgPreconditioner::TwoLevel);
+  EXPECT_EQ(a.settings.cgPreconditioner, CgPreconditioner::BlockJacobi);
   json cloth, colliders;
   writeClothScene(a, cloth, colliders);
-  EXPECT_EQ(cloth["cg_preconditioner"], "two_level");
+  EXPECT_EQ(cloth["cg_preconditioner"], "block_jacobi");
 }
 
 std::string errorFor(const json& cloth, const json& colliders = json()) {

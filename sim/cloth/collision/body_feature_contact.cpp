@@ -18,6 +18,13 @@ namespace {
 // trouser leg ride up. (Pushing only the pierced ones to the whole thickness
 // left more T-shirt vertices inside the body.)
 constexpr float kGapFraction = 0.5f;
+// Pairs up to this many thicknesses beyond the gap are kept too, for
+// reapply(): the elongation limit after the contacts moves the cloth by about
+// that much, and can draw a triangle that was clear of a body vertex onto it.
+constexpr float kReapplyMargin = 1.0f;
+// reapply() brings the triangles back to this fraction of the thickness in
+// front of the body's vertices only: out of the skin, moving them the least.
+constexpr float kReapplyGapFraction = 0.125f;
 // Cloth triangles nearly edge-on to the body surface (a fold standing on it)
 // have no clear outside: skipped below this |cos| between the normals.
 constexpr float kMinAlignment = 0.3f;
@@ -117,7 +124,7 @@ std::vector<BodyFeatureContact::Contact> BodyFeatureContact::findContacts(const 
                                                                           float thickness) const {
   const std::vector<glm::vec3>& bodyX = body.positions();
   const std::vector<uint32_t>& bodyTriangles = body.triangles();
-  const float gap = kGapFraction * thickness;
+  const float gap = kGapFraction * thickness, keep = gap + kReapplyMargin * thickness;
   // Area-weighted outward unit normal of body vertex v.
   auto outward = [&](uint32_t v) {
     glm::vec3 sum(0.0f);
@@ -165,7 +172,7 @@ std::vector<BodyFeatureContact::Contact> BodyFeatureContact::findContacts(const 
           if (std::abs(alignment) < kMinAlignment) continue;
           const float side = alignment > 0.0f ? 1.0f : -1.0f;
           const float height = side * above;  // > 0: the triangle is in front of the body vertex
-          if (height >= gap || height < -maxDepth_) continue;
+          if (height >= keep || height < -maxDepth_) continue;
           // Only a body vertex under the triangle (not beside it) is in contact.
           const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
           const glm::vec3 w = closestTriangleWeights(p, s.x[a], s.x[b], s.x[c]);
@@ -181,7 +188,7 @@ std::vector<BodyFeatureContact::Contact> BodyFeatureContact::findContacts(const 
           if (height < 0.0f && found && contact.signedDistance >= 0.0f &&
               glm::dot(contact.normal, side * plane.normal) < kBeyond)
             continue;
-          out.push_back({v, t, w, side, found ? contact.velocity : glm::vec3(0.0f), height < 0.0f});
+          out.push_back({v, t, w, side, found ? contact.velocity : glm::vec3(0.0f), height < 0.0f, height < gap});
         }
       }
     }
@@ -198,7 +205,7 @@ std::vector<BodyFeatureContact::Contact> BodyFeatureContact::findContacts(const 
 // Moves the triangle's point under the body vertex to the gap in front of it
 // (the triangle's vertices by weight times inverse mass) and stops its
 // approach to the body.
-bool BodyFeatureContact::apply(ClothState& s, const BodyCollider& body, const Contact& c, float thickness) const {
+bool BodyFeatureContact::apply(ClothState& s, const BodyCollider& body, const Contact& c, float gap) const {
   const uint32_t v[3] = {triangles_[3 * c.triangle], triangles_[3 * c.triangle + 1], triangles_[3 * c.triangle + 2]};
   const float w[3] = {c.weights.x, c.weights.y, c.weights.z};
   const glm::vec3 faceNormal = glm::cross(s.x[v[1]] - s.x[v[0]], s.x[v[2]] - s.x[v[0]]);
@@ -213,7 +220,6 @@ bool BodyFeatureContact::apply(ClothState& s, const BodyCollider& body, const Co
     denom += w[k] * w[k] * s.invMass[v[k]];
   }
   const float height = glm::dot(point - body.positions()[c.bodyVertex], n);
-  const float gap = kGapFraction * thickness;
   if (height >= gap || denom <= 0.0f) return false;
   const float push = (gap - height) / denom;
   const float vn = std::min(0.0f, glm::dot(velocity - c.surfaceVelocity, n));
@@ -234,11 +240,11 @@ int BodyFeatureContact::resolve(ClothState& s, const BodyCollider& body, float t
   if (body.empty() || triangles_.empty()) return 0;
   prepareBody(body);
   updateTriangles(s, thickness);
-  const std::vector<Contact> contacts = findContacts(s, body, thickness);
+  contacts_ = findContacts(s, body, thickness);
   for (int pass = 0; pass < kPasses; ++pass) {
     bool any = false;
-    for (const Contact& c : contacts) {
-      if (!apply(s, body, c, thickness)) continue;
+    for (const Contact& c : contacts_) {
+      if (!apply(s, body, c, kGapFraction * thickness)) continue;
       any = true;
       for (int k = 0; k < 3; ++k) {
         const uint32_t vertex = triangles_[3 * c.triangle + k];
@@ -247,7 +253,23 @@ int BodyFeatureContact::resolve(ClothState& s, const BodyCollider& body, float t
     }
     if (!any) break;
   }
-  return int(contacts.size());
+  return int(std::count_if(contacts_.begin(), contacts_.end(), [](const Contact& c) { return c.withinGap; }));
+}
+
+int BodyFeatureContact::reapply(ClothState& s, const BodyCollider& body, float thickness,
+                                std::vector<uint8_t>& pushed) const {
+  int applied = 0;
+  for (int pass = 0; pass < kPasses; ++pass) {
+    int now = 0;
+    for (const Contact& c : contacts_) {
+      if (!apply(s, body, c, kReapplyGapFraction * thickness)) continue;
+      ++now;
+      for (int k = 0; k < 3; ++k) pushed[triangles_[3 * c.triangle + k]] = 1;
+    }
+    if (now == 0) break;
+    applied += now;
+  }
+  return applied;
 }
 
 }  // namespace mq::cloth

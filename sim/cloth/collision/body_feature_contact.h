@@ -22,7 +22,8 @@
 // found in parallel and applied in a fixed order, Gauss-Seidel:
 // deterministic. The simulator calls it after the vertex contacts, before the
 // final elongation limit, which holds the vertices of pierced triangles like
-// those a moving body part swept along.
+// those a moving body part swept along; when that fails, reapply() pushes the
+// same pairs out again between the rounds of the limit.
 
 #include <cstdint>
 #include <vector>
@@ -42,6 +43,12 @@ class BodyFeatureContact {
   // Returns the number of body vertex - cloth triangle contacts found.
   int resolve(ClothState& s, const BodyCollider& body, float thickness, std::vector<uint8_t>& touched,
               uint8_t nearMark, uint8_t piercedMark);
+  // The pairs of the last resolve() (and those a little beyond its gap)
+  // pushed apart again, against the same body pose, to a smaller gap (out of
+  // the skin with the least displacement): after the elongation limit, which
+  // pulls cloth stretched over a bent knee back through it. Sets pushed[v]
+  // = 1 for the cloth vertices it moves; returns the pushes made.
+  int reapply(ClothState& s, const BodyCollider& body, float thickness, std::vector<uint8_t>& pushed) const;
 
   // How deep behind a cloth triangle a body vertex is still pushed out of
   // it: half the cloth's mean edge length, within these bounds (m).
@@ -55,12 +62,14 @@ class BodyFeatureContact {
     float side;                 // +1 / -1: the triangle's normal times this points out of the body
     glm::vec3 surfaceVelocity;  // the body's, near the contact
     bool pierced;               // the body vertex was in front of the triangle
+    bool withinGap;             // in contact when found (else kept for reapply())
   };
   void prepareBody(const BodyCollider& body);
   // Planes, bounding circles and the tree of the cloth's triangles now.
   void updateTriangles(const ClothState& s, float thickness);
   std::vector<Contact> findContacts(const ClothState& s, const BodyCollider& body, float thickness) const;
-  bool apply(ClothState& s, const BodyCollider& body, const Contact& c, float thickness) const;
+  // Moves the triangle's point under the body vertex `gap` in front of it.
+  bool apply(ClothState& s, const BodyCollider& body, const Contact& c, float gap) const;
 
   struct Plane {
     glm::vec3 normal;  // unit (zero for a degenerate triangle)
@@ -69,6 +78,7 @@ class BodyFeatureContact {
     float reach;  // circumscribing radius about the centroid plus the thickness
   };
   std::vector<uint32_t> triangles_;
+  std::vector<Contact> contacts_;  // of the last resolve()
   float maxDepth_ = kMaxDepth;
   std::vector<Plane> planes_;
   AabbTree tree_;
