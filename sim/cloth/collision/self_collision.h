@@ -37,6 +37,22 @@ struct NormalCone {
   float cosine = -1.0f, sine = 0.0f;
 };
 
+// Where a part of the cloth is at the start of a step and how its vertices
+// move in the step: the boxes of their start positions and of their moves,
+// as rows (x, y, z, 0) in one cache line (compared four lanes at a time).
+struct alignas(64) NodeMotion {
+  glm::vec4 startMin{1e30f, 1e30f, 1e30f, 0.0f}, startMax{-1e30f, -1e30f, -1e30f, 0.0f};
+  glm::vec4 moveMin{1e30f, 1e30f, 1e30f, 0.0f}, moveMax{-1e30f, -1e30f, -1e30f, 0.0f};
+  void extend(const glm::vec3& start, const glm::vec3& move) {
+    startMin = glm::min(startMin, glm::vec4(start, 0.0f)), startMax = glm::max(startMax, glm::vec4(start, 0.0f));
+    moveMin = glm::min(moveMin, glm::vec4(move, 0.0f)), moveMax = glm::max(moveMax, glm::vec4(move, 0.0f));
+  }
+  void extend(const NodeMotion& o) {
+    startMin = glm::min(startMin, o.startMin), startMax = glm::max(startMax, o.startMax);
+    moveMin = glm::min(moveMin, o.moveMin), moveMax = glm::max(moveMax, o.moveMax);
+  }
+};
+
 class SelfCollision {
  public:
   SelfCollision(const std::vector<uint32_t>& triangles, size_t vertexCount);
@@ -45,6 +61,10 @@ class SelfCollision {
   // The last resolve()'s candidate pairs.
   size_t vertexTriangleCandidates() const { return vertexTriangle_.size(); }
   size_t edgeEdgeCandidates() const { return edgeEdge_.size(); }
+  // Whether the searches leave out the nodes and elements out of each
+  // other's reach from their start boxes and move boxes (on by default; off,
+  // they visit every pair whose boxes overlap: the candidates are the same).
+  void setMotionBounds(bool on) { motionBounds_ = on; }
 
  private:
   struct VertexTriangle {
@@ -78,7 +98,11 @@ class SelfCollision {
   // (found at each build), and connected and flat in this step.
   std::vector<uint8_t> connectedEdgePatch_, connectedTrianglePatch_, flatEdgePatch_, flatTrianglePatch_;
   std::vector<uint32_t> vertexPlace_;  // per vertex: the place of one of its triangles in the triangle tree
+  std::vector<uint32_t> vertexOrder_;  // the vertices by their place
   std::vector<NormalCone> triangleCones_, nodeCones_;
+  // Per triangle and edge (in their trees' order), and per node of the trees.
+  std::vector<NodeMotion> triangleMotions_, edgeMotions_, nodeMotions_, edgeNodeMotions_;
+  bool motionBounds_ = true;
   std::vector<uint32_t> moved_, checkedVT_, checkedEE_;  // resolve()'s pass clocks
 };
 
