@@ -16,9 +16,11 @@ struct Box {
   glm::vec3 min{1e30f}, max{-1e30f};
   void extend(const glm::vec3& p) { min = glm::min(min, p); max = glm::max(max, p); }
   void extend(const Box& o) { min = glm::min(min, o.min); max = glm::max(max, o.max); }
+  // Branch-free (the six comparisons at once): traversals test many boxes
+  // whose outcome does not follow a pattern.
   bool overlaps(const Box& o) const {
-    return min.x <= o.max.x && o.min.x <= max.x && min.y <= o.max.y && o.min.y <= max.y && min.z <= o.max.z &&
-           o.min.z <= max.z;
+    return (min.x <= o.max.x) & (o.min.x <= max.x) & (min.y <= o.max.y) & (o.min.y <= max.y) & (min.z <= o.max.z) &
+           (o.min.z <= max.z);
   }
 };
 

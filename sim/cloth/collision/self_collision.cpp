@@ -25,7 +25,9 @@ constexpr uint32_t kNoTriangle = UINT32_MAX;
 constexpr float kFlatCosine = 0.7071f;  // cos 45 degrees: a patch's normals within it of its axis are flat
 
 NormalCone merged(const NormalCone& a, const NormalCone& b) {
-  if (a.cosine < 0.0f || b.cosine < 0.0f) return {};
+  // Cones only matter while they are flat, and a merged cone is no narrower
+  // than either: the wide ones are not merged.
+  if (a.cosine < kFlatCosine || b.cosine < kFlatCosine) return {};
   const glm::vec3 sum = a.axis + b.axis;
   const float length = glm::length(sum);
   if (length < 1e-6f) return {};
@@ -113,6 +115,28 @@ void findFlatNodes(const AabbTree& tree, const std::vector<uint8_t>& connected, 
   }
 }
 
+// Grows m to hold o (row by row).
+inline void extend(NodeMotion& m, const NodeMotion& o) {
+#ifdef __SSE2__
+  float* rows = &m.startMin.x;
+  const float* other = &o.startMin.x;
+  for (int r = 0; r < 16; r += 8) {
+    _mm_store_ps(rows + r, _mm_min_ps(_mm_load_ps(rows + r), _mm_load_ps(other + r)));
+    _mm_store_ps(rows + r + 4, _mm_max_ps(_mm_load_ps(rows + r + 4), _mm_load_ps(other + r + 4)));
+  }
+#else
+  m.startMin = glm::min(m.startMin, o.startMin), m.startMax = glm::max(m.startMax, o.startMax);
+  m.moveMin = glm::min(m.moveMin, o.moveMin), m.moveMax = glm::max(m.moveMax, o.moveMax);
+#endif
+}
+// A vertex's motion: where it starts and how it moves.
+inline NodeMotion pointMotion(const glm::vec3& start, const glm::vec3& move) {
+  NodeMotion m;
+  m.startMin = m.startMax = glm::vec4(start, 0.0f);
+  m.moveMin = m.moveMax = glm::vec4(move, 0.0f);
+  return m;
+}
+
 // Whether elements whose vertices start within `gap` of each other and
 // whose moves differ by up to `farthest` (both squared) can pass the exact
 // test dist(x0) <= thickness + closing. Slightly generous, so that rounding
@@ -145,9 +169,7 @@ inline bool withinReach(const NodeMotion& a, const NodeMotion& b, float thicknes
 }
 // The same for a node's elements and a vertex.
 inline bool withinReach(const NodeMotion& a, const glm::vec3& start, const glm::vec3& move, float thickness) {
-  NodeMotion point;
-  point.extend(start, move);
-  return withinReach(a, point, thickness);
+  return withinReach(a, pointMotion(start, move), thickness);
 }
 
 // Per element (in the tree's order) and per node of `tree`: the box of its
@@ -158,22 +180,24 @@ void findNodeMotions(const AabbTree& tree, Vertices&& vertices, const std::vecto
                      const std::vector<glm::vec3>& move, std::vector<NodeMotion>& elements,
                      std::vector<NodeMotion>& motions) {
   elements.resize(tree.nodeCount() == 0 ? 0 : tree.nodeInfo(0).count);
-  for (size_t k = 0; k < elements.size(); ++k) {
-    NodeMotion& m = elements[k];
-    m = {};
-    for (uint32_t v : vertices(tree.primitive(uint32_t(k)))) m.extend(x0[v], move[v]);
-  }
+  inChunks(elements.size(), 2048, [&](size_t k0, size_t k1) {
+    for (size_t k = k0; k < k1; ++k) {
+      NodeMotion& m = elements[k];
+      m = {};
+      for (uint32_t v : vertices(tree.primitive(uint32_t(k)))) extend(m, pointMotion(x0[v], move[v]));
+    }
+  });
   motions.resize(tree.nodeCount());
   for (size_t i = motions.size(); i-- > 0;) {
     const AabbTree::NodeInfo node = tree.nodeInfo(i);
-    NodeMotion m;
+    NodeMotion& m = motions[i];
     if (node.left >= 0) {
       m = motions[node.left];
-      m.extend(motions[node.right]);
+      extend(m, motions[node.right]);
     } else {
-      for (uint32_t k = node.first; k < node.first + node.count; ++k) m.extend(elements[k]);
+      m = elements[node.first];
+      for (uint32_t k = node.first + 1; k < node.first + node.count; ++k) extend(m, elements[k]);
     }
-    motions[i] = m;
   }
 }
 

@@ -29,9 +29,9 @@
 namespace mq::cloth {
 
 // Unit normals within a cone: its axis and the cosine and sine of its
-// half-angle. Cones wider than 90 degrees are all "wide" (cosine -1): only
-// narrow ones matter, and sums of two half-angles up to 90 degrees stay below
-// 180 (the sum formulas hold).
+// half-angle. Cones wider than a flat patch's (45 degrees) are all "wide"
+// (cosine -1): only narrow ones matter, and sums of two half-angles up to 90
+// degrees stay below 180 (the sum formulas hold).
 struct NormalCone {
   glm::vec3 axis{0.0f};
   float cosine = -1.0f, sine = 0.0f;
@@ -43,14 +43,6 @@ struct NormalCone {
 struct alignas(64) NodeMotion {
   glm::vec4 startMin{1e30f, 1e30f, 1e30f, 0.0f}, startMax{-1e30f, -1e30f, -1e30f, 0.0f};
   glm::vec4 moveMin{1e30f, 1e30f, 1e30f, 0.0f}, moveMax{-1e30f, -1e30f, -1e30f, 0.0f};
-  void extend(const glm::vec3& start, const glm::vec3& move) {
-    startMin = glm::min(startMin, glm::vec4(start, 0.0f)), startMax = glm::max(startMax, glm::vec4(start, 0.0f));
-    moveMin = glm::min(moveMin, glm::vec4(move, 0.0f)), moveMax = glm::max(moveMax, glm::vec4(move, 0.0f));
-  }
-  void extend(const NodeMotion& o) {
-    startMin = glm::min(startMin, o.startMin), startMax = glm::max(startMax, o.startMax);
-    moveMin = glm::min(moveMin, o.moveMin), moveMax = glm::max(moveMax, o.moveMax);
-  }
 };
 
 class SelfCollision {
