@@ -375,12 +375,18 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     edgeTree_.refit(edgeBoxes);
   }
   ++stepsSinceBuild_;
-  findNodeMotions(tree_, [&](uint32_t t) {
-    return std::array<uint32_t, 3>{triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]};
-  }, x0, move, triangleMotions_, nodeMotions_);
-  findNodeMotions(edgeTree_, [&](uint32_t e) {
-    return std::array<uint32_t, 2>{edges_[e].first, edges_[e].second};
-  }, x0, move, edgeMotions_, edgeNodeMotions_);
+  // The node bounds pay where the boxes are grown much by the motion (parts
+  // of the cloth moving apart from the rest); where its moves differ little
+  // they cost more than they leave out.
+  const bool bounded = motionBounds_ && deviation > 2.0f * thickness;
+  if (bounded) {
+    findNodeMotions(tree_, [&](uint32_t t) {
+      return std::array<uint32_t, 3>{triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]};
+    }, x0, move, triangleMotions_, nodeMotions_);
+    findNodeMotions(edgeTree_, [&](uint32_t e) {
+      return std::array<uint32_t, 2>{edges_[e].first, edges_[e].second};
+    }, x0, move, edgeMotions_, edgeNodeMotions_);
+  }
   findFlatPatches(s, x0);
   // The vertices in the tree's order: one query after the other walks the
   // same nodes (in cache).
@@ -389,14 +395,14 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     // Not into a node out of the vertex's reach, nor into a flat patch that
     // holds the vertex (no triangle there can reach it).
     auto skipped = [&](int32_t node) {
-      if (motionBounds_ && !withinReach(nodeMotions_[node], x0[v], move[v], thickness)) return true;
+      if (bounded && !withinReach(nodeMotions_[node], x0[v], move[v], thickness)) return true;
       if (!flatTrianglePatch_[node]) return false;
       const AabbTree::NodeInfo info = tree_.nodeInfo(node);
       return vertexPlace_[v] - info.first < info.count;
     };
     const Box vertexSwept = sweptBox({v});
     tree_.queryPlaces(swept && !checkSwept ? vertexSwept : relativeBox({v}), [&](uint32_t place) {
-      if (motionBounds_ && !withinReach(triangleMotions_[place], x0[v], move[v], thickness)) return;
+      if (bounded && !withinReach(triangleMotions_[place], x0[v], move[v], thickness)) return;
       const uint32_t t = tree_.primitive(place);
       const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
       if (v == a || v == b || v == c) return;
@@ -432,14 +438,14 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
   }
   auto flatEdgePatch = [&](int32_t node) { return flatEdgePatch_[node] != 0; };
   auto outOfReach = [&](int32_t a, int32_t b) {
-    return motionBounds_ && !withinReach(edgeNodeMotions_[a], edgeNodeMotions_[b], thickness);
+    return bounded && !withinReach(edgeNodeMotions_[a], edgeNodeMotions_[b], thickness);
   };
   const std::vector<AabbTree::PairJob> jobs = edgeTree_.pairJobs(4 * kBlocks, flatEdgePatch);
   std::vector<std::vector<EdgeEdge>> found(jobs.size());
   ThreadPool::shared().parallelBlocks(jobs.size(), [&](size_t j) {
     std::vector<EdgeEdge>& out = found[j];
     edgeTree_.runJobAtPlaces(jobs[j], [&](uint32_t placeI, uint32_t placeK) {
-      if (motionBounds_ && !withinReach(edgeMotions_[placeI], edgeMotions_[placeK], thickness)) return;
+      if (bounded && !withinReach(edgeMotions_[placeI], edgeMotions_[placeK], thickness)) return;
       const uint32_t i = edgeTree_.primitive(placeI), k = edgeTree_.primitive(placeK);
       const uint32_t e = std::min(i, k), f = std::max(i, k);
       const auto [p0, p1] = edges_[e];

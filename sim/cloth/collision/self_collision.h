@@ -54,7 +54,8 @@ class SelfCollision {
   size_t vertexTriangleCandidates() const { return vertexTriangle_.size(); }
   size_t edgeEdgeCandidates() const { return edgeEdge_.size(); }
   // Whether the searches leave out the nodes and elements out of each
-  // other's reach from their start boxes and move boxes (on by default; off,
+  // other's reach from their start boxes and move boxes (on by default, used
+  // in the steps whose moves differ by more than twice the thickness; off,
   // they visit every pair whose boxes overlap: the candidates are the same).
   void setMotionBounds(bool on) { motionBounds_ = on; }
 
