@@ -350,14 +350,22 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
   // The trees hold whichever kind is smaller in all; when they hold relative
   // boxes in swept mode, the swept boxes are checked on each pair.
   std::vector<Box> boxes(triangleCount), edgeBoxes(edges_.size()), sweptBoxes, sweptEdgeBoxes;
-  for (size_t t = 0; t < triangleCount; ++t) boxes[t] = triangleBox(relativeBox, t);
-  for (size_t e = 0; e < edges_.size(); ++e) edgeBoxes[e] = edgeBox(relativeBox, e);
+  if (swept) sweptBoxes.resize(triangleCount), sweptEdgeBoxes.resize(edges_.size());
+  // In parallel (each element on its own: the same boxes).
+  inChunks(triangleCount, 4096, [&](size_t t0, size_t t1) {
+    for (size_t t = t0; t < t1; ++t) {
+      boxes[t] = triangleBox(relativeBox, t);
+      if (swept) sweptBoxes[t] = triangleBox(sweptBox, t);
+    }
+  });
+  inChunks(edges_.size(), 4096, [&](size_t e0, size_t e1) {
+    for (size_t e = e0; e < e1; ++e) {
+      edgeBoxes[e] = edgeBox(relativeBox, e);
+      if (swept) sweptEdgeBoxes[e] = edgeBox(sweptBox, e);
+    }
+  });
   bool checkSwept = false;  // the trees hold relative boxes, candidates need swept ones to overlap
   if (swept) {
-    sweptBoxes.resize(triangleCount);
-    sweptEdgeBoxes.resize(edges_.size());
-    for (size_t t = 0; t < triangleCount; ++t) sweptBoxes[t] = triangleBox(sweptBox, t);
-    for (size_t e = 0; e < edges_.size(); ++e) sweptEdgeBoxes[e] = edgeBox(sweptBox, e);
     checkSwept = extentSum(boxes) + extentSum(edgeBoxes) < extentSum(sweptBoxes) + extentSum(sweptEdgeBoxes);
     if (!checkSwept) boxes.swap(sweptBoxes), edgeBoxes.swap(sweptEdgeBoxes);
   }
@@ -431,11 +439,13 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     float spread;
   };
   std::vector<EdgeBound> bounds(edges_.size());
-  for (size_t e = 0; e < edges_.size(); ++e) {
-    const auto [p0, p1] = edges_[e];
-    bounds[e] = {0.5f * (x0[p0] + x0[p1]), 0.5f * glm::length(x0[p0] - x0[p1]), 0.5f * (move[p0] + move[p1]),
-                 0.5f * glm::length(move[p0] - move[p1])};
-  }
+  inChunks(edges_.size(), 4096, [&](size_t e0, size_t e1) {
+    for (size_t e = e0; e < e1; ++e) {
+      const auto [p0, p1] = edges_[e];
+      bounds[e] = {0.5f * (x0[p0] + x0[p1]), 0.5f * glm::length(x0[p0] - x0[p1]), 0.5f * (move[p0] + move[p1]),
+                   0.5f * glm::length(move[p0] - move[p1])};
+    }
+  });
   auto flatEdgePatch = [&](int32_t node) { return flatEdgePatch_[node] != 0; };
   auto outOfReach = [&](int32_t a, int32_t b) {
     return bounded && !withinReach(edgeNodeMotions_[a], edgeNodeMotions_[b], thickness);
