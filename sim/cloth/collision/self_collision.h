@@ -9,6 +9,12 @@
 // position constraint) and loses its approaching relative normal velocity.
 // Pairs are processed in a fixed order: deterministic.
 //
+// A candidate also passes dist(x0) <= thickness + the largest difference of
+// its vertices' moves in the step. When the moves differ much (a sleeve
+// swinging), the searches test that for whole tree nodes from the boxes of
+// their start positions and of their moves, so they leave out the parts
+// that cannot meet however far the cloth moves (same candidates).
+//
 // Pairs within a flat patch are not looked for (after Volino and
 // Magnenat-Thalmann's curvature test): a node of the edge or triangle tree
 // whose elements are connected and whose triangles' normals, at the start and
