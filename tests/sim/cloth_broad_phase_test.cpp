@@ -1,7 +1,8 @@
 // The acceleration pieces of the cloth solver against brute force: the BVH's
 // pair traversal and nearest search, the elongation limiter's sparse
-// Gauss-Seidel against a full sweep, and self-collision candidates that do
-// not depend on whether the trees were rebuilt or refitted.
+// Gauss-Seidel against a full sweep, self-collision candidates that do not
+// depend on whether the trees were rebuilt or refitted, and that are those
+// of a brute-force search.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -246,6 +247,49 @@ TEST(SelfCollision, AConnectedFoldIsNotTakenForAFlatPatch) {
       }
   }
   EXPECT_EQ(checked, n * (n / 2 - 1));
+}
+
+TEST(SelfCollision, MotionBoundsLeaveOutNoCandidate) {
+  // A crumpled sheet (heights alternating by 3 mm between neighbours) folded
+  // over itself, its upper layer 5 mm above the lower one, turned rigidly in
+  // the step, about an axis far away (it moves 11 cm as a whole, its moves
+  // differ by up to 4 cm) and about the middle of its fold (up to 4 cm), with
+  // a little noise: the searches that leave out the nodes out of reach by
+  // their start and move boxes find the same pairs and push them the same way
+  // as those that visit all the pairs whose boxes overlap.
+  ClothMesh mesh = test::horizontalSheetMesh(20, 0.2f, glm::vec3(0.0f));
+  const float spacing = 0.2f / 19.0f;
+  for (size_t i = 0; i < mesh.vertexCount(); ++i) {
+    float& x = mesh.positions[3 * i];
+    const int column = int(std::lround((x + 0.1f) / spacing));
+    const int row = int(std::lround((mesh.positions[3 * i + 2] + 0.1f) / spacing));
+    mesh.positions[3 * i + 1] = (column + row) % 2 ? 0.0015f : -0.0015f;
+    if (x > 0.0f) mesh.positions[3 * i + 1] += 0.005f, x = -x;
+  }
+  const ClothState start = ClothSimulator(mesh, fabricPreset("cotton"), ClothSettings()).state();
+  for (const glm::vec3 axisPoint : {glm::vec3(0.5f, 0.0f, 0.0f), glm::vec3(0.0f)}) {
+    const float angle = axisPoint.x > 0.0f ? 0.2f : 0.3f;
+    ClothState moved = start;
+    for (size_t i = 0; i < moved.size(); ++i) {
+      const glm::vec3 r = start.x[i] - axisPoint;
+      const glm::vec3 turned(std::cos(angle) * r.x + std::sin(angle) * r.z, r.y, -std::sin(angle) * r.x + std::cos(angle) * r.z);
+      moved.x[i] = axisPoint + turned + 0.001f * glm::vec3(std::sin(float(i)), std::cos(1.3f * float(i)), std::sin(0.7f * float(i)));
+    }
+    for (const float thickness : {0.004f, 0.008f}) {
+      SelfCollision bounded(mesh.triangles, mesh.vertexCount()), unbounded(mesh.triangles, mesh.vertexCount());
+      unbounded.setMotionBounds(false);
+      ClothState a = moved, b = moved;
+      const int contacts = bounded.resolve(a, start.x, thickness, 20);
+      EXPECT_EQ(contacts, unbounded.resolve(b, start.x, thickness, 20));
+      const std::string where = "angle " + std::to_string(angle) + ", thickness " + std::to_string(thickness);
+      EXPECT_GT(bounded.vertexTriangleCandidates(), 0u) << where;
+      EXPECT_GT(bounded.edgeEdgeCandidates(), 0u) << where;
+      EXPECT_EQ(bounded.vertexTriangleCandidates(), unbounded.vertexTriangleCandidates()) << where;
+      EXPECT_EQ(bounded.edgeEdgeCandidates(), unbounded.edgeEdgeCandidates()) << where;
+      EXPECT_EQ(a.x, b.x) << where;
+      EXPECT_EQ(a.v, b.v) << where;
+    }
+  }
 }
 
 }  // namespace

@@ -16,9 +16,11 @@ struct Box {
   glm::vec3 min{1e30f}, max{-1e30f};
   void extend(const glm::vec3& p) { min = glm::min(min, p); max = glm::max(max, p); }
   void extend(const Box& o) { min = glm::min(min, o.min); max = glm::max(max, o.max); }
+  // Branch-free (the six comparisons at once): traversals test many boxes
+  // whose outcome does not follow a pattern.
   bool overlaps(const Box& o) const {
-    return min.x <= o.max.x && o.min.x <= max.x && min.y <= o.max.y && o.min.y <= max.y && min.z <= o.max.z &&
-           o.min.z <= max.z;
+    return (min.x <= o.max.x) & (o.min.x <= max.x) & (min.y <= o.max.y) & (o.min.y <= max.y) & (min.z <= o.max.z) &
+           (o.min.z <= max.z);
   }
 };
 
@@ -34,6 +36,9 @@ class AabbTree {
   // not entered.
   template <class Visit, class Skip>
   void query(const Box& box, Visit&& visit, Skip&& skip) const;
+  // The same, but visit(k) is given the primitive's place k (see primitive()).
+  template <class Visit, class Skip>
+  void queryPlaces(const Box& box, Visit&& visit, Skip&& skip) const;
   // Calls visit(primitive) for the primitives whose box is closer to p than
   // `best`, nearer subtrees first; visit may lower `best` (a nearest-point
   // search: far subtrees are then skipped).
@@ -56,6 +61,13 @@ class AabbTree {
   // are not visited (a part known to hold no pair of interest).
   template <class Visit, class SkipWithin>
   void runJob(const PairJob& job, Visit&& visit, SkipWithin&& skipWithin) const;
+  // The same, with the pairs between two nodes for which skipBetween(a, b)
+  // is true left out too (nodes whose boxes overlap but whose primitives are
+  // known to hold no pair of interest, from data kept alongside the nodes),
+  // and visit(i, j) given the primitives' places i, j (primitive(i) is the
+  // primitive): data kept in the tree's order is read in sequence.
+  template <class Visit, class SkipWithin, class SkipBetween>
+  void runJobAtPlaces(const PairJob& job, Visit&& visit, SkipWithin&& skipWithin, SkipBetween&& skipBetween) const;
 
   // The nodes, for data kept alongside them: node 0 is the root, children
   // follow their parent (a reverse sweep is bottom-up), a node covers the
@@ -81,10 +93,10 @@ class AabbTree {
     uint32_t first = 0, count = 0;  // the node's range in order_
   };
   int32_t buildNode(uint32_t first, uint32_t count, const std::vector<Box>& boxes);
-  template <class Visit, class SkipWithin>
-  void pairsWithin(int32_t node, Visit& visit, SkipWithin& skipWithin) const;
-  template <class Visit>
-  void pairsBetween(int32_t a, int32_t b, Visit& visit) const;
+  template <class Visit, class SkipWithin, class SkipBetween>
+  void pairsWithin(int32_t node, Visit& visit, SkipWithin& skipWithin, SkipBetween& skipBetween) const;
+  template <class Visit, class SkipBetween>
+  void pairsBetween(int32_t a, int32_t b, Visit& visit, SkipBetween& skipBetween) const;
   void gatherLeafBoxes(const std::vector<Box>& boxes);
 
   std::vector<Node> nodes_;
@@ -108,6 +120,11 @@ void AabbTree::query(const Box& box, Visit&& visit) const {
 
 template <class Visit, class Skip>
 void AabbTree::query(const Box& box, Visit&& visit, Skip&& skip) const {
+  queryPlaces(box, [&](uint32_t k) { visit(order_[k]); }, skip);
+}
+
+template <class Visit, class Skip>
+void AabbTree::queryPlaces(const Box& box, Visit&& visit, Skip&& skip) const {
   if (nodes_.empty()) return;
   int32_t stack[64];
   int top = 0;
@@ -118,7 +135,7 @@ void AabbTree::query(const Box& box, Visit&& visit, Skip&& skip) const {
     if (!n.box.overlaps(box) || skip(index)) continue;
     if (n.left < 0) {
       for (uint32_t k = n.first; k < n.first + n.count; ++k)
-        if (leafBoxes_[k].overlaps(box)) visit(order_[k]);
+        if (leafBoxes_[k].overlaps(box)) visit(k);
     } else {
       stack[top++] = n.left;
       stack[top++] = n.right;
@@ -164,47 +181,54 @@ void AabbTree::runJob(const PairJob& job, Visit&& visit) const {
 
 template <class Visit, class SkipWithin>
 void AabbTree::runJob(const PairJob& job, Visit&& visit, SkipWithin&& skipWithin) const {
-  if (job.a == job.b)
-    pairsWithin(job.a, visit, skipWithin);
-  else
-    pairsBetween(job.a, job.b, visit);
+  runJobAtPlaces(job, [&](uint32_t i, uint32_t j) { visit(order_[i], order_[j]); }, skipWithin,
+                 [](int32_t, int32_t) { return false; });
 }
 
-template <class Visit, class SkipWithin>
-void AabbTree::pairsWithin(int32_t node, Visit& visit, SkipWithin& skipWithin) const {
+template <class Visit, class SkipWithin, class SkipBetween>
+void AabbTree::runJobAtPlaces(const PairJob& job, Visit&& visit, SkipWithin&& skipWithin,
+                              SkipBetween&& skipBetween) const {
+  if (job.a == job.b)
+    pairsWithin(job.a, visit, skipWithin, skipBetween);
+  else
+    pairsBetween(job.a, job.b, visit, skipBetween);
+}
+
+template <class Visit, class SkipWithin, class SkipBetween>
+void AabbTree::pairsWithin(int32_t node, Visit& visit, SkipWithin& skipWithin, SkipBetween& skipBetween) const {
   if (skipWithin(node)) return;
   const Node& n = nodes_[node];
   if (n.left >= 0) {
-    pairsWithin(n.left, visit, skipWithin);
-    pairsWithin(n.right, visit, skipWithin);
-    pairsBetween(n.left, n.right, visit);
+    pairsWithin(n.left, visit, skipWithin, skipBetween);
+    pairsWithin(n.right, visit, skipWithin, skipBetween);
+    pairsBetween(n.left, n.right, visit, skipBetween);
     return;
   }
   for (uint32_t i = n.first; i < n.first + n.count; ++i)
     for (uint32_t j = i + 1; j < n.first + n.count; ++j)
-      if (leafBoxes_[i].overlaps(leafBoxes_[j])) visit(order_[i], order_[j]);
+      if (leafBoxes_[i].overlaps(leafBoxes_[j])) visit(i, j);
 }
 
-template <class Visit>
-void AabbTree::pairsBetween(int32_t a, int32_t b, Visit& visit) const {
+template <class Visit, class SkipBetween>
+void AabbTree::pairsBetween(int32_t a, int32_t b, Visit& visit, SkipBetween& skipBetween) const {
   const Node &na = nodes_[a], &nb = nodes_[b];
-  if (!na.box.overlaps(nb.box)) return;
+  if (!na.box.overlaps(nb.box) || skipBetween(a, b)) return;
   if (na.left < 0 && nb.left < 0) {
     for (uint32_t i = na.first; i < na.first + na.count; ++i) {
       if (!leafBoxes_[i].overlaps(nb.box)) continue;
       for (uint32_t j = nb.first; j < nb.first + nb.count; ++j)
-        if (leafBoxes_[i].overlaps(leafBoxes_[j])) visit(order_[i], order_[j]);
+        if (leafBoxes_[i].overlaps(leafBoxes_[j])) visit(i, j);
     }
     return;
   }
   // Split the node that is not a leaf (the larger when neither is).
   const glm::vec3 ea = na.box.max - na.box.min, eb = nb.box.max - nb.box.min;
   if (nb.left < 0 || (na.left >= 0 && ea.x + ea.y + ea.z >= eb.x + eb.y + eb.z)) {
-    pairsBetween(na.left, b, visit);
-    pairsBetween(na.right, b, visit);
+    pairsBetween(na.left, b, visit, skipBetween);
+    pairsBetween(na.right, b, visit, skipBetween);
   } else {
-    pairsBetween(a, nb.left, visit);
-    pairsBetween(a, nb.right, visit);
+    pairsBetween(a, nb.left, visit, skipBetween);
+    pairsBetween(a, nb.right, visit, skipBetween);
   }
 }
 

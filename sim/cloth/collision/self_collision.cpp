@@ -4,6 +4,10 @@
 #include <cmath>
 #include <map>
 
+#ifdef __SSE2__
+#include <immintrin.h>
+#endif
+
 #include "sim/cloth/collision/proximity.h"
 #include "core/util/thread_pool.h"
 
@@ -21,7 +25,9 @@ constexpr uint32_t kNoTriangle = UINT32_MAX;
 constexpr float kFlatCosine = 0.7071f;  // cos 45 degrees: a patch's normals within it of its axis are flat
 
 NormalCone merged(const NormalCone& a, const NormalCone& b) {
-  if (a.cosine < 0.0f || b.cosine < 0.0f) return {};
+  // Cones only matter while they are flat, and a merged cone is no narrower
+  // than either: the wide ones are not merged.
+  if (a.cosine < kFlatCosine || b.cosine < kFlatCosine) return {};
   const glm::vec3 sum = a.axis + b.axis;
   const float length = glm::length(sum);
   if (length < 1e-6f) return {};
@@ -109,6 +115,92 @@ void findFlatNodes(const AabbTree& tree, const std::vector<uint8_t>& connected, 
   }
 }
 
+// Grows m to hold o (row by row).
+inline void extend(NodeMotion& m, const NodeMotion& o) {
+#ifdef __SSE2__
+  float* rows = &m.startMin.x;
+  const float* other = &o.startMin.x;
+  for (int r = 0; r < 16; r += 8) {
+    _mm_store_ps(rows + r, _mm_min_ps(_mm_load_ps(rows + r), _mm_load_ps(other + r)));
+    _mm_store_ps(rows + r + 4, _mm_max_ps(_mm_load_ps(rows + r + 4), _mm_load_ps(other + r + 4)));
+  }
+#else
+  m.startMin = glm::min(m.startMin, o.startMin), m.startMax = glm::max(m.startMax, o.startMax);
+  m.moveMin = glm::min(m.moveMin, o.moveMin), m.moveMax = glm::max(m.moveMax, o.moveMax);
+#endif
+}
+// A vertex's motion: where it starts and how it moves.
+inline NodeMotion pointMotion(const glm::vec3& start, const glm::vec3& move) {
+  NodeMotion m;
+  m.startMin = m.startMax = glm::vec4(start, 0.0f);
+  m.moveMin = m.moveMax = glm::vec4(move, 0.0f);
+  return m;
+}
+
+// Whether elements whose vertices start within `gap` of each other and
+// whose moves differ by up to `farthest` (both squared) can pass the exact
+// test dist(x0) <= thickness + closing. Slightly generous, so that rounding
+// never drops a pair the exact test keeps.
+inline bool withinReach(float gap2, float farthest2, float thickness) {
+  if (gap2 <= thickness * thickness) return true;
+  return std::sqrt(gap2) <= 1.001f * (thickness + std::sqrt(farthest2)) + 1e-6f;
+}
+// Whether two nodes' elements can pass it: their start boxes are within the
+// thickness plus the largest difference of two of their moves (four lanes at
+// a time, the fourth zero).
+inline bool withinReach(const NodeMotion& a, const NodeMotion& b, float thickness) {
+#ifdef __SSE2__
+  const __m128 zero = _mm_setzero_ps(), sign = _mm_set1_ps(-0.0f);
+  auto load = [](const glm::vec4& v) { return _mm_load_ps(&v.x); };
+  const __m128 gap = _mm_max_ps(_mm_max_ps(_mm_sub_ps(load(a.startMin), load(b.startMax)),
+                                           _mm_sub_ps(load(b.startMin), load(a.startMax))), zero);
+  const __m128 far = _mm_max_ps(_mm_andnot_ps(sign, _mm_sub_ps(load(a.moveMax), load(b.moveMin))),
+                                _mm_andnot_ps(sign, _mm_sub_ps(load(b.moveMax), load(a.moveMin))));
+  // Horizontal sums of the squares: gap2 in lane 0, far2 in lane 2 of the pair.
+  const __m128 g2 = _mm_mul_ps(gap, gap), f2 = _mm_mul_ps(far, far);
+  const __m128 s1 = _mm_add_ps(_mm_unpacklo_ps(g2, f2), _mm_unpackhi_ps(g2, f2));  // g0+g2 f0+f2 g1+g3 f1+f3
+  const __m128 s2 = _mm_add_ps(s1, _mm_movehl_ps(s1, s1));                         // gap2 far2 . .
+  return withinReach(_mm_cvtss_f32(s2), _mm_cvtss_f32(_mm_shuffle_ps(s2, s2, 1)), thickness);
+#else
+  const glm::vec4 gap = glm::max(glm::max(a.startMin - b.startMax, b.startMin - a.startMax), glm::vec4(0.0f));
+  const glm::vec4 far = glm::max(glm::abs(a.moveMax - b.moveMin), glm::abs(b.moveMax - a.moveMin));
+  return withinReach(glm::dot(gap, gap), glm::dot(far, far), thickness);
+#endif
+}
+// The same for a node's elements and a vertex.
+inline bool withinReach(const NodeMotion& a, const glm::vec3& start, const glm::vec3& move, float thickness) {
+  return withinReach(a, pointMotion(start, move), thickness);
+}
+
+// Per element (in the tree's order) and per node of `tree`: the box of its
+// vertices at the start of the step and the box of their moves
+// (vertices(primitive) gives a primitive's vertices), the nodes bottom-up.
+template <class Vertices>
+void findNodeMotions(const AabbTree& tree, Vertices&& vertices, const std::vector<glm::vec3>& x0,
+                     const std::vector<glm::vec3>& move, std::vector<NodeMotion>& elements,
+                     std::vector<NodeMotion>& motions) {
+  elements.resize(tree.nodeCount() == 0 ? 0 : tree.nodeInfo(0).count);
+  inChunks(elements.size(), 2048, [&](size_t k0, size_t k1) {
+    for (size_t k = k0; k < k1; ++k) {
+      NodeMotion& m = elements[k];
+      m = {};
+      for (uint32_t v : vertices(tree.primitive(uint32_t(k)))) extend(m, pointMotion(x0[v], move[v]));
+    }
+  });
+  motions.resize(tree.nodeCount());
+  for (size_t i = motions.size(); i-- > 0;) {
+    const AabbTree::NodeInfo node = tree.nodeInfo(i);
+    NodeMotion& m = motions[i];
+    if (node.left >= 0) {
+      m = motions[node.left];
+      extend(m, motions[node.right]);
+    } else {
+      m = elements[node.first];
+      for (uint32_t k = node.first + 1; k < node.first + node.count; ++k) extend(m, elements[k]);
+    }
+  }
+}
+
 // Runs body(item, outBlock) over [0, count) in fixed blocks, in parallel, and
 // concatenates the blocks' outputs in order: deterministic.
 template <class T, class Body>
@@ -165,6 +257,11 @@ void SelfCollision::findConnectedPatches() {
       uint32_t& place = vertexPlace_[triangles_[3 * tree_.primitive(k) + c]];
       place = std::min(place, k);
     }
+  vertexOrder_.resize(vertexCount_);
+  for (uint32_t v = 0; v < vertexCount_; ++v) vertexOrder_[v] = v;
+  std::sort(vertexOrder_.begin(), vertexOrder_.end(), [&](uint32_t a, uint32_t b) {
+    return vertexPlace_[a] != vertexPlace_[b] ? vertexPlace_[a] < vertexPlace_[b] : a < b;
+  });
 }
 
 // Which nodes of the trees are connected patches whose triangles' normals
@@ -216,14 +313,12 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
   // Element boxes for the broad phase. Swept over the step (start and end,
   // grown by the thickness) when the cloth's moves differ much (a pair is a
   // candidate only when those overlap); otherwise no such condition: any two
-  // elements closing by up to twice the deviation qualify. Either way a
-  // candidate passes the exact test below, dist(x0) <= thickness + closing,
-  // so its boxes at the start grown by half the thickness plus their own
-  // vertices' largest distance from the mean move overlap ("relative"
-  // boxes: tight where the cloth moves with the mean). The trees hold
-  // whichever kind is smaller in all; when they hold relative boxes in swept
-  // mode, the swept boxes are checked on each pair: the candidates do not
-  // depend on the choice.
+  // elements closing by up to twice the deviation qualify ("relative" boxes:
+  // at the start, grown by half the thickness plus their own vertices'
+  // largest distance from the mean move). Either way a candidate passes the
+  // exact test below, dist(x0) <= thickness + closing; the traversals check
+  // it for whole nodes too (nodeMotions_), which keeps them out of the parts
+  // that move rigidly, however far the cloth moves as a whole.
   const bool swept = !(2.0f * deviation < meanMotion + thickness);
   std::vector<float> offMean(n);
   for (size_t v = 0; v < n; ++v) offMean[v] = glm::length(move[v] - meanMove);
@@ -243,22 +338,34 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     b.max += glm::vec3(grow);
     return b;
   };
-  auto triangleBox = [&](auto&& box, size_t t) { return box({triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]}); };
+  auto triangleBox = [&](auto&& box, size_t t) {
+    return box({triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]});
+  };
   auto edgeBox = [&](auto&& box, size_t e) { return box({edges_[e].first, edges_[e].second}); };
   auto extentSum = [](const std::vector<Box>& boxes) {
     double sum = 0.0;
     for (const Box& b : boxes) sum += double(b.max.x - b.min.x) + double(b.max.y - b.min.y) + double(b.max.z - b.min.z);
     return sum;
   };
+  // The trees hold whichever kind is smaller in all; when they hold relative
+  // boxes in swept mode, the swept boxes are checked on each pair.
   std::vector<Box> boxes(triangleCount), edgeBoxes(edges_.size()), sweptBoxes, sweptEdgeBoxes;
-  for (size_t t = 0; t < triangleCount; ++t) boxes[t] = triangleBox(relativeBox, t);
-  for (size_t e = 0; e < edges_.size(); ++e) edgeBoxes[e] = edgeBox(relativeBox, e);
+  if (swept) sweptBoxes.resize(triangleCount), sweptEdgeBoxes.resize(edges_.size());
+  // In parallel (each element on its own: the same boxes).
+  inChunks(triangleCount, 4096, [&](size_t t0, size_t t1) {
+    for (size_t t = t0; t < t1; ++t) {
+      boxes[t] = triangleBox(relativeBox, t);
+      if (swept) sweptBoxes[t] = triangleBox(sweptBox, t);
+    }
+  });
+  inChunks(edges_.size(), 4096, [&](size_t e0, size_t e1) {
+    for (size_t e = e0; e < e1; ++e) {
+      edgeBoxes[e] = edgeBox(relativeBox, e);
+      if (swept) sweptEdgeBoxes[e] = edgeBox(sweptBox, e);
+    }
+  });
   bool checkSwept = false;  // the trees hold relative boxes, candidates need swept ones to overlap
   if (swept) {
-    sweptBoxes.resize(triangleCount);
-    sweptEdgeBoxes.resize(edges_.size());
-    for (size_t t = 0; t < triangleCount; ++t) sweptBoxes[t] = triangleBox(sweptBox, t);
-    for (size_t e = 0; e < edges_.size(); ++e) sweptEdgeBoxes[e] = edgeBox(sweptBox, e);
     checkSwept = extentSum(boxes) + extentSum(edgeBoxes) < extentSum(sweptBoxes) + extentSum(sweptEdgeBoxes);
     if (!checkSwept) boxes.swap(sweptBoxes), edgeBoxes.swap(sweptEdgeBoxes);
   }
@@ -276,31 +383,50 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     edgeTree_.refit(edgeBoxes);
   }
   ++stepsSinceBuild_;
+  // The node bounds pay where the boxes are grown much by the motion (parts
+  // of the cloth moving apart from the rest); where its moves differ little
+  // they cost more than they leave out.
+  const bool bounded = motionBounds_ && deviation > 2.0f * thickness;
+  if (bounded) {
+    findNodeMotions(tree_, [&](uint32_t t) {
+      return std::array<uint32_t, 3>{triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]};
+    }, x0, move, triangleMotions_, nodeMotions_);
+    findNodeMotions(edgeTree_, [&](uint32_t e) {
+      return std::array<uint32_t, 2>{edges_[e].first, edges_[e].second};
+    }, x0, move, edgeMotions_, edgeNodeMotions_);
+  }
   findFlatPatches(s, x0);
-  vertexTriangle_ = collectInBlocks<VertexTriangle>(n, [&](size_t v, std::vector<VertexTriangle>& out) {
-    const size_t first = out.size();
-    const Box vertexSwept = sweptBox({uint32_t(v)});
-    // Not into a flat patch that holds the vertex: no triangle there can reach it.
-    auto ownFlatPatch = [&](int32_t node) {
+  // The vertices in the tree's order: one query after the other walks the
+  // same nodes (in cache).
+  vertexTriangle_ = collectInBlocks<VertexTriangle>(n, [&](size_t i, std::vector<VertexTriangle>& out) {
+    const uint32_t v = vertexOrder_[i];
+    // Not into a node out of the vertex's reach, nor into a flat patch that
+    // holds the vertex (no triangle there can reach it).
+    auto skipped = [&](int32_t node) {
+      if (bounded && !withinReach(nodeMotions_[node], x0[v], move[v], thickness)) return true;
       if (!flatTrianglePatch_[node]) return false;
       const AabbTree::NodeInfo info = tree_.nodeInfo(node);
       return vertexPlace_[v] - info.first < info.count;
     };
-    tree_.query(swept && !checkSwept ? vertexSwept : relativeBox({uint32_t(v)}), [&](uint32_t t) {
+    const Box vertexSwept = sweptBox({v});
+    tree_.queryPlaces(swept && !checkSwept ? vertexSwept : relativeBox({v}), [&](uint32_t place) {
+      if (bounded && !withinReach(triangleMotions_[place], x0[v], move[v], thickness)) return;
+      const uint32_t t = tree_.primitive(place);
       const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
       if (v == a || v == b || v == c) return;
       if (checkSwept && !vertexSwept.overlaps(sweptBoxes[t])) return;
       const glm::vec3 w = closestTriangleWeights(x0[v], x0[a], x0[b], x0[c]);
       const glm::vec3 normal = glm::cross(x0[b] - x0[a], x0[c] - x0[a]);
       const glm::vec3 offset = x0[v] - (w.x * x0[a] + w.y * x0[b] + w.z * x0[c]);
-      const float reach = thickness + closing({uint32_t(v)}, {a, b, c});
+      const float reach = thickness + closing({v}, {a, b, c});
       if (glm::dot(offset, offset) > reach * reach) return;
       const float side = glm::dot(offset, normal) >= 0.0f ? 1.0f : -1.0f;
-      out.push_back({uint32_t(v), t, w, side});
-    }, ownFlatPatch);
-    // In order of the triangle (the tree's order depends on the boxes).
-    std::sort(out.begin() + first, out.end(),
-              [](const VertexTriangle& a, const VertexTriangle& b) { return a.triangle < b.triangle; });
+      out.push_back({v, t, w, side});
+    }, skipped);
+  });
+  // In order of the vertex, then the triangle (the tree's order depends on the boxes).
+  std::sort(vertexTriangle_.begin(), vertexTriangle_.end(), [](const VertexTriangle& a, const VertexTriangle& b) {
+    return a.vertex != b.vertex ? a.vertex < b.vertex : a.triangle < b.triangle;
   });
   // Edge pairs from the edge tree against itself. A cheap bound first, from
   // each edge's midpoint, half length, mean move and move spread: any two of
@@ -313,17 +439,24 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     float spread;
   };
   std::vector<EdgeBound> bounds(edges_.size());
-  for (size_t e = 0; e < edges_.size(); ++e) {
-    const auto [p0, p1] = edges_[e];
-    bounds[e] = {0.5f * (x0[p0] + x0[p1]), 0.5f * glm::length(x0[p0] - x0[p1]), 0.5f * (move[p0] + move[p1]),
-                 0.5f * glm::length(move[p0] - move[p1])};
-  }
+  inChunks(edges_.size(), 4096, [&](size_t e0, size_t e1) {
+    for (size_t e = e0; e < e1; ++e) {
+      const auto [p0, p1] = edges_[e];
+      bounds[e] = {0.5f * (x0[p0] + x0[p1]), 0.5f * glm::length(x0[p0] - x0[p1]), 0.5f * (move[p0] + move[p1]),
+                   0.5f * glm::length(move[p0] - move[p1])};
+    }
+  });
   auto flatEdgePatch = [&](int32_t node) { return flatEdgePatch_[node] != 0; };
+  auto outOfReach = [&](int32_t a, int32_t b) {
+    return bounded && !withinReach(edgeNodeMotions_[a], edgeNodeMotions_[b], thickness);
+  };
   const std::vector<AabbTree::PairJob> jobs = edgeTree_.pairJobs(4 * kBlocks, flatEdgePatch);
   std::vector<std::vector<EdgeEdge>> found(jobs.size());
   ThreadPool::shared().parallelBlocks(jobs.size(), [&](size_t j) {
     std::vector<EdgeEdge>& out = found[j];
-    edgeTree_.runJob(jobs[j], [&](uint32_t i, uint32_t k) {
+    edgeTree_.runJobAtPlaces(jobs[j], [&](uint32_t placeI, uint32_t placeK) {
+      if (bounded && !withinReach(edgeMotions_[placeI], edgeMotions_[placeK], thickness)) return;
+      const uint32_t i = edgeTree_.primitive(placeI), k = edgeTree_.primitive(placeK);
       const uint32_t e = std::min(i, k), f = std::max(i, k);
       const auto [p0, p1] = edges_[e];
       const auto [q0, q1] = edges_[f];
@@ -343,7 +476,7 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
       const float l = glm::length(d);
       if (l < 1e-9f || l > reach) return;
       out.push_back({e, f, st, d / l});
-    }, flatEdgePatch);
+    }, flatEdgePatch, outOfReach);
   });
   // In order of the first edge, then the other (the jobs' order depends on the tree).
   edgeEdge_.clear();

@@ -9,6 +9,12 @@
 // position constraint) and loses its approaching relative normal velocity.
 // Pairs are processed in a fixed order: deterministic.
 //
+// A candidate also passes dist(x0) <= thickness + the largest difference of
+// its vertices' moves in the step. When the moves differ much (a sleeve
+// swinging), the searches test that for whole tree nodes from the boxes of
+// their start positions and of their moves, so they leave out the parts
+// that cannot meet however far the cloth moves (same candidates).
+//
 // Pairs within a flat patch are not looked for (after Volino and
 // Magnenat-Thalmann's curvature test): a node of the edge or triangle tree
 // whose elements are connected and whose triangles' normals, at the start and
@@ -29,12 +35,20 @@
 namespace mq::cloth {
 
 // Unit normals within a cone: its axis and the cosine and sine of its
-// half-angle. Cones wider than 90 degrees are all "wide" (cosine -1): only
-// narrow ones matter, and sums of two half-angles up to 90 degrees stay below
-// 180 (the sum formulas hold).
+// half-angle. Cones wider than a flat patch's (45 degrees) are all "wide"
+// (cosine -1): only narrow ones matter, and sums of two half-angles up to 90
+// degrees stay below 180 (the sum formulas hold).
 struct NormalCone {
   glm::vec3 axis{0.0f};
   float cosine = -1.0f, sine = 0.0f;
+};
+
+// Where a part of the cloth is at the start of a step and how its vertices
+// move in the step: the boxes of their start positions and of their moves,
+// as rows (x, y, z, 0) in one cache line (compared four lanes at a time).
+struct alignas(64) NodeMotion {
+  glm::vec4 startMin{1e30f, 1e30f, 1e30f, 0.0f}, startMax{-1e30f, -1e30f, -1e30f, 0.0f};
+  glm::vec4 moveMin{1e30f, 1e30f, 1e30f, 0.0f}, moveMax{-1e30f, -1e30f, -1e30f, 0.0f};
 };
 
 class SelfCollision {
@@ -45,6 +59,11 @@ class SelfCollision {
   // The last resolve()'s candidate pairs.
   size_t vertexTriangleCandidates() const { return vertexTriangle_.size(); }
   size_t edgeEdgeCandidates() const { return edgeEdge_.size(); }
+  // Whether the searches leave out the nodes and elements out of each
+  // other's reach from their start boxes and move boxes (on by default, used
+  // in the steps whose moves differ by more than twice the thickness; off,
+  // they visit every pair whose boxes overlap: the candidates are the same).
+  void setMotionBounds(bool on) { motionBounds_ = on; }
 
  private:
   struct VertexTriangle {
@@ -78,7 +97,11 @@ class SelfCollision {
   // (found at each build), and connected and flat in this step.
   std::vector<uint8_t> connectedEdgePatch_, connectedTrianglePatch_, flatEdgePatch_, flatTrianglePatch_;
   std::vector<uint32_t> vertexPlace_;  // per vertex: the place of one of its triangles in the triangle tree
+  std::vector<uint32_t> vertexOrder_;  // the vertices by their place
   std::vector<NormalCone> triangleCones_, nodeCones_;
+  // Per triangle and edge (in their trees' order), and per node of the trees.
+  std::vector<NodeMotion> triangleMotions_, edgeMotions_, nodeMotions_, edgeNodeMotions_;
+  bool motionBounds_ = true;
   std::vector<uint32_t> moved_, checkedVT_, checkedEE_;  // resolve()'s pass clocks
 };
 
