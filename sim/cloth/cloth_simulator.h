@@ -32,6 +32,7 @@
 namespace mq::cloth {
 
 class BodyFeatureContact;
+class ClothSurfaceCollider;
 class Integrator;
 class SelfCollision;
 
@@ -71,6 +72,11 @@ class ClothSimulator {
   void setBody(const std::vector<float>& positions, const std::vector<uint32_t>& triangles);
   // The posed body (same vertices) at the end of the next step().
   void updateBody(const std::vector<float>& posedPositions);
+
+  // Layering: the surface of the cloth this one is worn over (not owned;
+  // null: none), moved by the caller (setTarget) before each step(); see
+  // cloth_simulator_layers.cpp.
+  void setInnerSurface(ClothSurfaceCollider* surface) { innerSurface_ = surface; }
 
   // Pins: a pinned vertex follows its target exactly.
   void pinVertex(uint32_t vertex);                      // where it is now
@@ -132,6 +138,7 @@ class ClothSimulator {
   void findNearestBody(float radius, std::vector<BodyContact>& contacts, std::vector<uint8_t>& found) const;
   void applyRestingFriction(float h);
   void collideWithColliders(float h);
+  void collideWithInnerSurface(float fraction);  // cloth_simulator_layers.cpp
   bool limitStretchAfterContacts(float h);
   bool limitStretchWhileSewing(float h);
   void checkFinite(const char* where) const;
@@ -162,6 +169,7 @@ class ClothSimulator {
   std::vector<glm::vec3> restingSurfaceVelocity_;  // vertices a collision moved in this substep
   std::vector<PrimitiveCollider> colliders_;
   BodyCollider body_;
+  ClothSurfaceCollider* innerSurface_ = nullptr;
   std::vector<float> pendingBody_;
   std::vector<Pin> pins_;
   std::vector<std::pair<uint32_t, uint32_t>> sewing_;
