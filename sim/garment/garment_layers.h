@@ -48,4 +48,9 @@ void wearInLayers(const std::vector<Pointer>& simulations, const std::vector<siz
   }
 }
 
+// The vertices of `outer` now behind the surface of one of `inner` (on its
+// body side, within the layer contact's search; not those beyond its hems),
+// whether or not `outer` is worn over them: 0 before the welds.
+int verticesInside(const GarmentSimulation& outer, const std::vector<const GarmentSimulation*>& inner);
+
 }  // namespace mq::cloth

@@ -5,7 +5,6 @@
 
 #include "core/util/error.h"
 #include "sim/cloth/collision/cloth_surface_collider.h"
-#include "sim/cloth/parallel.h"
 #include "sim/garment/garment_sewing.h"
 
 namespace mq::cloth {
@@ -235,17 +234,6 @@ void GarmentSimulation::setInnerGarments(std::vector<const GarmentSimulation*> i
   for (const GarmentSimulation* g : inner)
     if (g == this || !g) throw Error("a garment cannot be worn over itself or over nothing");
   impl_->inner = std::move(inner);
-}
-
-int GarmentSimulation::verticesInsideInnerGarments() const {
-  const Impl& m = *impl_;
-  if (m.innerSurfaceSources.empty() || m.innerSurface.empty()) return 0;
-  const std::vector<glm::vec3>& x = m.sim->positions();
-  const float radius = innerSurfaceSearchRadius(m.sim->settings().collisionThickness);
-  return int(deterministicSum(x.size(), [&](size_t i) {
-    SurfaceContact contact;
-    return m.innerSurface.nearestContact(x[i], radius, contact) && contact.signedDistance < 0.0f ? 1.0 : 0.0;
-  }));
 }
 
 bool GarmentSimulation::welded() const { return impl_->welded; }

@@ -65,9 +65,6 @@ class GarmentSimulation {
   // welded (sewing panels have open seams, not hems). They must outlive this
   // simulation or be replaced; {}: none.
   void setInnerGarments(std::vector<const GarmentSimulation*> inner);
-  // Vertices now behind an inner garment's surface (on its body side,
-  // within the contact search; not counting those beyond its hems).
-  int verticesInsideInnerGarments() const;
 
   // Advances dt seconds. posedBody (same vertices as the body given at
   // construction) is the body at the end of the step; null: it stays put.
