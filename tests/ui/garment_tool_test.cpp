@@ -1,6 +1,6 @@
 // GUI test of the garment tool (needs X: run under xvfb-run). Drives the
 // real main window: adds a T-shirt from the panel, changes a measurement and
-// undoes it, edits the fabric and the integrator, pins vertices picked with a
+// undoes it, edits the fabric, the integrator and the layer, pins vertices picked with a
 // rubber-band drag in the viewport, keeps them through rebuilds of the mesh,
 // simulates live, bakes a few frames (and cancels a bake), scrubs them, bakes
 // again from the kept sewn garment, adds and edits colliders, saves and
@@ -231,6 +231,21 @@ class GarmentToolTest : public QObject {
     QCOMPARE(tool_->scene().cloth.settings.integrator, cloth::IntegratorKind::ImplicitEuler);
     // Back at the defaults: no cloth section is written (it would describe a sheet).
     QVERIFY(doc()->sceneSections().cloth.is_null());
+  }
+
+  void layerIsShownSavedAndUndoable() {
+    QCOMPARE(panel()->layerField()->value(), 0);
+    QVERIFY(panel()->garmentList()->item(0)->text().contains("layer 0"));
+    const GarmentMesh* mesh = tool_->garmentMesh(0);
+    panel()->layerField()->setValue(2);
+    QCOMPARE(tool_->scene().garments[0].layer, 2);
+    QVERIFY(panel()->garmentList()->item(0)->text().contains("layer 2"));
+    QCOMPARE(doc()->sceneSections().garments[0]["layer"].get<int>(), 2);
+    QCOMPARE(tool_->garmentMesh(0), mesh);  // the layer is not geometry: the mesh is kept
+    undo()->undo();
+    QCOMPARE(tool_->scene().garments[0].layer, 0);
+    QCOMPARE(panel()->layerField()->value(), 0);
+    QVERIFY(!doc()->sceneSections().garments[0].contains("layer"));
   }
 
   void rubberBandSelectsAndPins() {
