@@ -1050,7 +1050,7 @@ bool bakeFrames(std::vector<GarmentTool::BakeGarment>& garments, const std::vect
     garments[g].simulation->setInnerGarments(isGarment ? inner : std::vector<const cloth::GarmentSimulation*>{});
     if (isGarment) inner.push_back(garments[g].simulation.get());
   }
-  if (inner.size() > 1 && !bodies.empty())
+  if (inner.size() > 1 && !bodies.empty() && !bodies[0].empty())  // no character: frame 1 is the placed cloth
     for (int s = 0; s < int(std::ceil(kLayerSettleSeconds * fps)); ++s) {
       if (cancel) return false;
       for (size_t g : order) garments[g].simulation->step(1.0f / fps, bodyOrNull(bodies[0]));
