@@ -123,6 +123,10 @@ TEST(ClothLayers, TheColliderSaysNothingBeyondABoundaryEdge) {
   EXPECT_NEAR(contact.signedDistance, 0.003f, 1e-5f);
   EXPECT_FALSE(surface.nearestContact({0.21f, -0.002f, 0.03f}, 0.02f, contact));  // beyond the edge x = 0.2
   EXPECT_FALSE(surface.nearestContact({0.21f, -0.002f, 0.21f}, 0.02f, contact));  // beyond the corner
+  // Beyond the edge on the front side: only kept off the edge, outwards.
+  ASSERT_TRUE(surface.nearestContact({0.203f, 0.001f, 0.03f}, 0.02f, contact));
+  EXPECT_GT(contact.signedDistance, 0.0f);
+  EXPECT_GT(contact.normal.x, 0.9f);
   ASSERT_TRUE(surface.nearestContact({0.2f, -0.004f, 0.03f}, 0.02f, contact));  // right under the edge
   EXPECT_LT(contact.signedDistance, 0.0f);
   // Moving: the contact has the surface's velocity.

@@ -151,8 +151,16 @@ bool ClothSurfaceCollider::nearestContact(const glm::vec3& p, float radius, Surf
   const glm::vec3 side = featureNormal(t, weights, onBoundary);
   const glm::vec3 offset = p - q;
   const float d = glm::length(offset);
-  if (onBoundary && d > 1e-6f && std::abs(glm::dot(offset, side)) < kOverBoundaryCos * d) return false;
   const bool behind = glm::dot(offset, side) < 0.0f;
+  // Beyond a hem: nothing is known of inside, so a vertex on the side the
+  // surface does not face is left alone; one on the side it faces only keeps
+  // its distance from the edge (so the outer cloth does not sag through the
+  // waistband's rim between its vertices).
+  if (onBoundary && d > 1e-6f && std::abs(glm::dot(offset, side)) < kOverBoundaryCos * d) {
+    if (behind) return false;
+    contact = {q, offset / d, weights.x * velocity_[a] + weights.y * velocity_[b] + weights.z * velocity_[c], d};
+    return true;
+  }
   contact.point = q;
   contact.signedDistance = behind ? -d : d;
   // Out is along the shortest way to the surface, through it from behind.

@@ -14,8 +14,10 @@
 // - A hem, cuff, neck or waist opening ends the surface: when the nearest
 //   point is on such a boundary edge (or a boundary vertex) and the vertex
 //   lies beyond it rather than over it, the nearest point says nothing of
-//   inside or outside, and there is no contact (the T-shirt above the
-//   trousers' waistband is left alone).
+//   inside or outside: a vertex there on the side the surface does not face
+//   gets no contact (the T-shirt inside the trousers' waist opening, above
+//   the waistband, is left alone), one on the side it faces a contact that
+//   only keeps it off the edge (never through the surface).
 
 #include <algorithm>
 #include <cstdint>
@@ -48,7 +50,7 @@ class ClothSurfaceCollider {
   // Positions at a fraction [0,1] of the way from the start to the target.
   void moveTo(float fraction);
   // The nearest contact within `radius`; false when there is none or when
-  // the vertex lies beyond a boundary edge (see above).
+  // the vertex lies beyond a boundary edge on the back side (see above).
   bool nearestContact(const glm::vec3& p, float radius, SurfaceContact& contact) const;
 
   bool empty() const { return triangles_.empty(); }
