@@ -6,7 +6,8 @@
 // substep, find the cloth a moving body part is about to reach (the solver
 // then moves it with the part), move the body and the pin targets,
 // integrate, limit the elongation, resolve self-collisions, resolve
-// collisions with the colliders and the body, push cloth triangles off the
+// collisions with the colliders and the body (and the surface of the cloth
+// it is worn over, when layered), push cloth triangles off the
 // body's vertices (body_feature_contact.h), limit the elongation again, put
 // pinned vertices on their targets, check for NaNs.
 //
