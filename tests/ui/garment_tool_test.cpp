@@ -1,10 +1,11 @@
 // GUI test of the garment tool (needs X: run under xvfb-run). Drives the
 // real main window: adds a T-shirt from the panel, changes a measurement and
-// undoes it, edits the fabric, the integrator and the layer, pins vertices picked with a
-// rubber-band drag in the viewport, keeps them through rebuilds of the mesh,
-// simulates live, bakes a few frames (and cancels a bake), scrubs them, bakes
-// again from the kept sewn garment, adds and edits colliders, saves and
-// reopens the document, and opens a sheet-and-colliders scene with no character.
+// undoes it, edits the fabric, the integrator and the layer, pins vertices
+// picked with a rubber-band drag in the viewport, keeps them through rebuilds
+// of the mesh, simulates live, bakes a few frames (and cancels a bake),
+// scrubs them, bakes again from the kept sewn garment, bakes trousers under
+// and over the shirt, adds and edits colliders, saves and reopens the
+// document, and opens a sheet-and-colliders scene with no character.
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -456,6 +457,39 @@ class GarmentToolTest : public QObject {
     QCOMPARE(tool_->sewingRuns(), runs + 1);
     undo()->undo();
     QCOMPARE(tool_->scene().garments[0].fabric, std::string("cotton"));
+    doc()->setClip(-1);
+  }
+
+  // Trousers added after the T-shirt: the T-shirt on layer 1 is worn over
+  // them (the trousers as baked alone), on layer 0 under them (the T-shirt
+  // as baked alone): the layer decides which garment gives way.
+  void layersDecideWhichGarmentGivesWayInABake() {
+    const int undoIndex = undo()->index();
+    tool_->addGarment("trousers");
+    QCOMPARE(tool_->garmentCount(), 2);
+    tool_->setParticleDistance(1, 0.04f);  // coarse: a quick sewing
+    tool_->setCurrentGarment(0);
+    panel()->layerField()->setValue(1);
+    QCOMPARE(tool_->scene().garments[0].layer, 1);
+    QVERIFY(panel()->garmentList()->item(0)->text().contains("layer 1"));
+    doc()->setClip(0);
+    const float start = doc()->clipStart();
+    QVERIFY2(tool_->bake(start, start + 0.1f), qPrintable(tool_->lastError()));
+    doc()->setTime(start + 0.1f);
+    const std::vector<float> shirtOver = tool_->shownPositions(0), trousersUnder = tool_->shownPositions(1);
+    tool_->setLayer(0, 0);  // the list order: the trousers over the T-shirt
+    QVERIFY(!tool_->hasBake());
+    const int runs = tool_->sewingRuns();
+    QVERIFY2(tool_->bake(start, start + 0.1f), qPrintable(tool_->lastError()));
+    QCOMPARE(tool_->sewingRuns(), runs);  // the layer is not part of the sewn state
+    doc()->setTime(start + 0.1f);
+    const std::vector<float> shirtUnder = tool_->shownPositions(0), trousersOver = tool_->shownPositions(1);
+    QVERIFY(allFinite(shirtOver) && allFinite(trousersOver));
+    QVERIFY2(maxDifference(shirtOver, shirtUnder) > 2e-3f, "the T-shirt over the trousers did not give way");
+    QVERIFY2(maxDifference(trousersOver, trousersUnder) > 2e-3f, "the trousers over the T-shirt did not give way");
+    undo()->setIndex(undoIndex);
+    QCOMPARE(tool_->garmentCount(), 1);
+    QCOMPARE(tool_->scene().garments[0].layer, 0);
     doc()->setClip(-1);
   }
 
