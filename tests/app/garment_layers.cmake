@@ -1,8 +1,8 @@
 # mannequin-cli simulate on trousers + T-shirt (the shirt on layer 1, over the
 # trousers): the shirt's hem stays outside the trousers' waistband in every
-# frame; with --layers off (a few frames) it is inside, so the count does see it.
-#   -DCLI=<exe> -DSCENE=<scene.json> -DWORK=<dir> -DFRAMES=<n> -DMAX_INSIDE=<n> -DMIN_INSIDE_UNLAYERED=<n>
-#   -DMAX_PENETRATING=<n>
+# frame; with --layers off (UNLAYERED_FRAMES frames) it is inside, so the count does see it.
+#   -DCLI=<exe> -DSCENE=<scene.json> -DWORK=<dir> -DFRAMES=<n> -DMAX_INSIDE=<n> -DUNLAYERED_FRAMES=<n>
+#   -DMIN_INSIDE_UNLAYERED=<n> -DMAX_PENETRATING=<n>
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 function(simulate name frames layers)
@@ -52,7 +52,7 @@ if(stretch GREATER 1.101)
   message(FATAL_ERROR "final stretch ${stretch} beyond the 1.1 limit")
 endif()
 
-simulate(unlayered 3 off)
+simulate(unlayered ${UNLAYERED_FRAMES} off)
 string(JSON unlayered_inside GET "${stats}" garments 1 max_inside_inner_vertices)
 string(JSON unlayered GET "${stats}" layers)
 message("unlayered: at most ${unlayered_inside} shirt vertices inside the trousers")
