@@ -1,9 +1,10 @@
-// mannequin-cli simulate SCENE --frames N [--fps F] [--stats-json OUT] [--export-dir DIR]
+// mannequin-cli simulate SCENE --frames N [--fps F] [--stats-json OUT] [--export-dir DIR] [--layers on|off]
 // Runs the cloth of a scene document headless (the "cloth" section's sheet
 // and the "garments", sewn then welded, on the character playing its clip)
 // and reports what the benchmarks compare: wall time, stretch, penetrations,
 // bounds over all cloth, and per garment in "garments".
 #include <chrono>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -60,6 +61,7 @@ std::unique_ptr<cloth::ClothSimulator> makeSheet(const cloth::ClothSceneSpec& sp
 
 struct RunResult {
   double seconds = 0.0;
+  double cpuSeconds = 0.0;  // process CPU time (all threads), for a loaded machine
   float maxStretch = 1.0f;
   int maxPenetrating = 0;  // the most cloth vertices inside the body in any frame
   long long solverIterations = 0;
@@ -85,6 +87,7 @@ RunResult run(SceneCloth& cloth, PosedBody& body, float startTime, bool animateB
   std::vector<float> bodyPositions;
   for (int f = 0; f < frames; ++f) {
     const auto t0 = std::chrono::steady_clock::now();
+    const std::clock_t cpu0 = std::clock();
     const bool posed = !body.empty() && animateBody;
     if (posed) body.pose(startTime + float(f + 1) / fps, bodyPositions, nullptr);
     if (cloth.sheet) {
@@ -95,6 +98,8 @@ RunResult run(SceneCloth& cloth, PosedBody& body, float startTime, bool animateB
     }
     if (cloth.garments) cloth.garments->step(1.0f / fps, posed ? &bodyPositions : nullptr);
     r.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    r.cpuSeconds += double(std::clock() - cpu0) / CLOCKS_PER_SEC;
+    if (cloth.garments) cloth.garments->measureFrame();
     const cli::ClothNow now = cloth.now();
     r.maxStretch = std::max(r.maxStretch, now.maxStretch);
     r.maxPenetrating = std::max(r.maxPenetrating, now.penetratingVertices);
@@ -109,7 +114,9 @@ RunResult run(SceneCloth& cloth, PosedBody& body, float startTime, bool animateB
 
 int runSimulate(const std::vector<std::string>& argv) {
   const cli::Args args(argv);
-  args.allowOnly({"--frames", "--fps", "--stats-json", "--export-dir"});
+  args.allowOnly({"--frames", "--fps", "--stats-json", "--export-dir", "--layers"});
+  const std::string layers = args.option("--layers", "on");
+  if (layers != "on" && layers != "off") throw Error("--layers expects on or off");
   if (args.positional().size() != 1) throw Error("simulate needs exactly one SCENE argument");
   const std::string path = args.positional()[0];
   const double framesArg = args.number("--frames", 120);
@@ -142,7 +149,8 @@ int runSimulate(const std::vector<std::string>& argv) {
     // then the body moves to the scene's pose; the frames start from there.
     std::vector<float> restBody;
     if (!body.empty()) body.pose(0.0f, restBody, nullptr, true);
-    cloth.garments = std::make_unique<cli::SimulatedGarments>(garmentsSection, spec, restBody, bodyTriangles, path);
+    cloth.garments =
+        std::make_unique<cli::SimulatedGarments>(garmentsSection, spec, restBody, bodyTriangles, path, layers == "on");
     dressing = cloth.garments->dress(restBody, bodyPositions, 1.0f / fps);
   }
 
@@ -160,6 +168,7 @@ int runSimulate(const std::vector<std::string>& argv) {
                 {"fps", fps},
                 {"seconds", r.seconds},
                 {"ms_per_frame", 1000.0 * r.seconds / frames},
+                {"cpu_ms_per_frame", 1000.0 * r.cpuSeconds / frames},
                 {"max_stretch", r.maxStretch},
                 {"final_max_stretch", now.maxStretch},
                 {"penetrating_vertices", now.penetratingVertices},
@@ -175,6 +184,8 @@ int runSimulate(const std::vector<std::string>& argv) {
     stats["garments"] = cloth.garments->stats();
     stats["dressing_steps"] = dressing.steps;
     stats["dressing_seconds"] = dressing.seconds;
+    stats["layers"] = layers == "on";
+    stats["max_inside_inner_vertices"] = cloth.garments->maxInsideInnerVertices();
   }
   if (!scene.document.hair.is_null()) cli::simulateSceneHair(scene, frames, fps, exportDir, stats);
   const std::string statsPath = args.option("--stats-json");
@@ -189,7 +200,7 @@ int runSimulate(const std::vector<std::string>& argv) {
   return 0;
 }
 
-const cli::Registration reg({"simulate", "SCENE --frames N [--fps F] [--stats-json OUT] [--export-dir DIR]",
+const cli::Registration reg({"simulate", "SCENE --frames N [--fps F] [--stats-json OUT] [--export-dir DIR] [--layers on|off]",
                              "run the scene's cloth (sheet and garments) and hair headless; stats as JSON, frames as OBJ/PLY",
                              runSimulate});
 

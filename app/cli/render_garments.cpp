@@ -12,6 +12,7 @@
 #include "render/scene_view.h"
 #include "sim/cloth/cloth_scene_io.h"
 #include "sim/garment/drape_schedule.h"
+#include "sim/garment/garment_layers.h"
 #include "sim/garment/garment_scene.h"
 
 namespace mq::cli {
@@ -56,35 +57,51 @@ RenderedGarments addSceneGarments(render::SceneView& view, const LoadedScene& sc
   const std::vector<float> first = bodyAt(character, clip, start, scene.edits);
   const int clipSteps = clip >= 0 ? std::max(0, int(std::lround((time - start) / dt))) : 0;
 
+  // Each garment drapes onto the first pose on its own (they sew in
+  // different times); from there they step together, inner to outer, each
+  // worn over the ones under it (garment_layers.h).
+  std::vector<std::unique_ptr<cloth::GarmentSimulation>> simulations(garments.size());
+  std::vector<int> steps(garments.size(), 0);
+  auto pathOf = [](size_t g) { return "garments[" + std::to_string(g) + "]"; };
   for (size_t g = 0; g < garments.size(); ++g) {
-    const std::string path = "garments[" + std::to_string(g) + "]";
-    int steps = 0;
-    std::unique_ptr<cloth::GarmentSimulation> simulation;
     try {
-      simulation = cloth::makeGarmentSimulation(garments[g], spec, rest, triangles, path);
+      simulations[g] = cloth::makeGarmentSimulation(garments[g], spec, rest, triangles, pathOf(g));
       cloth::DrapeSchedule drape;
       std::vector<float> body;
-      for (int s = 0; s < drape.maxSteps(dt) && !drape.draped(); ++s, ++steps) {
-        cloth::blendBody(rest, first, drape.advance(*simulation, dt), body);
-        simulation->step(dt, &body);
-      }
-      for (int s = 0; s < int(std::ceil(kHoldSeconds / dt)); ++s, ++steps) simulation->step(dt, &first);
-      for (int s = 1; s <= clipSteps; ++s, ++steps) {
-        body = bodyAt(character, clip, start + s * dt, scene.edits);
-        simulation->step(dt, &body);
+      for (int s = 0; s < drape.maxSteps(dt) && !drape.draped(); ++s, ++steps[g]) {
+        cloth::blendBody(rest, first, drape.advance(*simulations[g], dt), body);
+        simulations[g]->step(dt, &body);
       }
     } catch (const Error& e) {
-      throw FileError(file, path + ": " + e.what());
+      throw FileError(file, pathOf(g) + ": " + e.what());
     }
+  }
+  const std::vector<size_t> order = cloth::layerOrder(garments);
+  cloth::wearInLayers(simulations, order);
+  auto stepAll = [&](const std::vector<float>& body) {
+    for (size_t g : order) {
+      try {
+        simulations[g]->step(dt, &body);
+        ++steps[g];
+      } catch (const Error& e) {
+        throw FileError(file, pathOf(g) + ": " + e.what());
+      }
+    }
+  };
+  for (int s = 0; s < int(std::ceil(kHoldSeconds / dt)); ++s) stepAll(first);
+  for (int s = 1; s <= clipSteps; ++s) stepAll(bodyAt(character, clip, start + s * dt, scene.edits));
+
+  for (size_t g = 0; g < garments.size(); ++g) {
+    const cloth::GarmentSimulation& simulation = *simulations[g];
     const GarmentMesh mesh = buildGarmentMesh(garments[g]);
     auto actor = std::make_unique<render::ClothActor>();
-    actor->setMesh(simulation->positions(), simulation->triangles(), mesh.restUvs);
+    actor->setMesh(simulation.positions(), simulation.triangles(), mesh.restUvs);
     actor->setShading(render::clothShadingForFabric(garments[g].fabric));
     view.addProp(actor->actor());
     rendered.actors.push_back(std::move(actor));
     rendered.summary += (rendered.summary.empty() ? "" : ", ") + garments[g].name + " (" +
-                        std::to_string(simulation->vertexCount()) + " vertices, " + std::to_string(steps) +
-                        " steps" + (simulation->welded() ? "" : ", seams not welded") + ")";
+                        std::to_string(simulation.vertexCount()) + " vertices, " + std::to_string(steps[g]) +
+                        " steps" + (simulation.welded() ? "" : ", seams not welded") + ")";
   }
   return rendered;
 }

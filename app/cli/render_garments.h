@@ -2,7 +2,8 @@
 // The garments of a scene in `mannequin-cli render`: each garment is sewn on
 // the character and simulated up to the render time (DrapeSchedule: sewing
 // at the rest pose, a blend to the clip's first pose, then the clip), then
-// drawn with the cloth shading of its fabric.
+// drawn with the cloth shading of its fabric. Once draped, the garments step
+// together, each worn over those of lower layers (sim/garment/garment_layers.h).
 
 #include <memory>
 #include <string>

@@ -1,5 +1,6 @@
 #include "app/cli/simulate_garments.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include "core/garment/garment_json.h"
 #include "core/util/error.h"
 #include "sim/cloth/baked_cloth.h"
+#include "sim/garment/garment_layers.h"
 #include "sim/garment/garment_scene.h"
 
 namespace mq::cli {
@@ -30,7 +32,9 @@ void ClothNow::add(const cloth::ClothSimulator& sim, size_t vertexCount) {
 
 SimulatedGarments::SimulatedGarments(const nlohmann::json& section, const cloth::ClothSceneSpec& spec,
                                      const std::vector<float>& bodyPositions,
-                                     const std::vector<uint32_t>& bodyTriangles, const std::string& documentPath) {
+                                     const std::vector<uint32_t>& bodyTriangles, const std::string& documentPath,
+                                     bool layered)
+    : layered_(layered) {
   try {
     garments_ = garmentsFromJson(section);
     for (size_t i = 0; i < garments_.size(); ++i)
@@ -41,6 +45,9 @@ SimulatedGarments::SimulatedGarments(const nlohmann::json& section, const cloth:
   } catch (const Error& e) {
     throw FileError(documentPath, e.what());
   }
+  order_ = cloth::layerOrder(garments_);
+  cloth::wearInLayers(sims_, order_, layered_);
+  maxInsideInner_.assign(sims_.size(), 0);
   sewingSteps_.assign(sims_.size(), 0);
   substeps_.assign(sims_.size(), 0);
   stretchPasses_.assign(sims_.size(), 0);
@@ -60,7 +67,7 @@ DressingResult SimulatedGarments::dress(const std::vector<float>& restBody, cons
   };
   // GarmentSimulation welds by its maxSewingSeconds at the latest.
   while (!allWelded()) {
-    for (size_t i = 0; i < sims_.size(); ++i) {
+    for (size_t i : order_) {
       if (sims_[i]->welded()) continue;
       sims_[i]->step(dt);
       if (sims_[i]->welded()) sewingSteps_[i] = r.steps + 1;
@@ -73,7 +80,7 @@ DressingResult SimulatedGarments::dress(const std::vector<float>& restBody, cons
     for (int k = 1; k <= moves; ++k) {
       const float t = float(k) / float(moves), smooth = t * t * (3.0f - 2.0f * t);
       for (size_t i = 0; i < body.size(); ++i) body[i] = restBody[i] + smooth * (startBody[i] - restBody[i]);
-      for (const auto& sim : sims_) sim->step(dt, &body);
+      for (size_t i : order_) sims_[i]->step(dt, &body);
       ++r.steps;
     }
   }
@@ -83,12 +90,28 @@ DressingResult SimulatedGarments::dress(const std::vector<float>& restBody, cons
 
 void SimulatedGarments::step(float dt, const std::vector<float>* posedBody) {
   ++frames_;
-  for (size_t i = 0; i < sims_.size(); ++i) {
+  for (size_t i : order_) {
     sims_[i]->step(dt, posedBody);
     substeps_[i] += sims_[i]->stats().substeps;
     stretchPasses_[i] += sims_[i]->stats().stretchPasses;
     solverIterations_[i] += sims_[i]->stats().solverIterations;
   }
+}
+
+int SimulatedGarments::insideInner(size_t garment) const {
+  std::vector<const cloth::GarmentSimulation*> inner;
+  for (size_t k = 0; k < order_.size() && order_[k] != garment; ++k) inner.push_back(sims_[order_[k]].get());
+  return cloth::verticesInside(*sims_[garment], inner);
+}
+
+void SimulatedGarments::measureFrame() {
+  int total = 0;
+  for (size_t i = 0; i < sims_.size(); ++i) {
+    const int inside = insideInner(i);
+    maxInsideInner_[i] = std::max(maxInsideInner_[i], inside);
+    total += inside;
+  }
+  maxInsideInnerTotal_ = std::max(maxInsideInnerTotal_, total);
 }
 
 void SimulatedGarments::exportFrame(const std::string& dir, int frame) const {
@@ -107,6 +130,10 @@ nlohmann::json SimulatedGarments::stats() const {
     const cloth::GarmentSimulation& sim = *sims_[i];
     const cloth::ClothStats& st = sim.stats();
     out.push_back({{"name", garments_[i].name},
+                   {"layer", garments_[i].layer},
+                   {"layer_order", size_t(std::find(order_.begin(), order_.end(), i) - order_.begin())},
+                   {"inside_inner_vertices", insideInner(i)},
+                   {"max_inside_inner_vertices", maxInsideInner_[i]},
                    {"vertices", sim.vertexCount()},
                    {"welded", sim.welded()},
                    {"sewing_steps", sewingSteps_[i]},

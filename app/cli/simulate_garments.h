@@ -32,9 +32,11 @@ struct DressingResult {
 class SimulatedGarments {
  public:
   // Throws FileError(documentPath, "garments[i]...: problem") for bad garments.
+  // layered: each garment worn over those of lower layers (garment_layers.h),
+  // stepped inner to outer; otherwise each on its own.
   SimulatedGarments(const nlohmann::json& garmentsSection, const cloth::ClothSceneSpec& spec,
                     const std::vector<float>& bodyPositions, const std::vector<uint32_t>& bodyTriangles,
-                    const std::string& documentPath);
+                    const std::string& documentPath, bool layered = true);
   ~SimulatedGarments();
 
   bool empty() const { return sims_.empty(); }
@@ -44,15 +46,26 @@ class SimulatedGarments {
   DressingResult dress(const std::vector<float>& restBody, const std::vector<float>& startBody, float dt);
   // posedBody: the body at the end of the step (null: it stays put).
   void step(float dt, const std::vector<float>* posedBody);
+  // After a frame (outside its timing): counts each garment's vertices inside
+  // the garments under it (in layer order; counted with layers off too).
+  void measureFrame();
+  // The most vertices of all garments inside inner garments in any measured frame.
+  int maxInsideInnerVertices() const { return maxInsideInnerTotal_; }
   // <dir>/garment<i>_<name>_<frame>.obj, one per garment, in garment-mesh order.
   void exportFrame(const std::string& dir, int frame) const;
   void addTo(ClothNow& now) const;
-  // Per garment: name, vertices, welded, sewing_steps, seam_gap, max_stretch, penetrating_vertices, bbox.
+  // Per garment: name, layer, vertices, welded, sewing_steps, seam_gap, max_stretch,
+  // penetrating_vertices, inside_inner_vertices (now and max_: in any measured frame), bbox.
   nlohmann::json stats() const;
 
  private:
   std::vector<Garment> garments_;
   std::vector<std::unique_ptr<cloth::GarmentSimulation>> sims_;
+  int insideInner(size_t garment) const;
+  std::vector<size_t> order_;     // inner to outer (garment_layers.h)
+  bool layered_ = true;
+  std::vector<int> maxInsideInner_;  // per garment, over measureFrame()
+  int maxInsideInnerTotal_ = 0;
   std::vector<int> sewingSteps_;  // per garment: steps until the weld (in dress())
   std::vector<long long> substeps_, stretchPasses_, solverIterations_;  // per garment, summed over step()
   int frames_ = 0;

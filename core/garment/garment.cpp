@@ -46,6 +46,7 @@ void Garment::validate() const {
   auto fail = [&](const std::string& problem) { throw Error("garment '" + name + "': " + problem); };
   if (panels.empty()) fail("has no panels");
   if (!(targetEdgeLength > 0.0f)) fail("target edge length must be positive");
+  if (layer < 0 || layer > kMaxLayer) fail("layer must be from 0 to " + std::to_string(kMaxLayer));
   std::set<std::string> panelNames;
   for (const Panel& panel : panels) {
     panel.validate();

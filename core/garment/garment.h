@@ -42,6 +42,10 @@ struct Garment {
   GarmentPins pins;
   float targetEdgeLength = 0.02f;   // metres
   ParametricRecipe recipe;
+  // Layering (sim/garment/garment_layers.h): a garment is worn over those of
+  // lower layers, and over those of its own layer earlier in the list.
+  int layer = 0;
+  static constexpr int kMaxLayer = 99;
 
   int findPanel(const std::string& panelName) const;  // -1 if absent
   // The fabric the solver uses: customFabric, else the preset (mq::Error if unknown).

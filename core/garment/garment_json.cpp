@@ -199,6 +199,7 @@ json garmentToJson(const Garment& garment) {
   if (!garment.pins.vertices.empty())
     out["pins"] = {{"vertices", garment.pins.vertices},
                    {"attach", garment.pins.attach == GarmentPins::Attach::Body ? "body" : "space"}};
+  if (garment.layer != 0) out["layer"] = garment.layer;
   if (!garment.recipe.type.empty())
     out["recipe"] = {{"type", garment.recipe.type}, {"parameters", garment.recipe.parameters}};
   return out;
@@ -219,6 +220,11 @@ Garment garmentFromJson(const json& j, const std::string& path) {
     if (!fabric->is_string()) g.customFabric = values;
   }
   if (const json* pins = optionalMember(j, "pins")) g.pins = pinsFromJson(*pins, at(path, "pins"));
+  if (const json* layer = optionalMember(j, "layer")) {
+    if (!layer->is_number_integer() || layer->get<long long>() < 0 || layer->get<long long>() > Garment::kMaxLayer)
+      fail(at(path, "layer"), "expected a layer number, an integer from 0 to " + std::to_string(Garment::kMaxLayer));
+    g.layer = int(layer->get<long long>());
+  }
   if (const json* target = optionalMember(j, "targetEdgeLength")) {
     g.targetEdgeLength = number(*target, at(path, "targetEdgeLength"));
     if (!(g.targetEdgeLength >= 0.002f && g.targetEdgeLength <= 1.0f))

@@ -16,6 +16,8 @@
 // "bend": .., "damping": .., "friction": .., "thickness": ..}.
 // Optional "pins": {"vertices": [garment-mesh vertex indices], "attach": "body" | "space"}
 // (body: each follows its nearest body vertex; space: fixed where it starts).
+// Optional "layer": an integer 0..99 (0 when absent): garments are worn over
+// those of lower layers and over those earlier in the list on the same layer.
 
 #include <string>
 #include <vector>

@@ -236,13 +236,15 @@ void ClothSimulator::substep(float h, float bodyFraction, bool firstOfStep) {
                                 .passes;
   if (selfCollision_) stats_.selfContacts += selfCollision_->resolve(state_, stepStart_, settings_.selfThickness, 20);
   collideWithColliders(h);
+  if (innerSurface_) collideWithInnerSurface(bodyFraction);
   // Body vertices through cloth triangles, between the cloth's vertices
   // (not while sewing: the panels pulled together over the shoulders would
   // be pushed apart, and the seams close late).
   if (!body_.empty() && sewing_.empty())
     stats_.bodyFeatureContacts += bodyFeatures_->resolve(state_, body_, settings_.collisionThickness, touched_, kContact,
                                                       body_.moved() ? kSweptContact : kContact);
-  if (settings_.stretchLimit == StretchLimitMode::PositionCorrection && (!colliders_.empty() || !body_.empty())) {
+  if (settings_.stretchLimit == StretchLimitMode::PositionCorrection &&
+      (!colliders_.empty() || !body_.empty() || innerSurface_)) {
     held = limitStretchAfterContacts(h);
   }
   limitHeld_ = limitHeld_ && held;

@@ -6,7 +6,8 @@
 // substep, find the cloth a moving body part is about to reach (the solver
 // then moves it with the part), move the body and the pin targets,
 // integrate, limit the elongation, resolve self-collisions, resolve
-// collisions with the colliders and the body, push cloth triangles off the
+// collisions with the colliders and the body (and the surface of the cloth
+// it is worn over, when layered), push cloth triangles off the
 // body's vertices (body_feature_contact.h), limit the elongation again, put
 // pinned vertices on their targets, check for NaNs.
 //
@@ -32,6 +33,7 @@
 namespace mq::cloth {
 
 class BodyFeatureContact;
+class ClothSurfaceCollider;
 class Integrator;
 class SelfCollision;
 
@@ -71,6 +73,11 @@ class ClothSimulator {
   void setBody(const std::vector<float>& positions, const std::vector<uint32_t>& triangles);
   // The posed body (same vertices) at the end of the next step().
   void updateBody(const std::vector<float>& posedPositions);
+
+  // Layering: the surface of the cloth this one is worn over (not owned;
+  // null: none), moved by the caller (setTarget) before each step(); see
+  // cloth_simulator_layers.cpp.
+  void setInnerSurface(ClothSurfaceCollider* surface) { innerSurface_ = surface; }
 
   // Pins: a pinned vertex follows its target exactly.
   void pinVertex(uint32_t vertex);                      // where it is now
@@ -132,6 +139,7 @@ class ClothSimulator {
   void findNearestBody(float radius, std::vector<BodyContact>& contacts, std::vector<uint8_t>& found) const;
   void applyRestingFriction(float h);
   void collideWithColliders(float h);
+  void collideWithInnerSurface(float fraction);  // cloth_simulator_layers.cpp
   bool limitStretchAfterContacts(float h);
   bool limitStretchKeepingContactsOut(float h, const std::vector<float>& freeInvMass);
   bool limitStretchWhileSewing(float h);
@@ -163,6 +171,7 @@ class ClothSimulator {
   std::vector<glm::vec3> restingSurfaceVelocity_;  // vertices a collision moved in this substep
   std::vector<PrimitiveCollider> colliders_;
   BodyCollider body_;
+  ClothSurfaceCollider* innerSurface_ = nullptr;
   std::vector<float> pendingBody_;
   std::vector<Pin> pins_;
   std::vector<std::pair<uint32_t, uint32_t>> sewing_;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/util/error.h"
+#include "sim/cloth/collision/cloth_surface_collider.h"
 #include "sim/garment/garment_sewing.h"
 
 namespace mq::cloth {
@@ -50,6 +51,12 @@ struct GarmentSimulation::Impl {
   // shape and let the arm out through its open underside.
   std::vector<std::pair<uint32_t, uint32_t>> firstStage;
   bool allSeams = false;
+  // Layering: the garments worn under this one, and their welded surfaces
+  // as one collider (rebuilt when the set of welded solvers changes).
+  std::vector<const GarmentSimulation*> inner;
+  ClothSurfaceCollider innerSurface;
+  std::vector<std::pair<const ClothSimulator*, size_t>> innerSurfaceSources;
+
   float sewingTime = 0.0f;
   float bestGap = 1e30f, bestGapTime = 0.0f;  // for stall detection
 
@@ -73,6 +80,35 @@ struct GarmentSimulation::Impl {
       sim->pinToBodyVertex(running(p.vertex), uint32_t(p.bodyVertex));
     else
       sim->pinVertex(running(p.vertex));
+  }
+
+  // Before each step: the inner garments' surfaces where their last step put them.
+  void updateInnerSurface(float dt) {
+    std::vector<std::pair<const ClothSimulator*, size_t>> sources;
+    if (welded)
+      for (const GarmentSimulation* g : inner)
+        if (g->welded()) sources.push_back({&g->simulator(), g->simulator().positions().size()});
+    if (sources.empty()) {
+      innerSurfaceSources.clear();
+      sim->setInnerSurface(nullptr);
+      return;
+    }
+    std::vector<glm::vec3> positions;
+    for (const auto& [solver, count] : sources)
+      positions.insert(positions.end(), solver->positions().begin(), solver->positions().end());
+    if (sources != innerSurfaceSources) {
+      std::vector<uint32_t> triangles;
+      uint32_t offset = 0;
+      for (const auto& [solver, count] : sources) {
+        for (uint32_t v : solver->triangles()) triangles.push_back(v + offset);
+        offset += uint32_t(count);
+      }
+      innerSurface.setMesh(positions, triangles);
+      innerSurfaceSources = std::move(sources);
+    } else {
+      innerSurface.setTarget(positions, dt);
+    }
+    sim->setInnerSurface(&innerSurface);
   }
 
   void weldNow() {
@@ -179,6 +215,7 @@ void GarmentSimulation::step(float dt, const std::vector<float>* posedBody) {
     if (posedBody->size() != m.body.size()) throw Error("posed body has a different vertex count");
     m.sim->updateBody(*posedBody);
   }
+  m.updateInnerSurface(dt);
   m.sim->step(dt);
   if (posedBody) m.body = *posedBody;
   if (m.welded) return;
@@ -191,6 +228,12 @@ void GarmentSimulation::step(float dt, const std::vector<float>* posedBody) {
     if (!outOfTime) return;
   }
   if (m.stageDone(maxSeamGap(m.sim->positions(), m.mesh.seams)) || outOfTime) m.weldNow();
+}
+
+void GarmentSimulation::setInnerGarments(std::vector<const GarmentSimulation*> inner) {
+  for (const GarmentSimulation* g : inner)
+    if (g == this || !g) throw Error("a garment cannot be worn over itself or over nothing");
+  impl_->inner = std::move(inner);
 }
 
 bool GarmentSimulation::welded() const { return impl_->welded; }

@@ -58,6 +58,14 @@ class GarmentSimulation {
   void pinToBody(uint32_t garmentVertex);   // follows the nearest body vertex
   const std::vector<uint32_t>& pinnedVertices() const;
 
+  // Layering: the garments this one is worn over (sim/garment/garment_layers.h).
+  // One-way: they do not feel this one, so step them first in each frame;
+  // each step then collides this garment with their surfaces as they moved
+  // in their last step. In effect once this garment and an inner one are
+  // welded (sewing panels have open seams, not hems). They must outlive this
+  // simulation or be replaced; {}: none.
+  void setInnerGarments(std::vector<const GarmentSimulation*> inner);
+
   // Advances dt seconds. posedBody (same vertices as the body given at
   // construction) is the body at the end of the step; null: it stays put.
   // Throws ClothDiverged when the state stops being finite.

@@ -1,10 +1,11 @@
 // GUI test of the garment tool (needs X: run under xvfb-run). Drives the
 // real main window: adds a T-shirt from the panel, changes a measurement and
-// undoes it, edits the fabric and the integrator, pins vertices picked with a
-// rubber-band drag in the viewport, keeps them through rebuilds of the mesh,
-// simulates live, bakes a few frames (and cancels a bake), scrubs them, bakes
-// again from the kept sewn garment, adds and edits colliders, saves and
-// reopens the document, and opens a sheet-and-colliders scene with no character.
+// undoes it, edits the fabric, the integrator and the layer, pins vertices
+// picked with a rubber-band drag in the viewport, keeps them through rebuilds
+// of the mesh, simulates live, bakes a few frames (and cancels a bake),
+// scrubs them, bakes again from the kept sewn garment, bakes trousers under
+// and over the shirt, adds and edits colliders, saves and reopens the
+// document, and opens a sheet-and-colliders scene with no character.
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -233,6 +234,21 @@ class GarmentToolTest : public QObject {
     QVERIFY(doc()->sceneSections().cloth.is_null());
   }
 
+  void layerIsShownSavedAndUndoable() {
+    QCOMPARE(panel()->layerField()->value(), 0);
+    QVERIFY(panel()->garmentList()->item(0)->text().contains("layer 0"));
+    const GarmentMesh* mesh = tool_->garmentMesh(0);
+    panel()->layerField()->setValue(2);
+    QCOMPARE(tool_->scene().garments[0].layer, 2);
+    QVERIFY(panel()->garmentList()->item(0)->text().contains("layer 2"));
+    QCOMPARE(doc()->sceneSections().garments[0]["layer"].get<int>(), 2);
+    QCOMPARE(tool_->garmentMesh(0), mesh);  // the layer is not geometry: the mesh is kept
+    undo()->undo();
+    QCOMPARE(tool_->scene().garments[0].layer, 0);
+    QCOMPARE(panel()->layerField()->value(), 0);
+    QVERIFY(!doc()->sceneSections().garments[0].contains("layer"));
+  }
+
   void rubberBandSelectsAndPins() {
     window_->frameAll();
     renderNow();
@@ -441,6 +457,42 @@ class GarmentToolTest : public QObject {
     QCOMPARE(tool_->sewingRuns(), runs + 1);
     undo()->undo();
     QCOMPARE(tool_->scene().garments[0].fabric, std::string("cotton"));
+    doc()->setClip(-1);
+  }
+
+  // Trousers added after the T-shirt: the T-shirt on layer 1 is worn over
+  // them (the trousers as baked alone), on layer 0 under them (the T-shirt
+  // as baked alone): the layer decides which garment gives way.
+  void layersDecideWhichGarmentGivesWayInABake() {
+    const int undoIndex = undo()->index();
+    tool_->setCurrentGarment(0);
+    tool_->clearPins();  // pinned where the earlier tests put them, its hem rides above the trousers
+    QVERIFY(tool_->scene().garments[0].pins.vertices.empty());
+    tool_->addGarment("trousers");
+    QCOMPARE(tool_->garmentCount(), 2);
+    tool_->setParticleDistance(1, 0.04f);  // coarse: a quick sewing
+    tool_->setCurrentGarment(0);
+    panel()->layerField()->setValue(1);
+    QCOMPARE(tool_->scene().garments[0].layer, 1);
+    QVERIFY(panel()->garmentList()->item(0)->text().contains("layer 1"));
+    doc()->setClip(0);
+    const float start = doc()->clipStart();
+    QVERIFY2(tool_->bake(start, start + 0.1f), qPrintable(tool_->lastError()));
+    doc()->setTime(start + 0.1f);
+    const std::vector<float> shirtOver = tool_->shownPositions(0), trousersUnder = tool_->shownPositions(1);
+    tool_->setLayer(0, 0);  // the list order: the trousers over the T-shirt
+    QVERIFY(!tool_->hasBake());
+    const int runs = tool_->sewingRuns();
+    QVERIFY2(tool_->bake(start, start + 0.1f), qPrintable(tool_->lastError()));
+    QCOMPARE(tool_->sewingRuns(), runs);  // the layer is not part of the sewn state
+    doc()->setTime(start + 0.1f);
+    const std::vector<float> shirtUnder = tool_->shownPositions(0), trousersOver = tool_->shownPositions(1);
+    QVERIFY(allFinite(shirtOver) && allFinite(trousersOver));
+    QVERIFY2(maxDifference(shirtOver, shirtUnder) > 2e-3f, "the T-shirt over the trousers did not give way");
+    QVERIFY2(maxDifference(trousersOver, trousersUnder) > 2e-3f, "the trousers over the T-shirt did not give way");
+    undo()->setIndex(undoIndex);
+    QCOMPARE(tool_->garmentCount(), 1);
+    QCOMPARE(tool_->scene().garments[0].layer, 0);
     doc()->setClip(-1);
   }
 

@@ -99,6 +99,17 @@ GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent)
   addRow->addWidget(add_);
   addRow->addWidget(remove_);
   garmentLayout->addLayout(addRow);
+  auto* layerForm = new QFormLayout;
+  layer_ = new QSpinBox;
+  layer_->setRange(0, Garment::kMaxLayer);
+  layer_->setKeyboardTracking(false);
+  layer_->setToolTip(tr("Worn over the garments of lower layers (and those above it in the list on the same "
+                        "layer): it collides with them, they do not feel it"));
+  layerForm->addRow(tr("Layer"), layer_);
+  garmentLayout->addLayout(layerForm);
+  connect(layer_, &QSpinBox::valueChanged, this, [this](int layer) {
+    if (!refreshing_) tool_->setLayer(tool_->currentGarment(), layer);
+  });
   layout->addWidget(garments);
   connect(add_, &QPushButton::clicked, this,
           [this] { tool_->addGarment(typeCombo_->currentData().toString().toStdString()); });
@@ -300,11 +311,17 @@ void GarmentPanel::refresh() {
   {
     const QSignalBlocker block(list_);
     list_->clear();
-    for (const Garment& g : scene.garments) list_->addItem(QString::fromStdString(g.name));
+    for (const Garment& g : scene.garments)
+      list_->addItem(tr("%1 (layer %2)").arg(QString::fromStdString(g.name)).arg(g.layer));
     list_->setCurrentRow(current);
   }
   remove_->setEnabled(current >= 0);
   particleDistance_->setEnabled(current >= 0);
+  layer_->setEnabled(current >= 0);
+  if (current >= 0) {
+    const QSignalBlocker block(layer_);
+    layer_->setValue(scene.garments[current].layer);
+  }
   if (current >= 0) {
     const QSignalBlocker block(particleDistance_);
     particleDistance_->setValue(scene.garments[current].targetEdgeLength * 1000.0);

@@ -1,5 +1,6 @@
 #pragma once
-// The garment tool's dock: the garments (list, add a built-in one, remove),
+// The garment tool's dock: the garments (list with their layers, add a
+// built-in one, remove, the current one's layer),
 // the current garment's measurements (one field per parameter the garment
 // type declares, rebuilt when the type changes), its fabric (preset or
 // values), the simulation (integrator, self collisions, Simulate, Bake clip;
@@ -42,6 +43,7 @@ class GarmentPanel : public QWidget {
   // For tests and scripts.
   QListWidget* garmentList() const { return list_; }
   QComboBox* typeCombo() const { return typeCombo_; }
+  QSpinBox* layerField() const { return layer_; }
   QPushButton* addButton() const { return add_; }
   QComboBox* fabricCombo() const { return fabricCombo_; }
   QComboBox* integratorCombo() const { return integratorCombo_; }
@@ -82,6 +84,7 @@ class GarmentPanel : public QWidget {
   QListWidget* list_;
   QComboBox* typeCombo_;
   QPushButton *add_, *remove_;
+  QSpinBox* layer_;
   QWidget* measurements_;
   QFormLayout* measurementForm_;
   std::vector<QDoubleSpinBox*> measurementFields_;

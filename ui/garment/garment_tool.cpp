@@ -35,6 +35,7 @@
 #include "render/scene_view.h"
 #include "sim/cloth/baked_cloth.h"
 #include "sim/garment/drape_schedule.h"
+#include "sim/garment/garment_layers.h"
 #include "sim/garment/garment_scene.h"
 #include "sim/garment/garment_simulation.h"
 #include "ui/document/editor_document.h"
@@ -92,7 +93,7 @@ std::unique_ptr<cloth::GarmentSimulation> makeSimulation(const GarmentScene& sce
 // What the mesh depends on: the garment without its name, fabric and pins.
 nlohmann::json geometryOf(const Garment& garment) {
   nlohmann::json json = garmentToJson(garment);
-  for (const char* key : {"name", "fabric", "pins"}) json.erase(key);
+  for (const char* key : {"name", "fabric", "pins", "layer"}) json.erase(key);
   return json;
 }
 
@@ -329,6 +330,21 @@ void GarmentTool::setParticleDistance(int garment, float metres, int mergeKey) {
     return;
   }
   edit(after, tr("%1 particle distance").arg(QString::fromStdString(g.name)), mergeKey);
+}
+
+void GarmentTool::setLayer(int garment, int layer) {
+  if (garment < 0 || garment >= garmentCount() || layer < 0 || layer > Garment::kMaxLayer ||
+      scene_.garments[garment].layer == layer)
+    return;
+  GarmentScene after = scene_;
+  after.garments[garment].layer = layer;
+  edit(after, tr("%1 layer %2").arg(QString::fromStdString(after.garments[garment].name)).arg(layer));
+}
+
+std::vector<size_t> GarmentTool::layerOrder() const {
+  std::vector<size_t> order = cloth::layerOrder(scene_.garments);
+  if (sheet_) order.push_back(scene_.garments.size());  // the sheet: on its own, after the garments
+  return order;
 }
 
 void GarmentTool::setFabricPreset(int garment, const std::string& preset) {
@@ -720,7 +736,10 @@ std::string GarmentTool::sewingKey(size_t view) const {
   cloth::writeClothScene(scene_.cloth, cloth, colliders);
   cloth.erase("bake_frames");  // what is baked afterwards, not how the cloth is sewn
   nlohmann::json key = {{"cloth", cloth}, {"colliders", colliders}};
-  if (view < scene_.garments.size()) key["garment"] = garmentToJson(scene_.garments[view]);
+  if (view < scene_.garments.size()) {
+    key["garment"] = garmentToJson(scene_.garments[view]);
+    key["garment"].erase("layer");  // garments sew and drape each on its own (layering starts after)
+  }
   return key.dump() + "|" + bodyKey_;
 }
 
@@ -861,9 +880,20 @@ void GarmentTool::startStep() {
     cloth::GarmentSimulation* simulation;
     cloth::DrapeSchedule* drape;
   };
+  // Inner garments first; a garment is worn over the ones before it once
+  // both are draped (while they sew and drape, the body is in a different
+  // pose for each).
   std::vector<Job> jobs;
-  for (View* view : simulatedViews())
-    if (view->simulation) jobs.push_back({view->simulation.get(), &view->drape});
+  std::vector<const cloth::GarmentSimulation*> draped;
+  const std::vector<View*> views = simulatedViews();
+  for (size_t i : layerOrder()) {
+    View* view = views[i];
+    if (!view->simulation) continue;
+    const bool layered = i < scene_.garments.size() && view->drape.draped();
+    view->simulation->setInnerGarments(layered ? draped : std::vector<const cloth::GarmentSimulation*>{});
+    if (layered) draped.push_back(view->simulation.get());
+    jobs.push_back({view->simulation.get(), &view->drape});
+  }
   if (jobs.empty()) return;
   const float dt = 1.0f / scene_.cloth.fps;
   stepWatcher_.setFuture(QtConcurrent::run([jobs, dt, rest = restBody_, target = posedBody()]() -> QString {
@@ -1011,15 +1041,36 @@ bool settle(GarmentTool::BakeGarment& g, const std::vector<float>& rest, const s
   return true;
 }
 
-// The frames of the clip, the first where the garment is now. False when cancelled.
-bool bakeFrames(cloth::GarmentSimulation& simulation, const std::vector<std::vector<float>>& bodies, float fps,
-                const std::atomic<bool>& cancel, const std::function<void(int)>& stepped, cloth::BakedCloth& baked,
-                std::vector<std::vector<float>>& stretch) {
+// The frames of the clip for every garment, the first where they are now,
+// stepped together in `order` (inner to outer): an outer garment is worn
+// over the ones before it. Before the first frame, when there are layers,
+// kLayerSettleSeconds on the first body resolve where garments that sewed
+// and draped on their own overlap. False when cancelled.
+constexpr float kLayerSettleSeconds = 0.25f;
+
+bool bakeFrames(std::vector<GarmentTool::BakeGarment>& garments, const std::vector<size_t>& order, size_t layered,
+                const std::vector<std::vector<float>>& bodies, float fps, const std::atomic<bool>& cancel,
+                const std::function<void(int)>& stepped, std::vector<cloth::BakedCloth>& baked,
+                std::vector<std::vector<std::vector<float>>>& stretch) {
+  std::vector<const cloth::GarmentSimulation*> inner;
+  for (size_t g : order) {
+    const bool isGarment = g < layered;
+    garments[g].simulation->setInnerGarments(isGarment ? inner : std::vector<const cloth::GarmentSimulation*>{});
+    if (isGarment) inner.push_back(garments[g].simulation.get());
+  }
+  if (inner.size() > 1 && !bodies.empty() && !bodies[0].empty())  // no character: frame 1 is the placed cloth
+    for (int s = 0; s < int(std::ceil(kLayerSettleSeconds * fps)); ++s) {
+      if (cancel) return false;
+      for (size_t g : order) garments[g].simulation->step(1.0f / fps, bodyOrNull(bodies[0]));
+    }
   for (size_t f = 0; f < bodies.size(); ++f) {
     if (cancel) return false;
-    if (f > 0) simulation.step(1.0f / fps, bodyOrNull(bodies[f]));
-    baked.addFrame(simulation.positions());
-    stretch.push_back(simulation.vertexStretch());
+    for (size_t g : order) {
+      cloth::GarmentSimulation& simulation = *garments[g].simulation;
+      if (f > 0) simulation.step(1.0f / fps, bodyOrNull(bodies[f]));
+      baked[g].addFrame(simulation.positions());
+      stretch[g].push_back(simulation.vertexStretch());
+    }
     stepped(int(f) + 1);
   }
   return true;
@@ -1068,7 +1119,8 @@ bool GarmentTool::bake(float from, float to) {
 
   int total = 0;
   std::vector<int> base;  // progress before each garment
-  for (const BakeGarment& g : garments) base.push_back(total), total += g.settleSteps + frames;
+  for (const BakeGarment& g : garments) base.push_back(total), total += g.settleSteps;
+  total += frames * int(garments.size());
   std::atomic<int> done{0};
   cancelBake_ = false;
   baking_ = true;
@@ -1077,25 +1129,30 @@ bool GarmentTool::bake(float from, float to) {
   result->start = start;
   PhaseClock clock;
 
+  const std::vector<size_t> order = layerOrder();
+  const size_t garmentViews = scene_.garments.size();  // the views after them: the sheet
   auto work = [&]() -> QString {
     try {
       clock.restart();
+      // Each garment sews and drapes onto the first frame on its own...
       for (size_t g = 0; g < garments.size(); ++g) {
         BakeGarment& garment = garments[g];
         if (!garment.draped &&
             !settle(garment, restBody_, bodies[0], 1.0f / fps, cancelBake_, [&](int s) { done = base[g] + s; }, clock))
           return QString();
-        clock.restart();
-        cloth::BakedCloth baked(garment.simulation->triangles(), fps);
-        std::vector<std::vector<float>> stretch;
-        const int settled = base[g] + garment.settleSteps;
-        if (!bakeFrames(*garment.simulation, bodies, fps, cancelBake_, [&](int f) { done = settled + f; }, baked,
-                        stretch))
-          return QString();
-        clock.charge(PhaseClock::Frames);
-        result->garments.push_back(std::move(baked));
-        result->stretch.push_back(std::move(stretch));
       }
+      // ... then they go through the clip together, in layers.
+      clock.restart();
+      std::vector<cloth::BakedCloth> baked;
+      for (const BakeGarment& g : garments) baked.emplace_back(g.simulation->triangles(), fps);
+      std::vector<std::vector<std::vector<float>>> stretch(garments.size());
+      const int settled = total - frames * int(garments.size());
+      if (!bakeFrames(garments, order, garmentViews, bodies, fps, cancelBake_,
+                      [&](int f) { done = settled + f * int(garments.size()); }, baked, stretch))
+        return QString();
+      clock.charge(PhaseClock::Frames);
+      result->garments = std::move(baked);
+      result->stretch = std::move(stretch);
       return QString();
     } catch (const std::exception& e) {
       return QString::fromStdString(e.what());

@@ -100,6 +100,9 @@ class GarmentTool : public QObject {
   void setMeasurement(int garment, const std::string& name, float value, int mergeKey = 0);
   // The cloth resolution: the target edge length of the garment's mesh (metres).
   void setParticleDistance(int garment, float metres, int mergeKey = 0);
+  // Layering: the garment is worn over those of lower layers (and those
+  // before it in the list on its own layer); Simulate and Bake step them inner to outer.
+  void setLayer(int garment, int layer);
   void setFabricPreset(int garment, const std::string& preset);
   void setFabric(int garment, const Fabric& fabric, int mergeKey = 0);
   void setIntegrator(cloth::IntegratorKind integrator);
@@ -224,6 +227,7 @@ class GarmentTool : public QObject {
   void onStepFinished();
   std::vector<float> posedBody() const;
   std::vector<View*> simulatedViews() const;  // the garments, then the sheet
+  std::vector<size_t> layerOrder() const;     // indices of simulatedViews(), inner to outer, the sheet last
   std::vector<BakeGarment> prepareBake(const std::vector<float>& firstBody, float fps) const;
   std::vector<BakeGarment> prepareBakeWithoutClip() const;
   std::unique_ptr<cloth::GarmentSimulation> makeViewSimulation(size_t view) const;
