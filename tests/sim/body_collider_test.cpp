@@ -164,7 +164,8 @@ TEST(BodyCollider, QueriesFromTheLastQueryAnswerAsAFreshSearch) {
       for (size_t i = 0; i < points.size(); ++i) {
         // Every third round from the same point; otherwise a few mm on, or a jump.
         if (round % 3 != 2) points[i] += round == 4 ? glm::vec3(where(random), 0, 0) : glm::vec3(step(random), step(random), step(random));
-        const float radius = round == 0 ? 0.05f : 0.02f;  // the wide one proves the narrow ones' misses
+        // The wide ones prove the narrow ones' misses, and answer them from the same point.
+        const float radius = round == 0 || round == 5 ? 0.05f : 0.02f;
         BodyContact fresh, kept;
         const bool hit = body.nearestContact(points[i], fresh, radius);
         ++queries;
@@ -188,6 +189,27 @@ TEST(BodyCollider, QueriesFromTheLastQueryAnswerAsAFreshSearch) {
   EXPECT_GT(found, 1000);
   EXPECT_GT(provenEmpty, 500);                   // far points moved a little: no search
   EXPECT_LT(searched, queries - provenEmpty - 800);  // unmoved points: the answer again
+}
+
+// An answer kept from the same point takes the body's velocity of the new
+// frame (setTarget() changes it without moving the body).
+TEST(BodyCollider, AKeptAnswerTakesTheBodysNewVelocity) {
+  std::vector<float> positions, target;
+  std::vector<uint32_t> triangles;
+  bumpySphere(0.0f, positions, triangles);
+  BodyCollider body;
+  body.setMesh(positions, triangles, 0.02f);
+  const glm::vec3 p(0.0f, 0.11f, 0.0f);
+  BodyQuery last;
+  BodyContact contact;
+  for (float lift : {0.01f, 0.03f}) {
+    target = positions;
+    for (size_t i = 1; i < target.size(); i += 3) target[i] += lift;
+    body.setTarget(target, 0.1f);
+    ASSERT_TRUE(body.nearestContact(p, contact, 0.02f, last));
+    EXPECT_NEAR(contact.velocity.y, lift / 0.1f, 1e-5f);
+  }
+  EXPECT_EQ(last.searches, 1u);
 }
 
 // A segment without a hit is not tested again in the same move, but is in

@@ -176,6 +176,10 @@ glm::vec3 BodyCollider::pseudoNormal(uint32_t t, const glm::vec3& w) const {
   return sum;
 }
 
+inline glm::vec3 BodyCollider::velocityAt(uint32_t t, const glm::vec3& w) const {
+  return w.x * velocity_[triangles_[3 * t]] + w.y * velocity_[triangles_[3 * t + 1]] + w.z * velocity_[triangles_[3 * t + 2]];
+}
+
 inline void BodyCollider::considerTriangle(uint32_t t, const glm::vec3& p, Nearest& best) const {
   const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
   const glm::vec3 w = closestTriangleWeights(p, current_[a], current_[b], current_[c]);
@@ -187,7 +191,7 @@ inline void BodyCollider::considerTriangle(uint32_t t, const glm::vec3& p, Neare
   best = {t, w, d2};
 }
 
-bool BodyCollider::nearestContact(const glm::vec3& p, BodyContact& contact, float radius, int32_t hint) const {
+BodyCollider::Nearest BodyCollider::searchNearest(const glm::vec3& p, float radius, int32_t hint) const {
   // Squared distances only during the search; the contact of the nearest
   // triangle after. Any triangle's distance bounds the nearest one's, so the
   // hint changes what is visited, not the answer.
@@ -195,16 +199,30 @@ bool BodyCollider::nearestContact(const glm::vec3& p, BodyContact& contact, floa
   best.distance2 = radius * radius;
   if (hint >= 0 && size_t(hint) < triangles_.size() / 3) considerTriangle(uint32_t(hint), p, best);
   tree_.nearest(p, best.distance2, [&](uint32_t t) { considerTriangle(t, p, best); });
-  return contactAt(p, best, contact);
+  return best;
+}
+
+bool BodyCollider::nearestContact(const glm::vec3& p, BodyContact& contact, float radius, int32_t hint) const {
+  return contactAt(p, searchNearest(p, radius, hint), contact);
 }
 
 bool BodyCollider::nearestContact(const glm::vec3& p, BodyContact& contact, float radius, BodyQuery& last) const {
-  if (last.pose == pose_ && last.point == p && last.radius == radius) {
-    if (last.found) contact = last.contact;
-    return last.found;
+  // From the same point at the same pose: the nearest triangle is the one
+  // found (its squared distance decides whether it is within this radius),
+  // or none is nearer than the last radius.
+  if (last.pose == pose_ && last.point == p && (last.found || radius <= last.radius)) {
+    const bool within = last.found && last.distance2 < radius * radius;
+    if (!within) return false;
+    contact = last.contact;
+    // The body's velocity may have changed since (setTarget()), its positions not.
+    contact.velocity = velocityAt(uint32_t(contact.triangle), last.weights);
+    return true;
   }
   ++last.searches;
-  last.found = nearestContact(p, last.contact, radius, last.contact.triangle);
+  const Nearest best = searchNearest(p, radius, last.contact.triangle);
+  last.found = contactAt(p, best, last.contact);
+  last.distance2 = best.distance2;
+  last.weights = best.weights;
   last.pose = pose_;
   last.point = p;
   last.radius = radius;
@@ -241,7 +259,7 @@ bool BodyCollider::contactAt(const glm::vec3& p, const Nearest& best, BodyContac
   // Out of the body is along the shortest way to the surface.
   if (d > 1e-6f) contact.normal = inside ? (q - p) / d : (p - q) / d;
   else contact.normal = glm::length(side) > 0.0f ? glm::normalize(side) : unitFaceNormal(uint32_t(nearest));
-  contact.velocity = weights.x * velocity_[a] + weights.y * velocity_[b] + weights.z * velocity_[c];
+  contact.velocity = velocityAt(uint32_t(nearest), weights);
   contact.triangle = int32_t(nearest);
   return true;
 }

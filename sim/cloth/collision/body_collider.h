@@ -36,6 +36,8 @@ struct BodyQuery {
   float radius = 0.0f;
   bool found = false;
   BodyContact contact;  // when found
+  float distance2 = 0.0f;      // when found: the nearest triangle's squared distance, as the search had it
+  glm::vec3 weights{0.0f};     // ... and the contact point's barycentric weights on it
   uint32_t queries = 0, searches = 0;  // counts for the stats: queries asked, and those that searched the body
   // The point's last segment without a hit (firstHitAlong()), and the move it was tested in.
   uint64_t missMove = 0;
@@ -71,8 +73,8 @@ class BodyCollider {
   // near, since its distance bounds the search from the start.
   bool nearestContact(const glm::vec3& p, BodyContact& contact, float radius, int32_t hint) const;
   // ... the same answer, from the point's last query `last` (updated): its
-  // answer again when the point has not moved (same pose and radius), its
-  // nearest triangle as the hint otherwise.
+  // answer again when the point has not moved (same pose; within this
+  // radius or not), its nearest triangle as the hint otherwise.
   bool nearestContact(const glm::vec3& p, BodyContact& contact, float radius, BodyQuery& last) const;
   // Whether `last` proves, without a search, that nothing is within `radius`
   // of p (p is farther from its point than the surface was, less the radius).
@@ -106,6 +108,8 @@ class BodyCollider {
   // Takes triangle t as `best` when it is nearer to p (of triangles equally
   // near, the lowest index wins: the answer does not depend on the order).
   void considerTriangle(uint32_t t, const glm::vec3& p, Nearest& best) const;
+  glm::vec3 velocityAt(uint32_t t, const glm::vec3& w) const;
+  Nearest searchNearest(const glm::vec3& p, float radius, int32_t hint) const;
   bool contactAt(const glm::vec3& p, const Nearest& best, BodyContact& contact) const;
 
   std::vector<uint32_t> triangles_;
