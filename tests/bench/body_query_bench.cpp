@@ -8,6 +8,11 @@
 //                                 the widest approach radius)
 //   BM_BodyNearestHinted/<mm>     the same, given the nearest triangle of the
 //                                 point 2 mm away (a cloth vertex's last query)
+//   BM_BodyNearestKept            a cloth vertex's queries in a substep, each
+//                                 through its last one (BodyQuery): at the
+//                                 new pose (hint: its triangle of the last
+//                                 pose), 2 mm on, again from there, and from
+//                                 there with the 80 mm approach radius
 //   BM_BodyFirstHit               firstHitAlong over a 1 cm move of each point
 //
 //   mannequin-bench --benchmark_filter=Body
@@ -97,6 +102,24 @@ void BM_BodyNearestHinted(benchmark::State& state) {
   });
 }
 BENCHMARK(BM_BodyNearestHinted)->Arg(20)->Arg(80)->Unit(benchmark::kMillisecond);
+
+void BM_BodyNearestKept(benchmark::State& state) {
+  const BodyScene& s = walkingBody();
+  std::vector<BodyQuery> last(s.points.size());
+  for (size_t i = 0; i < s.points.size(); ++i) {
+    last[i].contact.triangle = s.hints[i];
+    last[i].pose = 0;  // of another pose
+  }
+  const size_t n = s.points.size();
+  timeQueries(state, 4 * n, [&](size_t k) {
+    const size_t i = k % n, round = k / n;
+    BodyContact contact;
+    if (round == 0) last[i].pose = 0;
+    const glm::vec3 p = round == 0 ? s.points[i] - 0.2f * s.moves[i] : s.points[i];
+    return s.body.nearestContact(p, contact, round == 3 ? 0.08f : 0.02f, last[i]);
+  });
+}
+BENCHMARK(BM_BodyNearestKept)->Unit(benchmark::kMillisecond);
 
 void BM_BodyFirstHit(benchmark::State& state) {
   const BodyScene& s = walkingBody();
