@@ -84,6 +84,7 @@ ClothSimulator::ClothSimulator(const ClothMesh& mesh, const ClothTopology& topol
   state_ = initialState(mesh, topology_, fabric_);
   bodyFeatures_ = std::make_unique<BodyFeatureContact>(triangles_, state_.x);
   freeInvMass_ = state_.invMass;
+  bodyQueries_.resize(state_.size());
   updateStats();
 }
 
@@ -168,12 +169,24 @@ int ClothSimulator::substepsForBodySpeed(float dt) {
   return std::clamp(int(std::ceil(fastest * dt / kApproachPerSubstep)), 1, kMaxBodySpeedSubsteps);
 }
 
-void ClothSimulator::findNearestBody(float radius, std::vector<BodyContact>& contacts, std::vector<uint8_t>& found) const {
+std::pair<long long, long long> ClothSimulator::bodyQueryCounts() const {
+  long long queries = 0, searches = 0;
+  for (const BodyQuery& q : bodyQueries_) queries += q.queries, searches += q.searches;
+  return {queries, searches};
+}
+
+bool ClothSimulator::nearestBodyContact(size_t i, float radius, BodyContact& contact) {
+  BodyQuery& last = bodyQueries_[i];
+  ++last.queries;
+  return !body_.provesNoneWithin(last, state_.x[i], radius) && body_.nearestContact(state_.x[i], contact, radius, last);
+}
+
+void ClothSimulator::findNearestBody(float radius, std::vector<BodyContact>& contacts, std::vector<uint8_t>& found) {
   contacts.resize(state_.size());
   found.assign(state_.size(), 0);
   forRange(state_.size(), [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i)
-      found[i] = freeInvMass_[i] != 0.0f && body_.nearestContact(state_.x[i], contacts[i], radius);
+      found[i] = freeInvMass_[i] != 0.0f && nearestBodyContact(i, radius, contacts[i]);
   });
 }
 
@@ -188,6 +201,7 @@ void ClothSimulator::step(float dt) {
   }
   // Adaptive refinement: when the elongation limit could not hold a step
   // (a violent impact), the step is redone with twice the substeps.
+  const auto [queriesBefore, searchesBefore] = bodyQueryCounts();
   approachReach_ = 0.0f;
   const int baseSubsteps = std::max(substepsFor(dt), settings_.substeps > 0 ? 1 : substepsForBodySpeed(dt));
   int substeps = baseSubsteps;
@@ -205,6 +219,9 @@ void ClothSimulator::step(float dt) {
     substeps *= 2;
   }
   stats_.substeps = substeps;
+  const auto [queriesAfter, searchesAfter] = bodyQueryCounts();
+  stats_.bodyQueries = queriesAfter - queriesBefore;
+  stats_.bodySearches = searchesAfter - searchesBefore;
   ++stats_.steps;
   stats_.simulatedTime += dt;
   updateStats();
@@ -412,7 +429,7 @@ void ClothSimulator::findRestingContacts() {
         if (c.signedDistance(state_.x[i], n) < reach) normal = n;
       }
       BodyContact contact;
-      if (!body_.empty() && body_.nearestContact(state_.x[i], contact) && contact.signedDistance < reach) {
+      if (!body_.empty() && nearestBodyContact(i, body_.searchRadius(), contact) && contact.signedDistance < reach) {
         normal = contact.normal;
         speed = glm::dot(contact.velocity, normal);
         surfaceVelocity = contact.velocity;
@@ -525,11 +542,11 @@ void ClothSimulator::collideWithColliders(float h) {
       }
       if (body_.empty()) continue;
       BodyContact contact;
-      if (body_.firstHitAlong(stepStart_[i], state_.x[i], contact)) {
+      if (body_.firstHitAlong(stepStart_[i], state_.x[i], contact, bodyQueries_[i])) {
         state_.x[i] = contact.point;
         touched_[i] = body_.moved() ? kSweptContact : std::max(touched_[i], kContact);
       }
-      if (body_.nearestContact(state_.x[i], contact) && contact.signedDistance < thickness) {
+      if (nearestBodyContact(i, body_.searchRadius(), contact) && contact.signedDistance < thickness) {
         touched_[i] = std::max(touched_[i], kContact);
         respondToContact(state_.x[i], state_.v[i], contact.normal, thickness - contact.signedDistance,
                          contact.velocity, settings_.friction);

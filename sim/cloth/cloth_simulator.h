@@ -52,6 +52,8 @@ struct ClothStats {
   int selfContacts = 0;          // cloth-cloth pairs closer than the thickness in the last step()
   int bodyFeatureContacts = 0;   // body vertices under (or through) cloth triangles in the last step()
   int stretchPasses = 0;         // elongation-limit passes in the last step()
+  long long bodyQueries = 0;     // nearest-point body queries of cloth vertices in the last step()
+  long long bodySearches = 0;    // ... of them, those that searched the body (the others: a vertex's last query sufficed)
   long long steps = 0;
   double simulatedTime = 0.0;
 };
@@ -136,7 +138,11 @@ class ClothSimulator {
   void findApproachingBody(float h, bool firstOfStep);
   int substepsForBodySpeed(float dt);
   // The nearest body contact of each free vertex within `radius` (found[i] = 0: none).
-  void findNearestBody(float radius, std::vector<BodyContact>& contacts, std::vector<uint8_t>& found) const;
+  void findNearestBody(float radius, std::vector<BodyContact>& contacts, std::vector<uint8_t>& found);
+  // The nearest body contact of vertex i within `radius` (false: none),
+  // through its last query (bodyQueries_[i]).
+  bool nearestBodyContact(size_t i, float radius, BodyContact& contact);
+  std::pair<long long, long long> bodyQueryCounts() const;  // summed over bodyQueries_: queries, searches
   void applyRestingFriction(float h);
   void collideWithColliders(float h);
   void collideWithInnerSurface(float fraction);  // cloth_simulator_layers.cpp
@@ -167,6 +173,11 @@ class ClothSimulator {
   // substep; the other substeps' in substepContacts_.
   std::vector<BodyContact> stepStartContacts_, substepContacts_;
   std::vector<uint8_t> stepStartFound_, substepFound_;
+  // Each vertex's last body query (BodyQuery): a query at the same body pose
+  // from the same point is answered by it, one whose point moved less than
+  // its distance to the surface less the radius needs no search, and the
+  // others start from its nearest triangle.
+  std::vector<BodyQuery> bodyQueries_;
   float approachReach_ = 0.0f;
   std::vector<glm::vec3> restingSurfaceVelocity_;  // vertices a collision moved in this substep
   std::vector<PrimitiveCollider> colliders_;

@@ -6,6 +6,13 @@
 //
 //   BM_BodyNearest/<radius mm>    nearestContact (20: the contact radius, 80:
 //                                 the widest approach radius)
+//   BM_BodyNearestHinted/<mm>     the same, given the nearest triangle of the
+//                                 point 2 mm away (a cloth vertex's last query)
+//   BM_BodyNearestKept            a cloth vertex's queries in a substep, each
+//                                 through its last one (BodyQuery): at the
+//                                 new pose (hint: its triangle of the last
+//                                 pose), 2 mm on, again from there, and from
+//                                 there with the 80 mm approach radius
 //   BM_BodyFirstHit               firstHitAlong over a 1 cm move of each point
 //
 //   mannequin-bench --benchmark_filter=Body
@@ -24,6 +31,7 @@ using namespace mq::cloth;
 struct BodyScene {
   BodyCollider body;
   std::vector<glm::vec3> points, moves;
+  std::vector<int32_t> hints;  // nearest triangle of each point moved back by a fifth of its move
 };
 
 const BodyScene& walkingBody() {
@@ -48,6 +56,8 @@ const BodyScene& walkingBody() {
       const float offset = next() < 0.05f ? -0.005f : 0.03f * next();
       s.points.push_back(p + offset * n);
       s.moves.push_back(0.01f * glm::normalize(glm::vec3(next() - 0.5f, next() - 0.5f, next() - 0.5f)));
+      BodyContact last;
+      s.hints.push_back(s.body.nearestContact(s.points.back() - 0.2f * s.moves.back(), last, 0.08f) ? last.triangle : -1);
     }
     return s;
   }();
@@ -82,6 +92,34 @@ void BM_BodyNearest(benchmark::State& state) {
   });
 }
 BENCHMARK(BM_BodyNearest)->Arg(20)->Arg(80)->Unit(benchmark::kMillisecond);
+
+void BM_BodyNearestHinted(benchmark::State& state) {
+  const BodyScene& s = walkingBody();
+  const float radius = 0.001f * float(state.range(0));
+  timeQueries(state, s.points.size(), [&](size_t i) {
+    BodyContact contact;
+    return s.body.nearestContact(s.points[i], contact, radius, s.hints[i]);
+  });
+}
+BENCHMARK(BM_BodyNearestHinted)->Arg(20)->Arg(80)->Unit(benchmark::kMillisecond);
+
+void BM_BodyNearestKept(benchmark::State& state) {
+  const BodyScene& s = walkingBody();
+  std::vector<BodyQuery> last(s.points.size());
+  for (size_t i = 0; i < s.points.size(); ++i) {
+    last[i].contact.triangle = s.hints[i];
+    last[i].pose = 0;  // of another pose
+  }
+  const size_t n = s.points.size();
+  timeQueries(state, 4 * n, [&](size_t k) {
+    const size_t i = k % n, round = k / n;
+    BodyContact contact;
+    if (round == 0) last[i].pose = 0;
+    const glm::vec3 p = round == 0 ? s.points[i] - 0.2f * s.moves[i] : s.points[i];
+    return s.body.nearestContact(p, contact, round == 3 ? 0.08f : 0.02f, last[i]);
+  });
+}
+BENCHMARK(BM_BodyNearestKept)->Unit(benchmark::kMillisecond);
 
 void BM_BodyFirstHit(benchmark::State& state) {
   const BodyScene& s = walkingBody();

@@ -134,5 +134,106 @@ TEST(BodyCollider, NearestContactIsTheNearestOfAllTriangles) {
   EXPECT_GT(found, 1000);
 }
 
+bool sameContact(const BodyContact& a, const BodyContact& b) {
+  return a.point == b.point && a.normal == b.normal && a.velocity == b.velocity &&
+         a.signedDistance == b.signedDistance && a.triangle == b.triangle;
+}
+
+// A point's queries through its last one (BodyQuery) answer exactly as a
+// fresh search, bit for bit: from the same point (reused), after small and
+// large moves (the last triangle as the hint; far enough from the surface
+// for the radius: no search at all), and after the body moved (the last
+// query no longer holds).
+TEST(BodyCollider, QueriesFromTheLastQueryAnswerAsAFreshSearch) {
+  std::vector<float> positions, target;
+  std::vector<uint32_t> triangles;
+  bumpySphere(0.0f, positions, triangles);
+  bumpySphere(0.7f, target, triangles);
+  BodyCollider body;
+  body.setMesh(positions, triangles, 0.02f);
+  body.setTarget(target, 1.0f / 30.0f);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<float> where(-0.13f, 0.13f), step(-0.004f, 0.004f);
+  std::vector<BodyQuery> last(500);
+  std::vector<glm::vec3> points(last.size());
+  for (glm::vec3& p : points) p = {where(random), where(random), where(random)};
+  long long queries = 0, searched = 0, provenEmpty = 0, found = 0;
+  for (float fraction : {0.0f, 0.5f, 1.0f}) {
+    body.moveTo(fraction);
+    for (int round = 0; round < 6; ++round)
+      for (size_t i = 0; i < points.size(); ++i) {
+        // Every third round from the same point; otherwise a few mm on, or a jump.
+        if (round % 3 != 2) points[i] += round == 4 ? glm::vec3(where(random), 0, 0) : glm::vec3(step(random), step(random), step(random));
+        // The wide ones prove the narrow ones' misses, and answer them from the same point.
+        const float radius = round == 0 || round == 5 ? 0.05f : 0.02f;
+        BodyContact fresh, kept;
+        const bool hit = body.nearestContact(points[i], fresh, radius);
+        ++queries;
+        if (body.provesNoneWithin(last[i], points[i], radius)) {
+          ++provenEmpty;
+          ASSERT_FALSE(hit) << "proven empty, yet a contact at " << fresh.signedDistance;
+          continue;
+        }
+        const uint32_t before = last[i].searches;
+        ASSERT_EQ(body.nearestContact(points[i], kept, radius, last[i]), hit);
+        searched += last[i].searches - before;
+        if (!hit) continue;
+        ++found;
+        EXPECT_TRUE(sameContact(fresh, kept)) << "query " << queries;
+        // Any triangle as the hint: the same answer.
+        BodyContact hinted;
+        ASSERT_TRUE(body.nearestContact(points[i], hinted, radius, int32_t(random() % (triangles.size() / 3))));
+        EXPECT_TRUE(sameContact(fresh, hinted));
+      }
+  }
+  EXPECT_GT(found, 1000);
+  EXPECT_GT(provenEmpty, 500);                   // far points moved a little: no search
+  EXPECT_LT(searched, queries - provenEmpty - 800);  // unmoved points: the answer again
+}
+
+// An answer kept from the same point takes the body's velocity of the new
+// frame (setTarget() changes it without moving the body).
+TEST(BodyCollider, AKeptAnswerTakesTheBodysNewVelocity) {
+  std::vector<float> positions, target;
+  std::vector<uint32_t> triangles;
+  bumpySphere(0.0f, positions, triangles);
+  BodyCollider body;
+  body.setMesh(positions, triangles, 0.02f);
+  const glm::vec3 p(0.0f, 0.11f, 0.0f);
+  BodyQuery last;
+  BodyContact contact;
+  for (float lift : {0.01f, 0.03f}) {
+    target = positions;
+    for (size_t i = 1; i < target.size(); i += 3) target[i] += lift;
+    body.setTarget(target, 0.1f);
+    ASSERT_TRUE(body.nearestContact(p, contact, 0.02f, last));
+    EXPECT_NEAR(contact.velocity.y, lift / 0.1f, 1e-5f);
+  }
+  EXPECT_EQ(last.searches, 1u);
+}
+
+// A segment without a hit is not tested again in the same move, but is in
+// the next one (where the body moved across it).
+TEST(BodyCollider, FirstHitAlongRetestsASegmentAfterTheBodyMoved) {
+  std::vector<float> positions, target;
+  std::vector<uint32_t> triangles;
+  bumpySphere(0.0f, positions, triangles);
+  target = positions;
+  for (size_t i = 0; i < target.size(); i += 3) target[i] += 0.1f;  // the sphere moves 10 cm along +x
+  BodyCollider body;
+  body.setMesh(positions, triangles, 0.02f);
+  // A still point 2 cm outside the sphere's +x side, in its way.
+  const glm::vec3 p(0.14f, 0.0f, 0.0f);
+  BodyQuery last;
+  BodyContact contact;
+  EXPECT_FALSE(body.firstHitAlong(p, p, contact, last));
+  EXPECT_FALSE(body.firstHitAlong(p, p, contact, last));
+  body.setTarget(target, 1.0f / 30.0f);
+  body.moveTo(1.0f);
+  EXPECT_TRUE(body.firstHitAlong(p, p, contact, last));
+  BodyContact fresh;
+  EXPECT_TRUE(body.firstHitAlong(p, p, fresh));
+}
+
 }  // namespace
 }  // namespace mq::cloth

@@ -97,6 +97,27 @@ TEST(ClothCollision, AMovingBodyCarriesTheClothWithoutPenetration) {
   EXPECT_GT(sim.stats().boundsMax.y, 0.7f);  // lifted with the body
 }
 
+// Of a step's body queries, those from a vertex that has not moved since its
+// last query at the same body pose need no search (collisions run twice a
+// substep; most of the sheet is still by the second).
+TEST(ClothCollision, StepsCountTheirBodyQueriesAndSearches) {
+  std::vector<float> rest;
+  std::vector<uint32_t> triangles;
+  uvSphere(0.3f, 32, 16, rest, triangles);
+  ClothSimulator sim(test::horizontalSheetMesh(20, 0.8f, {0, 0.32f, 0}), fabricPreset("denim"), ClothSettings{});
+  sim.setBody(rest, triangles);
+  for (int frame = 0; frame < 12; ++frame) {
+    std::vector<float> posed = rest;
+    for (size_t i = 1; i < posed.size(); i += 3) posed[i] += 0.1f * float(frame + 1) / 12.0f;
+    sim.updateBody(posed);
+    sim.step(1.0f / 24.0f);
+    const long long vertices = (long long)sim.positions().size();
+    EXPECT_GE(sim.stats().bodyQueries, 3 * vertices * sim.stats().substeps);  // resting contacts, collisions twice
+    EXPECT_GT(sim.stats().bodySearches, 0);
+    EXPECT_LT(sim.stats().bodySearches, sim.stats().bodyQueries);
+  }
+}
+
 // The penetration count is taken when asked, for the cloth as it is then:
 // after a step, after the state was edited, after a collider was added.
 TEST(ClothCollision, PenetratingVerticesCountsTheClothAsItIsNow) {

@@ -12,6 +12,9 @@ namespace mq::cloth {
 namespace {
 
 constexpr float kBoxSlack = 1e-5f;  // m: triangle boxes grown by this, against rounding
+// m: rounding allowance of the distance bounds of a point's last query
+// (positions are exact to ~1e-7 m; a looser bound only means a search).
+constexpr float kBoundSlack = 1e-5f;
 
 std::vector<glm::vec3> toVec3(const std::vector<float>& flat) {
   std::vector<glm::vec3> out(flat.size() / 3);
@@ -56,6 +59,8 @@ void BodyCollider::setMesh(const std::vector<float>& positions, const std::vecto
   velocity_.assign(n, glm::vec3(0.0f));
   searchRadius_ = searchRadius;
   tree_.build(triangleBoxes(current_, triangles_, kBoxSlack));
+  ++pose_;
+  ++move_;
   sweptTree_ = tree_;
 }
 
@@ -80,6 +85,8 @@ void BodyCollider::moveTo(float fraction) {
     moved2 = std::max(moved2, glm::dot(d, d));
   }
   maxDisplacement_ = std::sqrt(moved2);
+  if (moved2 > 0.0f) ++pose_;
+  ++move_;
   // nearestContact() needs the triangles' boxes now; firstHitAlong() each
   // box extended by that box moved back by the triangle's mean displacement
   // in this move: it meets a triangle at a point p of it now with
@@ -169,26 +176,79 @@ glm::vec3 BodyCollider::pseudoNormal(uint32_t t, const glm::vec3& w) const {
   return sum;
 }
 
-bool BodyCollider::nearestContact(const glm::vec3& p, BodyContact& contact, float radius) const {
-  float best2 = radius * radius;
-  int64_t nearest = -1;
-  glm::vec3 weights(0.0f);
+inline glm::vec3 BodyCollider::velocityAt(uint32_t t, const glm::vec3& w) const {
+  return w.x * velocity_[triangles_[3 * t]] + w.y * velocity_[triangles_[3 * t + 1]] + w.z * velocity_[triangles_[3 * t + 2]];
+}
+
+inline void BodyCollider::considerTriangle(uint32_t t, const glm::vec3& p, Nearest& best) const {
+  const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
+  const glm::vec3 w = closestTriangleWeights(p, current_[a], current_[b], current_[c]);
+  const glm::vec3 offset = p - (w.x * current_[a] + w.y * current_[b] + w.z * current_[c]);
+  const float d2 = glm::dot(offset, offset);
+  if (d2 > best.distance2 || (d2 == best.distance2 && (best.triangle < 0 || t > best.triangle))) return;
+  const glm::vec3 faceNormal = glm::cross(current_[b] - current_[a], current_[c] - current_[a]);
+  if (!(glm::dot(faceNormal, faceNormal) > 0.0f)) return;
+  best = {t, w, d2};
+}
+
+BodyCollider::Nearest BodyCollider::searchNearest(const glm::vec3& p, float radius, int32_t hint) const {
   // Squared distances only during the search; the contact of the nearest
-  // triangle after. Of triangles equally near (a shared edge or vertex) the
-  // lowest index wins, so the answer does not depend on the visiting order.
-  tree_.nearest(p, best2, [&](uint32_t t) {
-    const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
-    const glm::vec3 w = closestTriangleWeights(p, current_[a], current_[b], current_[c]);
-    const glm::vec3 offset = p - (w.x * current_[a] + w.y * current_[b] + w.z * current_[c]);
-    const float d2 = glm::dot(offset, offset);
-    if (d2 > best2 || (d2 == best2 && (nearest < 0 || t > nearest))) return;
-    const glm::vec3 faceNormal = glm::cross(current_[b] - current_[a], current_[c] - current_[a]);
-    if (!(glm::dot(faceNormal, faceNormal) > 0.0f)) return;
-    best2 = d2;
-    nearest = t;
-    weights = w;
-  });
-  if (nearest < 0) return false;
+  // triangle after. Any triangle's distance bounds the nearest one's, so the
+  // hint changes what is visited, not the answer.
+  Nearest best;
+  best.distance2 = radius * radius;
+  if (hint >= 0 && size_t(hint) < triangles_.size() / 3) considerTriangle(uint32_t(hint), p, best);
+  tree_.nearest(p, best.distance2, [&](uint32_t t) { considerTriangle(t, p, best); });
+  return best;
+}
+
+bool BodyCollider::nearestContact(const glm::vec3& p, BodyContact& contact, float radius, int32_t hint) const {
+  return contactAt(p, searchNearest(p, radius, hint), contact);
+}
+
+bool BodyCollider::nearestContact(const glm::vec3& p, BodyContact& contact, float radius, BodyQuery& last) const {
+  // From the same point at the same pose: the nearest triangle is the one
+  // found (its squared distance decides whether it is within this radius),
+  // or none is nearer than the last radius.
+  if (last.pose == pose_ && last.point == p && (last.found || radius <= last.radius)) {
+    const bool within = last.found && last.distance2 < radius * radius;
+    if (!within) return false;
+    contact = last.contact;
+    // The body's velocity may have changed since (setTarget()), its positions not.
+    contact.velocity = velocityAt(uint32_t(contact.triangle), last.weights);
+    return true;
+  }
+  ++last.searches;
+  const Nearest best = searchNearest(p, radius, last.contact.triangle);
+  last.found = contactAt(p, best, last.contact);
+  last.distance2 = best.distance2;
+  last.weights = best.weights;
+  last.pose = pose_;
+  last.point = p;
+  last.radius = radius;
+  if (last.found) contact = last.contact;
+  return last.found;
+}
+
+bool BodyCollider::provesNoneWithin(const BodyQuery& last, const glm::vec3& p, float radius) const {
+  if (last.pose != pose_) return false;
+  const float nearest = last.found ? std::abs(last.contact.signedDistance) : last.radius;  // from last.point, at least
+  return nearest - glm::length(p - last.point) - kBoundSlack > radius;
+}
+
+bool BodyCollider::firstHitAlong(const glm::vec3& from, const glm::vec3& to, BodyContact& contact, BodyQuery& last) const {
+  if (last.missMove == move_ && last.missFrom == from && last.missTo == to) return false;
+  if (firstHitAlong(from, to, contact)) return true;
+  last.missMove = move_;
+  last.missFrom = from;
+  last.missTo = to;
+  return false;
+}
+
+bool BodyCollider::contactAt(const glm::vec3& p, const Nearest& best, BodyContact& contact) const {
+  if (best.triangle < 0) return false;
+  const int64_t nearest = best.triangle;
+  const glm::vec3 weights = best.weights;
   const uint32_t a = triangles_[3 * nearest], b = triangles_[3 * nearest + 1], c = triangles_[3 * nearest + 2];
   const glm::vec3 q = weights.x * current_[a] + weights.y * current_[b] + weights.z * current_[c];
   const glm::vec3 side = pseudoNormal(uint32_t(nearest), weights);
@@ -199,7 +259,8 @@ bool BodyCollider::nearestContact(const glm::vec3& p, BodyContact& contact, floa
   // Out of the body is along the shortest way to the surface.
   if (d > 1e-6f) contact.normal = inside ? (q - p) / d : (p - q) / d;
   else contact.normal = glm::length(side) > 0.0f ? glm::normalize(side) : unitFaceNormal(uint32_t(nearest));
-  contact.velocity = weights.x * velocity_[a] + weights.y * velocity_[b] + weights.z * velocity_[c];
+  contact.velocity = velocityAt(uint32_t(nearest), weights);
+  contact.triangle = int32_t(nearest);
   return true;
 }
 

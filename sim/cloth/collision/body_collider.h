@@ -24,6 +24,24 @@ namespace mq::cloth {
 struct BodyContact {
   glm::vec3 point, normal, velocity;
   float signedDistance;
+  int32_t triangle = -1;  // nearestContact(): the nearest triangle (a hint for the next query)
+};
+
+// One point's (a cloth vertex's) last nearest query at a body pose, kept
+// for its next queries: while the body keeps that pose, the surface is no
+// nearer to the point than the distance found less the point's move since.
+struct BodyQuery {
+  uint64_t pose = 0;  // BodyCollider::pose() of the query; 0: none
+  glm::vec3 point{0.0f};
+  float radius = 0.0f;
+  bool found = false;
+  BodyContact contact;  // when found
+  float distance2 = 0.0f;      // when found: the nearest triangle's squared distance, as the search had it
+  glm::vec3 weights{0.0f};     // ... and the contact point's barycentric weights on it
+  uint32_t queries = 0, searches = 0;  // counts for the stats: queries asked, and those that searched the body
+  // The point's last segment without a hit (firstHitAlong()), and the move it was tested in.
+  uint64_t missMove = 0;
+  glm::vec3 missFrom{0.0f}, missTo{0.0f};
 };
 
 class BodyCollider {
@@ -47,7 +65,25 @@ class BodyCollider {
   // Nearest contact within the search radius; false when there is none.
   bool nearestContact(const glm::vec3& p, BodyContact& contact) const { return nearestContact(p, contact, searchRadius_); }
   // ... within `radius` instead.
-  bool nearestContact(const glm::vec3& p, BodyContact& contact, float radius) const;
+  bool nearestContact(const glm::vec3& p, BodyContact& contact, float radius) const {
+    return nearestContact(p, contact, radius, -1);
+  }
+  // ... starting from triangle `hint` (e.g. the nearest one of the vertex's
+  // last query; -1: none): the same answer, found sooner when the hint is
+  // near, since its distance bounds the search from the start.
+  bool nearestContact(const glm::vec3& p, BodyContact& contact, float radius, int32_t hint) const;
+  // ... the same answer, from the point's last query `last` (updated): its
+  // answer again when the point has not moved (same pose; within this
+  // radius or not), its nearest triangle as the hint otherwise.
+  bool nearestContact(const glm::vec3& p, BodyContact& contact, float radius, BodyQuery& last) const;
+  // Whether `last` proves, without a search, that nothing is within `radius`
+  // of p (p is farther from its point than the surface was, less the radius).
+  bool provesNoneWithin(const BodyQuery& last, const glm::vec3& p, float radius) const;
+  // firstHitAlong(), but false at once when `last` holds the same segment
+  // without a hit in this move (else it keeps this one when it has none).
+  bool firstHitAlong(const glm::vec3& from, const glm::vec3& to, BodyContact& contact, BodyQuery& last) const;
+  // Changes whenever the body's positions change (setMesh(), a moveTo() that moved it).
+  uint64_t pose() const { return pose_; }
   // Fastest vertex speed in the current frame (between the last pose and the target).
   float maxSpeed() const { return maxSpeed_; }
 
@@ -64,6 +100,17 @@ class BodyCollider {
   // barycentric weights `w` on triangle `t`.
   glm::vec3 pseudoNormal(uint32_t t, const glm::vec3& w) const;
   glm::vec3 unitFaceNormal(uint32_t t) const;
+  struct Nearest {
+    int64_t triangle = -1;
+    glm::vec3 weights{0.0f};
+    float distance2;
+  };
+  // Takes triangle t as `best` when it is nearer to p (of triangles equally
+  // near, the lowest index wins: the answer does not depend on the order).
+  void considerTriangle(uint32_t t, const glm::vec3& p, Nearest& best) const;
+  glm::vec3 velocityAt(uint32_t t, const glm::vec3& w) const;
+  Nearest searchNearest(const glm::vec3& p, float radius, int32_t hint) const;
+  bool contactAt(const glm::vec3& p, const Nearest& best, BodyContact& contact) const;
 
   std::vector<uint32_t> triangles_;
   std::vector<int32_t> edgeNeighbour_;  // 3 per triangle: the triangle across edge (i, i+1), or -1
@@ -74,6 +121,8 @@ class BodyCollider {
   WideTree tree_;       // the triangles' boxes now
   WideTree sweptTree_;  // ... grown over their motion in the last move
   float searchRadius_ = 0.02f;
+  uint64_t pose_ = 0;
+  uint64_t move_ = 0;  // counts the moves (moveTo() calls and setMesh()): firstHitAlong() depends on the last one
 };
 
 }  // namespace mq::cloth
