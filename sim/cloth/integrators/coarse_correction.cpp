@@ -18,6 +18,22 @@ glm::mat3 filterMatrix(const ClothState& s, size_t i) {
   return glm::mat3(1.0f) - glm::outerProduct(n, n);
 }
 
+// a[begin, end) . b[begin, end) with four partial sums: the factorisation and
+// the substitutions are chains of these, and one running sum would wait on
+// every addition.
+double dotRange(const double* a, const double* b, size_t begin, size_t end) {
+  double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+  size_t k = begin;
+  for (; k + 4 <= end; k += 4) {
+    s0 += a[k] * b[k];
+    s1 += a[k + 1] * b[k + 1];
+    s2 += a[k + 2] * b[k + 2];
+    s3 += a[k + 3] * b[k + 3];
+  }
+  for (; k < end; ++k) s0 += a[k] * b[k];
+  return (s0 + s1) + (s2 + s3);
+}
+
 }  // namespace
 
 void CoarseCorrection::build(const SpringForce& springs, size_t vertexCount) {
@@ -52,6 +68,12 @@ void CoarseCorrection::build(const SpringForce& springs, size_t vertexCount) {
           if (patchOf_[n] == kNone && grow.size() < kPatchSize) patchOf_[n] = patch, grow.push_back(n);
     }
   }
+  patchStart_.assign(patchCount_ + 1, 0);
+  for (uint32_t v = 0; v < vertexCount; ++v) ++patchStart_[patchOf_[v] + 1];
+  for (size_t p = 0; p < patchCount_; ++p) patchStart_[p + 1] += patchStart_[p];
+  patchVertices_.resize(vertexCount);
+  std::vector<uint32_t> fill(patchStart_.begin(), patchStart_.end() - 1);
+  for (uint32_t v = 0; v < vertexCount; ++v) patchVertices_[fill[patchOf_[v]]++] = v;
   order_ = 3 * patchCount_;
   std::vector<uint32_t> firstPatch(patchCount_);
   for (uint32_t p = 0; p < patchCount_; ++p) firstPatch[p] = p;
@@ -112,10 +134,9 @@ void CoarseCorrection::factorise() {
         at(i, j) = 0.0;
         continue;
       }
-      double sum = at(i, j);
       const double* li = &matrix_[i * order_];
       const double* lj = &matrix_[j * order_];
-      for (size_t k = std::max(fi, size_t(firstColumn_[j])); k < j; ++k) sum -= li[k] * lj[k];
+      const double sum = at(i, j) - dotRange(li, lj, std::max(fi, size_t(firstColumn_[j])), j);
       if (j < i) {
         at(i, j) = sum / at(j, j);
       } else {
@@ -130,24 +151,30 @@ void CoarseCorrection::factorise() {
 }
 
 double CoarseCorrection::solve(const std::vector<glm::vec3>& r, std::vector<glm::vec3>& perPatch) {
-  std::fill(rhs_.begin(), rhs_.end(), 0.0);
-  for (size_t v = 0; v < r.size(); ++v)
-    for (int c = 0; c < 3; ++c) rhs_[3 * patchOf_[v] + c] += double(r[v][c]);
-  std::vector<double> x(rhs_);
+  // Summed patch by patch (in registers: not one read-modify-write per vertex).
+  for (size_t p = 0; p < patchCount_; ++p) {
+    double sx = 0.0, sy = 0.0, sz = 0.0;
+    for (uint32_t k = patchStart_[p]; k < patchStart_[p + 1]; ++k) {
+      const glm::vec3& rv = r[patchVertices_[k]];
+      sx += double(rv.x), sy += double(rv.y), sz += double(rv.z);
+    }
+    rhs_[3 * p] = sx, rhs_[3 * p + 1] = sy, rhs_[3 * p + 2] = sz;
+  }
+  x_.assign(rhs_.begin(), rhs_.end());
+  std::vector<double>& x = x_;
   for (size_t i = 0; i < order_; ++i) {
     if (dead_[i]) {
       x[i] = 0.0;
       continue;
     }
-    double sum = x[i];
     const double* li = &matrix_[i * order_];
-    for (size_t k = firstColumn_[i]; k < i; ++k) sum -= li[k] * x[k];
-    x[i] = sum / li[i];
+    x[i] = (x[i] - dotRange(li, x.data(), firstColumn_[i], i)) / li[i];
   }
   for (size_t i = order_; i-- > 0;) {
     const double* li = &matrix_[i * order_];
-    x[i] /= li[i];
-    for (size_t k = firstColumn_[i]; k < i; ++k) x[k] -= li[k] * x[i];
+    const double xi = x[i] /= li[i];
+    double* column = x.data();
+    for (size_t k = firstColumn_[i]; k < i; ++k) column[k] -= li[k] * xi;
   }
   perPatch.resize(patchCount_);
   double dot = 0.0;

@@ -53,11 +53,12 @@ class CoarseCorrection {
   void factorise();
 
   std::vector<uint32_t> patchOf_;
+  std::vector<uint32_t> patchStart_, patchVertices_;  // CSR: each patch's vertices, in vertex order
   size_t patchCount_ = 0, order_ = 0;
   std::vector<double> matrix_;      // dense storage, lower triangle used
   std::vector<uint32_t> firstColumn_;  // envelope: first non-zero column per row
   std::vector<uint8_t> dead_;       // unknowns with no stiffness (a pinned patch)
-  std::vector<double> rhs_;
+  std::vector<double> rhs_, x_;
 };
 
 }  // namespace mq::cloth
