@@ -93,28 +93,29 @@ void SpringForce::prepareImplicit(const ClothState& st, float h, std::vector<glm
       perSpring_[i] = -(h * h * s.k) * ((1.0f - lateral) * glm::dot(fr.d, dv) * fr.d + lateral * dv);
     }
   });
-  gather(perSpring_, hKv);
+  // One pass per vertex (in the order of its incidences, as gather() sums):
+  // its part of h^2 K v0, its diagonal block and its sliced-ELL slots.
   forRange(diagonal.size(), [&](size_t b, size_t e) {
     for (size_t v = b; v < e; ++v) {
+      const uint32_t first = incidenceStart_[v], degree = incidenceStart_[v + 1] - first;
+      const size_t firstSlot = rowStart_[v / kLanes] + v % kLanes;
       glm::mat3 sum(0.0f);
-      for (uint32_t k = incidenceStart_[v]; k < incidenceStart_[v + 1]; ++k) {
-        const int32_t signedIndex = incidence_[k];
+      glm::vec3 kv(0.0f);
+      for (uint32_t k = 0; k < degree; ++k) {
+        const int32_t signedIndex = incidence_[first + k];
         const uint32_t spring = uint32_t(std::abs(signedIndex) - 1);
         const ImplicitBlock& block = blocks_[spring];
+        kv += signedIndex > 0 ? perSpring_[spring] : -perSpring_[spring];
         sum += block.alpha * glm::outerProduct(block.d, block.d) + glm::mat3(block.beta);
+        const size_t slot = firstSlot + k * kLanes;  // spare slots (k >= degree) stay zero
+        rowDx_[slot] = block.d.x;
+        rowDy_[slot] = block.d.y;
+        rowDz_[slot] = block.d.z;
+        rowAlpha_[slot] = block.alpha;
+        rowBeta_[slot] = block.beta;
       }
+      hKv[v] += kv;
       diagonal[v] += sum;
-    }
-  });
-  forRange(rowSpring_.size(), [&](size_t b, size_t e) {
-    for (size_t slot = b; slot < e; ++slot) {
-      const int32_t spring = rowSpring_[slot];
-      const ImplicitBlock block = spring >= 0 ? blocks_[spring] : ImplicitBlock{glm::vec3(0.0f), 0.0f, 0.0f};
-      rowDx_[slot] = block.d.x;
-      rowDy_[slot] = block.d.y;
-      rowDz_[slot] = block.d.z;
-      rowAlpha_[slot] = block.alpha;
-      rowBeta_[slot] = block.beta;
     }
   });
 }
@@ -131,7 +132,6 @@ void SpringForce::buildRows(size_t vertexCount) {
     rowStart_[b + 1] = rowStart_[b] + uint32_t(kLanes) * width;
   }
   const size_t slots = rowStart_[blocks];
-  rowSpring_.assign(slots, -1);
   rowOther_.assign(slots, 0);
   for (size_t v = 0; v < blocks * kLanes; ++v) {
     const size_t b = v / kLanes, lane = v % kLanes;
@@ -142,7 +142,6 @@ void SpringForce::buildRows(size_t vertexCount) {
       if (k >= degree) continue;
       const int32_t signedIndex = incidence_[incidenceStart_[v] + k];
       const uint32_t spring = uint32_t(std::abs(signedIndex) - 1);
-      rowSpring_[slot] = int32_t(spring);
       rowOther_[slot] = int32_t(signedIndex > 0 ? springs_[spring].b : springs_[spring].a);
     }
   }
