@@ -88,13 +88,22 @@ void CoarseCorrection::build(const SpringForce& springs, size_t vertexCount) {
   dead_.assign(order_, 0);
 }
 
-void CoarseCorrection::assemble(const ClothState& s, const std::vector<glm::mat3>& diagonal,
+void CoarseCorrection::assemble(const ClothState& s, const std::vector<glm::mat3>& otherDiagonal,
                                 const SpringForce& springs) {
-  std::fill(matrix_.begin(), matrix_.end(), 0.0);
+  // Only the lower triangle's envelope (and the diagonal 3x3 blocks) is used.
+  for (size_t row = 0; row < order_; ++row)
+    std::fill(&matrix_[row * order_ + firstColumn_[row]], &matrix_[row * order_ + row / 3 * 3 + 3], 0.0);
   auto addBlock = [&](uint32_t pi, uint32_t pj, const glm::mat3& block) {
     double* row = &matrix_[3 * pi * order_ + 3 * pj];
     for (int r = 0; r < 3; ++r, row += order_)
       for (int c = 0; c < 3; ++c) row[c] += double(block[c][r]);  // glm: [column][row]
+  };
+  // The block (i, j) of the symmetric A_c, stored at the lower one of (i, j) and (j, i).
+  auto addLower = [&](uint32_t pi, uint32_t pj, const glm::mat3& block) {
+    if (pi >= pj)
+      addBlock(pi, pj, block);
+    else
+      addBlock(pj, pi, glm::transpose(block));
   };
   // Most vertices are free (S = I): only pins and contacts pay for the products.
   const bool anyContact = !s.contactNormal.empty();
@@ -102,22 +111,30 @@ void CoarseCorrection::assemble(const ClothState& s, const std::vector<glm::mat3
     return s.invMass[v] == 0.0f || (anyContact && s.contactNormal[v] != glm::vec3(0.0f));
   };
   for (size_t v = 0; v < s.size(); ++v) {
+    const glm::mat3& d = otherDiagonal[v];
     if (!constrained(v)) {
-      addBlock(patchOf_[v], patchOf_[v], diagonal[v]);
+      addBlock(patchOf_[v], patchOf_[v], d);
       continue;
     }
     const glm::mat3 S = filterMatrix(s, v);
-    addBlock(patchOf_[v], patchOf_[v], S * diagonal[v] * S);
+    addBlock(patchOf_[v], patchOf_[v], S * d * S);
   }
+  // A spring adds S_a K S_a and S_b K S_b on the diagonal, -S_a K S_b and
+  // its transpose off it. Within one patch of free vertices the four cancel
+  // exactly (a rigid translation does not stretch the spring): skipped.
   const auto& list = springs.springs();
   for (size_t k = 0; k < list.size(); ++k) {
+    const uint32_t va = list[k].a, vb = list[k].b, pa = patchOf_[va], pb = patchOf_[vb];
+    const bool filteredEnds = constrained(va) || constrained(vb);
+    if (pa == pb && !filteredEnds) continue;
     const SpringForce::ImplicitBlock& b = springs.implicitBlock(k);
-    const uint32_t va = list[k].a, vb = list[k].b;
-    glm::mat3 K = b.alpha * glm::outerProduct(b.d, b.d) + glm::mat3(b.beta);
-    // The spring's off-diagonal blocks: -S_a K S_b at (a, b), its transpose at (b, a).
-    if (constrained(va) || constrained(vb)) K = filterMatrix(s, va) * K * filterMatrix(s, vb);
-    addBlock(patchOf_[va], patchOf_[vb], -K);
-    addBlock(patchOf_[vb], patchOf_[va], -glm::transpose(K));
+    const glm::mat3 K = b.alpha * glm::outerProduct(b.d, b.d) + glm::mat3(b.beta);
+    const glm::mat3 Sa = filterMatrix(s, va), Sb = filterMatrix(s, vb);
+    const glm::mat3 offDiagonal = filteredEnds ? Sa * K * Sb : K;
+    addBlock(pa, pa, filteredEnds ? Sa * K * Sa : K);
+    addBlock(pb, pb, filteredEnds ? Sb * K * Sb : K);
+    addLower(pa, pb, -offDiagonal);
+    if (pa == pb) addBlock(pa, pa, -glm::transpose(offDiagonal));  // (b, a) lands on the same block
   }
   factorise();
 }
