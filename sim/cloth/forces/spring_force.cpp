@@ -108,10 +108,10 @@ void SpringForce::prepareImplicit(const ClothState& st, float h, std::vector<glm
         kv += signedIndex > 0 ? perSpring_[spring] : -perSpring_[spring];
         sum += block.alpha * glm::outerProduct(block.d, block.d) + glm::mat3(block.beta);
         const size_t slot = firstSlot + k * kLanes;  // spare slots (k >= degree) stay zero
-        const glm::vec3 u = std::sqrt(std::max(block.alpha, 0.0f)) * block.d;  // alpha d d^T = u u^T
-        rowUx_[slot] = u.x;
-        rowUy_[slot] = u.y;
-        rowUz_[slot] = u.z;
+        rowDx_[slot] = block.d.x;
+        rowDy_[slot] = block.d.y;
+        rowDz_[slot] = block.d.z;
+        rowAlpha_[slot] = block.alpha;
         rowBeta_[slot] = block.beta;
       }
       hKv[v] += kv;
@@ -145,7 +145,7 @@ void SpringForce::buildRows(size_t vertexCount) {
       rowOther_[slot] = int32_t(signedIndex > 0 ? springs_[spring].b : springs_[spring].a);
     }
   }
-  for (auto* row : {&rowUx_, &rowUy_, &rowUz_, &rowBeta_}) row->assign(slots, 0.0f);
+  for (auto* row : {&rowDx_, &rowDy_, &rowDz_, &rowAlpha_, &rowBeta_}) row->assign(slots, 0.0f);
 }
 
 glm::vec3 SpringForce::productAt(size_t v) const {
@@ -155,9 +155,9 @@ glm::vec3 SpringForce::productAt(size_t v) const {
   glm::vec3 sum(0.0f);
   for (uint32_t k = 0; k < rowWidth_[b]; ++k) {
     const size_t slot = rowStart_[b] + k * kLanes + lane;
-    const glm::vec3 u(rowUx_[slot], rowUy_[slot], rowUz_[slot]);
+    const glm::vec3 d(rowDx_[slot], rowDy_[slot], rowDz_[slot]);
     const glm::vec3 dp = pv - p[rowOther_[slot]];
-    sum += glm::dot(u, dp) * u + rowBeta_[slot] * dp;
+    sum += rowAlpha_[slot] * glm::dot(d, dp) * d + rowBeta_[slot] * dp;
   }
   return sum;
 }
@@ -191,8 +191,9 @@ __attribute__((target("avx2,fma"))) inline void loadNeighbours(const float* p, c
 }
 
 __attribute__((target("avx2,fma"))) void blockProductAvx2(const float* p, size_t v0, uint32_t start, uint32_t width,
-                                                          const int32_t* other, const float* ux, const float* uy,
-                                                          const float* uz, const float* beta, float* y) {
+                                                          const int32_t* other, const float* dx, const float* dy,
+                                                          const float* dz, const float* alpha, const float* beta,
+                                                          float* y) {
   const __m256i lane3 = _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21);
   const float* self = p + 3 * v0;
   const __m256 px = _mm256_i32gather_ps(self, lane3, 4), py = _mm256_i32gather_ps(self + 1, lane3, 4),
@@ -203,8 +204,9 @@ __attribute__((target("avx2,fma"))) void blockProductAvx2(const float* p, size_t
     __m256 ox, oy, oz;
     loadNeighbours(p, other + s, ox, oy, oz);
     const __m256 qx = _mm256_sub_ps(px, ox), qy = _mm256_sub_ps(py, oy), qz = _mm256_sub_ps(pz, oz);
-    const __m256 ex = _mm256_loadu_ps(ux + s), ey = _mm256_loadu_ps(uy + s), ez = _mm256_loadu_ps(uz + s);
-    const __m256 t = _mm256_fmadd_ps(ex, qx, _mm256_fmadd_ps(ey, qy, _mm256_mul_ps(ez, qz)));
+    const __m256 ex = _mm256_loadu_ps(dx + s), ey = _mm256_loadu_ps(dy + s), ez = _mm256_loadu_ps(dz + s);
+    const __m256 t = _mm256_mul_ps(_mm256_loadu_ps(alpha + s),
+                                   _mm256_fmadd_ps(ex, qx, _mm256_fmadd_ps(ey, qy, _mm256_mul_ps(ez, qz))));
     const __m256 b = _mm256_loadu_ps(beta + s);
     ax = _mm256_fmadd_ps(t, ex, _mm256_fmadd_ps(b, qx, ax));
     ay = _mm256_fmadd_ps(t, ey, _mm256_fmadd_ps(b, qy, ay));
@@ -238,8 +240,8 @@ void SpringForce::addProductRange(size_t begin, size_t end, glm::vec3* y) const 
     const float* p = &product_->data()->x;
     for (; v + kLanes <= end; v += kLanes) {
       const size_t b = v / kLanes;
-      blockProductAvx2(p, v, rowStart_[b], rowWidth_[b], rowOther_.data(), rowUx_.data(), rowUy_.data(), rowUz_.data(),
-                       rowBeta_.data(), &y[v].x);
+      blockProductAvx2(p, v, rowStart_[b], rowWidth_[b], rowOther_.data(), rowDx_.data(), rowDy_.data(), rowDz_.data(),
+                       rowAlpha_.data(), rowBeta_.data(), &y[v].x);
     }
   }
 #endif

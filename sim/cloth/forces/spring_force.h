@@ -73,11 +73,10 @@ class SpringForce : public ForceTerm {
   // Sliced ELL: vertex v = 8 b + lane has slots rowStart_[b] + 8 k + lane,
   // k < rowWidth_[b] (the block's largest degree; spare slots have zero
   // blocks and point at v itself). Per slot: the implicit block
-  // h^2 k S + h kd d d^T = alpha d d^T + beta I = u u^T + beta I
-  // (u = sqrt(alpha) d, alpha >= 0) acting on p_v - p_other.
+  // h^2 k S + h kd d d^T = alpha d d^T + beta I acting on p_v - p_other.
   std::vector<uint32_t> rowStart_, rowWidth_;
   std::vector<int32_t> rowOther_;
-  std::vector<float> rowUx_, rowUy_, rowUz_, rowBeta_;
+  std::vector<float> rowDx_, rowDy_, rowDz_, rowAlpha_, rowBeta_;
   std::vector<ImplicitBlock> blocks_;  // per spring, filled by prepareImplicit
   mutable std::vector<glm::vec3> perSpring_;
   mutable const std::vector<glm::vec3>* product_ = nullptr;
