@@ -2,8 +2,6 @@
 
 #include <cmath>
 #include <limits>
-#include <cstdio>
-#include <cstdlib>
 
 #include "sim/cloth/parallel.h"
 
@@ -137,7 +135,6 @@ IntegratorReport ImplicitEuler::solve(const ClothState& s, ClothForces& forces) 
       for (size_t i = b; i < e; ++i) c_[i] = filtered(s, i, z_[i] + coarseAt(i) + beta * c_[i]);
     });
   }
-  if (std::getenv("MQ_SOLVER_DEBUG")) std::fprintf(stderr, "CGDBG %d %g %g\n", it, std::sqrt(delta0), std::sqrt(std::max(delta, 0.0)));
   return {it, delta0 > 0.0 ? float(std::sqrt(std::max(delta, 0.0) / delta0)) : 0.0f};
 }
 
