@@ -51,7 +51,6 @@ ThreadPool& ThreadPool::shared() {
 void ThreadPool::workerLoop(unsigned index) {
   unsigned seen = 0;
   for (;;) {
-    spinUntil([&] { return stopping_.load() || generation_.load() != seen; });
     std::unique_lock lock(mutex_);
     wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
     if (stopping_) return;

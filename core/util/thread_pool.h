@@ -2,10 +2,11 @@
 // A fixed pool of worker threads for data-parallel loops. parallelFor splits
 // [begin, end) into contiguous chunks, one per worker, so a loop's result does
 // not depend on scheduling (deterministic for a given thread count).
-// Between loops the workers spin for a short while (kSpinMicroseconds) before
-// they sleep, and the caller spins before it sleeps waiting for them: solver
-// loops of ~100 us follow each other within microseconds, and a futex
-// wake-up costs tens of microseconds.
+// The caller spins for a short while (kSpinMicroseconds) before it sleeps
+// waiting for a worker's last block: that wait is short, and a futex wake-up
+// (tens of microseconds) would sit on the critical path. The workers do not
+// spin for the next job (measured: they burnt 2.4% of the 10k T-shirt's CPU
+// on a loaded machine, and the caller does not wait for a late worker).
 
 #include <atomic>
 #include <condition_variable>
@@ -27,8 +28,6 @@ class ThreadPool {
 
   unsigned threadCount() const { return static_cast<unsigned>(workers_.size()) + 1; }
 
-  // Longer spins cost more than they save on a loaded machine (200 us:
-  // +25% CPU per CG iteration with 4 processes per core).
   static constexpr int kSpinMicroseconds = 50;
 
   // Calls body(chunkBegin, chunkEnd) over [begin, end); ranges smaller than
