@@ -1,8 +1,33 @@
 #include "core/util/thread_pool.h"
 
 #include <algorithm>
+#include <chrono>
+
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
 
 namespace mq {
+
+namespace {
+
+// Polls done() for up to kSpinMicroseconds; true when it became true.
+template <class Done>
+bool spinUntil(Done&& done) {
+  using Clock = std::chrono::steady_clock;
+  const auto deadline = Clock::now() + std::chrono::microseconds(ThreadPool::kSpinMicroseconds);
+  for (;;) {
+    for (int k = 0; k < 64; ++k) {
+      if (done()) return true;
+#if defined(__x86_64__)
+      _mm_pause();
+#endif
+    }
+    if (Clock::now() > deadline) return done();
+  }
+}
+
+}  // namespace
 
 ThreadPool::ThreadPool(unsigned threads) {
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
@@ -72,6 +97,11 @@ void ThreadPool::parallelBlocks(size_t blocks, const std::function<void(size_t)>
   runBlocks(body, blocks);
   lock.lock();
   blockJobOpen_ = false;  // a worker waking from now on finds nothing to do
+  if (blockWorkers_ != 0) {
+    lock.unlock();
+    spinUntil([&] { return blockWorkers_.load() == 0; });
+    lock.lock();
+  }
   done_.wait(lock, [&] { return blockWorkers_ == 0; });
   blockBody_ = nullptr;  // blockJob_ stays set: a late worker must see this job closed
 }
@@ -100,6 +130,7 @@ void ThreadPool::parallelFor(size_t begin, size_t end, size_t minChunk,
   lock.unlock();
   wake_.notify_all();
   body(chunks_[0].first, chunks_[0].second);
+  spinUntil([&] { return pending_.load() == 0; });
   lock.lock();
   done_.wait(lock, [&] { return pending_ == 0; });
   body_ = nullptr;

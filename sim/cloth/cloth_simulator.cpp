@@ -205,7 +205,8 @@ void ClothSimulator::step(float dt) {
   approachReach_ = 0.0f;
   const int baseSubsteps = std::max(substepsFor(dt), settings_.substeps > 0 ? 1 : substepsForBodySpeed(dt));
   int substeps = baseSubsteps;
-  const ClothState start = state_;
+  // The state to redo the step from (not copied when no redo can come).
+  const ClothState start = substeps < settings_.maxRefinement * baseSubsteps ? state_ : ClothState{};
   for (;;) {
     const float h = dt / float(substeps);
     stats_.solverIterations = stats_.selfContacts = stats_.stretchPasses = stats_.bodyFeatureContacts = 0;

@@ -75,7 +75,7 @@ class SpringForce : public ForceTerm {
   // blocks and point at v itself). Per slot: the implicit block
   // h^2 k S + h kd d d^T = alpha d d^T + beta I acting on p_v - p_other.
   std::vector<uint32_t> rowStart_, rowWidth_;
-  std::vector<int32_t> rowSpring_, rowOther_;  // rowSpring_ -1: spare
+  std::vector<int32_t> rowOther_;
   std::vector<float> rowDx_, rowDy_, rowDz_, rowAlpha_, rowBeta_;
   std::vector<ImplicitBlock> blocks_;  // per spring, filled by prepareImplicit
   mutable std::vector<glm::vec3> perSpring_;

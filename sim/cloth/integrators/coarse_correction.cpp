@@ -18,6 +18,22 @@ glm::mat3 filterMatrix(const ClothState& s, size_t i) {
   return glm::mat3(1.0f) - glm::outerProduct(n, n);
 }
 
+// a[begin, end) . b[begin, end) with four partial sums: the factorisation and
+// the substitutions are chains of these, and one running sum would wait on
+// every addition.
+double dotRange(const double* a, const double* b, size_t begin, size_t end) {
+  double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+  size_t k = begin;
+  for (; k + 4 <= end; k += 4) {
+    s0 += a[k] * b[k];
+    s1 += a[k + 1] * b[k + 1];
+    s2 += a[k + 2] * b[k + 2];
+    s3 += a[k + 3] * b[k + 3];
+  }
+  for (; k < end; ++k) s0 += a[k] * b[k];
+  return (s0 + s1) + (s2 + s3);
+}
+
 }  // namespace
 
 void CoarseCorrection::build(const SpringForce& springs, size_t vertexCount) {
@@ -52,6 +68,12 @@ void CoarseCorrection::build(const SpringForce& springs, size_t vertexCount) {
           if (patchOf_[n] == kNone && grow.size() < kPatchSize) patchOf_[n] = patch, grow.push_back(n);
     }
   }
+  patchStart_.assign(patchCount_ + 1, 0);
+  for (uint32_t v = 0; v < vertexCount; ++v) ++patchStart_[patchOf_[v] + 1];
+  for (size_t p = 0; p < patchCount_; ++p) patchStart_[p + 1] += patchStart_[p];
+  patchVertices_.resize(vertexCount);
+  std::vector<uint32_t> fill(patchStart_.begin(), patchStart_.end() - 1);
+  for (uint32_t v = 0; v < vertexCount; ++v) patchVertices_[fill[patchOf_[v]]++] = v;
   order_ = 3 * patchCount_;
   std::vector<uint32_t> firstPatch(patchCount_);
   for (uint32_t p = 0; p < patchCount_; ++p) firstPatch[p] = p;
@@ -66,13 +88,22 @@ void CoarseCorrection::build(const SpringForce& springs, size_t vertexCount) {
   dead_.assign(order_, 0);
 }
 
-void CoarseCorrection::assemble(const ClothState& s, const std::vector<glm::mat3>& diagonal,
+void CoarseCorrection::assemble(const ClothState& s, const std::vector<glm::mat3>& otherDiagonal,
                                 const SpringForce& springs) {
-  std::fill(matrix_.begin(), matrix_.end(), 0.0);
+  // Only the lower triangle's envelope (and the diagonal 3x3 blocks) is used.
+  for (size_t row = 0; row < order_; ++row)
+    std::fill(&matrix_[row * order_ + firstColumn_[row]], &matrix_[row * order_ + row / 3 * 3 + 3], 0.0);
   auto addBlock = [&](uint32_t pi, uint32_t pj, const glm::mat3& block) {
     double* row = &matrix_[3 * pi * order_ + 3 * pj];
     for (int r = 0; r < 3; ++r, row += order_)
       for (int c = 0; c < 3; ++c) row[c] += double(block[c][r]);  // glm: [column][row]
+  };
+  // The block (i, j) of the symmetric A_c, stored at the lower one of (i, j) and (j, i).
+  auto addLower = [&](uint32_t pi, uint32_t pj, const glm::mat3& block) {
+    if (pi >= pj)
+      addBlock(pi, pj, block);
+    else
+      addBlock(pj, pi, glm::transpose(block));
   };
   // Most vertices are free (S = I): only pins and contacts pay for the products.
   const bool anyContact = !s.contactNormal.empty();
@@ -80,22 +111,30 @@ void CoarseCorrection::assemble(const ClothState& s, const std::vector<glm::mat3
     return s.invMass[v] == 0.0f || (anyContact && s.contactNormal[v] != glm::vec3(0.0f));
   };
   for (size_t v = 0; v < s.size(); ++v) {
+    const glm::mat3& d = otherDiagonal[v];
     if (!constrained(v)) {
-      addBlock(patchOf_[v], patchOf_[v], diagonal[v]);
+      addBlock(patchOf_[v], patchOf_[v], d);
       continue;
     }
     const glm::mat3 S = filterMatrix(s, v);
-    addBlock(patchOf_[v], patchOf_[v], S * diagonal[v] * S);
+    addBlock(patchOf_[v], patchOf_[v], S * d * S);
   }
+  // A spring adds S_a K S_a and S_b K S_b on the diagonal, -S_a K S_b and
+  // its transpose off it. Within one patch of free vertices the four cancel
+  // exactly (a rigid translation does not stretch the spring): skipped.
   const auto& list = springs.springs();
   for (size_t k = 0; k < list.size(); ++k) {
+    const uint32_t va = list[k].a, vb = list[k].b, pa = patchOf_[va], pb = patchOf_[vb];
+    const bool filteredEnds = constrained(va) || constrained(vb);
+    if (pa == pb && !filteredEnds) continue;
     const SpringForce::ImplicitBlock& b = springs.implicitBlock(k);
-    const uint32_t va = list[k].a, vb = list[k].b;
-    glm::mat3 K = b.alpha * glm::outerProduct(b.d, b.d) + glm::mat3(b.beta);
-    // The spring's off-diagonal blocks: -S_a K S_b at (a, b), its transpose at (b, a).
-    if (constrained(va) || constrained(vb)) K = filterMatrix(s, va) * K * filterMatrix(s, vb);
-    addBlock(patchOf_[va], patchOf_[vb], -K);
-    addBlock(patchOf_[vb], patchOf_[va], -glm::transpose(K));
+    const glm::mat3 K = b.alpha * glm::outerProduct(b.d, b.d) + glm::mat3(b.beta);
+    const glm::mat3 Sa = filterMatrix(s, va), Sb = filterMatrix(s, vb);
+    const glm::mat3 offDiagonal = filteredEnds ? Sa * K * Sb : K;
+    addBlock(pa, pa, filteredEnds ? Sa * K * Sa : K);
+    addBlock(pb, pb, filteredEnds ? Sb * K * Sb : K);
+    addLower(pa, pb, -offDiagonal);
+    if (pa == pb) addBlock(pa, pa, -glm::transpose(offDiagonal));  // (b, a) lands on the same block
   }
   factorise();
 }
@@ -112,10 +151,9 @@ void CoarseCorrection::factorise() {
         at(i, j) = 0.0;
         continue;
       }
-      double sum = at(i, j);
       const double* li = &matrix_[i * order_];
       const double* lj = &matrix_[j * order_];
-      for (size_t k = std::max(fi, size_t(firstColumn_[j])); k < j; ++k) sum -= li[k] * lj[k];
+      const double sum = at(i, j) - dotRange(li, lj, std::max(fi, size_t(firstColumn_[j])), j);
       if (j < i) {
         at(i, j) = sum / at(j, j);
       } else {
@@ -130,24 +168,30 @@ void CoarseCorrection::factorise() {
 }
 
 double CoarseCorrection::solve(const std::vector<glm::vec3>& r, std::vector<glm::vec3>& perPatch) {
-  std::fill(rhs_.begin(), rhs_.end(), 0.0);
-  for (size_t v = 0; v < r.size(); ++v)
-    for (int c = 0; c < 3; ++c) rhs_[3 * patchOf_[v] + c] += double(r[v][c]);
-  std::vector<double> x(rhs_);
+  // Summed patch by patch (in registers: not one read-modify-write per vertex).
+  for (size_t p = 0; p < patchCount_; ++p) {
+    double sx = 0.0, sy = 0.0, sz = 0.0;
+    for (uint32_t k = patchStart_[p]; k < patchStart_[p + 1]; ++k) {
+      const glm::vec3& rv = r[patchVertices_[k]];
+      sx += double(rv.x), sy += double(rv.y), sz += double(rv.z);
+    }
+    rhs_[3 * p] = sx, rhs_[3 * p + 1] = sy, rhs_[3 * p + 2] = sz;
+  }
+  x_.assign(rhs_.begin(), rhs_.end());
+  std::vector<double>& x = x_;
   for (size_t i = 0; i < order_; ++i) {
     if (dead_[i]) {
       x[i] = 0.0;
       continue;
     }
-    double sum = x[i];
     const double* li = &matrix_[i * order_];
-    for (size_t k = firstColumn_[i]; k < i; ++k) sum -= li[k] * x[k];
-    x[i] = sum / li[i];
+    x[i] = (x[i] - dotRange(li, x.data(), firstColumn_[i], i)) / li[i];
   }
   for (size_t i = order_; i-- > 0;) {
     const double* li = &matrix_[i * order_];
-    x[i] /= li[i];
-    for (size_t k = firstColumn_[i]; k < i; ++k) x[k] -= li[k] * x[i];
+    const double xi = x[i] /= li[i];
+    double* column = x.data();
+    for (size_t k = firstColumn_[i]; k < i; ++k) column[k] -= li[k] * xi;
   }
   perPatch.resize(patchCount_);
   double dot = 0.0;

@@ -40,9 +40,10 @@ class CoarseCorrection {
   size_t patchCount() const { return patchCount_; }
   const std::vector<uint32_t>& patchOf() const { return patchOf_; }
 
-  // A_c for this step's linearisation: `diagonal` holds A's diagonal blocks
-  // (mass included), the springs their implicit blocks.
-  void assemble(const ClothState& s, const std::vector<glm::mat3>& diagonal, const SpringForce& springs);
+  // A_c for this step's linearisation: `otherDiagonal` holds A's diagonal
+  // blocks without the springs' part (mass and the other terms), the springs
+  // their implicit blocks.
+  void assemble(const ClothState& s, const std::vector<glm::mat3>& otherDiagonal, const SpringForce& springs);
 
   // Coarse solution of the (filtered) residual r: fills perPatch (one vec3 per
   // patch, to be added as S_i perPatch[patchOf(i)]) and returns r . S P perPatch.
@@ -53,11 +54,12 @@ class CoarseCorrection {
   void factorise();
 
   std::vector<uint32_t> patchOf_;
+  std::vector<uint32_t> patchStart_, patchVertices_;  // CSR: each patch's vertices, in vertex order
   size_t patchCount_ = 0, order_ = 0;
   std::vector<double> matrix_;      // dense storage, lower triangle used
   std::vector<uint32_t> firstColumn_;  // envelope: first non-zero column per row
   std::vector<uint8_t> dead_;       // unknowns with no stiffness (a pinned patch)
-  std::vector<double> rhs_;
+  std::vector<double> rhs_, x_;
 };
 
 }  // namespace mq::cloth

@@ -46,13 +46,23 @@ IntegratorReport ImplicitEuler::step(ClothState& s, float h, ClothForces& forces
   forces.computeForces(s, f_);
   b_.assign(n, glm::vec3(0.0f));  // collects h^2 df/dx v0
   diagonal_.assign(n, glm::mat3(0.0f));
-  for (ForceTerm* t : forces.terms()) t->prepareImplicit(s, h, b_, diagonal_);
+  // Two-level: the springs' diagonal blocks apart from the others' (the coarse
+  // level takes the springs exactly, block by block).
+  if (twoLevel_) otherDiagonal_.assign(n, glm::mat3(0.0f));
+  for (ForceTerm* t : forces.terms())
+    t->prepareImplicit(s, h, b_, twoLevel_ && t != &forces.springs() ? otherDiagonal_ : diagonal_);
   preconditioner_.resize(n);
   dv_.resize(n);
   forRange(n, [&](size_t bb, size_t e) {
     for (size_t i = bb; i < e; ++i) {
       b_[i] = h * f_[i] + b_[i];
-      preconditioner_[i] = glm::inverse(diagonal_[i] + glm::mat3(s.mass[i]));
+      if (twoLevel_) {
+        otherDiagonal_[i] += glm::mat3(s.mass[i]);
+        diagonal_[i] += otherDiagonal_[i];
+      } else {
+        diagonal_[i] += glm::mat3(s.mass[i]);
+      }
+      preconditioner_[i] = glm::inverse(diagonal_[i]);
       // z: the constrained part of dv (stop a resting contact's normal velocity).
       dv_[i] = glm::vec3(0.0f);
       if (!s.contactNormal.empty() && s.invMass[i] != 0.0f)
@@ -61,10 +71,7 @@ IntegratorReport ImplicitEuler::step(ClothState& s, float h, ClothForces& forces
   });
   if (twoLevel_) {
     if (!coarse_.built(n)) coarse_.build(forces.springs(), n);
-    forRange(n, [&](size_t bb, size_t e) {
-      for (size_t i = bb; i < e; ++i) diagonal_[i] += glm::mat3(s.mass[i]);
-    });
-    coarse_.assemble(s, diagonal_, forces.springs());
+    coarse_.assemble(s, otherDiagonal_, forces.springs());
   }
   const IntegratorReport report = solve(s, forces);
   forRange(n, [&](size_t bb, size_t e) {

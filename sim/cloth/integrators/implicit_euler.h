@@ -42,7 +42,7 @@ class ImplicitEuler : public Integrator {
   CoarseCorrection coarse_;
   std::vector<glm::vec3> coarseZ_;
   std::vector<glm::vec3> f_, b_, dv_, r_, z_, c_, q_;
-  std::vector<glm::mat3> diagonal_, preconditioner_;
+  std::vector<glm::mat3> diagonal_, otherDiagonal_, preconditioner_;
 };
 
 }  // namespace mq::cloth
