@@ -23,6 +23,7 @@
 #include "core/character/default_mannequin.h"
 #include "core/character/posed_character.h"
 #include "sim/cloth/collision/body_collider.h"
+#include "tests/bench/query_timing.h"
 
 namespace {
 
@@ -64,24 +65,7 @@ const BodyScene& walkingBody() {
   return scene;
 }
 
-// Runs query(i) for every point of the scene per iteration (query returns
-// whether it hit) and reports the CPU time per query and the hits.
-template <class Query>
-void timeQueries(benchmark::State& state, size_t count, Query&& query) {
-  double cpuSeconds = 0.0;
-  size_t queries = 0;
-  int hits = 0;
-  for (auto _ : state) {
-    const std::clock_t cpuStart = std::clock();
-    hits = 0;
-    for (size_t i = 0; i < count; ++i) hits += query(i) ? 1 : 0;
-    cpuSeconds += double(std::clock() - cpuStart) / CLOCKS_PER_SEC;
-    queries += count;
-  }
-  state.counters["ns_per_query"] = 1e9 * cpuSeconds / double(std::max<size_t>(1, queries));
-  state.counters["queries"] = double(queries) / double(std::max<int64_t>(1, state.iterations()));
-  state.counters["hits"] = hits;
-}
+using mq::bench::timeQueries;
 
 void BM_BodyNearest(benchmark::State& state) {
   const BodyScene& s = walkingBody();

@@ -15,6 +15,7 @@
 #include "core/character/default_mannequin.h"
 #include "core/garment/parametric_garments.h"
 #include "sim/cloth/collision/cloth_surface_collider.h"
+#include "tests/bench/query_timing.h"
 
 namespace {
 
@@ -56,22 +57,10 @@ LayerScene& layerScene() {
 void BM_LayerSurfaceNearest(benchmark::State& state) {
   LayerScene& s = layerScene();
   s.surface.moveTo(0.5f);
-  double cpuSeconds = 0.0;
-  size_t queries = 0;
-  int hits = 0;
-  for (auto _ : state) {
-    const std::clock_t cpuStart = std::clock();
-    hits = 0;
-    for (const glm::vec3& p : s.points) {
-      SurfaceContact contact;
-      hits += s.surface.nearestContact(p, 0.02f, contact) ? 1 : 0;
-    }
-    cpuSeconds += double(std::clock() - cpuStart) / CLOCKS_PER_SEC;
-    queries += s.points.size();
-  }
-  state.counters["ns_per_query"] = 1e9 * cpuSeconds / double(std::max<size_t>(1, queries));
-  state.counters["queries"] = double(s.points.size());
-  state.counters["hits"] = hits;
+  mq::bench::timeQueries(state, s.points.size(), [&](size_t i) {
+    SurfaceContact contact;
+    return s.surface.nearestContact(s.points[i], 0.02f, contact);
+  });
 }
 BENCHMARK(BM_LayerSurfaceNearest)->Unit(benchmark::kMicrosecond);
 
