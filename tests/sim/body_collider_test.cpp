@@ -98,15 +98,26 @@ void bumpySphere(float phase, std::vector<float>& positions, std::vector<uint32_
   }
 }
 
+// The bumpy sphere as a body (2 cm search radius) and, as `target`, the same
+// sphere with its bumps turned (phase 0.7): a pose to move to.
+struct BumpyBody {
+  std::vector<float> rest, target;
+  std::vector<uint32_t> triangles;
+  BodyCollider body;
+  BumpyBody() {
+    bumpySphere(0.0f, rest, triangles);
+    bumpySphere(0.7f, target, triangles);
+    body.setMesh(rest, triangles, 0.02f);
+  }
+};
+
 // The tree only prunes: the nearest contact is the nearest of all triangles,
 // at rest and half way through a move (where the boxes have moved).
 TEST(BodyCollider, NearestContactIsTheNearestOfAllTriangles) {
-  std::vector<float> positions, target;
-  std::vector<uint32_t> triangles;
-  bumpySphere(0.0f, positions, triangles);
-  bumpySphere(0.7f, target, triangles);
-  BodyCollider body;
-  body.setMesh(positions, triangles, 0.02f);
+  BumpyBody bumpy;
+  BodyCollider& body = bumpy.body;
+  const std::vector<uint32_t>& triangles = bumpy.triangles;
+  const std::vector<float>& target = bumpy.target;
   std::mt19937 random(11);
   std::uniform_real_distribution<float> where(-0.13f, 0.13f);
   int found = 0;
@@ -145,12 +156,10 @@ bool sameContact(const BodyContact& a, const BodyContact& b) {
 // for the radius: no search at all), and after the body moved (the last
 // query no longer holds).
 TEST(BodyCollider, QueriesFromTheLastQueryAnswerAsAFreshSearch) {
-  std::vector<float> positions, target;
-  std::vector<uint32_t> triangles;
-  bumpySphere(0.0f, positions, triangles);
-  bumpySphere(0.7f, target, triangles);
-  BodyCollider body;
-  body.setMesh(positions, triangles, 0.02f);
+  BumpyBody bumpy;
+  BodyCollider& body = bumpy.body;
+  const std::vector<uint32_t>& triangles = bumpy.triangles;
+  const std::vector<float>& target = bumpy.target;
   body.setTarget(target, 1.0f / 30.0f);
   std::mt19937 random(5);
   std::uniform_real_distribution<float> where(-0.13f, 0.13f), step(-0.004f, 0.004f);
