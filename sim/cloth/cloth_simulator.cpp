@@ -20,7 +20,6 @@ constexpr float kMaxApproachReach = 0.08f;  // m: how far ahead findApproachingB
 constexpr float kApproachPerSubstep = 0.03f;  // m: see substepsForBodySpeed()
 constexpr int kMaxBodySpeedSubsteps = 4;
 constexpr int kContactLimitRounds = 8;  // see limitStretchKeepingContactsOut()
-constexpr uint8_t kContact = 1, kSweptContact = 2;  // touched_ values
 
 ClothState initialState(const ClothMesh& mesh, const ClothTopology& topology, const Fabric& fabric) {
   ClothState s;

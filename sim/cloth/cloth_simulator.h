@@ -165,6 +165,8 @@ class ClothSimulator {
   ClothState state_;
   std::vector<float> freeInvMass_;
   std::vector<glm::vec3> stepStart_;
+  // Per vertex, what the contacts of this substep did to it: 0, kContact, kSweptContact.
+  static constexpr uint8_t kContact = 1, kSweptContact = 2;
   std::vector<uint8_t> touched_;
   std::vector<glm::vec3> approachNormal_, approachVelocity_;  // findApproachingBody(); empty: none
   std::vector<float> approachSpeed_;

@@ -19,12 +19,6 @@
 
 namespace mq::cloth {
 
-namespace {
-
-constexpr uint8_t kTouched = 1;  // touched_: in contact (kContact in cloth_simulator.cpp)
-
-}  // namespace
-
 void ClothSimulator::collideWithInnerSurface(float fraction) {
   if (innerSurface_->empty()) return;
   innerSurface_->moveTo(fraction);
@@ -35,7 +29,7 @@ void ClothSimulator::collideWithInnerSurface(float fraction) {
       if (state_.invMass[i] == 0.0f) continue;
       SurfaceContact contact;
       if (!innerSurface_->nearestContact(state_.x[i], radius, contact) || !(contact.signedDistance < thickness)) continue;
-      touched_[i] = std::max(touched_[i], kTouched);
+      touched_[i] = std::max(touched_[i], kContact);
       respondToContact(state_.x[i], state_.v[i], contact.normal, thickness - contact.signedDistance, contact.velocity,
                        settings_.friction);
     }

@@ -82,8 +82,6 @@ class BodyCollider {
   // firstHitAlong(), but false at once when `last` holds the same segment
   // without a hit in this move (else it keeps this one when it has none).
   bool firstHitAlong(const glm::vec3& from, const glm::vec3& to, BodyContact& contact, BodyQuery& last) const;
-  // Changes whenever the body's positions change (setMesh(), a moveTo() that moved it).
-  uint64_t pose() const { return pose_; }
   // Fastest vertex speed in the current frame (between the last pose and the target).
   float maxSpeed() const { return maxSpeed_; }
 

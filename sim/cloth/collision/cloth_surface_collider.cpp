@@ -4,6 +4,7 @@
 #include <unordered_map>
 
 #include "core/util/error.h"
+#include "sim/cloth/collision/aabb_tree.h"
 #include "sim/cloth/collision/proximity.h"
 
 namespace mq::cloth {
@@ -22,13 +23,6 @@ uint64_t edgeKey(uint32_t a, uint32_t b) {
 glm::vec3 unitOr(const glm::vec3& v, const glm::vec3& fallback) {
   const float length = glm::length(v);
   return length > 1e-20f ? v / length : fallback;
-}
-
-std::vector<Box> triangleBoxes(const std::vector<glm::vec3>& x, const std::vector<uint32_t>& triangles) {
-  std::vector<Box> boxes(triangles.size() / 3);
-  for (size_t t = 0; t < boxes.size(); ++t)
-    for (int k = 0; k < 3; ++k) boxes[t].extend(x[triangles[3 * t + k]]);
-  return boxes;
 }
 
 }  // namespace
@@ -71,7 +65,7 @@ void ClothSurfaceCollider::setMesh(const std::vector<glm::vec3>& positions, cons
       boundaryVertex_[triangles_[3 * t + k]] = boundaryVertex_[triangles_[3 * t + (k + 1) % 3]] = 1;
     }
   updateNormals();
-  tree_.build(triangleBoxes(current_, triangles_));
+  tree_.build(triangleBoxes(current_, triangles_, 0.0f));
 }
 
 void ClothSurfaceCollider::setTarget(const std::vector<glm::vec3>& positions, float stepTime) {
@@ -85,7 +79,7 @@ void ClothSurfaceCollider::setTarget(const std::vector<glm::vec3>& positions, fl
 void ClothSurfaceCollider::moveTo(float fraction) {
   for (size_t i = 0; i < current_.size(); ++i) current_[i] = glm::mix(from_[i], to_[i], fraction);
   updateNormals();
-  tree_.refit(triangleBoxes(current_, triangles_));
+  tree_.refit(triangleBoxes(current_, triangles_, 0.0f));
 }
 
 void ClothSurfaceCollider::updateNormals() {

@@ -56,8 +56,6 @@ class ClothSurfaceCollider {
   bool empty() const { return triangles_.empty(); }
   size_t vertexCount() const { return current_.size(); }
   const std::vector<glm::vec3>& positions() const { return current_; }
-  // Per vertex: 1 when it is on a boundary edge (an edge of one triangle).
-  const std::vector<uint8_t>& boundaryVertices() const { return boundaryVertex_; }
 
  private:
   void updateNormals();
