@@ -35,17 +35,25 @@ inline std::vector<size_t> layerOrder(const std::vector<Garment>& garments) {
   return layerOrder(layers);
 }
 
-// Each simulation in `order` worn over the ones before it (null entries are
-// skipped, e.g. garments not simulated); layered = false: none over any.
-template <class Pointer>
-void wearInLayers(const std::vector<Pointer>& simulations, const std::vector<size_t>& order, bool layered = true) {
+// Each simulation g in `order` for which inLayers(g) is worn over the ones
+// before it that are in layers too; the others over none (null entries are
+// skipped, e.g. garments not simulated).
+template <class Pointer, class InLayers>
+void wearInLayers(const std::vector<Pointer>& simulations, const std::vector<size_t>& order, InLayers&& inLayers) {
   std::vector<const GarmentSimulation*> inner;
   for (size_t g : order) {
     if (!simulations[g]) continue;
     GarmentSimulation* sim = &*simulations[g];
+    const bool layered = inLayers(g);
     sim->setInnerGarments(layered ? inner : std::vector<const GarmentSimulation*>{});
-    inner.push_back(sim);
+    if (layered) inner.push_back(sim);
   }
+}
+
+// Each simulation in `order` worn over the ones before it; layered = false: none over any.
+template <class Pointer>
+void wearInLayers(const std::vector<Pointer>& simulations, const std::vector<size_t>& order, bool layered = true) {
+  wearInLayers(simulations, order, [layered](size_t) { return layered; });
 }
 
 // The vertices of `outer` now behind the surface of one of `inner` (on its

@@ -884,16 +884,13 @@ void GarmentTool::startStep() {
   // both are draped (while they sew and drape, the body is in a different
   // pose for each).
   std::vector<Job> jobs;
-  std::vector<const cloth::GarmentSimulation*> draped;
   const std::vector<View*> views = simulatedViews();
-  for (size_t i : layerOrder()) {
-    View* view = views[i];
-    if (!view->simulation) continue;
-    const bool layered = i < scene_.garments.size() && view->drape.draped();
-    view->simulation->setInnerGarments(layered ? draped : std::vector<const cloth::GarmentSimulation*>{});
-    if (layered) draped.push_back(view->simulation.get());
-    jobs.push_back({view->simulation.get(), &view->drape});
-  }
+  std::vector<cloth::GarmentSimulation*> simulations;
+  for (View* view : views) simulations.push_back(view->simulation.get());
+  cloth::wearInLayers(simulations, layerOrder(),
+                      [&](size_t i) { return i < scene_.garments.size() && views[i]->drape.draped(); });
+  for (size_t i : layerOrder())
+    if (views[i]->simulation) jobs.push_back({views[i]->simulation.get(), &views[i]->drape});
   if (jobs.empty()) return;
   const float dt = 1.0f / scene_.cloth.fps;
   stepWatcher_.setFuture(QtConcurrent::run([jobs, dt, rest = restBody_, target = posedBody()]() -> QString {
@@ -1052,13 +1049,10 @@ bool bakeFrames(std::vector<GarmentTool::BakeGarment>& garments, const std::vect
                 const std::vector<std::vector<float>>& bodies, float fps, const std::atomic<bool>& cancel,
                 const std::function<void(int)>& stepped, std::vector<cloth::BakedCloth>& baked,
                 std::vector<std::vector<std::vector<float>>>& stretch) {
-  std::vector<const cloth::GarmentSimulation*> inner;
-  for (size_t g : order) {
-    const bool isGarment = g < layered;
-    garments[g].simulation->setInnerGarments(isGarment ? inner : std::vector<const cloth::GarmentSimulation*>{});
-    if (isGarment) inner.push_back(garments[g].simulation.get());
-  }
-  if (inner.size() > 1 && !bodies.empty() && !bodies[0].empty())  // no character: frame 1 is the placed cloth
+  std::vector<cloth::GarmentSimulation*> simulations;
+  for (GarmentTool::BakeGarment& g : garments) simulations.push_back(g.simulation.get());
+  cloth::wearInLayers(simulations, order, [&](size_t g) { return g < layered; });
+  if (std::min(layered, garments.size()) > 1 && !bodies.empty() && !bodies[0].empty())  // no character: frame 1 is the placed cloth
     for (int s = 0; s < int(std::ceil(kLayerSettleSeconds * fps)); ++s) {
       if (cancel) return false;
       for (size_t g : order) garments[g].simulation->step(1.0f / fps, bodyOrNull(bodies[0]));
