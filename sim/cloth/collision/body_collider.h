@@ -87,6 +87,8 @@ class BodyCollider {
 
   bool empty() const { return triangles_.empty(); }
   const std::vector<glm::vec3>& positions() const { return current_; }
+  // Each vertex's velocity in the current frame (from the last pose to the target).
+  const std::vector<glm::vec3>& velocities() const { return velocity_; }
   std::vector<float> flatPositions() const;
   const std::vector<uint32_t>& triangles() const { return triangles_; }
   float searchRadius() const { return searchRadius_; }

@@ -94,22 +94,25 @@ void BodyFeatureContact::updateTriangles(const ClothState& s, float thickness) {
   const size_t count = triangles_.size() / 3;
   planes_.resize(count);
   std::vector<Box> boxes(count);
-  for (size_t t = 0; t < count; ++t) {
-    const glm::vec3 &a = s.x[triangles_[3 * t]], &b = s.x[triangles_[3 * t + 1]], &c = s.x[triangles_[3 * t + 2]];
-    const glm::vec3 normal = glm::cross(b - a, c - a);
-    const float length = glm::length(normal);
-    Plane& plane = planes_[t];
-    plane.normal = length > 0.0f ? normal / length : glm::vec3(0.0f);
-    plane.offset = glm::dot(plane.normal, a);
-    plane.centroid = (a + b + c) / 3.0f;
-    const float r2 = std::max({glm::dot(a - plane.centroid, a - plane.centroid),
-                               glm::dot(b - plane.centroid, b - plane.centroid),
-                               glm::dot(c - plane.centroid, c - plane.centroid)});
-    plane.reach = std::sqrt(r2) + thickness;
-    boxes[t].extend(a);
-    boxes[t].extend(b);
-    boxes[t].extend(c);
-  }
+  // Each triangle on its own: in parallel.
+  forRange(count, [&](size_t begin, size_t end) {
+    for (size_t t = begin; t < end; ++t) {
+      const glm::vec3 &a = s.x[triangles_[3 * t]], &b = s.x[triangles_[3 * t + 1]], &c = s.x[triangles_[3 * t + 2]];
+      const glm::vec3 normal = glm::cross(b - a, c - a);
+      const float length = glm::length(normal);
+      Plane& plane = planes_[t];
+      plane.normal = length > 0.0f ? normal / length : glm::vec3(0.0f);
+      plane.offset = glm::dot(plane.normal, a);
+      plane.centroid = (a + b + c) / 3.0f;
+      const float r2 = std::max({glm::dot(a - plane.centroid, a - plane.centroid),
+                                 glm::dot(b - plane.centroid, b - plane.centroid),
+                                 glm::dot(c - plane.centroid, c - plane.centroid)});
+      plane.reach = std::sqrt(r2) + thickness;
+      boxes[t].extend(a);
+      boxes[t].extend(b);
+      boxes[t].extend(c);
+    }
+  });
   if (callsSinceBuild_ >= kRebuildEvery || tree_.empty()) {
     tree_.build(boxes);
     callsSinceBuild_ = 0;
@@ -182,13 +185,14 @@ std::vector<BodyFeatureContact::Contact> BodyFeatureContact::findContacts(const 
           // Behind the body vertex, the triangle's point is inside the body or
           // beside the tip the vertex is (a sharp feature); outside with the
           // body's surface between it and the vertex (the surface facing away
-          // from the vertex's side), it is cloth beyond a thin body part.
+          // from the vertex's side), it is cloth beyond a thin body part. In
+          // front (nearly all pairs) no search is needed: the surface under
+          // the triangle moves with the body vertex.
           BodyContact contact;
-          const bool found = body.nearestContact(q, contact, maxDepth_ + thickness);
-          if (height < 0.0f && found && contact.signedDistance >= 0.0f &&
-              glm::dot(contact.normal, side * plane.normal) < kBeyond)
+          if (height < 0.0f && body.nearestContact(q, contact, maxDepth_ + thickness) &&
+              contact.signedDistance >= 0.0f && glm::dot(contact.normal, side * plane.normal) < kBeyond)
             continue;
-          out.push_back({v, t, w, side, found ? contact.velocity : glm::vec3(0.0f), height < 0.0f, height < gap});
+          out.push_back({v, t, w, side, body.velocities()[v], height < 0.0f, height < gap});
         }
       }
     }

@@ -60,7 +60,7 @@ class BodyFeatureContact {
     uint32_t bodyVertex, triangle;
     glm::vec3 weights;          // of the triangle's point under the body vertex
     float side;                 // +1 / -1: the triangle's normal times this points out of the body
-    glm::vec3 surfaceVelocity;  // the body's, near the contact
+    glm::vec3 surfaceVelocity;  // the body vertex's
     bool pierced;               // the body vertex was in front of the triangle
     bool withinGap;             // in contact when found (else kept for reapply())
   };
