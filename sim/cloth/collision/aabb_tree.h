@@ -83,6 +83,8 @@ class AabbTree {
     return {n.left, n.right, n.first, n.count};
   }
   uint32_t primitive(uint32_t k) const { return order_[k]; }
+  // The box of the primitive at place k.
+  const Box& leafBox(uint32_t k) const { return leafBoxes_[k]; }
 
   bool empty() const { return nodes_.empty(); }
 
