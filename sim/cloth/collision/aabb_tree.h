@@ -104,6 +104,7 @@ class AabbTree {
   std::vector<Node> nodes_;
   std::vector<uint32_t> order_;  // primitive indices, leaf ranges
   std::vector<Box> leafBoxes_;   // the primitives' boxes in order_'s order
+  std::vector<glm::vec3> centres_;  // build()'s scratch
 };
 
 inline float squaredDistance(const Box& b, const glm::vec3& p) {

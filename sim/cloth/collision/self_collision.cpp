@@ -132,6 +132,14 @@ void findTopFlatPlaces(const AabbTree& tree, const std::vector<uint8_t>& flat, s
   }
 }
 
+// Per place of `tree`: the value of the primitive there.
+template <class T>
+std::vector<T> placeOrdered(const AabbTree& tree, const std::vector<T>& byPrimitive) {
+  std::vector<T> byPlace(byPrimitive.size());
+  for (uint32_t k = 0; k < byPlace.size(); ++k) byPlace[k] = byPrimitive[tree.primitive(k)];
+  return byPlace;
+}
+
 // Grows m to hold o (row by row).
 inline void extend(NodeMotion& m, const NodeMotion& o) {
 #ifdef __SSE2__
@@ -296,6 +304,11 @@ void SelfCollision::findConnectedPatches() {
   });
   edgeAtPlace_.resize(edges_.size());
   for (uint32_t k = 0; k < edges_.size(); ++k) edgeAtPlace_[k] = edges_[edgeTree_.primitive(k)];
+  triangleAtPlace_.resize(triangles_.size() / 3);
+  for (uint32_t k = 0; k < triangleAtPlace_.size(); ++k) {
+    const uint32_t t = tree_.primitive(k);
+    triangleAtPlace_[k] = {triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]};
+  }
   vertexPlace_.assign(vertexCount_, UINT32_MAX);
   for (uint32_t k = 0; k < triangles_.size() / 3; ++k)
     for (int c = 0; c < 3; ++c) {
@@ -319,7 +332,9 @@ void SelfCollision::findVertexGroups() {
   auto addGroup = [&](uint32_t placeFirst, uint32_t placeCount) {
     const uint32_t begin = next;
     while (next < vertexOrder_.size() && vertexPlace_[vertexOrder_[next]] < placeFirst + placeCount) ++next;
-    if (next > begin) vertexGroups_.push_back({begin, next, placeFirst, placeCount});
+    // A leaf larger than a group (its vertices over several groups with its places).
+    for (uint32_t i = begin; i < next; i += kGroupVertices)
+      vertexGroups_.push_back({i, std::min(next, i + kGroupVertices), placeFirst, placeCount});
   };
   if (!tree_.empty()) {
     int32_t stack[64];
@@ -459,6 +474,11 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     edgeTree_.refit(edgeBoxes);
   }
   ++stepsSinceBuild_;
+  // The swept boxes checked on each pair in the trees' order (read in sequence).
+  if (checkSwept) {
+    sweptBoxes = placeOrdered(tree_, sweptBoxes);
+    sweptEdgeBoxes = placeOrdered(edgeTree_, sweptEdgeBoxes);
+  }
   // The node bounds pay where the boxes are grown much by the motion (parts
   // of the cloth moving apart from the rest); where its moves differ little
   // they cost more than they leave out.
@@ -481,11 +501,11 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     glm::vec3 meanMove;
     float spread;
   };
-  std::vector<TriangleBound> triangleBounds(triangleCount);
-  inChunks(triangleCount, 4096, [&](size_t t0, size_t t1) {
-    for (size_t t = t0; t < t1; ++t) {
-      const uint32_t* corners = &triangles_[3 * t];
-      TriangleBound& b = triangleBounds[t];
+  std::vector<TriangleBound> triangleBounds(triangleCount);  // by place
+  inChunks(triangleCount, 4096, [&](size_t k0, size_t k1) {
+    for (size_t k = k0; k < k1; ++k) {
+      const std::array<uint32_t, 3>& corners = triangleAtPlace_[k];
+      TriangleBound& b = triangleBounds[k];
       b.centre = (x0[corners[0]] + x0[corners[1]] + x0[corners[2]]) / 3.0f;
       b.meanMove = (move[corners[0]] + move[corners[1]] + move[corners[2]]) / 3.0f;
       b.radius = b.spread = 0.0f;
@@ -512,12 +532,11 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
   auto testVertexTriangle = [&](const VertexQuery& q, uint32_t place, std::vector<VertexTriangle>& out) {
     const uint32_t v = q.vertex;
     if (!q.box.overlaps(tree_.leafBox(place)) || (q.flat >= 0 && q.flat == topFlatPlace_[place])) return;
-    const uint32_t t = tree_.primitive(place);
     if (bounded && !withinReach(triangleMotions_[place], x0[v], move[v], thickness)) return;
-    const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
+    const auto [a, b, c] = triangleAtPlace_[place];
     if (v == a || v == b || v == c) return;
-    if (checkSwept && !q.swept.overlaps(sweptBoxes[t])) return;
-    const TriangleBound& bound = triangleBounds[t];
+    if (checkSwept && !q.swept.overlaps(sweptBoxes[place])) return;
+    const TriangleBound& bound = triangleBounds[place];
     const float farthest = thickness + glm::length(move[v] - bound.meanMove) + bound.spread;
     if (glm::length(x0[v] - bound.centre) - bound.radius > 1.0001f * farthest + 1e-6f) return;
     const glm::vec3 w = closestTriangleWeights(x0[v], x0[a], x0[b], x0[c]);
@@ -526,7 +545,7 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     const float reach = thickness + closing({v}, {a, b, c});
     if (glm::dot(offset, offset) > reach * reach) return;
     const float side = glm::dot(offset, normal) >= 0.0f ? 1.0f : -1.0f;
-    out.push_back({v, t, w, side});
+    out.push_back({v, tree_.primitive(place), w, side});
   };
   if (exhaustive_) {
     vertexTriangle_ = collectInBlocks<VertexTriangle>(n, [&](size_t v, std::vector<VertexTriangle>& out) {
@@ -540,7 +559,7 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     // the tree's order: one query after the other walks the same nodes.
     vertexTriangle_ = collectInBlocks<VertexTriangle>(vertexGroups_.size(), [&](size_t g, std::vector<VertexTriangle>& out) {
       const VertexGroup& group = vertexGroups_[g];
-      VertexQuery queries[3 * kGroupTriangles];
+      VertexQuery queries[kGroupVertices];
       Box groupBox;
       NodeMotion groupMotion;
       uint32_t count = 0;
@@ -577,11 +596,11 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     glm::vec3 meanMove;
     float spread;
   };
-  std::vector<EdgeBound> bounds(edges_.size());
-  inChunks(edges_.size(), 4096, [&](size_t e0, size_t e1) {
-    for (size_t e = e0; e < e1; ++e) {
-      const auto [p0, p1] = edges_[e];
-      bounds[e] = {0.5f * (x0[p0] + x0[p1]), 0.5f * glm::length(x0[p0] - x0[p1]), 0.5f * (move[p0] + move[p1]),
+  std::vector<EdgeBound> bounds(edges_.size());  // by place
+  inChunks(edges_.size(), 4096, [&](size_t k0, size_t k1) {
+    for (size_t k = k0; k < k1; ++k) {
+      const auto [p0, p1] = edgeAtPlace_[k];
+      bounds[k] = {0.5f * (x0[p0] + x0[p1]), 0.5f * glm::length(x0[p0] - x0[p1]), 0.5f * (move[p0] + move[p1]),
                    0.5f * glm::length(move[p0] - move[p1])};
     }
   });
@@ -592,14 +611,15 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     const auto [b0, b1] = edgeAtPlace_[placeK];
     if (sharesVertex(a0, a1, b0, b1)) return;
     if (bounded && !withinReach(edgeMotions_[placeI], edgeMotions_[placeK], thickness)) return;
+    if (checkSwept && !sweptEdgeBoxes[placeI].overlaps(sweptEdgeBoxes[placeK])) return;
+    const EdgeBound &bi = bounds[placeI], &bk = bounds[placeK];
+    const float bound = thickness + glm::length(bi.meanMove - bk.meanMove) + (bi.spread + bk.spread);
+    if (glm::length(bi.mid - bk.mid) - (bi.halfLength + bk.halfLength) > 1.0001f * bound + 1e-6f) return;
+    // The exact test with the edges in their order (the lower index first).
     const uint32_t i = edgeTree_.primitive(placeI), k = edgeTree_.primitive(placeK);
-    const uint32_t e = std::min(i, k), f = std::max(i, k);
-    const auto [p0, p1] = edges_[e];
-    const auto [q0, q1] = edges_[f];
-    if (checkSwept && !sweptEdgeBoxes[e].overlaps(sweptEdgeBoxes[f])) return;
-    const EdgeBound &be = bounds[e], &bf = bounds[f];
-    const float bound = thickness + glm::length(be.meanMove - bf.meanMove) + be.spread + bf.spread;
-    if (glm::length(be.mid - bf.mid) - (be.halfLength + bf.halfLength) > 1.0001f * bound + 1e-6f) return;
+    const bool ordered = i < k;
+    const uint32_t e = ordered ? i : k, f = ordered ? k : i;
+    const uint32_t p0 = ordered ? a0 : b0, p1 = ordered ? a1 : b1, q0 = ordered ? b0 : a0, q1 = ordered ? b1 : a1;
     const float reach = thickness + closing({p0, p1}, {q0, q1});
     // Bounding balls first: the segments' points lie within half their
     // lengths of their midpoints.

@@ -7,7 +7,9 @@
 // pulled back to its side. At the end of the step every pair closer than the
 // thickness along that side's normal is pushed apart (mass-weighted, like a
 // position constraint) and loses its approaching relative normal velocity.
-// Pairs are processed in a fixed order: deterministic.
+// Pairs are processed in a fixed order: deterministic. The vertices are
+// looked up in the triangle tree a few at a time (those whose first triangle
+// in the tree is in one leaf), the edge pairs from the edge tree against itself.
 //
 // A candidate also passes dist(x0) <= thickness + the largest difference of
 // its vertices' moves in the step. When the moves differ much (a sleeve
@@ -99,7 +101,8 @@ class SelfCollision {
   AabbTree edgeTree_;  // over the edges' boxes
   std::vector<VertexTriangle> vertexTriangle_;
   std::vector<EdgeEdge> edgeEdge_;
-  static constexpr uint32_t kGroupTriangles = 4;  // the most triangles whose vertices are queried as one group
+  // The most triangles whose vertices are queried as one group, and the most vertices in a group.
+  static constexpr uint32_t kGroupTriangles = 4, kGroupVertices = 3 * kGroupTriangles;
   static constexpr int kRebuildEvery = 16;  // steps between tree rebuilds (refitted in between)
   int stepsSinceBuild_ = 0;
   // Per node of the edge and triangle trees: its primitives are connected
@@ -107,11 +110,14 @@ class SelfCollision {
   std::vector<uint8_t> connectedEdgePatch_, connectedTrianglePatch_, flatEdgePatch_, flatTrianglePatch_;
   std::vector<uint32_t> vertexPlace_;  // per vertex: the place of one of its triangles in the triangle tree
   std::vector<uint32_t> vertexOrder_;  // the vertices by their place
-  std::vector<std::pair<uint32_t, uint32_t>> edgeAtPlace_;  // the edges' vertices in the edge tree's order
-  // The vertex-triangle queries are made for groups of vertices at once: the
-  // vertices whose places lie in one small subtree of the triangle tree
-  // (vertexOrder_[vertexBegin, vertexEnd) covering places [placeFirst,
-  // placeFirst + placeCount)), or one vertex without a triangle (placeCount 0).
+  // The elements' vertices in their trees' order.
+  std::vector<std::pair<uint32_t, uint32_t>> edgeAtPlace_;
+  std::vector<std::array<uint32_t, 3>> triangleAtPlace_;
+  // The vertex-triangle queries are made for groups of vertices at once: up
+  // to kGroupVertices whose places lie in one small subtree of the triangle
+  // tree (vertexOrder_[vertexBegin, vertexEnd), their places within
+  // [placeFirst, placeFirst + placeCount)), or one vertex without a triangle
+  // (placeCount 0).
   struct VertexGroup {
     uint32_t vertexBegin, vertexEnd, placeFirst, placeCount;
   };
