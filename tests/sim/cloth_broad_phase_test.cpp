@@ -292,5 +292,65 @@ TEST(SelfCollision, MotionBoundsLeaveOutNoCandidate) {
   }
 }
 
+// The candidates of resolve() from the thickness and a step from `start` to `end`.
+struct Candidates {
+  std::vector<std::array<uint32_t, 2>> vertexTriangle;
+  std::vector<std::array<uint32_t, 4>> edgeEdge;
+};
+Candidates candidatesOf(const ClothMesh& mesh, const ClothState& start, const ClothState& end, float thickness,
+                        bool exhaustive) {
+  SelfCollision selfCollision(mesh.triangles, mesh.vertexCount());
+  selfCollision.setExhaustive(exhaustive);
+  ClothState s = end;
+  selfCollision.resolve(s, start.x, thickness, 1);
+  return {selfCollision.vertexTrianglePairs(), selfCollision.edgeEdgePairs()};
+}
+
+// The state turned by `angle` about the vertical axis through `axisPoint`.
+ClothState turned(const ClothState& state, glm::vec3 axisPoint, float angle) {
+  ClothState out = state;
+  for (glm::vec3& p : out.x) {
+    const glm::vec3 r = p - axisPoint;
+    p = axisPoint + glm::vec3(std::cos(angle) * r.x + std::sin(angle) * r.z, r.y, -std::sin(angle) * r.x + std::cos(angle) * r.z);
+  }
+  return out;
+}
+
+TEST(SelfCollision, SearchesFindThePairsOfAnExhaustiveTest) {
+  // A sheet dropped over a sphere, folding onto itself with self-collisions
+  // on: at a few of its steps, as simulated and with the end of the step
+  // swung (about an axis at its side, so its moves differ by centimetres),
+  // the tree searches (vertex groups, pair traversal, flat patches and
+  // motion bounds pruning whole nodes) find exactly the pairs of a test of
+  // every vertex against every triangle and every edge against every edge.
+  const ClothMesh mesh = test::horizontalSheetMesh(28, 0.6f, glm::vec3(0.0f, 0.25f, 0.0f));
+  ClothSettings settings;
+  settings.selfCollisions = true;
+  ClothSimulator sim(mesh, fabricPreset("cotton"), settings);
+  sim.addCollider(PrimitiveCollider::sphere({0.0f, 0.0f, 0.0f}, 0.15f));
+  size_t vertexTriangle = 0, edgeEdge = 0, swungVertexTriangle = 0;
+  for (int step = 1; step <= 60; ++step) {
+    const ClothState start = sim.state();
+    sim.step(1.0f / 60.0f);
+    if (step % 12 != 0) continue;
+    for (const bool swung : {false, true}) {
+      const ClothState end = swung ? turned(sim.state(), glm::vec3(0.4f, 0.0f, 0.0f), 0.08f) : sim.state();
+      for (const float thickness : {settings.selfThickness, 0.01f}) {
+        const Candidates searched = candidatesOf(mesh, start, end, thickness, false);
+        const Candidates reference = candidatesOf(mesh, start, end, thickness, true);
+        const std::string where = "step " + std::to_string(step) + (swung ? " swung" : "") + ", thickness " +
+                                  std::to_string(thickness);
+        EXPECT_EQ(searched.vertexTriangle, reference.vertexTriangle) << where;
+        EXPECT_EQ(searched.edgeEdge, reference.edgeEdge) << where;
+        (swung ? swungVertexTriangle : vertexTriangle) += reference.vertexTriangle.size();
+        edgeEdge += reference.edgeEdge.size();
+      }
+    }
+  }
+  EXPECT_GT(vertexTriangle, 50u);
+  EXPECT_GT(swungVertexTriangle, 50u);
+  EXPECT_GT(edgeEdge, 50u);
+}
+
 }  // namespace
 }  // namespace mq::cloth

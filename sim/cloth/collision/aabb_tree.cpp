@@ -25,6 +25,9 @@ void AabbTree::build(const std::vector<Box>& boxes) {
   for (uint32_t t = 0; t < count; ++t) order_[t] = t;
   nodes_.clear();
   nodes_.reserve(2 * count / kLeafSize + 2);
+  // Twice the boxes' centres, computed once for the median splits' comparisons.
+  centres_.resize(count);
+  for (uint32_t t = 0; t < count; ++t) centres_[t] = boxes[t].min + boxes[t].max;
   if (count > 0) buildNode(0, count, boxes);
   gatherLeafBoxes(boxes);
 }
@@ -46,7 +49,7 @@ int32_t AabbTree::buildNode(uint32_t first, uint32_t count, const std::vector<Bo
   const glm::vec3 extent = box.max - box.min;
   const int axis = extent.x > extent.y ? (extent.x > extent.z ? 0 : 2) : (extent.y > extent.z ? 1 : 2);
   const uint32_t half = count / 2;
-  auto centre = [&](uint32_t t) { return boxes[t].min[axis] + boxes[t].max[axis]; };
+  auto centre = [&](uint32_t t) { return centres_[t][axis]; };
   std::nth_element(order_.begin() + first, order_.begin() + first + half, order_.begin() + first + count,
                    [&](uint32_t a, uint32_t b) { return centre(a) < centre(b) || (centre(a) == centre(b) && a < b); });
   const int32_t left = buildNode(first, half, boxes);

@@ -83,6 +83,8 @@ class AabbTree {
     return {n.left, n.right, n.first, n.count};
   }
   uint32_t primitive(uint32_t k) const { return order_[k]; }
+  // The box of the primitive at place k.
+  const Box& leafBox(uint32_t k) const { return leafBoxes_[k]; }
 
   bool empty() const { return nodes_.empty(); }
 
@@ -102,6 +104,7 @@ class AabbTree {
   std::vector<Node> nodes_;
   std::vector<uint32_t> order_;  // primitive indices, leaf ranges
   std::vector<Box> leafBoxes_;   // the primitives' boxes in order_'s order
+  std::vector<glm::vec3> centres_;  // build()'s scratch
 };
 
 inline float squaredDistance(const Box& b, const glm::vec3& p) {

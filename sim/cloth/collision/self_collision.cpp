@@ -115,6 +115,31 @@ void findFlatNodes(const AabbTree& tree, const std::vector<uint8_t>& connected, 
   }
 }
 
+// Per place of `tree`: the highest node over it (or itself) that is `flat`,
+// -1 if none. Two places lie in one flat node when theirs is the same node.
+// Top-down: children follow their parent (topNode: per node, scratch).
+void findTopFlatPlaces(const AabbTree& tree, const std::vector<uint8_t>& flat, std::vector<int32_t>& topNode,
+                       std::vector<int32_t>& places) {
+  topNode.assign(tree.nodeCount(), -1);
+  places.resize(tree.empty() ? 0 : tree.nodeInfo(0).count);
+  for (size_t i = 0; i < topNode.size(); ++i) {
+    const AabbTree::NodeInfo node = tree.nodeInfo(i);
+    if (topNode[i] < 0 && flat[i]) topNode[i] = int32_t(i);
+    if (node.left >= 0)
+      topNode[node.left] = topNode[node.right] = topNode[i];
+    else
+      std::fill_n(places.begin() + node.first, node.count, topNode[i]);
+  }
+}
+
+// Per place of `tree`: the value of the primitive there.
+template <class T>
+std::vector<T> placeOrdered(const AabbTree& tree, const std::vector<T>& byPrimitive) {
+  std::vector<T> byPlace(byPrimitive.size());
+  for (uint32_t k = 0; k < byPlace.size(); ++k) byPlace[k] = byPrimitive[tree.primitive(k)];
+  return byPlace;
+}
+
 // Grows m to hold o (row by row).
 inline void extend(NodeMotion& m, const NodeMotion& o) {
 #ifdef __SSE2__
@@ -148,19 +173,28 @@ inline bool withinReach(float gap2, float farthest2, float thickness) {
 // Whether two nodes' elements can pass it: their start boxes are within the
 // thickness plus the largest difference of two of their moves (four lanes at
 // a time, the fourth zero).
-inline bool withinReach(const NodeMotion& a, const NodeMotion& b, float thickness) {
 #ifdef __SSE2__
+inline bool withinReach(__m128 aStartMin, __m128 aStartMax, __m128 aMoveMin, __m128 aMoveMax, __m128 bStartMin,
+                        __m128 bStartMax, __m128 bMoveMin, __m128 bMoveMax, float thickness) {
   const __m128 zero = _mm_setzero_ps(), sign = _mm_set1_ps(-0.0f);
-  auto load = [](const glm::vec4& v) { return _mm_load_ps(&v.x); };
-  const __m128 gap = _mm_max_ps(_mm_max_ps(_mm_sub_ps(load(a.startMin), load(b.startMax)),
-                                           _mm_sub_ps(load(b.startMin), load(a.startMax))), zero);
-  const __m128 far = _mm_max_ps(_mm_andnot_ps(sign, _mm_sub_ps(load(a.moveMax), load(b.moveMin))),
-                                _mm_andnot_ps(sign, _mm_sub_ps(load(b.moveMax), load(a.moveMin))));
+  const __m128 gap = _mm_max_ps(_mm_max_ps(_mm_sub_ps(aStartMin, bStartMax), _mm_sub_ps(bStartMin, aStartMax)), zero);
+  const __m128 far = _mm_max_ps(_mm_andnot_ps(sign, _mm_sub_ps(aMoveMax, bMoveMin)),
+                                _mm_andnot_ps(sign, _mm_sub_ps(bMoveMax, aMoveMin)));
   // Horizontal sums of the squares: gap2 in lane 0, far2 in lane 2 of the pair.
   const __m128 g2 = _mm_mul_ps(gap, gap), f2 = _mm_mul_ps(far, far);
   const __m128 s1 = _mm_add_ps(_mm_unpacklo_ps(g2, f2), _mm_unpackhi_ps(g2, f2));  // g0+g2 f0+f2 g1+g3 f1+f3
   const __m128 s2 = _mm_add_ps(s1, _mm_movehl_ps(s1, s1));                         // gap2 far2 . .
   return withinReach(_mm_cvtss_f32(s2), _mm_cvtss_f32(_mm_shuffle_ps(s2, s2, 1)), thickness);
+}
+inline __m128 row(const glm::vec4& v) { return _mm_load_ps(&v.x); }
+// A point as a row, built in registers (a NodeMotion built on the stack and
+// read back at once stalls on the store).
+inline __m128 row(const glm::vec3& p) { return _mm_setr_ps(p.x, p.y, p.z, 0.0f); }
+#endif
+inline bool withinReach(const NodeMotion& a, const NodeMotion& b, float thickness) {
+#ifdef __SSE2__
+  return withinReach(row(a.startMin), row(a.startMax), row(a.moveMin), row(a.moveMax), row(b.startMin),
+                     row(b.startMax), row(b.moveMin), row(b.moveMax), thickness);
 #else
   const glm::vec4 gap = glm::max(glm::max(a.startMin - b.startMax, b.startMin - a.startMax), glm::vec4(0.0f));
   const glm::vec4 far = glm::max(glm::abs(a.moveMax - b.moveMin), glm::abs(b.moveMax - a.moveMin));
@@ -169,7 +203,12 @@ inline bool withinReach(const NodeMotion& a, const NodeMotion& b, float thicknes
 }
 // The same for a node's elements and a vertex.
 inline bool withinReach(const NodeMotion& a, const glm::vec3& start, const glm::vec3& move, float thickness) {
+#ifdef __SSE2__
+  const __m128 p = row(start), d = row(move);
+  return withinReach(row(a.startMin), row(a.startMax), row(a.moveMin), row(a.moveMax), p, p, d, d, thickness);
+#else
   return withinReach(a, pointMotion(start, move), thickness);
+#endif
 }
 
 // Per element (in the tree's order) and per node of `tree`: the box of its
@@ -184,7 +223,19 @@ void findNodeMotions(const AabbTree& tree, Vertices&& vertices, const std::vecto
     for (size_t k = k0; k < k1; ++k) {
       NodeMotion& m = elements[k];
       m = {};
+#ifdef __SSE2__
+      // In registers (see row()).
+      __m128 startMin = row(m.startMin), startMax = row(m.startMax), moveMin = row(m.moveMin), moveMax = row(m.moveMax);
+      for (uint32_t v : vertices(tree.primitive(uint32_t(k)))) {
+        const __m128 p = row(x0[v]), d = row(move[v]);
+        startMin = _mm_min_ps(startMin, p), startMax = _mm_max_ps(startMax, p);
+        moveMin = _mm_min_ps(moveMin, d), moveMax = _mm_max_ps(moveMax, d);
+      }
+      _mm_store_ps(&m.startMin.x, startMin), _mm_store_ps(&m.startMax.x, startMax);
+      _mm_store_ps(&m.moveMin.x, moveMin), _mm_store_ps(&m.moveMax.x, moveMax);
+#else
       for (uint32_t v : vertices(tree.primitive(uint32_t(k)))) extend(m, pointMotion(x0[v], move[v]));
+#endif
     }
   });
   motions.resize(tree.nodeCount());
@@ -251,6 +302,13 @@ void SelfCollision::findConnectedPatches() {
   connectedTrianglePatch_ = connectedNodes(tree_, vertexCount_, [&](uint32_t t) {
     return std::array<uint32_t, 3>{triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]};
   });
+  edgeAtPlace_.resize(edges_.size());
+  for (uint32_t k = 0; k < edges_.size(); ++k) edgeAtPlace_[k] = edges_[edgeTree_.primitive(k)];
+  triangleAtPlace_.resize(triangles_.size() / 3);
+  for (uint32_t k = 0; k < triangleAtPlace_.size(); ++k) {
+    const uint32_t t = tree_.primitive(k);
+    triangleAtPlace_[k] = {triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]};
+  }
   vertexPlace_.assign(vertexCount_, UINT32_MAX);
   for (uint32_t k = 0; k < triangles_.size() / 3; ++k)
     for (int c = 0; c < 3; ++c) {
@@ -262,6 +320,37 @@ void SelfCollision::findConnectedPatches() {
   std::sort(vertexOrder_.begin(), vertexOrder_.end(), [&](uint32_t a, uint32_t b) {
     return vertexPlace_[a] != vertexPlace_[b] ? vertexPlace_[a] < vertexPlace_[b] : a < b;
   });
+  findVertexGroups();
+}
+
+// The vertex groups: the subtrees of at most kGroupTriangles triangles that
+// are highest in the tree, left to right (their places ascending, as in
+// vertexOrder_), then every vertex without a triangle on its own.
+void SelfCollision::findVertexGroups() {
+  vertexGroups_.clear();
+  uint32_t next = 0;  // in vertexOrder_
+  auto addGroup = [&](uint32_t placeFirst, uint32_t placeCount) {
+    const uint32_t begin = next;
+    while (next < vertexOrder_.size() && vertexPlace_[vertexOrder_[next]] < placeFirst + placeCount) ++next;
+    // A leaf larger than a group (its vertices over several groups with its places).
+    for (uint32_t i = begin; i < next; i += kGroupVertices)
+      vertexGroups_.push_back({i, std::min(next, i + kGroupVertices), placeFirst, placeCount});
+  };
+  if (!tree_.empty()) {
+    int32_t stack[64];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const AabbTree::NodeInfo node = tree_.nodeInfo(stack[--top]);
+      if (node.left < 0 || node.count <= kGroupTriangles) {
+        addGroup(node.first, node.count);
+      } else {
+        stack[top++] = node.right;  // the left child first
+        stack[top++] = node.left;
+      }
+    }
+  }
+  for (; next < vertexOrder_.size(); ++next) vertexGroups_.push_back({next, next + 1, 0, 0});
 }
 
 // Which nodes of the trees are connected patches whose triangles' normals
@@ -282,6 +371,8 @@ void SelfCollision::findFlatPatches(const ClothState& s, const std::vector<glm::
   }, nodeCones_, flatEdgePatch_);
   findFlatNodes(tree_, connectedTrianglePatch_, [&](uint32_t t) { return triangleCones_[t]; }, nodeCones_,
                 flatTrianglePatch_);
+  findTopFlatPlaces(tree_, flatTrianglePatch_, topFlatNode_, topFlatPlace_);
+  findTopFlatPlaces(edgeTree_, flatEdgePatch_, topFlatNode_, topFlatEdgePlace_);
 }
 
 void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::vec3>& x0, float thickness) {
@@ -383,6 +474,11 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     edgeTree_.refit(edgeBoxes);
   }
   ++stepsSinceBuild_;
+  // The swept boxes checked on each pair in the trees' order (read in sequence).
+  if (checkSwept) {
+    sweptBoxes = placeOrdered(tree_, sweptBoxes);
+    sweptEdgeBoxes = placeOrdered(edgeTree_, sweptEdgeBoxes);
+  }
   // The node bounds pay where the boxes are grown much by the motion (parts
   // of the cloth moving apart from the rest); where its moves differ little
   // they cost more than they leave out.
@@ -396,34 +492,96 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     }, x0, move, edgeMotions_, edgeNodeMotions_);
   }
   findFlatPatches(s, x0);
-  // The vertices in the tree's order: one query after the other walks the
-  // same nodes (in cache).
-  vertexTriangle_ = collectInBlocks<VertexTriangle>(n, [&](size_t i, std::vector<VertexTriangle>& out) {
-    const uint32_t v = vertexOrder_[i];
-    // Not into a node out of the vertex's reach, nor into a flat patch that
-    // holds the vertex (no triangle there can reach it).
-    auto skipped = [&](int32_t node) {
-      if (bounded && !withinReach(nodeMotions_[node], x0[v], move[v], thickness)) return true;
-      if (!flatTrianglePatch_[node]) return false;
-      const AabbTree::NodeInfo info = tree_.nodeInfo(node);
-      return vertexPlace_[v] - info.first < info.count;
-    };
-    const Box vertexSwept = sweptBox({v});
-    tree_.queryPlaces(swept && !checkSwept ? vertexSwept : relativeBox({v}), [&](uint32_t place) {
-      if (bounded && !withinReach(triangleMotions_[place], x0[v], move[v], thickness)) return;
-      const uint32_t t = tree_.primitive(place);
-      const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
-      if (v == a || v == b || v == c) return;
-      if (checkSwept && !vertexSwept.overlaps(sweptBoxes[t])) return;
-      const glm::vec3 w = closestTriangleWeights(x0[v], x0[a], x0[b], x0[c]);
-      const glm::vec3 normal = glm::cross(x0[b] - x0[a], x0[c] - x0[a]);
-      const glm::vec3 offset = x0[v] - (w.x * x0[a] + w.y * x0[b] + w.z * x0[c]);
-      const float reach = thickness + closing({v}, {a, b, c});
-      if (glm::dot(offset, offset) > reach * reach) return;
-      const float side = glm::dot(offset, normal) >= 0.0f ? 1.0f : -1.0f;
-      out.push_back({v, t, w, side});
-    }, skipped);
+  // A cheap bound before the exact vertex-triangle test, as for the edges
+  // below: the triangle lies within `radius` of its centre, and a vertex's
+  // move differs from its corners' by at most |move - meanMove| + spread.
+  struct TriangleBound {
+    glm::vec3 centre;
+    float radius;
+    glm::vec3 meanMove;
+    float spread;
+  };
+  std::vector<TriangleBound> triangleBounds(triangleCount);  // by place
+  inChunks(triangleCount, 4096, [&](size_t k0, size_t k1) {
+    for (size_t k = k0; k < k1; ++k) {
+      const std::array<uint32_t, 3>& corners = triangleAtPlace_[k];
+      TriangleBound& b = triangleBounds[k];
+      b.centre = (x0[corners[0]] + x0[corners[1]] + x0[corners[2]]) / 3.0f;
+      b.meanMove = (move[corners[0]] + move[corners[1]] + move[corners[2]]) / 3.0f;
+      b.radius = b.spread = 0.0f;
+      for (int k = 0; k < 3; ++k) {
+        b.radius = std::max(b.radius, glm::length(x0[corners[k]] - b.centre));
+        b.spread = std::max(b.spread, glm::length(move[corners[k]] - b.meanMove));
+      }
+    }
   });
+  // A vertex's query: its box (of the trees' kind) and swept box, and its
+  // highest flat patch.
+  struct VertexQuery {
+    uint32_t vertex;
+    int32_t flat;
+    Box box, swept;
+  };
+  auto vertexQuery = [&](uint32_t v) {
+    const Box vertexSwept = sweptBox({v});
+    const int32_t flat = vertexPlace_[v] == UINT32_MAX ? -1 : topFlatPlace_[vertexPlace_[v]];
+    return VertexQuery{v, flat, swept && !checkSwept ? vertexSwept : relativeBox({v}), vertexSwept};
+  };
+  // A vertex and the triangle at a place in the tree: whose boxes overlap,
+  // not in one flat patch, within reach.
+  auto testVertexTriangle = [&](const VertexQuery& q, uint32_t place, std::vector<VertexTriangle>& out) {
+    const uint32_t v = q.vertex;
+    if (!q.box.overlaps(tree_.leafBox(place)) || (q.flat >= 0 && q.flat == topFlatPlace_[place])) return;
+    if (bounded && !withinReach(triangleMotions_[place], x0[v], move[v], thickness)) return;
+    const auto [a, b, c] = triangleAtPlace_[place];
+    if (v == a || v == b || v == c) return;
+    if (checkSwept && !q.swept.overlaps(sweptBoxes[place])) return;
+    const TriangleBound& bound = triangleBounds[place];
+    const float farthest = thickness + glm::length(move[v] - bound.meanMove) + bound.spread;
+    if (glm::length(x0[v] - bound.centre) - bound.radius > 1.0001f * farthest + 1e-6f) return;
+    const glm::vec3 w = closestTriangleWeights(x0[v], x0[a], x0[b], x0[c]);
+    const glm::vec3 normal = glm::cross(x0[b] - x0[a], x0[c] - x0[a]);
+    const glm::vec3 offset = x0[v] - (w.x * x0[a] + w.y * x0[b] + w.z * x0[c]);
+    const float reach = thickness + closing({v}, {a, b, c});
+    if (glm::dot(offset, offset) > reach * reach) return;
+    const float side = glm::dot(offset, normal) >= 0.0f ? 1.0f : -1.0f;
+    out.push_back({v, tree_.primitive(place), w, side});
+  };
+  if (exhaustive_) {
+    vertexTriangle_ = collectInBlocks<VertexTriangle>(n, [&](size_t v, std::vector<VertexTriangle>& out) {
+      const VertexQuery q = vertexQuery(uint32_t(v));
+      for (uint32_t place = 0; place < triangleCount; ++place) testVertexTriangle(q, place, out);
+    });
+  } else {
+    // One query per vertex group (vertices close in the tree, so close in
+    // space) with the group's box and motion, then each vertex against the
+    // triangles found: the pairs of the vertices' own queries. The groups in
+    // the tree's order: one query after the other walks the same nodes.
+    vertexTriangle_ = collectInBlocks<VertexTriangle>(vertexGroups_.size(), [&](size_t g, std::vector<VertexTriangle>& out) {
+      const VertexGroup& group = vertexGroups_[g];
+      VertexQuery queries[kGroupVertices];
+      Box groupBox;
+      NodeMotion groupMotion;
+      uint32_t count = 0;
+      for (uint32_t i = group.vertexBegin; i < group.vertexEnd; ++i) {
+        const uint32_t v = vertexOrder_[i];
+        queries[count] = vertexQuery(v);
+        groupBox.extend(queries[count++].box);
+        if (bounded) extend(groupMotion, pointMotion(x0[v], move[v]));
+      }
+      // Not into a node out of the group's reach, nor into a flat patch that
+      // holds all the group's places (no triangle there can reach its vertices).
+      auto skipped = [&](int32_t node) {
+        if (bounded && !withinReach(nodeMotions_[node], groupMotion, thickness)) return true;
+        if (!flatTrianglePatch_[node] || group.placeCount == 0) return false;
+        const AabbTree::NodeInfo info = tree_.nodeInfo(node);
+        return group.placeFirst - info.first < info.count && group.placeFirst + group.placeCount - info.first <= info.count;
+      };
+      tree_.queryPlaces(groupBox, [&](uint32_t place) {
+        for (uint32_t k = 0; k < count; ++k) testVertexTriangle(queries[k], place, out);
+      }, skipped);
+    });
+  }
   // In order of the vertex, then the triangle (the tree's order depends on the boxes).
   std::sort(vertexTriangle_.begin(), vertexTriangle_.end(), [](const VertexTriangle& a, const VertexTriangle& b) {
     return a.vertex != b.vertex ? a.vertex < b.vertex : a.triangle < b.triangle;
@@ -438,46 +596,66 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     glm::vec3 meanMove;
     float spread;
   };
-  std::vector<EdgeBound> bounds(edges_.size());
-  inChunks(edges_.size(), 4096, [&](size_t e0, size_t e1) {
-    for (size_t e = e0; e < e1; ++e) {
-      const auto [p0, p1] = edges_[e];
-      bounds[e] = {0.5f * (x0[p0] + x0[p1]), 0.5f * glm::length(x0[p0] - x0[p1]), 0.5f * (move[p0] + move[p1]),
+  std::vector<EdgeBound> bounds(edges_.size());  // by place
+  inChunks(edges_.size(), 4096, [&](size_t k0, size_t k1) {
+    for (size_t k = k0; k < k1; ++k) {
+      const auto [p0, p1] = edgeAtPlace_[k];
+      bounds[k] = {0.5f * (x0[p0] + x0[p1]), 0.5f * glm::length(x0[p0] - x0[p1]), 0.5f * (move[p0] + move[p1]),
                    0.5f * glm::length(move[p0] - move[p1])};
     }
   });
-  auto flatEdgePatch = [&](int32_t node) { return flatEdgePatch_[node] != 0; };
-  auto outOfReach = [&](int32_t a, int32_t b) {
-    return bounded && !withinReach(edgeNodeMotions_[a], edgeNodeMotions_[b], thickness);
+  // Two edges at places of the edge tree whose boxes overlap, not in one flat patch.
+  auto testEdgeEdge = [&](uint32_t placeI, uint32_t placeK, std::vector<EdgeEdge>& out) {
+    // Neighbours first, from the edges' vertices in the tree's order (read in sequence).
+    const auto [a0, a1] = edgeAtPlace_[placeI];
+    const auto [b0, b1] = edgeAtPlace_[placeK];
+    if (sharesVertex(a0, a1, b0, b1)) return;
+    if (bounded && !withinReach(edgeMotions_[placeI], edgeMotions_[placeK], thickness)) return;
+    if (checkSwept && !sweptEdgeBoxes[placeI].overlaps(sweptEdgeBoxes[placeK])) return;
+    const EdgeBound &bi = bounds[placeI], &bk = bounds[placeK];
+    const float bound = thickness + glm::length(bi.meanMove - bk.meanMove) + (bi.spread + bk.spread);
+    if (glm::length(bi.mid - bk.mid) - (bi.halfLength + bk.halfLength) > 1.0001f * bound + 1e-6f) return;
+    // The exact test with the edges in their order (the lower index first).
+    const uint32_t i = edgeTree_.primitive(placeI), k = edgeTree_.primitive(placeK);
+    const bool ordered = i < k;
+    const uint32_t e = ordered ? i : k, f = ordered ? k : i;
+    const uint32_t p0 = ordered ? a0 : b0, p1 = ordered ? a1 : b1, q0 = ordered ? b0 : a0, q1 = ordered ? b1 : a1;
+    const float reach = thickness + closing({p0, p1}, {q0, q1});
+    // Bounding balls first: the segments' points lie within half their
+    // lengths of their midpoints.
+    const float apart = glm::length(0.5f * (x0[p0] + x0[p1] - x0[q0] - x0[q1])) -
+                        0.5f * (glm::length(x0[p0] - x0[p1]) + glm::length(x0[q0] - x0[q1]));
+    if (apart > reach) return;
+    const glm::vec2 st = closestSegmentParameters(x0[p0], x0[p1], x0[q0], x0[q1]);
+    const glm::vec3 d = glm::mix(x0[p0], x0[p1], st.x) - glm::mix(x0[q0], x0[q1], st.y);
+    const float l = glm::length(d);
+    if (l < 1e-9f || l > reach) return;
+    out.push_back({e, f, st, d / l});
   };
-  const std::vector<AabbTree::PairJob> jobs = edgeTree_.pairJobs(4 * kBlocks, flatEdgePatch);
-  std::vector<std::vector<EdgeEdge>> found(jobs.size());
-  ThreadPool::shared().parallelBlocks(jobs.size(), [&](size_t j) {
-    std::vector<EdgeEdge>& out = found[j];
-    edgeTree_.runJobAtPlaces(jobs[j], [&](uint32_t placeI, uint32_t placeK) {
-      if (bounded && !withinReach(edgeMotions_[placeI], edgeMotions_[placeK], thickness)) return;
-      const uint32_t i = edgeTree_.primitive(placeI), k = edgeTree_.primitive(placeK);
-      const uint32_t e = std::min(i, k), f = std::max(i, k);
-      const auto [p0, p1] = edges_[e];
-      const auto [q0, q1] = edges_[f];
-      if (sharesVertex(p0, p1, q0, q1)) return;
-      if (checkSwept && !sweptEdgeBoxes[e].overlaps(sweptEdgeBoxes[f])) return;
-      const EdgeBound &be = bounds[e], &bf = bounds[f];
-      const float bound = thickness + glm::length(be.meanMove - bf.meanMove) + be.spread + bf.spread;
-      if (glm::length(be.mid - bf.mid) - (be.halfLength + bf.halfLength) > 1.0001f * bound + 1e-6f) return;
-      const float reach = thickness + closing({p0, p1}, {q0, q1});
-      // Bounding balls first: the segments' points lie within half their
-      // lengths of their midpoints.
-      const float apart = glm::length(0.5f * (x0[p0] + x0[p1] - x0[q0] - x0[q1])) -
-                          0.5f * (glm::length(x0[p0] - x0[p1]) + glm::length(x0[q0] - x0[q1]));
-      if (apart > reach) return;
-      const glm::vec2 st = closestSegmentParameters(x0[p0], x0[p1], x0[q0], x0[q1]);
-      const glm::vec3 d = glm::mix(x0[p0], x0[p1], st.x) - glm::mix(x0[q0], x0[q1], st.y);
-      const float l = glm::length(d);
-      if (l < 1e-9f || l > reach) return;
-      out.push_back({e, f, st, d / l});
-    }, flatEdgePatch, outOfReach);
-  });
+  std::vector<std::vector<EdgeEdge>> found;
+  if (exhaustive_) {
+    const uint32_t places = uint32_t(edges_.size());
+    found.resize(places);
+    ThreadPool::shared().parallelBlocks(places, [&](size_t i) {
+      const Box& box = edgeBoxes[edgeTree_.primitive(uint32_t(i))];
+      const int32_t flat = topFlatEdgePlace_[i];
+      for (uint32_t k = uint32_t(i) + 1; k < places; ++k) {
+        if ((flat >= 0 && flat == topFlatEdgePlace_[k]) || !box.overlaps(edgeBoxes[edgeTree_.primitive(k)])) continue;
+        testEdgeEdge(uint32_t(i), k, found[i]);
+      }
+    });
+  } else {
+    auto flatEdgePatch = [&](int32_t node) { return flatEdgePatch_[node] != 0; };
+    auto outOfReach = [&](int32_t a, int32_t b) {
+      return bounded && !withinReach(edgeNodeMotions_[a], edgeNodeMotions_[b], thickness);
+    };
+    const std::vector<AabbTree::PairJob> jobs = edgeTree_.pairJobs(4 * kBlocks, flatEdgePatch);
+    found.resize(jobs.size());
+    ThreadPool::shared().parallelBlocks(jobs.size(), [&](size_t j) {
+      edgeTree_.runJobAtPlaces(jobs[j], [&](uint32_t placeI, uint32_t placeK) { testEdgeEdge(placeI, placeK, found[j]); },
+                               flatEdgePatch, outOfReach);
+    });
+  }
   // In order of the first edge, then the other (the jobs' order depends on the tree).
   edgeEdge_.clear();
   for (const auto& f : found) edgeEdge_.insert(edgeEdge_.end(), f.begin(), f.end());
@@ -531,6 +709,19 @@ int SelfCollision::applyEdgeEdge(ClothState& s, const EdgeEdge& c, float thickne
   const uint32_t v[4] = {p0, p1, q0, q1};
   const float w[4] = {1.0f - c.params.x, c.params.x, -(1.0f - c.params.y), -c.params.y};
   return separate(s, v, w, c.normal0, thickness);
+}
+
+std::vector<std::array<uint32_t, 2>> SelfCollision::vertexTrianglePairs() const {
+  std::vector<std::array<uint32_t, 2>> pairs;
+  for (const VertexTriangle& c : vertexTriangle_) pairs.push_back({c.vertex, c.triangle});
+  return pairs;
+}
+
+std::vector<std::array<uint32_t, 4>> SelfCollision::edgeEdgePairs() const {
+  std::vector<std::array<uint32_t, 4>> pairs;
+  for (const EdgeEdge& c : edgeEdge_)
+    pairs.push_back({edges_[c.e0].first, edges_[c.e0].second, edges_[c.e1].first, edges_[c.e1].second});
+  return pairs;
 }
 
 int SelfCollision::resolve(ClothState& s, const std::vector<glm::vec3>& x0, float thickness, int passes) {

@@ -7,7 +7,9 @@
 // pulled back to its side. At the end of the step every pair closer than the
 // thickness along that side's normal is pushed apart (mass-weighted, like a
 // position constraint) and loses its approaching relative normal velocity.
-// Pairs are processed in a fixed order: deterministic.
+// Pairs are processed in a fixed order: deterministic. The vertices are
+// looked up in the triangle tree a few at a time (those whose first triangle
+// in the tree is in one leaf), the edge pairs from the edge tree against itself.
 //
 // A candidate also passes dist(x0) <= thickness + the largest difference of
 // its vertices' moves in the step. When the moves differ much (a sleeve
@@ -64,6 +66,13 @@ class SelfCollision {
   // in the steps whose moves differ by more than twice the thickness; off,
   // they visit every pair whose boxes overlap: the candidates are the same).
   void setMotionBounds(bool on) { motionBounds_ = on; }
+  // Whether every pair of elements is tested instead of searching the trees
+  // (a reference for tests: the same candidates, slowly).
+  void setExhaustive(bool on) { exhaustive_ = on; }
+  // The last resolve()'s candidates, in their order: (vertex, triangle) and
+  // (edge, edge) with the edges' vertices.
+  std::vector<std::array<uint32_t, 2>> vertexTrianglePairs() const;
+  std::vector<std::array<uint32_t, 4>> edgeEdgePairs() const;
 
  private:
   struct VertexTriangle {
@@ -80,6 +89,7 @@ class SelfCollision {
   int applyVertexTriangle(ClothState& s, const VertexTriangle& c, float thickness) const;
   int applyEdgeEdge(ClothState& s, const EdgeEdge& c, float thickness) const;
   void findConnectedPatches();
+  void findVertexGroups();
   void findFlatPatches(const ClothState& s, const std::vector<glm::vec3>& x0);
 
   std::vector<uint32_t> triangles_;
@@ -91,6 +101,8 @@ class SelfCollision {
   AabbTree edgeTree_;  // over the edges' boxes
   std::vector<VertexTriangle> vertexTriangle_;
   std::vector<EdgeEdge> edgeEdge_;
+  // The most triangles whose vertices are queried as one group, and the most vertices in a group.
+  static constexpr uint32_t kGroupTriangles = 4, kGroupVertices = 3 * kGroupTriangles;
   static constexpr int kRebuildEvery = 16;  // steps between tree rebuilds (refitted in between)
   int stepsSinceBuild_ = 0;
   // Per node of the edge and triangle trees: its primitives are connected
@@ -98,10 +110,26 @@ class SelfCollision {
   std::vector<uint8_t> connectedEdgePatch_, connectedTrianglePatch_, flatEdgePatch_, flatTrianglePatch_;
   std::vector<uint32_t> vertexPlace_;  // per vertex: the place of one of its triangles in the triangle tree
   std::vector<uint32_t> vertexOrder_;  // the vertices by their place
+  // The elements' vertices in their trees' order.
+  std::vector<std::pair<uint32_t, uint32_t>> edgeAtPlace_;
+  std::vector<std::array<uint32_t, 3>> triangleAtPlace_;
+  // The vertex-triangle queries are made for groups of vertices at once: up
+  // to kGroupVertices whose places lie in one small subtree of the triangle
+  // tree (vertexOrder_[vertexBegin, vertexEnd), their places within
+  // [placeFirst, placeFirst + placeCount)), or one vertex without a triangle
+  // (placeCount 0).
+  struct VertexGroup {
+    uint32_t vertexBegin, vertexEnd, placeFirst, placeCount;
+  };
+  std::vector<VertexGroup> vertexGroups_;
+  // Per place of the triangle and edge trees: its highest ancestor that is a
+  // flat patch, -1 if none. Two places are in one flat patch when they have
+  // the same such node (a vertex's place: that of its triangle).
+  std::vector<int32_t> topFlatNode_, topFlatPlace_, topFlatEdgePlace_;
   std::vector<NormalCone> triangleCones_, nodeCones_;
   // Per triangle and edge (in their trees' order), and per node of the trees.
   std::vector<NodeMotion> triangleMotions_, edgeMotions_, nodeMotions_, edgeNodeMotions_;
-  bool motionBounds_ = true;
+  bool motionBounds_ = true, exhaustive_ = false;
   std::vector<uint32_t> moved_, checkedVT_, checkedEE_;  // resolve()'s pass clocks
 };
 
