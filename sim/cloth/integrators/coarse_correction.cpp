@@ -105,34 +105,52 @@ void CoarseCorrection::assemble(const ClothState& s, const std::vector<glm::mat3
     else
       addBlock(pj, pi, glm::transpose(block));
   };
-  // Most vertices are free (S = I): only pins and contacts pay for the products.
+  // Most vertices are free (S = I): only pins and contacts pay for the
+  // products, with their filters made once per vertex.
   const bool anyContact = !s.contactNormal.empty();
-  auto constrained = [&](size_t v) {
-    return s.invMass[v] == 0.0f || (anyContact && s.contactNormal[v] != glm::vec3(0.0f));
-  };
+  filterOf_.assign(s.size(), kFree);
+  filters_.clear();
+  for (size_t v = 0; v < s.size(); ++v) {
+    if (s.invMass[v] != 0.0f && !(anyContact && s.contactNormal[v] != glm::vec3(0.0f))) continue;
+    filterOf_[v] = uint32_t(filters_.size());
+    filters_.push_back(filterMatrix(s, v));
+  }
   for (size_t v = 0; v < s.size(); ++v) {
     const glm::mat3& d = otherDiagonal[v];
-    if (!constrained(v)) {
+    if (filterOf_[v] == kFree) {
       addBlock(patchOf_[v], patchOf_[v], d);
       continue;
     }
-    const glm::mat3 S = filterMatrix(s, v);
+    const glm::mat3& S = filters_[filterOf_[v]];
     addBlock(patchOf_[v], patchOf_[v], S * d * S);
   }
   // A spring adds S_a K S_a and S_b K S_b on the diagonal, -S_a K S_b and
   // its transpose off it. Within one patch of free vertices the four cancel
   // exactly (a rigid translation does not stretch the spring): skipped.
+  // With K = e e^T + beta I, S_a K S_b = (S_a e)(S_b e)^T + beta S_a S_b
+  // (the filters are symmetric).
+  const glm::mat3 identity(1.0f);
   const auto& list = springs.springs();
   for (size_t k = 0; k < list.size(); ++k) {
     const uint32_t va = list[k].a, vb = list[k].b, pa = patchOf_[va], pb = patchOf_[vb];
-    const bool filteredEnds = constrained(va) || constrained(vb);
-    if (pa == pb && !filteredEnds) continue;
+    const bool freeA = filterOf_[va] == kFree, freeB = filterOf_[vb] == kFree;
+    if (pa == pb && freeA && freeB) continue;
     const SpringForce::ImplicitBlock& b = springs.implicitBlock(k);
-    const glm::mat3 K = b.alpha * glm::outerProduct(b.d, b.d) + glm::mat3(b.beta);
-    const glm::mat3 Sa = filterMatrix(s, va), Sb = filterMatrix(s, vb);
-    const glm::mat3 offDiagonal = filteredEnds ? Sa * K * Sb : K;
-    addBlock(pa, pa, filteredEnds ? Sa * K * Sa : K);
-    addBlock(pb, pb, filteredEnds ? Sb * K * Sb : K);
+    if (freeA && freeB) {
+      const glm::mat3 K = glm::outerProduct(b.e, b.e) + glm::mat3(b.beta);
+      addBlock(pa, pa, K);
+      addBlock(pb, pb, K);
+      addLower(pa, pb, -K);
+      continue;
+    }
+    const glm::mat3& Sa = freeA ? identity : filters_[filterOf_[va]];
+    const glm::mat3& Sb = freeB ? identity : filters_[filterOf_[vb]];
+    const glm::vec3 ea = Sa * b.e, eb = Sb * b.e;
+    const glm::mat3 SaSa = freeA ? identity : Sa * Sa, SbSb = freeB ? identity : Sb * Sb;
+    const glm::mat3 SaSb = freeA ? Sb : freeB ? Sa : Sa * Sb;
+    const glm::mat3 offDiagonal = glm::outerProduct(ea, eb) + b.beta * SaSb;  // glm: outerProduct(c, r) = c r^T
+    addBlock(pa, pa, glm::outerProduct(ea, ea) + b.beta * SaSa);
+    addBlock(pb, pb, glm::outerProduct(eb, eb) + b.beta * SbSb);
     addLower(pa, pb, -offDiagonal);
     if (pa == pb) addBlock(pa, pa, -glm::transpose(offDiagonal));  // (b, a) lands on the same block
   }
