@@ -98,6 +98,9 @@ void CoarseCorrection::assemble(const ClothState& s, const std::vector<glm::mat3
     for (int r = 0; r < 3; ++r, row += order_)
       for (int c = 0; c < 3; ++c) row[c] += double(block[c][r]);  // glm: [column][row]
   };
+  // The diagonal blocks are summed apart (compact, in cache) and written once.
+  patchDiagonal_.assign(patchCount_, glm::dmat3(0.0));
+  auto addDiagonal = [&](uint32_t p, const glm::mat3& block) { patchDiagonal_[p] += glm::dmat3(block); };
   // The block (i, j) of the symmetric A_c, stored at the lower one of (i, j) and (j, i).
   auto addLower = [&](uint32_t pi, uint32_t pj, const glm::mat3& block) {
     if (pi >= pj)
@@ -118,11 +121,11 @@ void CoarseCorrection::assemble(const ClothState& s, const std::vector<glm::mat3
   for (size_t v = 0; v < s.size(); ++v) {
     const glm::mat3& d = otherDiagonal[v];
     if (filterOf_[v] == kFree) {
-      addBlock(patchOf_[v], patchOf_[v], d);
+      addDiagonal(patchOf_[v], d);
       continue;
     }
     const glm::mat3& S = filters_[filterOf_[v]];
-    addBlock(patchOf_[v], patchOf_[v], S * d * S);
+    addDiagonal(patchOf_[v], S * d * S);
   }
   // A spring adds S_a K S_a and S_b K S_b on the diagonal, -S_a K S_b and
   // its transpose off it. Within one patch of free vertices the four cancel
@@ -138,8 +141,8 @@ void CoarseCorrection::assemble(const ClothState& s, const std::vector<glm::mat3
     const SpringForce::ImplicitBlock& b = springs.implicitBlock(k);
     if (freeA && freeB) {
       const glm::mat3 K = glm::outerProduct(b.e, b.e) + glm::mat3(b.beta);
-      addBlock(pa, pa, K);
-      addBlock(pb, pb, K);
+      addDiagonal(pa, K);
+      addDiagonal(pb, K);
       addLower(pa, pb, -K);
       continue;
     }
@@ -149,10 +152,19 @@ void CoarseCorrection::assemble(const ClothState& s, const std::vector<glm::mat3
     const glm::mat3 SaSa = freeA ? identity : Sa * Sa, SbSb = freeB ? identity : Sb * Sb;
     const glm::mat3 SaSb = freeA ? Sb : freeB ? Sa : Sa * Sb;
     const glm::mat3 offDiagonal = glm::outerProduct(ea, eb) + b.beta * SaSb;  // glm: outerProduct(c, r) = c r^T
-    addBlock(pa, pa, glm::outerProduct(ea, ea) + b.beta * SaSa);
-    addBlock(pb, pb, glm::outerProduct(eb, eb) + b.beta * SbSb);
-    addLower(pa, pb, -offDiagonal);
-    if (pa == pb) addBlock(pa, pa, -glm::transpose(offDiagonal));  // (b, a) lands on the same block
+    addDiagonal(pa, glm::outerProduct(ea, ea) + b.beta * SaSa);
+    addDiagonal(pb, glm::outerProduct(eb, eb) + b.beta * SbSb);
+    if (pa != pb) {
+      addLower(pa, pb, -offDiagonal);
+    } else {  // (a, b) and (b, a) land on the same block
+      addDiagonal(pa, -offDiagonal);
+      addDiagonal(pa, -glm::transpose(offDiagonal));
+    }
+  }
+  for (uint32_t p = 0; p < patchCount_; ++p) {
+    double* row = &matrix_[3 * p * order_ + 3 * p];
+    for (int r = 0; r < 3; ++r, row += order_)
+      for (int c = 0; c < 3; ++c) row[c] += patchDiagonal_[p][c][r];
   }
   factorise();
 }
