@@ -18,7 +18,9 @@ struct SpringFrame {
   float length;
 };
 
-SpringFrame frameOf(const glm::vec3& xa, const glm::vec3& xb) {
+// Inlined: called per spring in the force and the implicit passes of every
+// step (out of line it cost more than its arithmetic).
+[[gnu::always_inline]] inline SpringFrame frameOf(const glm::vec3& xa, const glm::vec3& xb) {
   const glm::vec3 delta = xa - xb;
   const float l = glm::length(delta);
   return {l > 1e-12f ? delta / l : glm::vec3(0.0f), l};
@@ -99,14 +101,18 @@ void SpringForce::prepareImplicit(const ClothState& st, float h, std::vector<glm
     for (size_t v = b; v < e; ++v) {
       const uint32_t first = incidenceStart_[v], degree = incidenceStart_[v + 1] - first;
       const size_t firstSlot = rowStart_[v / kLanes] + v % kLanes;
-      glm::mat3 sum(0.0f);
+      // The diagonal block sum of e e^T + beta I: its six distinct entries
+      // (summed as the full matrix would be, entry by entry).
+      float xx = 0.0f, xy = 0.0f, xz = 0.0f, yy = 0.0f, yz = 0.0f, zz = 0.0f;
       glm::vec3 kv(0.0f);
       for (uint32_t k = 0; k < degree; ++k) {
         const int32_t signedIndex = incidence_[first + k];
         const uint32_t spring = uint32_t(std::abs(signedIndex) - 1);
         const ImplicitBlock& block = blocks_[spring];
         kv += signedIndex > 0 ? perSpring_[spring] : -perSpring_[spring];
-        sum += glm::outerProduct(block.e, block.e) + glm::mat3(block.beta);
+        const glm::vec3& e = block.e;
+        xx += e.x * e.x + block.beta, yy += e.y * e.y + block.beta, zz += e.z * e.z + block.beta;
+        xy += e.x * e.y, xz += e.x * e.z, yz += e.y * e.z;
         const size_t slot = firstSlot + k * kLanes;  // spare slots (k >= degree) stay zero
         rowEx_[slot] = block.e.x;
         rowEy_[slot] = block.e.y;
@@ -114,7 +120,7 @@ void SpringForce::prepareImplicit(const ClothState& st, float h, std::vector<glm
         rowBeta_[slot] = block.beta;
       }
       hKv[v] += kv;
-      diagonal[v] += sum;
+      diagonal[v] += glm::mat3(xx, xy, xz, xy, yy, yz, xz, yz, zz);
     }
   });
 }
