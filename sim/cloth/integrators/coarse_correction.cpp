@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <queue>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace mq::cloth {
 
 namespace {
@@ -20,18 +24,40 @@ glm::mat3 filterMatrix(const ClothState& s, size_t i) {
 
 // a[begin, end) . b[begin, end) with four partial sums: the factorisation and
 // the substitutions are chains of these, and one running sum would wait on
-// every addition.
+// every addition. On x86-64 the sums are two SSE2 pairs (the same
+// arithmetic, in half the instructions).
 double dotRange(const double* a, const double* b, size_t begin, size_t end) {
-  double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
   size_t k = begin;
+#if defined(__SSE2__)
+  __m128d s01 = _mm_setzero_pd(), s23 = _mm_setzero_pd();
+  for (; k + 4 <= end; k += 4) {
+    s01 = _mm_add_pd(s01, _mm_mul_pd(_mm_loadu_pd(a + k), _mm_loadu_pd(b + k)));
+    s23 = _mm_add_pd(s23, _mm_mul_pd(_mm_loadu_pd(a + k + 2), _mm_loadu_pd(b + k + 2)));
+  }
+  double s0 = _mm_cvtsd_f64(s01), s1 = _mm_cvtsd_f64(_mm_unpackhi_pd(s01, s01));
+  const double s2 = _mm_cvtsd_f64(s23), s3 = _mm_cvtsd_f64(_mm_unpackhi_pd(s23, s23));
+#else
+  double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
   for (; k + 4 <= end; k += 4) {
     s0 += a[k] * b[k];
     s1 += a[k + 1] * b[k + 1];
     s2 += a[k + 2] * b[k + 2];
     s3 += a[k + 3] * b[k + 3];
   }
+#endif
   for (; k < end; ++k) s0 += a[k] * b[k];
   return (s0 + s1) + (s2 + s3);
+}
+
+// y[begin, end) -= a[begin, end) * t (two at a time with SSE2, the same arithmetic).
+void subtractScaled(double* y, const double* a, double t, size_t begin, size_t end) {
+  size_t k = begin;
+#if defined(__SSE2__)
+  const __m128d scale = _mm_set1_pd(t);
+  for (; k + 2 <= end; k += 2)
+    _mm_storeu_pd(y + k, _mm_sub_pd(_mm_loadu_pd(y + k), _mm_mul_pd(_mm_loadu_pd(a + k), scale)));
+#endif
+  for (; k < end; ++k) y[k] -= a[k] * t;
 }
 
 }  // namespace
@@ -220,8 +246,7 @@ double CoarseCorrection::solve(const std::vector<glm::vec3>& r, std::vector<glm:
   for (size_t i = order_; i-- > 0;) {
     const double* li = &matrix_[i * order_];
     const double xi = x[i] /= li[i];
-    double* column = x.data();
-    for (size_t k = firstColumn_[i]; k < i; ++k) column[k] -= li[k] * xi;
+    subtractScaled(x.data(), li, xi, firstColumn_[i], i);
   }
   perPatch.resize(patchCount_);
   double dot = 0.0;
