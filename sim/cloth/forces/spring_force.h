@@ -74,7 +74,7 @@ class SpringForce : public ForceTerm {
   // Sliced ELL: vertex v = 8 b + lane has slots rowStart_[b] + 8 k + lane,
   // k < rowWidth_[b] (the block's largest degree; spare slots have zero
   // blocks and point at v itself). Per slot: the implicit block
-  // h^2 k S + h kd d d^T = alpha d d^T + beta I acting on p_v - p_other.
+  // e e^T + beta I (ImplicitBlock) acting on p_v - p_other.
   std::vector<uint32_t> rowStart_, rowWidth_;
   std::vector<int32_t> rowOther_;
   std::vector<float> rowEx_, rowEy_, rowEz_, rowBeta_;

@@ -62,7 +62,7 @@ class CoarseCorrection {
   static constexpr uint32_t kFree = ~0u;
   std::vector<uint32_t> filterOf_;  // per vertex: kFree (S = I) or its index in filters_
   std::vector<glm::mat3> filters_;  // S of the pinned and contact vertices
-  std::vector<glm::dmat3> patchDiagonal_;
+  std::vector<glm::dmat3> patchDiagonal_;  // A_c's diagonal blocks while assembling
   std::vector<double> rhs_, x_;
 };
 
