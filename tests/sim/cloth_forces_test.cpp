@@ -125,6 +125,11 @@ TEST(ClothForces, SpringImplicitProductMatchesTheAssembledMatrix) {
     const glm::vec3 delta = s.x[sp.a] - s.x[sp.b];
     const glm::vec3 d = glm::length(delta) > 1e-12f ? glm::normalize(delta) : glm::vec3(0.0f);
     const glm::mat3 block = -(h * h) * springs.stiffnessBlock(k, s.x, true) + (h * sp.kd) * glm::outerProduct(d, d);
+    // The compact form the coarse level reads: e e^T + beta I.
+    const SpringForce::ImplicitBlock& compact = springs.implicitBlock(k);
+    const glm::mat3 fromCompact = glm::outerProduct(compact.e, compact.e) + glm::mat3(compact.beta);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_LT(glm::length(fromCompact[c] - block[c]), 1e-4f * (1.0f + glm::length(block[c]))) << "spring " << k;
     expected[sp.a] += block * (p[sp.a] - p[sp.b]);
     expected[sp.b] += block * (p[sp.b] - p[sp.a]);
     expectedDiagonal[sp.a] += block;

@@ -18,7 +18,9 @@ struct SpringFrame {
   float length;
 };
 
-SpringFrame frameOf(const glm::vec3& xa, const glm::vec3& xb) {
+// Inlined: called per spring in the force and the implicit passes of every
+// step (out of line it cost more than its arithmetic).
+[[gnu::always_inline]] inline SpringFrame frameOf(const glm::vec3& xa, const glm::vec3& xb) {
   const glm::vec3 delta = xa - xb;
   const float l = glm::length(delta);
   return {l > 1e-12f ? delta / l : glm::vec3(0.0f), l};
@@ -87,7 +89,7 @@ void SpringForce::prepareImplicit(const ClothState& st, float h, std::vector<glm
       // -h^2 K + h kd d d^T with K = -k [d d^T + lateral (I - d d^T)].
       const float lateral = fr.length > 1e-12f ? std::max(0.0f, 1.0f - s.rest / fr.length) : 0.0f;
       const float alpha = h * h * s.k * (1.0f - lateral) + h * s.kd, beta = h * h * s.k * lateral;
-      blocks_[i] = {fr.d, alpha, beta};
+      blocks_[i] = {std::sqrt(alpha) * fr.d, beta};
       // h^2 K (v_a - v_b) = -h^2 k [(1 - lateral) (d . dv) d + lateral dv].
       const glm::vec3 dv = st.v[s.a] - st.v[s.b];
       perSpring_[i] = -(h * h * s.k) * ((1.0f - lateral) * glm::dot(fr.d, dv) * fr.d + lateral * dv);
@@ -99,23 +101,26 @@ void SpringForce::prepareImplicit(const ClothState& st, float h, std::vector<glm
     for (size_t v = b; v < e; ++v) {
       const uint32_t first = incidenceStart_[v], degree = incidenceStart_[v + 1] - first;
       const size_t firstSlot = rowStart_[v / kLanes] + v % kLanes;
-      glm::mat3 sum(0.0f);
+      // The diagonal block sum of e e^T + beta I: its six distinct entries
+      // (summed as the full matrix would be, entry by entry).
+      float xx = 0.0f, xy = 0.0f, xz = 0.0f, yy = 0.0f, yz = 0.0f, zz = 0.0f;
       glm::vec3 kv(0.0f);
       for (uint32_t k = 0; k < degree; ++k) {
         const int32_t signedIndex = incidence_[first + k];
         const uint32_t spring = uint32_t(std::abs(signedIndex) - 1);
         const ImplicitBlock& block = blocks_[spring];
         kv += signedIndex > 0 ? perSpring_[spring] : -perSpring_[spring];
-        sum += block.alpha * glm::outerProduct(block.d, block.d) + glm::mat3(block.beta);
+        const glm::vec3& e = block.e;
+        xx += e.x * e.x + block.beta, yy += e.y * e.y + block.beta, zz += e.z * e.z + block.beta;
+        xy += e.x * e.y, xz += e.x * e.z, yz += e.y * e.z;
         const size_t slot = firstSlot + k * kLanes;  // spare slots (k >= degree) stay zero
-        rowDx_[slot] = block.d.x;
-        rowDy_[slot] = block.d.y;
-        rowDz_[slot] = block.d.z;
-        rowAlpha_[slot] = block.alpha;
+        rowEx_[slot] = block.e.x;
+        rowEy_[slot] = block.e.y;
+        rowEz_[slot] = block.e.z;
         rowBeta_[slot] = block.beta;
       }
       hKv[v] += kv;
-      diagonal[v] += sum;
+      diagonal[v] += glm::mat3(xx, xy, xz, xy, yy, yz, xz, yz, zz);
     }
   });
 }
@@ -145,7 +150,7 @@ void SpringForce::buildRows(size_t vertexCount) {
       rowOther_[slot] = int32_t(signedIndex > 0 ? springs_[spring].b : springs_[spring].a);
     }
   }
-  for (auto* row : {&rowDx_, &rowDy_, &rowDz_, &rowAlpha_, &rowBeta_}) row->assign(slots, 0.0f);
+  for (auto* row : {&rowEx_, &rowEy_, &rowEz_, &rowBeta_}) row->assign(slots, 0.0f);
 }
 
 glm::vec3 SpringForce::productAt(size_t v) const {
@@ -155,9 +160,9 @@ glm::vec3 SpringForce::productAt(size_t v) const {
   glm::vec3 sum(0.0f);
   for (uint32_t k = 0; k < rowWidth_[b]; ++k) {
     const size_t slot = rowStart_[b] + k * kLanes + lane;
-    const glm::vec3 d(rowDx_[slot], rowDy_[slot], rowDz_[slot]);
+    const glm::vec3 e(rowEx_[slot], rowEy_[slot], rowEz_[slot]);
     const glm::vec3 dp = pv - p[rowOther_[slot]];
-    sum += rowAlpha_[slot] * glm::dot(d, dp) * d + rowBeta_[slot] * dp;
+    sum += glm::dot(e, dp) * e + rowBeta_[slot] * dp;
   }
   return sum;
 }
@@ -191,9 +196,8 @@ __attribute__((target("avx2,fma"))) inline void loadNeighbours(const float* p, c
 }
 
 __attribute__((target("avx2,fma"))) void blockProductAvx2(const float* p, size_t v0, uint32_t start, uint32_t width,
-                                                          const int32_t* other, const float* dx, const float* dy,
-                                                          const float* dz, const float* alpha, const float* beta,
-                                                          float* y) {
+                                                          const int32_t* other, const float* ex, const float* ey,
+                                                          const float* ez, const float* beta, float* y) {
   const __m256i lane3 = _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21);
   const float* self = p + 3 * v0;
   const __m256 px = _mm256_i32gather_ps(self, lane3, 4), py = _mm256_i32gather_ps(self + 1, lane3, 4),
@@ -204,13 +208,12 @@ __attribute__((target("avx2,fma"))) void blockProductAvx2(const float* p, size_t
     __m256 ox, oy, oz;
     loadNeighbours(p, other + s, ox, oy, oz);
     const __m256 qx = _mm256_sub_ps(px, ox), qy = _mm256_sub_ps(py, oy), qz = _mm256_sub_ps(pz, oz);
-    const __m256 ex = _mm256_loadu_ps(dx + s), ey = _mm256_loadu_ps(dy + s), ez = _mm256_loadu_ps(dz + s);
-    const __m256 t = _mm256_mul_ps(_mm256_loadu_ps(alpha + s),
-                                   _mm256_fmadd_ps(ex, qx, _mm256_fmadd_ps(ey, qy, _mm256_mul_ps(ez, qz))));
+    const __m256 dx = _mm256_loadu_ps(ex + s), dy = _mm256_loadu_ps(ey + s), dz = _mm256_loadu_ps(ez + s);
+    const __m256 t = _mm256_fmadd_ps(dx, qx, _mm256_fmadd_ps(dy, qy, _mm256_mul_ps(dz, qz)));
     const __m256 b = _mm256_loadu_ps(beta + s);
-    ax = _mm256_fmadd_ps(t, ex, _mm256_fmadd_ps(b, qx, ax));
-    ay = _mm256_fmadd_ps(t, ey, _mm256_fmadd_ps(b, qy, ay));
-    az = _mm256_fmadd_ps(t, ez, _mm256_fmadd_ps(b, qz, az));
+    ax = _mm256_fmadd_ps(t, dx, _mm256_fmadd_ps(b, qx, ax));
+    ay = _mm256_fmadd_ps(t, dy, _mm256_fmadd_ps(b, qy, ay));
+    az = _mm256_fmadd_ps(t, dz, _mm256_fmadd_ps(b, qz, az));
   }
   alignas(32) float lanes[3][8];
   _mm256_store_ps(lanes[0], ax);
@@ -240,8 +243,8 @@ void SpringForce::addProductRange(size_t begin, size_t end, glm::vec3* y) const 
     const float* p = &product_->data()->x;
     for (; v + kLanes <= end; v += kLanes) {
       const size_t b = v / kLanes;
-      blockProductAvx2(p, v, rowStart_[b], rowWidth_[b], rowOther_.data(), rowDx_.data(), rowDy_.data(), rowDz_.data(),
-                       rowAlpha_.data(), rowBeta_.data(), &y[v].x);
+      blockProductAvx2(p, v, rowStart_[b], rowWidth_[b], rowOther_.data(), rowEx_.data(), rowEy_.data(), rowEz_.data(),
+                       rowBeta_.data(), &y[v].x);
     }
   }
 #endif

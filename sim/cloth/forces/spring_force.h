@@ -42,10 +42,11 @@ class SpringForce : public ForceTerm {
   void addProductRange(size_t begin, size_t end, glm::vec3* y) const override;
 
   // One spring's block of the implicit matrix after prepareImplicit():
-  // h^2 k S + h kd d d^T = alpha d d^T + beta I, acting on p_a - p_b.
+  // h^2 k S + h kd d d^T = alpha d d^T + beta I = e e^T + beta I with
+  // e = sqrt(alpha) d (alpha >= 0), acting on p_a - p_b: four floats.
   struct ImplicitBlock {
-    glm::vec3 d;
-    float alpha, beta;
+    glm::vec3 e;
+    float beta;
   };
   const ImplicitBlock& implicitBlock(size_t spring) const { return blocks_[spring]; }
 
@@ -73,10 +74,10 @@ class SpringForce : public ForceTerm {
   // Sliced ELL: vertex v = 8 b + lane has slots rowStart_[b] + 8 k + lane,
   // k < rowWidth_[b] (the block's largest degree; spare slots have zero
   // blocks and point at v itself). Per slot: the implicit block
-  // h^2 k S + h kd d d^T = alpha d d^T + beta I acting on p_v - p_other.
+  // e e^T + beta I (ImplicitBlock) acting on p_v - p_other.
   std::vector<uint32_t> rowStart_, rowWidth_;
   std::vector<int32_t> rowOther_;
-  std::vector<float> rowDx_, rowDy_, rowDz_, rowAlpha_, rowBeta_;
+  std::vector<float> rowEx_, rowEy_, rowEz_, rowBeta_;
   std::vector<ImplicitBlock> blocks_;  // per spring, filled by prepareImplicit
   mutable std::vector<glm::vec3> perSpring_;
   mutable const std::vector<glm::vec3>* product_ = nullptr;

@@ -59,6 +59,10 @@ class CoarseCorrection {
   std::vector<double> matrix_;      // dense storage, lower triangle used
   std::vector<uint32_t> firstColumn_;  // envelope: first non-zero column per row
   std::vector<uint8_t> dead_;       // unknowns with no stiffness (a pinned patch)
+  static constexpr uint32_t kFree = ~0u;
+  std::vector<uint32_t> filterOf_;  // per vertex: kFree (S = I) or its index in filters_
+  std::vector<glm::mat3> filters_;  // S of the pinned and contact vertices
+  std::vector<glm::dmat3> patchDiagonal_;  // A_c's diagonal blocks while assembling
   std::vector<double> rhs_, x_;
 };
 
