@@ -317,7 +317,7 @@ bool ClothSimulator::limitStretchKeepingContactsOut(float h, const std::vector<f
     forRange(state_.size(), [&](size_t b, size_t e) {
       for (size_t i = b; i < e; ++i) {
         BodyContact contact;
-        if (!touched_[i] || freeInvMass[i] == 0.0f || !body_.nearestContact(state_.x[i], contact, 2.0f * thickness))
+        if (!touched_[i] || freeInvMass[i] == 0.0f || !nearestBodyContact(i, 2.0f * thickness, contact))
           continue;
         normal[i] = contact.normal;
         allowedIn[i] = std::max(0.0f, contact.signedDistance - 0.5f * thickness);
@@ -598,7 +598,9 @@ int ClothSimulator::countPenetrating() const {
       inside = inside || c.signedDistance(state_.x[i], n) < 0.0f;
     }
     BodyContact contact;
-    if (!inside && !body_.empty() && body_.nearestContact(state_.x[i], contact)) inside = contact.signedDistance < 0.0f;
+    if (!inside && !body_.empty() &&
+        body_.nearestContactSince(state_.x[i], contact, body_.searchRadius(), bodyQueries_[i]))
+      inside = contact.signedDistance < 0.0f;
     return inside ? 1.0 : 0.0;
   }));
 }

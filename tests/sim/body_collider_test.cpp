@@ -6,6 +6,8 @@
 
 #include <random>
 
+#include "core/character/default_mannequin.h"
+#include "core/character/posed_character.h"
 #include "sim/cloth/collision/body_collider.h"
 #include "sim/cloth/collision/proximity.h"
 
@@ -150,6 +152,122 @@ bool sameContact(const BodyContact& a, const BodyContact& b) {
          a.signedDistance == b.signedDistance && a.triangle == b.triangle;
 }
 
+// The nearest triangle by brute force, as BodyCollider promises it: the
+// least squared distance of closestTriangleWeights()'s point (lowest index
+// among equals, degenerate triangles never), closer than `radius`; -1: none.
+int32_t bruteForceNearest(const BodyCollider& body, const glm::vec3& p, float radius) {
+  const std::vector<glm::vec3>& x = body.positions();
+  const std::vector<uint32_t>& triangles = body.triangles();
+  int32_t nearest = -1;
+  float best2 = radius * radius;
+  for (size_t t = 0; t < triangles.size() / 3; ++t) {
+    const glm::vec3 &a = x[triangles[3 * t]], &b = x[triangles[3 * t + 1]], &c = x[triangles[3 * t + 2]];
+    const glm::vec3 n = glm::cross(b - a, c - a);
+    if (!(glm::dot(n, n) > 0.0f)) continue;
+    const glm::vec3 w = closestTriangleWeights(p, a, b, c);
+    const glm::vec3 offset = p - (w.x * a + w.y * b + w.z * c);
+    const float d2 = glm::dot(offset, offset);
+    if (d2 < best2) best2 = d2, nearest = int32_t(t);
+  }
+  return nearest;
+}
+
+// Points where a search is hardest to get exactly right: on the body's
+// vertices (equally near to all triangles around), on its edges, a hair in
+// front of and behind its triangles, and up to `spread` away from them.
+std::vector<glm::vec3> probePoints(const BodyCollider& body, uint32_t seed, size_t count, float spread) {
+  const std::vector<glm::vec3>& x = body.positions();
+  const std::vector<uint32_t>& triangles = body.triangles();
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  std::vector<glm::vec3> points;
+  for (size_t k = 0; k < count; ++k) {
+    const size_t t = random() % (triangles.size() / 3);
+    const glm::vec3 &a = x[triangles[3 * t]], &b = x[triangles[3 * t + 1]], &c = x[triangles[3 * t + 2]];
+    const glm::vec3 normal = glm::cross(b - a, c - a);
+    const glm::vec3 n = glm::length(normal) > 0.0f ? glm::normalize(normal) : glm::vec3(0.0f, 0.0f, 1.0f);
+    const float u = unit(random), v = unit(random) * (1.0f - u);
+    switch (k % 5) {
+      case 0: points.push_back(a); break;
+      case 1: points.push_back(a + u * (b - a)); break;
+      case 2: points.push_back(a + u * (b - a) + v * (c - a) + (unit(random) - 0.5f) * 2e-6f * n); break;
+      default: points.push_back(a + u * (b - a) + v * (c - a) + (unit(random) - 0.2f) * spread * n);
+    }
+  }
+  return points;
+}
+
+void expectBruteForceNearest(const BodyCollider& body, const std::vector<glm::vec3>& points, float radius,
+                             int& found) {
+  const size_t triangleCount = body.triangles().size() / 3;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const glm::vec3& p = points[i];
+    const int32_t expected = bruteForceNearest(body, p, radius);
+    BodyContact contact, hinted;
+    ASSERT_EQ(body.nearestContact(p, contact, radius), expected >= 0) << "point " << i;
+    if (expected < 0) continue;
+    ++found;
+    ASSERT_EQ(contact.triangle, expected) << "point " << i;
+    ASSERT_TRUE(body.nearestContact(p, hinted, radius, int32_t((7919 * i) % triangleCount)));
+    EXPECT_TRUE(sameContact(contact, hinted)) << "point " << i;
+  }
+}
+
+// The search's shortcuts (a lower bound for four triangles at once, the
+// hint) only skip triangles: its answer is the brute-force nearest one
+// exactly, on the moving bumpy sphere and on the walking mannequin.
+TEST(BodyCollider, NearestTriangleIsTheBruteForceNearestExactly) {
+  BumpyBody bumpy;
+  BodyCollider& body = bumpy.body;
+  body.setTarget(bumpy.target, 1.0f / 30.0f);
+  int found = 0;
+  for (float fraction : {0.0f, 0.5f}) {
+    body.moveTo(fraction);
+    body.moveTo(fraction);  // a move that does not move it keeps the trees as they are
+    for (float radius : {0.005f, 0.02f, 0.08f}) expectBruteForceNearest(body, probePoints(body, 3, 1500, 0.03f), radius, found);
+  }
+  EXPECT_GT(found, 3000);
+}
+
+TEST(BodyCollider, NearestTriangleOnTheWalkingMannequinIsTheBruteForceNearest) {
+  const Character mannequin = makeDefaultMannequin();
+  const int walk = mannequin.findClip("walk");
+  PosedCharacter posed;
+  posed.evaluate(mannequin, walk, 0.3f, nullptr, nullptr);
+  BodyCollider body;
+  body.setMesh(concatenatedPositions(posed.meshes()), concatenatedTriangles(mannequin), 0.02f);
+  posed.evaluate(mannequin, walk, 0.3f + 1.0f / 30.0f, nullptr, nullptr);
+  body.setTarget(concatenatedPositions(posed.meshes()), 1.0f / 30.0f);
+  body.moveTo(1.0f);
+  int found = 0;
+  expectBruteForceNearest(body, probePoints(body, 17, 300, 0.03f), 0.02f, found);
+  expectBruteForceNearest(body, probePoints(body, 19, 100, 0.08f), 0.08f, found);
+  EXPECT_GT(found, 300);
+}
+
+// Slivers and degenerate triangles (the skinned body's can be squeezed
+// flat): a point's nearest triangle is still the brute-force one.
+TEST(BodyCollider, NearestTriangleAmongSliversIsTheBruteForceNearest) {
+  std::mt19937 random(23);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  std::vector<float> positions;
+  std::vector<uint32_t> triangles;
+  for (uint32_t k = 0; k < 60; ++k) {
+    const glm::vec3 a(0.05f * unit(random), 0.05f * unit(random), 0.05f * unit(random));
+    const glm::vec3 along = 0.01f * glm::vec3(unit(random), unit(random), unit(random));
+    const glm::vec3 aside = float(std::pow(10.0f, -1.0f - 5.0f * (unit(random) + 1.0f))) * glm::vec3(unit(random), unit(random), unit(random));
+    // A sliver: its third corner near the line of the first two (on it, or at a corner, for every tenth).
+    const glm::vec3 b = a + along, c = k % 10 == 0 ? a : a + (0.5f + 0.5f * unit(random)) * along + aside;
+    for (const glm::vec3& v : {a, b, c}) positions.insert(positions.end(), {v.x, v.y, v.z});
+    triangles.insert(triangles.end(), {3 * k, 3 * k + 1, 3 * k + 2});
+  }
+  BodyCollider body;
+  body.setMesh(positions, triangles, 0.02f);
+  int found = 0;
+  expectBruteForceNearest(body, probePoints(body, 29, 3000, 0.01f), 0.02f, found);
+  EXPECT_GT(found, 2000);
+}
+
 // A point's queries through its last one (BodyQuery) answer exactly as a
 // fresh search, bit for bit: from the same point (reused), after small and
 // large moves (the last triangle as the hint; far enough from the surface
@@ -178,6 +296,10 @@ TEST(BodyCollider, QueriesFromTheLastQueryAnswerAsAFreshSearch) {
         BodyContact fresh, kept;
         const bool hit = body.nearestContact(points[i], fresh, radius);
         ++queries;
+        // The same through the last query without updating it.
+        BodyContact since;
+        ASSERT_EQ(body.nearestContactSince(points[i], since, radius, last[i]), hit);
+        if (hit) EXPECT_TRUE(sameContact(fresh, since)) << "query " << queries;
         if (body.provesNoneWithin(last[i], points[i], radius)) {
           ++provenEmpty;
           ASSERT_FALSE(hit) << "proven empty, yet a contact at " << fresh.signedDistance;

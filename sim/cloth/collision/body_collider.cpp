@@ -59,6 +59,7 @@ void BodyCollider::setMesh(const std::vector<float>& positions, const std::vecto
   velocity_.assign(n, glm::vec3(0.0f));
   searchRadius_ = searchRadius;
   tree_.build(triangleBoxes(current_, triangles_, kBoxSlack));
+  updateSlotCorners();
   ++pose_;
   ++move_;
   sweptTree_ = tree_;
@@ -85,8 +86,11 @@ void BodyCollider::moveTo(float fraction) {
     moved2 = std::max(moved2, glm::dot(d, d));
   }
   maxDisplacement_ = std::sqrt(moved2);
-  if (moved2 > 0.0f) ++pose_;
   ++move_;
+  // Not moved (the step's restart): the boxes and corners are those of
+  // tree_ already, and firstHitAlong() takes tree_ for sweptTree_.
+  if (moved2 == 0.0f) return;
+  ++pose_;
   // nearestContact() needs the triangles' boxes now; firstHitAlong() each
   // box extended by that box moved back by the triangle's mean displacement
   // in this move: it meets a triangle at a point p of it now with
@@ -95,12 +99,12 @@ void BodyCollider::moveTo(float fraction) {
   // triangles: the nearest-point searches would visit far more of them.)
   std::vector<Box> boxes = triangleBoxes(current_, triangles_, kBoxSlack);
   tree_.refit(boxes);
-  if (maxDisplacement_ > 0.0f)
-    for (size_t t = 0; t < boxes.size(); ++t) {
-      const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
-      const glm::vec3 back = (previous_[a] + previous_[b] + previous_[c] - current_[a] - current_[b] - current_[c]) / 3.0f;
-      boxes[t].extend(Box{boxes[t].min + back, boxes[t].max + back});
-    }
+  updateSlotCorners();
+  for (size_t t = 0; t < boxes.size(); ++t) {
+    const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
+    const glm::vec3 back = (previous_[a] + previous_[b] + previous_[c] - current_[a] - current_[b] - current_[c]) / 3.0f;
+    boxes[t].extend(Box{boxes[t].min + back, boxes[t].max + back});
+  }
   sweptTree_.refit(boxes);
 }
 
@@ -119,7 +123,8 @@ bool BodyCollider::firstHitAlong(const glm::vec3& from, const glm::vec3& to, Bod
   box.extend(to);
   float best = 1.0f;
   bool found = false;
-  sweptTree_.query(box, [&](uint32_t t) {
+  // Unmoved, the swept boxes would be tree_'s.
+  (moved() ? sweptTree_ : tree_).query(box, [&](uint32_t t) {
     const uint32_t ia = triangles_[3 * t], ib = triangles_[3 * t + 1], ic = triangles_[3 * t + 2];
     const glm::vec3 a = current_[ia], b = current_[ib], c = current_[ic];
     // Where the vertex started, seen from the triangle: moved with it.
@@ -191,6 +196,107 @@ inline void BodyCollider::considerTriangle(uint32_t t, const glm::vec3& p, Neare
   best = {t, w, d2};
 }
 
+void BodyCollider::updateSlotCorners() {
+  slotCorners_.resize(tree_.nodeCount());
+  for (uint32_t node = 0; node < slotCorners_.size(); ++node)
+    for (int slot = 0; slot < 4; ++slot) {
+      const int32_t t = tree_.primitiveAt(node, slot);
+      if (t < 0) continue;
+      for (int corner = 0; corner < 3; ++corner) {
+        const glm::vec3& x = current_[triangles_[3 * size_t(t) + corner]];
+        for (int axis = 0; axis < 3; ++axis) slotCorners_[node].corner[corner][axis][slot] = x[axis];
+      }
+    }
+}
+
+namespace {
+
+#ifdef MQ_WIDE_TREE_SSE
+struct Vec4 {
+  __m128 x, y, z;
+};
+inline Vec4 operator-(const Vec4& a, const Vec4& b) {
+  return {_mm_sub_ps(a.x, b.x), _mm_sub_ps(a.y, b.y), _mm_sub_ps(a.z, b.z)};
+}
+inline __m128 dot(const Vec4& a, const Vec4& b) {
+  return _mm_add_ps(_mm_add_ps(_mm_mul_ps(a.x, b.x), _mm_mul_ps(a.y, b.y)), _mm_mul_ps(a.z, b.z));
+}
+inline Vec4 cross(const Vec4& a, const Vec4& b) {
+  return {_mm_sub_ps(_mm_mul_ps(a.y, b.z), _mm_mul_ps(a.z, b.y)), _mm_sub_ps(_mm_mul_ps(a.z, b.x), _mm_mul_ps(a.x, b.z)),
+          _mm_sub_ps(_mm_mul_ps(a.x, b.y), _mm_mul_ps(a.y, b.x))};
+}
+// Squared distance from the origin of `from` (p - the segment's start) to the segment along `edge`.
+inline __m128 segmentDistance2(const Vec4& from, const Vec4& edge) {
+  // A zero-length edge gives 0 / 0: max() takes its second operand for a NaN, so t = 0.
+  const __m128 t = _mm_min_ps(_mm_max_ps(_mm_div_ps(dot(from, edge), dot(edge, edge)), _mm_setzero_ps()), _mm_set1_ps(1.0f));
+  const Vec4 off{_mm_sub_ps(from.x, _mm_mul_ps(t, edge.x)), _mm_sub_ps(from.y, _mm_mul_ps(t, edge.y)),
+                 _mm_sub_ps(from.z, _mm_mul_ps(t, edge.z))};
+  return dot(off, off);
+}
+#endif
+
+// A triangle thinner than this (its doubled area squared over its longest
+// edge to the fourth, about the sine squared of its smallest angle) gets no
+// lower bound (0): the exact closest point of a sliver is too sensitive to
+// rounding for the bound's margin.
+constexpr float kSliver = 1e-4f;
+
+// Lower bounds of the squared distances from p to the four triangles of a
+// node's slots (those of empty slots are meaningless): the distance to the
+// plane when p is over the triangle, else to the nearest edge. Exact but for
+// rounding; without SSE all 0 (every triangle considered).
+void slotLowerBounds(const float (&corner)[3][3][4], const glm::vec3& p, float out[4]) {
+#ifdef MQ_WIDE_TREE_SSE
+  const Vec4 a{_mm_load_ps(corner[0][0]), _mm_load_ps(corner[0][1]), _mm_load_ps(corner[0][2])};
+  const Vec4 b{_mm_load_ps(corner[1][0]), _mm_load_ps(corner[1][1]), _mm_load_ps(corner[1][2])};
+  const Vec4 c{_mm_load_ps(corner[2][0]), _mm_load_ps(corner[2][1]), _mm_load_ps(corner[2][2])};
+  const Vec4 q{_mm_set1_ps(p.x), _mm_set1_ps(p.y), _mm_set1_ps(p.z)};
+  const Vec4 ab = b - a, bc = c - b, ca = a - c, ac = c - a;
+  const Vec4 pa = q - a, pb = q - b, pc = q - c;
+  const Vec4 n = cross(ab, ac);
+  const __m128 n2 = dot(n, n), zero = _mm_setzero_ps();
+  // Over the triangle: p left of each edge, seen along the normal.
+  const __m128 over = _mm_and_ps(_mm_and_ps(_mm_cmpge_ps(dot(cross(ab, pa), n), zero), _mm_cmpge_ps(dot(cross(bc, pb), n), zero)),
+                                 _mm_cmpge_ps(dot(cross(ca, pc), n), zero));
+  const __m128 height = dot(pa, n);
+  const __m128 plane2 = _mm_div_ps(_mm_mul_ps(height, height), n2);
+  const __m128 edge2 = _mm_min_ps(_mm_min_ps(segmentDistance2(pa, ab), segmentDistance2(pb, bc)), segmentDistance2(pc, ca));
+  const __m128 longest2 = _mm_max_ps(_mm_max_ps(dot(ab, ab), dot(bc, bc)), dot(ca, ca));
+  const __m128 sliver = _mm_cmplt_ps(n2, _mm_mul_ps(_mm_set1_ps(kSliver), _mm_mul_ps(longest2, longest2)));
+  const __m128 bound = _mm_or_ps(_mm_and_ps(over, plane2), _mm_andnot_ps(over, edge2));
+  _mm_storeu_ps(out, _mm_andnot_ps(sliver, bound));
+#else
+  (void)corner, (void)p;
+  for (int k = 0; k < 4; ++k) out[k] = 0.0f;
+#endif
+}
+
+}  // namespace
+
+void BodyCollider::considerSlots(uint32_t node, int slots, const glm::vec3& p, Nearest& best) const {
+  float lower[4];
+  slotLowerBounds(slotCorners_[node].corner, p, lower);
+  for (float& l : lower)
+    if (!(l >= 0.0f)) l = 0.0f;  // NaN (none expected): considered
+  // The bound's margin: the lower bound and the exact distance may each be
+  // off by rounding (~1e-7 m).
+  auto boundOf = [](float distance2) {
+    const float d = std::sqrt(distance2) + kBoundSlack;
+    return d * d;
+  };
+  float bound2 = boundOf(best.distance2);
+  while (slots) {
+    int k = -1;
+    for (int j = 0; j < 4; ++j)
+      if ((slots & (1 << j)) && (k < 0 || lower[j] < lower[k])) k = j;
+    if (!(lower[k] <= bound2)) return;  // the nearest bound's too far: all are
+    slots &= ~(1 << k);
+    const float before = best.distance2;
+    considerTriangle(uint32_t(tree_.primitiveAt(node, k)), p, best);
+    if (best.distance2 != before) bound2 = boundOf(best.distance2);
+  }
+}
+
 BodyCollider::Nearest BodyCollider::searchNearest(const glm::vec3& p, float radius, int32_t hint) const {
   // Squared distances only during the search; the contact of the nearest
   // triangle after. Any triangle's distance bounds the nearest one's, so the
@@ -198,7 +304,15 @@ BodyCollider::Nearest BodyCollider::searchNearest(const glm::vec3& p, float radi
   Nearest best;
   best.distance2 = radius * radius;
   if (hint >= 0 && size_t(hint) < triangles_.size() / 3) considerTriangle(uint32_t(hint), p, best);
-  tree_.nearest(p, best.distance2, [&](uint32_t t) { considerTriangle(t, p, best); });
+  tree_.nearestByNode(
+      p, best.distance2, [&](uint32_t node, int slots) { considerSlots(node, slots, p, best); },
+      [&](int32_t node) {
+        tree_.prefetchNode(node);
+#ifdef MQ_WIDE_TREE_SSE
+        const char* corners = reinterpret_cast<const char*>(&slotCorners_[node]);
+        for (int line = 0; line < 3; ++line) _mm_prefetch(corners + 64 * line, _MM_HINT_T0);
+#endif
+      });
   return best;
 }
 
@@ -210,14 +324,8 @@ bool BodyCollider::nearestContact(const glm::vec3& p, BodyContact& contact, floa
   // From the same point at the same pose: the nearest triangle is the one
   // found (its squared distance decides whether it is within this radius),
   // or none is nearer than the last radius.
-  if (last.pose == pose_ && last.point == p && (last.found || radius <= last.radius)) {
-    const bool within = last.found && last.distance2 < radius * radius;
-    if (!within) return false;
-    contact = last.contact;
-    // The body's velocity may have changed since (setTarget()), its positions not.
-    contact.velocity = velocityAt(uint32_t(contact.triangle), last.weights);
-    return true;
-  }
+  bool within = false;
+  if (keptAnswer(last, p, radius, contact, within)) return within;
   ++last.searches;
   const Nearest best = searchNearest(p, radius, last.contact.triangle);
   last.found = contactAt(p, best, last.contact);
@@ -228,6 +336,25 @@ bool BodyCollider::nearestContact(const glm::vec3& p, BodyContact& contact, floa
   last.radius = radius;
   if (last.found) contact = last.contact;
   return last.found;
+}
+
+bool BodyCollider::keptAnswer(const BodyQuery& last, const glm::vec3& p, float radius, BodyContact& contact,
+                              bool& within) const {
+  if (last.pose != pose_ || last.point != p || !(last.found || radius <= last.radius)) return false;
+  within = last.found && last.distance2 < radius * radius;
+  if (!within) return true;
+  contact = last.contact;
+  // The body's velocity may have changed since (setTarget()), its positions not.
+  contact.velocity = velocityAt(uint32_t(contact.triangle), last.weights);
+  return true;
+}
+
+bool BodyCollider::nearestContactSince(const glm::vec3& p, BodyContact& contact, float radius,
+                                       const BodyQuery& last) const {
+  if (provesNoneWithin(last, p, radius)) return false;
+  bool within = false;
+  if (keptAnswer(last, p, radius, contact, within)) return within;
+  return nearestContact(p, contact, radius, last.contact.triangle);
 }
 
 bool BodyCollider::provesNoneWithin(const BodyQuery& last, const glm::vec3& p, float radius) const {

@@ -1,9 +1,12 @@
 #pragma once
 // The animated skinned body as a collider: its triangles in two 4-wide BVHs
-// of the same shape refitted every move, one over each triangle now (for
-// the nearest-point search), one over each triangle and its motion in the
-// last move (for the swept test), so both queries visit only the triangles
-// they could meet. Between two frames the body moves linearly; a cloth vertex
+// of the same shape refitted every move that moves it, one over each
+// triangle now (for the nearest-point search), one over each triangle and
+// its motion in the last move (for the swept test), so both queries visit
+// only the triangles they could meet. The nearest-point search bounds the
+// distances of a tree node's triangles from below four at once (SSE) and
+// finds the exact closest point only on those that could be the nearest.
+// Between two frames the body moves linearly; a cloth vertex
 // closer than `thickness` to the surface (or behind it) is pushed out with the
 // contact response, relative to the body's velocity at the contact point.
 // Inside/outside comes from the angle-weighted pseudo-normal of the nearest
@@ -76,6 +79,9 @@ class BodyCollider {
   // answer again when the point has not moved (same pose; within this
   // radius or not), its nearest triangle as the hint otherwise.
   bool nearestContact(const glm::vec3& p, BodyContact& contact, float radius, BodyQuery& last) const;
+  // ... the same, without updating `last` (and false at once when it
+  // proves none within the radius: provesNoneWithin()).
+  bool nearestContactSince(const glm::vec3& p, BodyContact& contact, float radius, const BodyQuery& last) const;
   // Whether `last` proves, without a search, that nothing is within `radius`
   // of p (p is farther from its point than the surface was, less the radius).
   bool provesNoneWithin(const BodyQuery& last, const glm::vec3& p, float radius) const;
@@ -108,7 +114,19 @@ class BodyCollider {
   // Takes triangle t as `best` when it is nearer to p (of triangles equally
   // near, the lowest index wins: the answer does not depend on the order).
   void considerTriangle(uint32_t t, const glm::vec3& p, Nearest& best) const;
+  // considerTriangle() for the triangles in the tree node's `slots`, nearest
+  // lower bound first, skipping those whose lower bound (four at once)
+  // proves them farther than `best` with a margin for rounding: so the
+  // triangles that could be the nearest are all considered, and the answer
+  // is that of considering them all.
+  void considerSlots(uint32_t node, int slots, const glm::vec3& p, Nearest& best) const;
+  // The corners of the triangles in the tree's slots, after a move.
+  void updateSlotCorners();
   glm::vec3 velocityAt(uint32_t t, const glm::vec3& w) const;
+  // Whether `last` answers a query from p within `radius` as it is (the
+  // same point at the same pose); then `within` tells whether it found a
+  // contact there, and `contact` gets it.
+  bool keptAnswer(const BodyQuery& last, const glm::vec3& p, float radius, BodyContact& contact, bool& within) const;
   Nearest searchNearest(const glm::vec3& p, float radius, int32_t hint) const;
   bool contactAt(const glm::vec3& p, const Nearest& best, BodyContact& contact) const;
 
@@ -119,6 +137,12 @@ class BodyCollider {
   float maxDisplacement_ = 0.0f;  // largest vertex move of the last moveTo()
   float maxSpeed_ = 0.0f;
   WideTree tree_;       // the triangles' boxes now
+  // For each node of tree_, the corners of the triangles in its slots (four
+  // lanes: corner, axis, slot), for considerSlots().
+  struct alignas(16) SlotCorners {
+    float corner[3][3][4];
+  };
+  std::vector<SlotCorners> slotCorners_;
   WideTree sweptTree_;  // ... grown over their motion in the last move
   float searchRadius_ = 0.02f;
   uint64_t pose_ = 0;

@@ -64,7 +64,12 @@ int32_t WideTree::buildNode(std::vector<uint32_t>& order, uint32_t first, uint32
   int32_t children[4] = {kNoChild, kNoChild, kNoChild, kNoChild};
   for (int g = 0; g < groups; ++g)
     children[g] = groupCount[g] == 1 ? ~int32_t(order[groupFirst[g]]) : buildNode(order, groupFirst[g], groupCount[g], centres);
-  std::copy(children, children + 4, nodes_[index].child);
+  Node& node = nodes_[index];
+  std::copy(children, children + 4, node.child);
+  for (int k = 0; k < 4; ++k) {
+    if (children[k] >= 0) node.nodeSlots |= 1 << k;
+    else if (children[k] != kNoChild) node.primitiveSlots |= 1 << k;
+  }
   return index;
 }
 

@@ -35,19 +35,46 @@ class WideTree {
   // at the bound are visited, so a search can break ties by index.
   template <class Visit>
   void nearest(const glm::vec3& p, float& best2, Visit&& visit) const;
+  // nearest(), with a node's primitives handed over together (for a test of
+  // four at once): visitSlots(node, slots) with the bits of `slots` the
+  // node's slots holding primitives whose boxes are within the bound; the
+  // node's child nodes are visited after, nearer ones first.
+  // prefetch(node) is called for the nodes put on the stack below the top
+  // (visited later: their data can be on its way meanwhile).
+  template <class VisitSlots, class Prefetch>
+  void nearestByNode(const glm::vec3& p, float& best2, VisitSlots&& visitSlots, Prefetch&& prefetch) const;
+  // Starts loading a node's boxes into the cache.
+  void prefetchNode(int32_t node) const {
+#ifdef MQ_WIDE_TREE_SSE
+    const char* at = reinterpret_cast<const char*>(&nodes_[node]);
+    _mm_prefetch(at, _MM_HINT_T0);
+    _mm_prefetch(at + 64, _MM_HINT_T0);
+#else
+    (void)node;
+#endif
+  }
+  // The primitive in slot `slot` of node `node`, or -1 (a child node or empty).
+  int32_t primitiveAt(uint32_t node, int slot) const {
+    const int32_t c = nodes_[node].child[slot];
+    return c >= 0 || c == kNoChild ? -1 : ~c;
+  }
 
   bool empty() const { return nodes_.empty(); }
   size_t nodeCount() const { return nodes_.size(); }
 
  private:
   static constexpr int32_t kNoChild = INT32_MIN;  // an empty slot (its box is empty)
-  struct alignas(16) Node {
+  // Two whole cache lines.
+  struct alignas(64) Node {
     float minX[4], minY[4], minZ[4], maxX[4], maxY[4], maxZ[4];
     int32_t child[4];  // >= 0: a node; kNoChild: empty; otherwise primitive ~child
+    int32_t nodeSlots = 0, primitiveSlots = 0;  // bit k: child[k] is a node / a primitive
   };
   int32_t buildNode(std::vector<uint32_t>& order, uint32_t first, uint32_t count, const std::vector<glm::vec3>& centres);
   // Squared distances from p to the four boxes of n (huge for empty slots).
   static void squaredDistances(const Node& n, const glm::vec3& p, float out[4]);
+  // Bit k set when d2[k] <= bound.
+  static int withinMask(const float d2[4], float bound);
   // Bit k set when the box of slot k overlaps `box`.
   static int overlapMask(const Node& n, const Box& box);
 
@@ -69,6 +96,16 @@ inline void WideTree::squaredDistances(const Node& n, const glm::vec3& p, float 
     const float dz = std::max(std::max(n.minZ[k] - p.z, p.z - n.maxZ[k]), 0.0f);
     out[k] = dx * dx + dy * dy + dz * dz;
   }
+#endif
+}
+
+inline int WideTree::withinMask(const float d2[4], float bound) {
+#ifdef MQ_WIDE_TREE_SSE
+  return _mm_movemask_ps(_mm_cmple_ps(_mm_loadu_ps(d2), _mm_set1_ps(bound)));
+#else
+  int mask = 0;
+  for (int k = 0; k < 4; ++k) mask |= int(d2[k] <= bound) << k;
+  return mask;
 #endif
 }
 
@@ -140,6 +177,41 @@ void WideTree::nearest(const glm::vec3& p, float& best2, Visit&& visit) const {
       near[j] = {n.child[k], d2[k]};
     }
     for (int j = 0; j < count; ++j) stack[top++] = near[j];
+  }
+}
+
+template <class VisitSlots, class Prefetch>
+void WideTree::nearestByNode(const glm::vec3& p, float& best2, VisitSlots&& visitSlots, Prefetch&& prefetch) const {
+  if (nodes_.empty()) return;
+  // A search is a chain of dependent loads, a node's address and then its
+  // boxes: so few branches (masks for the slots within the bound; only the
+  // nearest child node put on top, the others in slot order, which with a
+  // bound from a hint hardly matters), and the stack's nodes and distances
+  // apart (read back as written, without a stalled store-to-load forward).
+  int32_t stackNode[256];
+  float stackDistance2[256];
+  int top = 0;
+  stackNode[0] = 0, stackDistance2[0] = 0.0f, ++top;
+  while (top > 0) {
+    --top;
+    if (stackDistance2[top] > best2) continue;
+    const int32_t index = stackNode[top];
+    const Node& n = nodes_[index];
+    float d2[4];
+    squaredDistances(n, p, d2);
+    const int slots = withinMask(d2, best2) & n.primitiveSlots;
+    if (slots) visitSlots(uint32_t(index), slots);
+    const int children = withinMask(d2, best2) & n.nodeSlots;  // the bound may be lower now
+    if (!children) continue;
+    int nearest = __builtin_ctz(unsigned(children));
+    for (int k = nearest + 1; k < 4; ++k)
+      if ((children >> k) & 1 && d2[k] < d2[nearest]) nearest = k;
+    for (int k = 0; k < 4; ++k) {
+      stackNode[top] = n.child[k], stackDistance2[top] = d2[k];
+      if ((children >> k) & (k != nearest)) prefetch(n.child[k]);
+      top += (children >> k) & (k != nearest);
+    }
+    stackNode[top] = n.child[nearest], stackDistance2[top] = d2[nearest], ++top;
   }
 }
 
