@@ -114,12 +114,12 @@ class BodyCollider {
   // Takes triangle t as `best` when it is nearer to p (of triangles equally
   // near, the lowest index wins: the answer does not depend on the order).
   void considerTriangle(uint32_t t, const glm::vec3& p, Nearest& best) const;
-  // considerTriangle() for the triangles in the tree node's `slots`, nearest
+  // considerTriangle() for the triangles in the tree node's `slotMask`, nearest
   // lower bound first, skipping those whose lower bound (four at once)
   // proves them farther than `best` with a margin for rounding: so the
   // triangles that could be the nearest are all considered, and the answer
   // is that of considering them all.
-  void considerSlots(uint32_t node, int slots, const glm::vec3& p, Nearest& best) const;
+  void considerSlots(uint32_t node, int slotMask, const glm::vec3& p, Nearest& best) const;
   // The corners of the triangles in the tree's slots, after a move.
   void updateSlotCorners();
   glm::vec3 velocityAt(uint32_t t, const glm::vec3& w) const;

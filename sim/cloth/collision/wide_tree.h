@@ -199,8 +199,8 @@ void WideTree::nearestByNode(const glm::vec3& p, float& best2, VisitSlots&& visi
     const Node& n = nodes_[index];
     float d2[4];
     squaredDistances(n, p, d2);
-    const int slots = withinMask(d2, best2) & n.primitiveSlots;
-    if (slots) visitSlots(uint32_t(index), slots);
+    const int nearSlots = withinMask(d2, best2) & n.primitiveSlots;
+    if (nearSlots) visitSlots(uint32_t(index), nearSlots);
     const int children = withinMask(d2, best2) & n.nodeSlots;  // the bound may be lower now
     if (!children) continue;
     int nearest = __builtin_ctz(unsigned(children));
