@@ -306,7 +306,8 @@ bool ClothSimulator::limitStretchAfterContacts(float h) {
 // along its contact normal (it still slides along the surface) and the
 // body-vertex contacts are pushed out again, so the next round pulls the
 // cloth around them instead. The last round (the limit, with the rest of the
-// pass budget) ends it.
+// pass budget) ends it; so does a round that held when nothing is left to put
+// back or push out (the rounds after it would change nothing).
 bool ClothSimulator::limitStretchKeepingContactsOut(float h, const std::vector<float>& freeInvMass) {
   const float thickness = settings_.collisionThickness;
   const bool body = !body_.empty() && sewing_.empty();
@@ -328,13 +329,18 @@ bool ClothSimulator::limitStretchKeepingContactsOut(float h, const std::vector<f
   int used = 0;
   for (int round = 0; round < rounds; ++round) {
     if (round > 0) {
+      bool putBack = false;
       for (size_t i = 0; i < normal.size(); ++i) {
         const float in = -glm::dot(state_.x[i] - start[i], normal[i]) - allowedIn[i];
         if (normal[i] == glm::vec3(0.0f) || in <= 0.0f) continue;
         state_.x[i] += in * normal[i];
         state_.v[i] += (in / h) * normal[i];
+        putBack = true;
       }
-      bodyFeatures_->reapply(state_, body_, thickness, touched_);
+      // Nothing moved since a round that held: the rounds left would change nothing.
+      if (bodyFeatures_->reapply(state_, body_, thickness, touched_) == 0 && !putBack &&
+          r.maxStretchAfter <= activeMaxStretch())
+        break;
     }
     for (size_t i = 0; i < state_.size(); ++i)
       if (touched_[i]) state_.invMass[i] = kContactInvMassScale * freeInvMass[i];

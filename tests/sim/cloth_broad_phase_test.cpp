@@ -166,6 +166,45 @@ TEST(StretchLimiter, SparsePassesGiveTheFullSweepsResult) {
   EXPECT_EQ(again.x, sparse.x);
 }
 
+TEST(StretchLimiter, AReusedLimiterGivesAFreshOnesResults) {
+  // The limiter keeps each spring's stretch between calls and measures again
+  // only at vertices that moved: as the contact rounds use it (a few vertices
+  // moved between calls, heavy vertices changing, the budget running out), or
+  // with the whole cloth moved, it must give exactly what a fresh one gives.
+  const ClothMesh mesh = test::horizontalSheetMesh(40, 0.6f, glm::vec3(0.0f));
+  const ClothTopology topology = buildClothTopology(mesh);
+  ClothSettings settings;
+  ClothSimulator sim(mesh, topology, fabricPreset("cotton"), settings);
+  const auto& springs = sim.forces().springs().springs();
+  const size_t count = sim.forces().structuralCount();
+  ClothState reused = sim.state();
+  const glm::vec3 centre = reused.x[20 * 40 + 20];
+  for (size_t i = 0; i < reused.size(); ++i) {
+    const float d = glm::length(reused.x[i] - centre);
+    if (d < 0.06f) reused.x[i].y += 0.05f * (1.0f - d / 0.06f);
+  }
+  ClothState fresh = reused;
+  StretchLimiter limiter(springs, count, reused.size());
+  for (int call = 0; call < 12; ++call) {
+    for (ClothState* s : {&reused, &fresh}) {
+      if (call % 4 == 1)  // a few vertices put back out, some heavy
+        for (size_t i = 20 * 40 + 15; i < 20 * 40 + 25; ++i) s->x[i].y += 0.01f, s->invMass[i] *= 0.5f;
+      if (call == 6)  // the whole cloth moved
+        for (size_t i = 0; i < s->size(); ++i) s->x[i] += glm::vec3(0.001f * float(i % 7), 0.002f * float(i % 5), 0.0f);
+    }
+    const int budget = call < 8 ? 3 : 2000;  // the early calls end with springs still over the limit
+    const StretchLimitResult a = limiter.limitByPositions(reused, 1.1f, budget, 1.0f / 30.0f);
+    const StretchLimitResult b = limitStretchByPositions(fresh, springs, count, 1.1f, budget, 1.0f / 30.0f);
+    EXPECT_EQ(a.passes, b.passes) << "call " << call;
+    EXPECT_EQ(a.maxStretchBefore, b.maxStretchBefore) << "call " << call;
+    EXPECT_EQ(a.maxStretchAfter, b.maxStretchAfter) << "call " << call;
+    EXPECT_EQ(a.maxStretchAfter, maxStretchOf(reused.x, springs, count)) << "call " << call;
+    EXPECT_EQ(reused.x, fresh.x) << "call " << call;
+    EXPECT_EQ(reused.v, fresh.v) << "call " << call;
+  }
+  EXPECT_LE(maxStretchOf(reused.x, springs, count), 1.1f);
+}
+
 TEST(SelfCollision, CandidatesDoNotDependOnTreeRefits) {
   // A sheet folded over itself, moved a little each step: one resolver
   // refits its trees between steps, a fresh one builds them; both must push

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "sim/cloth/parallel.h"
 
@@ -9,29 +10,34 @@ namespace mq::cloth {
 
 namespace {
 
+constexpr size_t kMeasureBlocks = 64;
+
+// (|x_a - x_b| / rest)^2, 0 for a spring without rest length.
+inline float squaredStretchOf(const std::vector<glm::vec3>& x, const Spring& s) {
+  const glm::vec3 d = x[s.a] - x[s.b];
+  const float rest2 = s.rest * s.rest;
+  return rest2 > 0.0f ? glm::dot(d, d) / rest2 : 0.0f;
+}
+
 // Largest (|x_a - x_b| / rest)^2 over the first `count` springs, in 64 fixed
 // blocks (in parallel when large): no square root per spring.
 float maxSquaredStretchOf(const std::vector<glm::vec3>& x, const std::vector<Spring>& springs, size_t count) {
-  constexpr size_t kBlocks = 64;
-  float partial[kBlocks];
-  std::fill(partial, partial + kBlocks, 0.0f);
-  const size_t block = (count + kBlocks - 1) / kBlocks;
+  float partial[kMeasureBlocks];
+  std::fill(partial, partial + kMeasureBlocks, 0.0f);
+  const size_t block = (count + kMeasureBlocks - 1) / kMeasureBlocks;
   auto body = [&](size_t b) {
     float m = 0.0f;
-    for (size_t i = b * block; i < std::min(count, (b + 1) * block); ++i) {
-      const Spring& s = springs[i];
-      const glm::vec3 d = x[s.a] - x[s.b];
-      const float rest2 = s.rest * s.rest;
-      if (rest2 > 0.0f) m = std::max(m, glm::dot(d, d) / rest2);
-    }
+    for (size_t i = b * block; i < std::min(count, (b + 1) * block); ++i) m = std::max(m, squaredStretchOf(x, springs[i]));
     partial[b] = m;
   };
   if (count < 2 * kParallelGrain)
-    for (size_t b = 0; b < kBlocks; ++b) body(b);
+    for (size_t b = 0; b < kMeasureBlocks; ++b) body(b);
   else
-    ThreadPool::shared().parallelBlocks(kBlocks, body);
-  return *std::max_element(partial, partial + kBlocks);
+    ThreadPool::shared().parallelBlocks(kMeasureBlocks, body);
+  return *std::max_element(partial, partial + kMeasureBlocks);
 }
+
+bool samePosition(const glm::vec3& a, const glm::vec3& b) { return std::memcmp(&a, &b, sizeof(glm::vec3)) == 0; }
 
 }  // namespace
 
@@ -57,7 +63,81 @@ StretchLimiter::StretchLimiter(const std::vector<Spring>& springs, size_t count,
     incidence_[fill[springs[k].b]++] = uint32_t(k);
   }
   incidenceStart_ = std::move(start);
-  dirty_.assign((count + 63) / 64, 0);
+  const size_t words = (count + 63) / 64;
+  dirty_.assign(words, 0);
+  squaredStretch_.assign(count, 0.0f);
+  wordMax_.assign(words, 0.0f);
+  wordStale_.assign(words, 0);
+  movedFrom_.resize(vertexCount);
+  moved_.assign(vertexCount, 0);
+}
+
+float StretchLimiter::measureAll(const std::vector<glm::vec3>& x) {
+  const std::vector<Spring>& springs = *springs_;
+  const size_t words = wordMax_.size(), n = x.size();
+  measuredAt_.resize(n);
+  const size_t wordsPerBlock = (words + kMeasureBlocks - 1) / kMeasureBlocks;
+  const size_t verticesPerBlock = (n + kMeasureBlocks - 1) / kMeasureBlocks;
+  auto body = [&](size_t b) {
+    for (size_t w = b * wordsPerBlock; w < std::min(words, (b + 1) * wordsPerBlock); ++w) {
+      float m = 0.0f;
+      for (size_t k = 64 * w; k < std::min(count_, 64 * w + 64); ++k) {
+        squaredStretch_[k] = squaredStretchOf(x, springs[k]);
+        m = std::max(m, squaredStretch_[k]);
+      }
+      wordMax_[w] = m;
+    }
+    const size_t begin = std::min(n, b * verticesPerBlock), end = std::min(n, (b + 1) * verticesPerBlock);
+    std::copy(x.begin() + begin, x.begin() + end, measuredAt_.begin() + begin);
+  };
+  if (count_ < 2 * kParallelGrain)
+    for (size_t b = 0; b < kMeasureBlocks; ++b) body(b);
+  else
+    ThreadPool::shared().parallelBlocks(kMeasureBlocks, body);
+  return *std::max_element(wordMax_.begin(), wordMax_.end(), [](float a, float b) { return a < b; });
+}
+
+void StretchLimiter::remeasureAround(const std::vector<glm::vec3>& x, uint32_t vertex) {
+  if (samePosition(x[vertex], measuredAt_[vertex])) return;
+  measuredAt_[vertex] = x[vertex];
+  for (uint32_t i = incidenceStart_[vertex]; i < incidenceStart_[vertex + 1]; ++i) {
+    const uint32_t k = incidence_[i];
+    squaredStretch_[k] = squaredStretchOf(x, (*springs_)[k]);
+    if (!wordStale_[k / 64]) wordStale_[k / 64] = 1, staleWords_.push_back(k / 64);
+  }
+}
+
+float StretchLimiter::largestMeasured() {
+  for (uint32_t w : staleWords_) {
+    float m = 0.0f;
+    for (size_t k = 64 * size_t(w); k < std::min(count_, 64 * size_t(w) + 64); ++k) m = std::max(m, squaredStretch_[k]);
+    wordMax_[w] = m;
+    wordStale_[w] = 0;
+  }
+  staleWords_.clear();
+  float m = 0.0f;
+  for (float w : wordMax_) m = std::max(m, w);
+  return m;
+}
+
+float StretchLimiter::measure(const std::vector<glm::vec3>& x) {
+  const size_t n = x.size();
+  if (measuredAt_.size() != n) return measureAll(x);
+  // The vertices moved since the last measure, found by comparing blocks of
+  // positions (most are equal between the contact rounds); when many moved,
+  // the whole cloth is measured again instead.
+  constexpr size_t kGroup = 16;
+  const size_t most = n / 8;
+  changed_.clear();
+  for (size_t g = 0; g < n; g += kGroup) {
+    const size_t e = std::min(n, g + kGroup);
+    if (std::memcmp(&x[g], &measuredAt_[g], (e - g) * sizeof(glm::vec3)) == 0) continue;
+    for (size_t i = g; i < e; ++i)
+      if (!samePosition(x[i], measuredAt_[i])) changed_.push_back(uint32_t(i));
+    if (changed_.size() > most) return measureAll(x);
+  }
+  for (uint32_t v : changed_) remeasureAround(x, v);
+  return largestMeasured();
 }
 
 float StretchLimiter::correct(ClothState& s, size_t k, float target) {
@@ -69,11 +149,20 @@ float StretchLimiter::correct(ClothState& s, size_t k, float target) {
   if (wa + wb == 0.0f) return 0.0f;
   const float l = std::sqrt(l2);
   const glm::vec3 correction = ((l - limit) / (l * (wa + wb))) * d;
+  noteMove(s.x, sp.a);
+  noteMove(s.x, sp.b);
   s.x[sp.a] -= wa * correction;
   s.x[sp.b] += wb * correction;
   if (wa != 0.0f) markAround(sp.a, k);
   if (wb != 0.0f) markAround(sp.b, k);
   return l2 / (sp.rest * sp.rest);
+}
+
+void StretchLimiter::noteMove(const std::vector<glm::vec3>& x, uint32_t vertex) {
+  if (moved_[vertex]) return;
+  moved_[vertex] = 1;
+  movedFrom_[vertex] = x[vertex];
+  movedList_.push_back(vertex);
 }
 
 void StretchLimiter::markAround(uint32_t vertex, size_t except) {
@@ -83,28 +172,41 @@ void StretchLimiter::markAround(uint32_t vertex, size_t except) {
   }
 }
 
+void StretchLimiter::markOverTarget(float target) {
+  // A hair below target^2: a spring the division rounds under it is still
+  // checked (checking one within the limit changes nothing).
+  const float threshold = target * target * (1.0f - 1e-4f);
+  std::fill(dirty_.begin(), dirty_.end(), 0);
+  for (size_t w = 0; w < wordMax_.size(); ++w) {
+    if (wordMax_[w] <= threshold) continue;
+    for (size_t k = 64 * w; k < std::min(count_, 64 * w + 64); ++k)
+      if (squaredStretch_[k] > threshold) dirty_[w] |= uint64_t(1) << (k % 64);
+  }
+}
+
+float StretchLimiter::remeasureMoved(const std::vector<glm::vec3>& x) {
+  for (uint32_t v : movedList_) remeasureAround(x, v);
+  return largestMeasured();
+}
+
 StretchLimitResult StretchLimiter::limitByPositions(ClothState& s, float maxStretch, int maxPasses, float h) {
   StretchLimitResult result;
-  const std::vector<Spring>& springs = *springs_;
-  const size_t count = count_;
   const float maxSquared = maxStretch * maxStretch;
-  float worstSquared = maxSquaredStretchOf(s.x, springs, count);
+  float worstSquared = measure(s.x);
   result.maxStretchBefore = result.maxStretchAfter = std::sqrt(worstSquared);
   if (worstSquared <= maxSquared) return result;
-  const std::vector<glm::vec3> before = s.x;
   // Aim a hair below the limit so rounding leaves every spring within it.
   const float target = maxStretch * (1.0f - 1e-3f);
   // Symmetric Gauss-Seidel: forward and backward passes alternate, so a
   // correction travels across the cloth in both directions. The first pass
-  // checks every spring; a correction marks the springs around the moved
-  // ends, which the current pass checks when they come after it in its
-  // order, the next pass otherwise.
+  // checks every spring over the target (the others it would leave alone); a
+  // correction marks the springs around the moved ends, which the current
+  // pass checks when they come after it in its order, the next pass otherwise.
   // Each pass tracks the worst spring it meets (before correcting it); the
-  // whole cloth is re-measured only when a pass met none beyond the limit
-  // (a later correction in that pass may still have stretched an earlier
-  // spring a little), not after every pass.
-  std::fill(dirty_.begin(), dirty_.end(), ~uint64_t(0));
-  if (count % 64 != 0) dirty_.back() = (uint64_t(1) << (count % 64)) - 1;
+  // cloth is re-measured (the springs at the moved vertices) only when a pass
+  // met none beyond the limit (a later correction in that pass may still
+  // have stretched an earlier spring a little), not after every pass.
+  markOverTarget(target);
   const size_t words = dirty_.size();
   bool measured = true;
   while (result.passes < maxPasses && worstSquared > maxSquared) {
@@ -128,18 +230,20 @@ StretchLimitResult StretchLimiter::limitByPositions(ClothState& s, float maxStre
     measured = false;
     worstSquared = passWorst;
     if (worstSquared <= maxSquared) {
-      worstSquared = maxSquaredStretchOf(s.x, springs, count);
+      worstSquared = remeasureMoved(s.x);
       measured = true;
     }
   }
-  if (!measured) worstSquared = maxSquaredStretchOf(s.x, springs, count);
+  if (!measured) worstSquared = remeasureMoved(s.x);
   result.maxStretchAfter = std::sqrt(worstSquared);
-  forRange(s.size(), [&](size_t b, size_t e) {
-    for (size_t i = b; i < e; ++i) s.v[i] += (s.x[i] - before[i]) / h;
-  });
+  // The velocities take the corrections over the step; only moved vertices changed.
+  for (uint32_t v : movedList_) {
+    s.v[v] += (s.x[v] - movedFrom_[v]) / h;
+    moved_[v] = 0;
+  }
+  movedList_.clear();
   return result;
 }
-
 StretchLimitResult limitStretchByVelocities(ClothState& s, const std::vector<glm::vec3>& x0,
                                             const std::vector<Spring>& springs, size_t count, float maxStretch,
                                             int maxPasses, float h) {

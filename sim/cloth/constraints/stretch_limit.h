@@ -38,6 +38,11 @@ StretchLimitResult limitStretchByPositions(ClothState& s, const std::vector<Spri
 // the others are known to be within the limit, so the result is that of the
 // full Gauss-Seidel sweep, and where the limit cannot hold (cloth pinched
 // between two body parts) the passes cost the pinched region, not the cloth.
+// The squared stretch of every spring is kept too, with the positions it was
+// measured at: a call (the contact rounds call it again and again with a few
+// vertices moved in between) measures again only the springs at vertices
+// that moved, and its first pass visits only the springs over the target.
+// The springs must not change while the limiter lives.
 class StretchLimiter {
  public:
   StretchLimiter() = default;
@@ -50,11 +55,30 @@ class StretchLimiter {
   // before, 0 when it was within the limit or cannot move.
   float correct(ClothState& s, size_t k, float target);
   void markAround(uint32_t vertex, size_t except);
+  void noteMove(const std::vector<glm::vec3>& x, uint32_t vertex);
+  // The largest squared stretch at x: the springs at the vertices that moved
+  // since the last measure, or all of them when many moved.
+  float measure(const std::vector<glm::vec3>& x);
+  float measureAll(const std::vector<glm::vec3>& x);
+  float remeasureMoved(const std::vector<glm::vec3>& x);
+  void remeasureAround(const std::vector<glm::vec3>& x, uint32_t vertex);
+  float largestMeasured();
+  void markOverTarget(float target);
 
   const std::vector<Spring>* springs_ = nullptr;
   size_t count_ = 0;
   std::vector<uint32_t> incidenceStart_, incidence_;  // CSR: the springs at each vertex
   std::vector<uint64_t> dirty_;                       // one bit per spring: check in a pass
+  // The last measure: (length / rest)^2 per spring at the positions
+  // measuredAt_, its largest per 64 springs (stale ones listed).
+  std::vector<glm::vec3> measuredAt_;
+  std::vector<float> squaredStretch_, wordMax_;
+  std::vector<uint8_t> wordStale_;
+  std::vector<uint32_t> staleWords_, changed_;
+  // The vertices this call moved, with their positions before it (for the velocities).
+  std::vector<uint8_t> moved_;
+  std::vector<uint32_t> movedList_;
+  std::vector<glm::vec3> movedFrom_;
 };
 
 StretchLimitResult limitStretchByVelocities(ClothState& s, const std::vector<glm::vec3>& x0,
