@@ -8,6 +8,10 @@
 #include <functional>
 #include <vector>
 
+#ifdef __SSE2__
+#include <immintrin.h>
+#endif
+
 #include <glm/glm.hpp>
 
 namespace mq::cloth {
@@ -93,7 +97,15 @@ class AabbTree {
     Box box;
     int32_t left = -1, right = -1;  // children; leaves have left = -1
     uint32_t first = 0, count = 0;  // the node's range in order_
+    int32_t quad = -1;              // a leaf's boxes in leafQuads_
   };
+  // A leaf's primitives' boxes as columns (the empty box in the lanes past
+  // its count): one primitive is tested against all of them at once.
+  struct alignas(16) LeafQuad {
+    float minX[4], minY[4], minZ[4], maxX[4], maxY[4], maxZ[4];
+  };
+  // Bit k set: the leaf's k-th box overlaps `box`.
+  static unsigned overlapMask(const LeafQuad& q, const Box& box);
   int32_t buildNode(uint32_t first, uint32_t count, const std::vector<Box>& boxes);
   template <class Visit, class SkipWithin, class SkipBetween>
   void pairsWithin(int32_t node, Visit& visit, SkipWithin& skipWithin, SkipBetween& skipBetween) const;
@@ -104,8 +116,27 @@ class AabbTree {
   std::vector<Node> nodes_;
   std::vector<uint32_t> order_;  // primitive indices, leaf ranges
   std::vector<Box> leafBoxes_;   // the primitives' boxes in order_'s order
+  std::vector<LeafQuad> leafQuads_;
   std::vector<glm::vec3> centres_;  // build()'s scratch
 };
+
+inline unsigned AabbTree::overlapMask(const LeafQuad& q, const Box& box) {
+#ifdef __SSE2__
+  auto below = [](const float* column, float value) { return _mm_cmple_ps(_mm_loadu_ps(column), _mm_set1_ps(value)); };
+  auto above = [](const float* column, float value) { return _mm_cmpge_ps(_mm_loadu_ps(column), _mm_set1_ps(value)); };
+  const __m128 x = _mm_and_ps(below(q.minX, box.max.x), above(q.maxX, box.min.x));
+  const __m128 y = _mm_and_ps(below(q.minY, box.max.y), above(q.maxY, box.min.y));
+  const __m128 z = _mm_and_ps(below(q.minZ, box.max.z), above(q.maxZ, box.min.z));
+  return unsigned(_mm_movemask_ps(_mm_and_ps(_mm_and_ps(x, y), z)));
+#else
+  unsigned mask = 0;
+  for (int k = 0; k < 4; ++k)
+    mask |= unsigned((q.minX[k] <= box.max.x) & (box.min.x <= q.maxX[k]) & (q.minY[k] <= box.max.y) &
+                     (box.min.y <= q.maxY[k]) & (q.minZ[k] <= box.max.z) & (box.min.z <= q.maxZ[k]))
+            << k;
+  return mask;
+#endif
+}
 
 inline float squaredDistance(const Box& b, const glm::vec3& p) {
   const glm::vec3 d = glm::max(glm::max(b.min - p, p - b.max), glm::vec3(0.0f));
@@ -217,11 +248,10 @@ void AabbTree::pairsBetween(int32_t a, int32_t b, Visit& visit, SkipBetween& ski
   const Node &na = nodes_[a], &nb = nodes_[b];
   if (!na.box.overlaps(nb.box) || skipBetween(a, b)) return;
   if (na.left < 0 && nb.left < 0) {
-    for (uint32_t i = na.first; i < na.first + na.count; ++i) {
-      if (!leafBoxes_[i].overlaps(nb.box)) continue;
-      for (uint32_t j = nb.first; j < nb.first + nb.count; ++j)
-        if (leafBoxes_[i].overlaps(leafBoxes_[j])) visit(i, j);
-    }
+    const LeafQuad& quad = leafQuads_[nb.quad];
+    for (uint32_t i = na.first; i < na.first + na.count; ++i)
+      for (unsigned mask = overlapMask(quad, leafBoxes_[i]); mask != 0; mask &= mask - 1)
+        visit(i, nb.first + uint32_t(__builtin_ctz(mask)));
     return;
   }
   // Split the node that is not a leaf (the larger when neither is).

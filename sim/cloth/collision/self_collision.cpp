@@ -296,14 +296,25 @@ SelfCollision::SelfCollision(const std::vector<uint32_t>& triangles, size_t vert
 // Which nodes of the trees hold connected primitives (after each build), and
 // where each vertex is in the triangle tree (the place of one of its triangles).
 void SelfCollision::findConnectedPatches() {
-  connectedEdgePatch_ = connectedNodes(edgeTree_, vertexCount_, [&](uint32_t e) {
-    return std::array<uint32_t, 2>{edges_[e].first, edges_[e].second};
+  // The edge tree's part and the triangle tree's at once (independent).
+  ThreadPool::shared().parallelBlocks(2, [&](size_t which) {
+    if (which == 0) {
+      connectedEdgePatch_ = connectedNodes(edgeTree_, vertexCount_, [&](uint32_t e) {
+        return std::array<uint32_t, 2>{edges_[e].first, edges_[e].second};
+      });
+      edgeAtPlace_.resize(edges_.size());
+      for (uint32_t k = 0; k < edges_.size(); ++k) edgeAtPlace_[k] = edges_[edgeTree_.primitive(k)];
+    } else {
+      connectedTrianglePatch_ = connectedNodes(tree_, vertexCount_, [&](uint32_t t) {
+        return std::array<uint32_t, 3>{triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]};
+      });
+      findVertexPlaces();
+    }
   });
-  connectedTrianglePatch_ = connectedNodes(tree_, vertexCount_, [&](uint32_t t) {
-    return std::array<uint32_t, 3>{triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]};
-  });
-  edgeAtPlace_.resize(edges_.size());
-  for (uint32_t k = 0; k < edges_.size(); ++k) edgeAtPlace_[k] = edges_[edgeTree_.primitive(k)];
+}
+
+// The triangles' vertices in the tree's order, and the vertex groups.
+void SelfCollision::findVertexPlaces() {
   triangleAtPlace_.resize(triangles_.size() / 3);
   for (uint32_t k = 0; k < triangleAtPlace_.size(); ++k) {
     const uint32_t t = tree_.primitive(k);
@@ -380,18 +391,23 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
   // How every vertex moved in the step. Two elements can close their gap by
   // at most the largest difference of their vertices' moves (a sheet falling
   // as a whole closes none).
+  // The moves and their lengths in parallel, the sums in order (the same
+  // float sums for any thread count).
   std::vector<glm::vec3> move(n);
+  std::vector<float> offMean(n);  // per vertex: its move's length, then its distance from the mean move
+  inChunks(n, 2048, [&](size_t v0, size_t v1) {
+    for (size_t v = v0; v < v1; ++v) move[v] = s.x[v] - x0[v], offMean[v] = glm::length(move[v]);
+  });
   glm::vec3 meanMove(0.0f);
   float meanMotion = 0.0f;
-  for (size_t v = 0; v < n; ++v) {
-    move[v] = s.x[v] - x0[v];
-    meanMove += move[v];
-    meanMotion += glm::length(move[v]);
-  }
+  for (size_t v = 0; v < n; ++v) meanMove += move[v], meanMotion += offMean[v];
   meanMove /= float(std::max<size_t>(n, 1));
   meanMotion /= float(std::max<size_t>(n, 1));
+  inChunks(n, 2048, [&](size_t v0, size_t v1) {
+    for (size_t v = v0; v < v1; ++v) offMean[v] = glm::length(move[v] - meanMove);
+  });
   float deviation = 0.0f;  // largest distance of a move from the mean move
-  for (size_t v = 0; v < n; ++v) deviation = std::max(deviation, glm::length(move[v] - meanMove));
+  for (size_t v = 0; v < n; ++v) deviation = std::max(deviation, offMean[v]);
   auto closing = [&](std::initializer_list<uint32_t> first, std::initializer_list<uint32_t> second) {
     float worst = 0.0f;
     for (uint32_t a : first)
@@ -411,8 +427,6 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
   // it for whole nodes too (nodeMotions_), which keeps them out of the parts
   // that move rigidly, however far the cloth moves as a whole.
   const bool swept = !(2.0f * deviation < meanMotion + thickness);
-  std::vector<float> offMean(n);
-  for (size_t v = 0; v < n; ++v) offMean[v] = glm::length(move[v] - meanMove);
   auto sweptBox = [&](std::initializer_list<uint32_t> vertices) {
     Box b;
     for (uint32_t v : vertices) b.extend(x0[v]), b.extend(s.x[v]);
@@ -465,8 +479,13 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
   // built for (the candidates depend on the tree only through its flat
   // patches, whose pairs left out are neighbours in the cloth's plane).
   if (stepsSinceBuild_ >= kRebuildEvery || tree_.empty()) {
-    tree_.build(boxes);
-    edgeTree_.build(edgeBoxes);
+    // The two trees at once (each built alone: the same trees).
+    ThreadPool::shared().parallelBlocks(2, [&](size_t which) {
+      if (which == 0)
+        edgeTree_.build(edgeBoxes);
+      else
+        tree_.build(boxes);
+    });
     findConnectedPatches();
     stepsSinceBuild_ = 0;
   } else {

@@ -89,6 +89,7 @@ class SelfCollision {
   int applyVertexTriangle(ClothState& s, const VertexTriangle& c, float thickness) const;
   int applyEdgeEdge(ClothState& s, const EdgeEdge& c, float thickness) const;
   void findConnectedPatches();
+  void findVertexPlaces();
   void findVertexGroups();
   void findFlatPatches(const ClothState& s, const std::vector<glm::vec3>& x0);
 
