@@ -72,6 +72,12 @@ class AabbTree {
   // primitive): data kept in the tree's order is read in sequence.
   template <class Visit, class SkipWithin, class SkipBetween>
   void runJobAtPlaces(const PairJob& job, Visit&& visit, SkipWithin&& skipWithin, SkipBetween&& skipBetween) const;
+  // The same pairs, by leaf: visitQuad(i, first, mask) for the places
+  // first + k whose bit k is set in mask (first: a leaf's first place, k < 4),
+  // so that the caller can test place i against them at once.
+  template <class VisitQuad, class SkipWithin, class SkipBetween>
+  void runJobInQuads(const PairJob& job, VisitQuad&& visitQuad, SkipWithin&& skipWithin,
+                     SkipBetween&& skipBetween) const;
 
   // The nodes, for data kept alongside them: node 0 is the root, children
   // follow their parent (a reverse sweep is bottom-up), a node covers the
@@ -107,6 +113,7 @@ class AabbTree {
   // Bit k set: the leaf's k-th box overlaps `box`.
   static unsigned overlapMask(const LeafQuad& q, const Box& box);
   int32_t buildNode(uint32_t first, uint32_t count, const std::vector<Box>& boxes);
+  // visit: as runJobInQuads()'s visitQuad.
   template <class Visit, class SkipWithin, class SkipBetween>
   void pairsWithin(int32_t node, Visit& visit, SkipWithin& skipWithin, SkipBetween& skipBetween) const;
   template <class Visit, class SkipBetween>
@@ -222,10 +229,18 @@ void AabbTree::runJob(const PairJob& job, Visit&& visit, SkipWithin&& skipWithin
 template <class Visit, class SkipWithin, class SkipBetween>
 void AabbTree::runJobAtPlaces(const PairJob& job, Visit&& visit, SkipWithin&& skipWithin,
                               SkipBetween&& skipBetween) const {
+  runJobInQuads(job, [&](uint32_t i, uint32_t first, unsigned mask) {
+    for (; mask != 0; mask &= mask - 1) visit(i, first + uint32_t(__builtin_ctz(mask)));
+  }, skipWithin, skipBetween);
+}
+
+template <class VisitQuad, class SkipWithin, class SkipBetween>
+void AabbTree::runJobInQuads(const PairJob& job, VisitQuad&& visitQuad, SkipWithin&& skipWithin,
+                             SkipBetween&& skipBetween) const {
   if (job.a == job.b)
-    pairsWithin(job.a, visit, skipWithin, skipBetween);
+    pairsWithin(job.a, visitQuad, skipWithin, skipBetween);
   else
-    pairsBetween(job.a, job.b, visit, skipBetween);
+    pairsBetween(job.a, job.b, visitQuad, skipBetween);
 }
 
 template <class Visit, class SkipWithin, class SkipBetween>
@@ -238,9 +253,12 @@ void AabbTree::pairsWithin(int32_t node, Visit& visit, SkipWithin& skipWithin, S
     pairsBetween(n.left, n.right, visit, skipBetween);
     return;
   }
-  for (uint32_t i = n.first; i < n.first + n.count; ++i)
-    for (uint32_t j = i + 1; j < n.first + n.count; ++j)
-      if (leafBoxes_[i].overlaps(leafBoxes_[j])) visit(i, j);
+  const LeafQuad& quad = leafQuads_[n.quad];
+  for (uint32_t k = 0; k + 1 < n.count; ++k) {
+    const unsigned after = ~((2u << k) - 1);  // the places past i
+    const unsigned mask = overlapMask(quad, leafBoxes_[n.first + k]) & after;
+    if (mask != 0) visit(n.first + k, n.first, mask);
+  }
 }
 
 template <class Visit, class SkipBetween>
@@ -250,8 +268,7 @@ void AabbTree::pairsBetween(int32_t a, int32_t b, Visit& visit, SkipBetween& ski
   if (na.left < 0 && nb.left < 0) {
     const LeafQuad& quad = leafQuads_[nb.quad];
     for (uint32_t i = na.first; i < na.first + na.count; ++i)
-      for (unsigned mask = overlapMask(quad, leafBoxes_[i]); mask != 0; mask &= mask - 1)
-        visit(i, nb.first + uint32_t(__builtin_ctz(mask)));
+      if (const unsigned mask = overlapMask(quad, leafBoxes_[i])) visit(i, nb.first, mask);
     return;
   }
   // Split the node that is not a leaf (the larger when neither is).
