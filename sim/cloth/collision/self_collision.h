@@ -126,8 +126,8 @@ class SelfCollision {
   // Per place of the triangle and edge trees: its highest ancestor that is a
   // flat patch, -1 if none. Two places are in one flat patch when they have
   // the same such node (a vertex's place: that of its triangle).
-  std::vector<int32_t> topFlatNode_, topFlatPlace_, topFlatEdgePlace_;
-  std::vector<NormalCone> triangleCones_, nodeCones_;
+  std::vector<int32_t> topFlatNode_, topFlatEdgeNode_, topFlatPlace_, topFlatEdgePlace_;
+  std::vector<NormalCone> triangleCones_, nodeCones_, edgeNodeCones_;
   // Per triangle and edge (in their trees' order), and per node of the trees.
   std::vector<NodeMotion> triangleMotions_, edgeMotions_, nodeMotions_, edgeNodeMotions_;
   // Per place of the edge tree, as columns (see EdgeColumns::resize).
