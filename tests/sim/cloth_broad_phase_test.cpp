@@ -52,6 +52,27 @@ TEST(AabbTree, PairJobsFindEveryOverlappingPairOnce) {
   EXPECT_EQ(found, expected);
 }
 
+TEST(AabbTree, PairJobsAfterARefitFindTheNewBoxesPairs) {
+  // The leaves' boxes are kept as columns too: a refit must renew them.
+  const std::vector<Box> built = randomBoxes(1500, 7), moved = randomBoxes(1500, 8);
+  AabbTree tree;
+  tree.build(built);
+  tree.refit(moved);
+  std::set<std::pair<uint32_t, uint32_t>> expected, found;
+  for (uint32_t i = 0; i < moved.size(); ++i)
+    for (uint32_t j = i + 1; j < moved.size(); ++j)
+      if (moved[i].overlaps(moved[j])) expected.insert({i, j});
+  ASSERT_GT(expected.size(), 100u);
+  size_t visits = 0;
+  for (const AabbTree::PairJob& job : tree.pairJobs(64))
+    tree.runJob(job, [&](uint32_t i, uint32_t j) {
+      ++visits;
+      found.insert(std::minmax(i, j));
+    });
+  EXPECT_EQ(visits, expected.size());
+  EXPECT_EQ(found, expected);
+}
+
 TEST(AabbTree, SkippedNodesLeaveOutExactlyTheirOwnPairs) {
   const std::vector<Box> boxes = randomBoxes(1500, 5);
   AabbTree tree;

@@ -5,7 +5,7 @@
 namespace mq::cloth {
 
 namespace {
-constexpr uint32_t kLeafSize = 4;
+constexpr uint32_t kLeafSize = 4;  // a leaf's boxes fill one LeafQuad
 }
 
 std::vector<Box> triangleBoxes(const std::vector<glm::vec3>& p, const std::vector<uint32_t>& triangles, float margin) {
@@ -25,6 +25,7 @@ void AabbTree::build(const std::vector<Box>& boxes) {
   for (uint32_t t = 0; t < count; ++t) order_[t] = t;
   nodes_.clear();
   nodes_.reserve(2 * count / kLeafSize + 2);
+  leafQuads_.clear();
   // Twice the boxes' centres, computed once for the median splits' comparisons.
   centres_.resize(count);
   for (uint32_t t = 0; t < count; ++t) centres_[t] = boxes[t].min + boxes[t].max;
@@ -35,6 +36,15 @@ void AabbTree::build(const std::vector<Box>& boxes) {
 void AabbTree::gatherLeafBoxes(const std::vector<Box>& boxes) {
   leafBoxes_.resize(order_.size());
   for (size_t k = 0; k < order_.size(); ++k) leafBoxes_[k] = boxes[order_[k]];
+  for (const Node& n : nodes_) {
+    if (n.left >= 0) continue;
+    LeafQuad& q = leafQuads_[n.quad];
+    for (uint32_t k = 0; k < kLeafSize; ++k) {
+      const Box b = k < n.count ? leafBoxes_[n.first + k] : Box{};
+      q.minX[k] = b.min.x, q.minY[k] = b.min.y, q.minZ[k] = b.min.z;
+      q.maxX[k] = b.max.x, q.maxY[k] = b.max.y, q.maxZ[k] = b.max.z;
+    }
+  }
 }
 
 int32_t AabbTree::buildNode(uint32_t first, uint32_t count, const std::vector<Box>& boxes) {
@@ -45,7 +55,11 @@ int32_t AabbTree::buildNode(uint32_t first, uint32_t count, const std::vector<Bo
   nodes_[index].box = box;
   nodes_[index].first = first;
   nodes_[index].count = count;
-  if (count <= kLeafSize) return index;
+  if (count <= kLeafSize) {
+    nodes_[index].quad = int32_t(leafQuads_.size());
+    leafQuads_.emplace_back();
+    return index;
+  }
   const glm::vec3 extent = box.max - box.min;
   const int axis = extent.x > extent.y ? (extent.x > extent.z ? 0 : 2) : (extent.y > extent.z ? 1 : 2);
   const uint32_t half = count / 2;

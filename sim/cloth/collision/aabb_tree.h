@@ -8,6 +8,10 @@
 #include <functional>
 #include <vector>
 
+#ifdef __SSE2__
+#include <immintrin.h>
+#endif
+
 #include <glm/glm.hpp>
 
 namespace mq::cloth {
@@ -68,6 +72,12 @@ class AabbTree {
   // primitive): data kept in the tree's order is read in sequence.
   template <class Visit, class SkipWithin, class SkipBetween>
   void runJobAtPlaces(const PairJob& job, Visit&& visit, SkipWithin&& skipWithin, SkipBetween&& skipBetween) const;
+  // The same pairs, by leaf: visitQuad(i, first, mask) for the places
+  // first + k whose bit k is set in mask (first: a leaf's first place, k < 4),
+  // so that the caller can test place i against them at once.
+  template <class VisitQuad, class SkipWithin, class SkipBetween>
+  void runJobInQuads(const PairJob& job, VisitQuad&& visitQuad, SkipWithin&& skipWithin,
+                     SkipBetween&& skipBetween) const;
 
   // The nodes, for data kept alongside them: node 0 is the root, children
   // follow their parent (a reverse sweep is bottom-up), a node covers the
@@ -93,8 +103,17 @@ class AabbTree {
     Box box;
     int32_t left = -1, right = -1;  // children; leaves have left = -1
     uint32_t first = 0, count = 0;  // the node's range in order_
+    int32_t quad = -1;              // a leaf's boxes in leafQuads_
   };
+  // A leaf's primitives' boxes as columns (the empty box in the lanes past
+  // its count): one primitive is tested against all of them at once.
+  struct alignas(16) LeafQuad {
+    float minX[4], minY[4], minZ[4], maxX[4], maxY[4], maxZ[4];
+  };
+  // Bit k set: the leaf's k-th box overlaps `box`.
+  static unsigned overlapMask(const LeafQuad& q, const Box& box);
   int32_t buildNode(uint32_t first, uint32_t count, const std::vector<Box>& boxes);
+  // visit: as runJobInQuads()'s visitQuad.
   template <class Visit, class SkipWithin, class SkipBetween>
   void pairsWithin(int32_t node, Visit& visit, SkipWithin& skipWithin, SkipBetween& skipBetween) const;
   template <class Visit, class SkipBetween>
@@ -104,8 +123,27 @@ class AabbTree {
   std::vector<Node> nodes_;
   std::vector<uint32_t> order_;  // primitive indices, leaf ranges
   std::vector<Box> leafBoxes_;   // the primitives' boxes in order_'s order
+  std::vector<LeafQuad> leafQuads_;
   std::vector<glm::vec3> centres_;  // build()'s scratch
 };
+
+inline unsigned AabbTree::overlapMask(const LeafQuad& q, const Box& box) {
+#ifdef __SSE2__
+  auto below = [](const float* column, float value) { return _mm_cmple_ps(_mm_loadu_ps(column), _mm_set1_ps(value)); };
+  auto above = [](const float* column, float value) { return _mm_cmpge_ps(_mm_loadu_ps(column), _mm_set1_ps(value)); };
+  const __m128 x = _mm_and_ps(below(q.minX, box.max.x), above(q.maxX, box.min.x));
+  const __m128 y = _mm_and_ps(below(q.minY, box.max.y), above(q.maxY, box.min.y));
+  const __m128 z = _mm_and_ps(below(q.minZ, box.max.z), above(q.maxZ, box.min.z));
+  return unsigned(_mm_movemask_ps(_mm_and_ps(_mm_and_ps(x, y), z)));
+#else
+  unsigned mask = 0;
+  for (int k = 0; k < 4; ++k)
+    mask |= unsigned((q.minX[k] <= box.max.x) & (box.min.x <= q.maxX[k]) & (q.minY[k] <= box.max.y) &
+                     (box.min.y <= q.maxY[k]) & (q.minZ[k] <= box.max.z) & (box.min.z <= q.maxZ[k]))
+            << k;
+  return mask;
+#endif
+}
 
 inline float squaredDistance(const Box& b, const glm::vec3& p) {
   const glm::vec3 d = glm::max(glm::max(b.min - p, p - b.max), glm::vec3(0.0f));
@@ -191,10 +229,18 @@ void AabbTree::runJob(const PairJob& job, Visit&& visit, SkipWithin&& skipWithin
 template <class Visit, class SkipWithin, class SkipBetween>
 void AabbTree::runJobAtPlaces(const PairJob& job, Visit&& visit, SkipWithin&& skipWithin,
                               SkipBetween&& skipBetween) const {
+  runJobInQuads(job, [&](uint32_t i, uint32_t first, unsigned mask) {
+    for (; mask != 0; mask &= mask - 1) visit(i, first + uint32_t(__builtin_ctz(mask)));
+  }, skipWithin, skipBetween);
+}
+
+template <class VisitQuad, class SkipWithin, class SkipBetween>
+void AabbTree::runJobInQuads(const PairJob& job, VisitQuad&& visitQuad, SkipWithin&& skipWithin,
+                             SkipBetween&& skipBetween) const {
   if (job.a == job.b)
-    pairsWithin(job.a, visit, skipWithin, skipBetween);
+    pairsWithin(job.a, visitQuad, skipWithin, skipBetween);
   else
-    pairsBetween(job.a, job.b, visit, skipBetween);
+    pairsBetween(job.a, job.b, visitQuad, skipBetween);
 }
 
 template <class Visit, class SkipWithin, class SkipBetween>
@@ -207,9 +253,12 @@ void AabbTree::pairsWithin(int32_t node, Visit& visit, SkipWithin& skipWithin, S
     pairsBetween(n.left, n.right, visit, skipBetween);
     return;
   }
-  for (uint32_t i = n.first; i < n.first + n.count; ++i)
-    for (uint32_t j = i + 1; j < n.first + n.count; ++j)
-      if (leafBoxes_[i].overlaps(leafBoxes_[j])) visit(i, j);
+  const LeafQuad& quad = leafQuads_[n.quad];
+  for (uint32_t k = 0; k + 1 < n.count; ++k) {
+    const unsigned after = ~((2u << k) - 1);  // the places past i
+    const unsigned mask = overlapMask(quad, leafBoxes_[n.first + k]) & after;
+    if (mask != 0) visit(n.first + k, n.first, mask);
+  }
 }
 
 template <class Visit, class SkipBetween>
@@ -217,11 +266,9 @@ void AabbTree::pairsBetween(int32_t a, int32_t b, Visit& visit, SkipBetween& ski
   const Node &na = nodes_[a], &nb = nodes_[b];
   if (!na.box.overlaps(nb.box) || skipBetween(a, b)) return;
   if (na.left < 0 && nb.left < 0) {
-    for (uint32_t i = na.first; i < na.first + na.count; ++i) {
-      if (!leafBoxes_[i].overlaps(nb.box)) continue;
-      for (uint32_t j = nb.first; j < nb.first + nb.count; ++j)
-        if (leafBoxes_[i].overlaps(leafBoxes_[j])) visit(i, j);
-    }
+    const LeafQuad& quad = leafQuads_[nb.quad];
+    for (uint32_t i = na.first; i < na.first + na.count; ++i)
+      if (const unsigned mask = overlapMask(quad, leafBoxes_[i])) visit(i, nb.first, mask);
     return;
   }
   // Split the node that is not a leaf (the larger when neither is).

@@ -16,6 +16,11 @@ namespace mq::cloth {
 namespace {
 
 constexpr size_t kBlocks = 64;
+#ifdef __SSE2__
+constexpr bool kScreened = true;  // EdgeColumns::apartOrNeighbours screens the edge pairs
+#else
+constexpr bool kScreened = false;
+#endif
 
 bool sharesVertex(uint32_t a0, uint32_t a1, uint32_t b0, uint32_t b1) {
   return a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1;
@@ -91,14 +96,11 @@ std::vector<uint8_t> connectedNodes(const AabbTree& tree, size_t vertexCount, Ve
   return connected;
 }
 
-// Per node of `tree`: connected and its primitives' normal cones (cone(p))
-// within kFlatCosine of one axis. Leaves in parallel, then bottom-up.
+// Per leaf of `tree`: its primitives' normal cone (cone(p)), in parallel.
 template <class Cone>
-void findFlatNodes(const AabbTree& tree, const std::vector<uint8_t>& connected, Cone&& cone,
-                   std::vector<NormalCone>& cones, std::vector<uint8_t>& flat) {
+void findLeafCones(const AabbTree& tree, Cone&& cone, std::vector<NormalCone>& cones) {
   const size_t nodes = tree.nodeCount();
   cones.resize(nodes);
-  flat.assign(nodes, 0);
   inChunks(nodes, 256, [&](size_t i0, size_t i1) {
     for (size_t i = i0; i < i1; ++i) {
       const AabbTree::NodeInfo node = tree.nodeInfo(i);
@@ -108,6 +110,14 @@ void findFlatNodes(const AabbTree& tree, const std::vector<uint8_t>& connected, 
         cones[i] = merged(cones[i], cone(tree.primitive(k)));
     }
   });
+}
+
+// Per node of `tree`: connected and its primitives' normal cones within
+// kFlatCosine of one axis, bottom-up from the leaves' cones.
+void findFlatNodes(const AabbTree& tree, const std::vector<uint8_t>& connected, std::vector<NormalCone>& cones,
+                   std::vector<uint8_t>& flat) {
+  const size_t nodes = tree.nodeCount();
+  flat.assign(nodes, 0);
   for (size_t i = nodes; i-- > 0;) {
     const AabbTree::NodeInfo node = tree.nodeInfo(i);
     if (node.left >= 0) cones[i] = merged(cones[node.left], cones[node.right]);
@@ -211,13 +221,12 @@ inline bool withinReach(const NodeMotion& a, const glm::vec3& start, const glm::
 #endif
 }
 
-// Per element (in the tree's order) and per node of `tree`: the box of its
-// vertices at the start of the step and the box of their moves
-// (vertices(primitive) gives a primitive's vertices), the nodes bottom-up.
+// Per element (in the tree's order) of `tree`: the box of its vertices at
+// the start of the step and the box of their moves (vertices(primitive)
+// gives a primitive's vertices), in parallel.
 template <class Vertices>
-void findNodeMotions(const AabbTree& tree, Vertices&& vertices, const std::vector<glm::vec3>& x0,
-                     const std::vector<glm::vec3>& move, std::vector<NodeMotion>& elements,
-                     std::vector<NodeMotion>& motions) {
+void findElementMotions(const AabbTree& tree, Vertices&& vertices, const std::vector<glm::vec3>& x0,
+                        const std::vector<glm::vec3>& move, std::vector<NodeMotion>& elements) {
   elements.resize(tree.nodeCount() == 0 ? 0 : tree.nodeInfo(0).count);
   inChunks(elements.size(), 2048, [&](size_t k0, size_t k1) {
     for (size_t k = k0; k < k1; ++k) {
@@ -238,6 +247,10 @@ void findNodeMotions(const AabbTree& tree, Vertices&& vertices, const std::vecto
 #endif
     }
   });
+}
+
+// The same per node of `tree`, bottom-up from its elements'.
+void findNodeMotions(const AabbTree& tree, const std::vector<NodeMotion>& elements, std::vector<NodeMotion>& motions) {
   motions.resize(tree.nodeCount());
   for (size_t i = motions.size(); i-- > 0;) {
     const AabbTree::NodeInfo node = tree.nodeInfo(i);
@@ -271,6 +284,45 @@ std::vector<T> collectInBlocks(size_t count, Body&& body) {
 
 }  // namespace
 
+// The edges' vertices and cheap bounds (see findCandidates) by place in the
+// edge tree, as columns padded by three places: four places from any one
+// are read at once.
+void SelfCollision::EdgeColumns::resize(size_t places) {
+  for (std::vector<uint32_t>* c : {&v0, &v1}) c->resize(places + 3, UINT32_MAX);
+  for (std::vector<float>* c : {&midX, &midY, &midZ, &half, &moveX, &moveY, &moveZ, &spread}) c->resize(places + 3, 0.0f);
+}
+
+void SelfCollision::EdgeColumns::set(size_t k, uint32_t a, uint32_t b, const glm::vec3& mid, float halfLength,
+                                     const glm::vec3& meanMove, float moveSpread) {
+  v0[k] = a, v1[k] = b;
+  midX[k] = mid.x, midY[k] = mid.y, midZ[k] = mid.z, half[k] = halfLength;
+  moveX[k] = meanMove.x, moveY[k] = meanMove.y, moveZ[k] = meanMove.z, spread[k] = moveSpread;
+}
+
+inline unsigned SelfCollision::EdgeColumns::apartOrNeighbours(uint32_t i, uint32_t first, float thickness) const {
+#ifdef __SSE2__
+  auto column = [&](const std::vector<float>& c) { return _mm_loadu_ps(&c[first]); };
+  auto own = [&](const std::vector<float>& c) { return _mm_set1_ps(c[i]); };
+  auto length = [&](const std::vector<float>& x, const std::vector<float>& y, const std::vector<float>& z) {
+    const __m128 dx = _mm_sub_ps(own(x), column(x)), dy = _mm_sub_ps(own(y), column(y)), dz = _mm_sub_ps(own(z), column(z));
+    return _mm_sqrt_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz)));
+  };
+  const __m128i a0 = _mm_set1_epi32(int(v0[i])), a1 = _mm_set1_epi32(int(v1[i]));
+  const __m128i b0 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(&v0[first]));
+  const __m128i b1 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(&v1[first]));
+  const __m128i shared = _mm_or_si128(_mm_or_si128(_mm_cmpeq_epi32(a0, b0), _mm_cmpeq_epi32(a0, b1)),
+                                      _mm_or_si128(_mm_cmpeq_epi32(a1, b0), _mm_cmpeq_epi32(a1, b1)));
+  const __m128 bound = _mm_add_ps(_mm_add_ps(_mm_set1_ps(thickness), length(moveX, moveY, moveZ)),
+                                  _mm_add_ps(own(spread), column(spread)));
+  const __m128 apart = _mm_sub_ps(length(midX, midY, midZ), _mm_add_ps(own(half), column(half)));
+  const __m128 far = _mm_cmpgt_ps(apart, _mm_add_ps(_mm_mul_ps(_mm_set1_ps(1.0001f), bound), _mm_set1_ps(1e-6f)));
+  return unsigned(_mm_movemask_ps(_mm_or_ps(_mm_castsi128_ps(shared), far)));
+#else
+  (void)i, (void)first, (void)thickness;
+  return 0;  // testEdgeEdge tests them one by one (kScreened false)
+#endif
+}
+
 SelfCollision::SelfCollision(const std::vector<uint32_t>& triangles, size_t vertexCount)
     : triangles_(triangles), vertexCount_(vertexCount) {
   std::map<std::pair<uint32_t, uint32_t>, uint32_t> index;
@@ -296,14 +348,25 @@ SelfCollision::SelfCollision(const std::vector<uint32_t>& triangles, size_t vert
 // Which nodes of the trees hold connected primitives (after each build), and
 // where each vertex is in the triangle tree (the place of one of its triangles).
 void SelfCollision::findConnectedPatches() {
-  connectedEdgePatch_ = connectedNodes(edgeTree_, vertexCount_, [&](uint32_t e) {
-    return std::array<uint32_t, 2>{edges_[e].first, edges_[e].second};
+  // The edge tree's part and the triangle tree's at once (independent).
+  ThreadPool::shared().parallelBlocks(2, [&](size_t which) {
+    if (which == 0) {
+      connectedEdgePatch_ = connectedNodes(edgeTree_, vertexCount_, [&](uint32_t e) {
+        return std::array<uint32_t, 2>{edges_[e].first, edges_[e].second};
+      });
+      edgeAtPlace_.resize(edges_.size());
+      for (uint32_t k = 0; k < edges_.size(); ++k) edgeAtPlace_[k] = edges_[edgeTree_.primitive(k)];
+    } else {
+      connectedTrianglePatch_ = connectedNodes(tree_, vertexCount_, [&](uint32_t t) {
+        return std::array<uint32_t, 3>{triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]};
+      });
+      findVertexPlaces();
+    }
   });
-  connectedTrianglePatch_ = connectedNodes(tree_, vertexCount_, [&](uint32_t t) {
-    return std::array<uint32_t, 3>{triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]};
-  });
-  edgeAtPlace_.resize(edges_.size());
-  for (uint32_t k = 0; k < edges_.size(); ++k) edgeAtPlace_[k] = edges_[edgeTree_.primitive(k)];
+}
+
+// The triangles' vertices in the tree's order, and the vertex groups.
+void SelfCollision::findVertexPlaces() {
   triangleAtPlace_.resize(triangles_.size() / 3);
   for (uint32_t k = 0; k < triangleAtPlace_.size(); ++k) {
     const uint32_t t = tree_.primitive(k);
@@ -364,15 +427,22 @@ void SelfCollision::findFlatPatches(const ClothState& s, const std::vector<glm::
       triangleCones_[t] = triangleCone(x0[a], x0[b], x0[c], s.x[a], s.x[b], s.x[c]);
     }
   });
-  findFlatNodes(edgeTree_, connectedEdgePatch_, [&](uint32_t e) {
+  findLeafCones(edgeTree_, [&](uint32_t e) {
     const auto [t0, t1] = edgeTriangles_[e];
     if (t0 >= kNoTriangle - 1) return NormalCone{};
     return t1 == kNoTriangle ? triangleCones_[t0] : merged(triangleCones_[t0], triangleCones_[t1]);
-  }, nodeCones_, flatEdgePatch_);
-  findFlatNodes(tree_, connectedTrianglePatch_, [&](uint32_t t) { return triangleCones_[t]; }, nodeCones_,
-                flatTrianglePatch_);
-  findTopFlatPlaces(tree_, flatTrianglePatch_, topFlatNode_, topFlatPlace_);
-  findTopFlatPlaces(edgeTree_, flatEdgePatch_, topFlatNode_, topFlatEdgePlace_);
+  }, edgeNodeCones_);
+  findLeafCones(tree_, [&](uint32_t t) { return triangleCones_[t]; }, nodeCones_);
+  // The serial bottom-up and top-down sweeps of the two trees at once.
+  ThreadPool::shared().parallelBlocks(2, [&](size_t which) {
+    if (which == 0) {
+      findFlatNodes(edgeTree_, connectedEdgePatch_, edgeNodeCones_, flatEdgePatch_);
+      findTopFlatPlaces(edgeTree_, flatEdgePatch_, topFlatEdgeNode_, topFlatEdgePlace_);
+    } else {
+      findFlatNodes(tree_, connectedTrianglePatch_, nodeCones_, flatTrianglePatch_);
+      findTopFlatPlaces(tree_, flatTrianglePatch_, topFlatNode_, topFlatPlace_);
+    }
+  });
 }
 
 void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::vec3>& x0, float thickness) {
@@ -380,18 +450,23 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
   // How every vertex moved in the step. Two elements can close their gap by
   // at most the largest difference of their vertices' moves (a sheet falling
   // as a whole closes none).
+  // The moves and their lengths in parallel, the sums in order (the same
+  // float sums for any thread count).
   std::vector<glm::vec3> move(n);
+  std::vector<float> offMean(n);  // per vertex: its move's length, then its distance from the mean move
+  inChunks(n, 2048, [&](size_t v0, size_t v1) {
+    for (size_t v = v0; v < v1; ++v) move[v] = s.x[v] - x0[v], offMean[v] = glm::length(move[v]);
+  });
   glm::vec3 meanMove(0.0f);
   float meanMotion = 0.0f;
-  for (size_t v = 0; v < n; ++v) {
-    move[v] = s.x[v] - x0[v];
-    meanMove += move[v];
-    meanMotion += glm::length(move[v]);
-  }
+  for (size_t v = 0; v < n; ++v) meanMove += move[v], meanMotion += offMean[v];
   meanMove /= float(std::max<size_t>(n, 1));
   meanMotion /= float(std::max<size_t>(n, 1));
+  inChunks(n, 2048, [&](size_t v0, size_t v1) {
+    for (size_t v = v0; v < v1; ++v) offMean[v] = glm::length(move[v] - meanMove);
+  });
   float deviation = 0.0f;  // largest distance of a move from the mean move
-  for (size_t v = 0; v < n; ++v) deviation = std::max(deviation, glm::length(move[v] - meanMove));
+  for (size_t v = 0; v < n; ++v) deviation = std::max(deviation, offMean[v]);
   auto closing = [&](std::initializer_list<uint32_t> first, std::initializer_list<uint32_t> second) {
     float worst = 0.0f;
     for (uint32_t a : first)
@@ -411,8 +486,6 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
   // it for whole nodes too (nodeMotions_), which keeps them out of the parts
   // that move rigidly, however far the cloth moves as a whole.
   const bool swept = !(2.0f * deviation < meanMotion + thickness);
-  std::vector<float> offMean(n);
-  for (size_t v = 0; v < n; ++v) offMean[v] = glm::length(move[v] - meanMove);
   auto sweptBox = [&](std::initializer_list<uint32_t> vertices) {
     Box b;
     for (uint32_t v : vertices) b.extend(x0[v]), b.extend(s.x[v]);
@@ -465,8 +538,13 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
   // built for (the candidates depend on the tree only through its flat
   // patches, whose pairs left out are neighbours in the cloth's plane).
   if (stepsSinceBuild_ >= kRebuildEvery || tree_.empty()) {
-    tree_.build(boxes);
-    edgeTree_.build(edgeBoxes);
+    // The two trees at once (each built alone: the same trees).
+    ThreadPool::shared().parallelBlocks(2, [&](size_t which) {
+      if (which == 0)
+        edgeTree_.build(edgeBoxes);
+      else
+        tree_.build(boxes);
+    });
     findConnectedPatches();
     stepsSinceBuild_ = 0;
   } else {
@@ -484,12 +562,19 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
   // they cost more than they leave out.
   const bool bounded = motionBounds_ && deviation > 2.0f * thickness;
   if (bounded) {
-    findNodeMotions(tree_, [&](uint32_t t) {
+    findElementMotions(tree_, [&](uint32_t t) {
       return std::array<uint32_t, 3>{triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]};
-    }, x0, move, triangleMotions_, nodeMotions_);
-    findNodeMotions(edgeTree_, [&](uint32_t e) {
+    }, x0, move, triangleMotions_);
+    findElementMotions(edgeTree_, [&](uint32_t e) {
       return std::array<uint32_t, 2>{edges_[e].first, edges_[e].second};
-    }, x0, move, edgeMotions_, edgeNodeMotions_);
+    }, x0, move, edgeMotions_);
+    // The two trees' serial bottom-up sweeps at once.
+    ThreadPool::shared().parallelBlocks(2, [&](size_t which) {
+      if (which == 0)
+        findNodeMotions(edgeTree_, edgeMotions_, edgeNodeMotions_);
+      else
+        findNodeMotions(tree_, triangleMotions_, nodeMotions_);
+    });
   }
   findFlatPatches(s, x0);
   // A cheap bound before the exact vertex-triangle test, as for the edges
@@ -597,24 +682,31 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     float spread;
   };
   std::vector<EdgeBound> bounds(edges_.size());  // by place
+  EdgeColumns& columns = edgeColumns_;
+  columns.resize(edges_.size());
   inChunks(edges_.size(), 4096, [&](size_t k0, size_t k1) {
     for (size_t k = k0; k < k1; ++k) {
       const auto [p0, p1] = edgeAtPlace_[k];
-      bounds[k] = {0.5f * (x0[p0] + x0[p1]), 0.5f * glm::length(x0[p0] - x0[p1]), 0.5f * (move[p0] + move[p1]),
-                   0.5f * glm::length(move[p0] - move[p1])};
+      const EdgeBound& b = bounds[k] = {0.5f * (x0[p0] + x0[p1]), 0.5f * glm::length(x0[p0] - x0[p1]),
+                                        0.5f * (move[p0] + move[p1]), 0.5f * glm::length(move[p0] - move[p1])};
+      columns.set(k, p0, p1, b.mid, b.halfLength, b.meanMove, b.spread);
     }
   });
-  // Two edges at places of the edge tree whose boxes overlap, not in one flat patch.
-  auto testEdgeEdge = [&](uint32_t placeI, uint32_t placeK, std::vector<EdgeEdge>& out) {
+  // Two edges at places of the edge tree whose boxes overlap, not in one
+  // flat patch (screened: not neighbours and within the cheap bound, as
+  // EdgeColumns::apartOrNeighbours found).
+  auto testEdgeEdge = [&](uint32_t placeI, uint32_t placeK, std::vector<EdgeEdge>& out, bool screened) {
     // Neighbours first, from the edges' vertices in the tree's order (read in sequence).
     const auto [a0, a1] = edgeAtPlace_[placeI];
     const auto [b0, b1] = edgeAtPlace_[placeK];
-    if (sharesVertex(a0, a1, b0, b1)) return;
+    if (!screened && sharesVertex(a0, a1, b0, b1)) return;
     if (bounded && !withinReach(edgeMotions_[placeI], edgeMotions_[placeK], thickness)) return;
     if (checkSwept && !sweptEdgeBoxes[placeI].overlaps(sweptEdgeBoxes[placeK])) return;
-    const EdgeBound &bi = bounds[placeI], &bk = bounds[placeK];
-    const float bound = thickness + glm::length(bi.meanMove - bk.meanMove) + (bi.spread + bk.spread);
-    if (glm::length(bi.mid - bk.mid) - (bi.halfLength + bk.halfLength) > 1.0001f * bound + 1e-6f) return;
+    if (!screened) {
+      const EdgeBound &bi = bounds[placeI], &bk = bounds[placeK];
+      const float bound = thickness + glm::length(bi.meanMove - bk.meanMove) + (bi.spread + bk.spread);
+      if (glm::length(bi.mid - bk.mid) - (bi.halfLength + bk.halfLength) > 1.0001f * bound + 1e-6f) return;
+    }
     // The exact test with the edges in their order (the lower index first).
     const uint32_t i = edgeTree_.primitive(placeI), k = edgeTree_.primitive(placeK);
     const bool ordered = i < k;
@@ -641,7 +733,7 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
       const int32_t flat = topFlatEdgePlace_[i];
       for (uint32_t k = uint32_t(i) + 1; k < places; ++k) {
         if ((flat >= 0 && flat == topFlatEdgePlace_[k]) || !box.overlaps(edgeBoxes[edgeTree_.primitive(k)])) continue;
-        testEdgeEdge(uint32_t(i), k, found[i]);
+        testEdgeEdge(uint32_t(i), k, found[i], false);
       }
     });
   } else {
@@ -652,8 +744,11 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     const std::vector<AabbTree::PairJob> jobs = edgeTree_.pairJobs(4 * kBlocks, flatEdgePatch);
     found.resize(jobs.size());
     ThreadPool::shared().parallelBlocks(jobs.size(), [&](size_t j) {
-      edgeTree_.runJobAtPlaces(jobs[j], [&](uint32_t placeI, uint32_t placeK) { testEdgeEdge(placeI, placeK, found[j]); },
-                               flatEdgePatch, outOfReach);
+      // The neighbours and the cheap bound above for four pairs at once.
+      edgeTree_.runJobInQuads(jobs[j], [&](uint32_t placeI, uint32_t first, unsigned mask) {
+        for (mask &= columns.apartOrNeighbours(placeI, first, thickness) ^ 0xFu; mask != 0; mask &= mask - 1)
+          testEdgeEdge(placeI, first + uint32_t(__builtin_ctz(mask)), found[j], kScreened);
+      }, flatEdgePatch, outOfReach);
     });
   }
   // In order of the first edge, then the other (the jobs' order depends on the tree).

@@ -89,6 +89,7 @@ class SelfCollision {
   int applyVertexTriangle(ClothState& s, const VertexTriangle& c, float thickness) const;
   int applyEdgeEdge(ClothState& s, const EdgeEdge& c, float thickness) const;
   void findConnectedPatches();
+  void findVertexPlaces();
   void findVertexGroups();
   void findFlatPatches(const ClothState& s, const std::vector<glm::vec3>& x0);
 
@@ -125,10 +126,22 @@ class SelfCollision {
   // Per place of the triangle and edge trees: its highest ancestor that is a
   // flat patch, -1 if none. Two places are in one flat patch when they have
   // the same such node (a vertex's place: that of its triangle).
-  std::vector<int32_t> topFlatNode_, topFlatPlace_, topFlatEdgePlace_;
-  std::vector<NormalCone> triangleCones_, nodeCones_;
+  std::vector<int32_t> topFlatNode_, topFlatEdgeNode_, topFlatPlace_, topFlatEdgePlace_;
+  std::vector<NormalCone> triangleCones_, nodeCones_, edgeNodeCones_;
   // Per triangle and edge (in their trees' order), and per node of the trees.
   std::vector<NodeMotion> triangleMotions_, edgeMotions_, nodeMotions_, edgeNodeMotions_;
+  // Per place of the edge tree, as columns (see EdgeColumns::resize).
+  struct EdgeColumns {
+    std::vector<uint32_t> v0, v1;
+    std::vector<float> midX, midY, midZ, half, moveX, moveY, moveZ, spread;
+    void resize(size_t places);
+    void set(size_t place, uint32_t a, uint32_t b, const glm::vec3& mid, float halfLength, const glm::vec3& meanMove,
+             float moveSpread);
+    // Bit k set: the edges at places i and first + k share a vertex, or
+    // their cheap bound keeps them apart.
+    unsigned apartOrNeighbours(uint32_t i, uint32_t first, float thickness) const;
+  };
+  EdgeColumns edgeColumns_;
   bool motionBounds_ = true, exhaustive_ = false;
   std::vector<uint32_t> moved_, checkedVT_, checkedEE_;  // resolve()'s pass clocks
 };
