@@ -31,23 +31,38 @@ std::vector<Box> randomBoxes(size_t count, unsigned seed) {
   return boxes;
 }
 
-TEST(AabbTree, PairJobsFindEveryOverlappingPairOnce) {
-  const std::vector<Box> boxes = randomBoxes(1500, 7);
-  AabbTree tree;
-  tree.build(boxes);
-  std::set<std::pair<uint32_t, uint32_t>> expected, found;
+using PairSet = std::set<std::pair<uint32_t, uint32_t>>;
+
+// Every overlapping pair (i < j), by testing them all.
+PairSet overlappingPairs(const std::vector<Box>& boxes) {
+  PairSet pairs;
   for (uint32_t i = 0; i < boxes.size(); ++i)
     for (uint32_t j = i + 1; j < boxes.size(); ++j)
-      if (boxes[i].overlaps(boxes[j])) expected.insert({i, j});
-  ASSERT_GT(expected.size(), 100u);
-  const std::vector<AabbTree::PairJob> jobs = tree.pairJobs(64);
-  EXPECT_GE(jobs.size(), 64u);
+      if (boxes[i].overlaps(boxes[j])) pairs.insert({i, j});
+  return pairs;
+}
+
+// The pairs the tree's self-traversal jobs report, and how many reports.
+std::pair<PairSet, size_t> pairsFromJobs(const AabbTree& tree, const std::vector<AabbTree::PairJob>& jobs) {
+  PairSet found;
   size_t visits = 0;
   for (const AabbTree::PairJob& job : jobs)
     tree.runJob(job, [&](uint32_t i, uint32_t j) {
       ++visits;
       found.insert(std::minmax(i, j));
     });
+  return {found, visits};
+}
+
+TEST(AabbTree, PairJobsFindEveryOverlappingPairOnce) {
+  const std::vector<Box> boxes = randomBoxes(1500, 7);
+  AabbTree tree;
+  tree.build(boxes);
+  const PairSet expected = overlappingPairs(boxes);
+  ASSERT_GT(expected.size(), 100u);
+  const std::vector<AabbTree::PairJob> jobs = tree.pairJobs(64);
+  EXPECT_GE(jobs.size(), 64u);
+  const auto [found, visits] = pairsFromJobs(tree, jobs);
   EXPECT_EQ(visits, expected.size());  // no pair twice
   EXPECT_EQ(found, expected);
 }
@@ -58,17 +73,9 @@ TEST(AabbTree, PairJobsAfterARefitFindTheNewBoxesPairs) {
   AabbTree tree;
   tree.build(built);
   tree.refit(moved);
-  std::set<std::pair<uint32_t, uint32_t>> expected, found;
-  for (uint32_t i = 0; i < moved.size(); ++i)
-    for (uint32_t j = i + 1; j < moved.size(); ++j)
-      if (moved[i].overlaps(moved[j])) expected.insert({i, j});
+  const PairSet expected = overlappingPairs(moved);
   ASSERT_GT(expected.size(), 100u);
-  size_t visits = 0;
-  for (const AabbTree::PairJob& job : tree.pairJobs(64))
-    tree.runJob(job, [&](uint32_t i, uint32_t j) {
-      ++visits;
-      found.insert(std::minmax(i, j));
-    });
+  const auto [found, visits] = pairsFromJobs(tree, tree.pairJobs(64));
   EXPECT_EQ(visits, expected.size());
   EXPECT_EQ(found, expected);
 }
