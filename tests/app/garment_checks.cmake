@@ -1,4 +1,19 @@
 # Checks shared by the garment CLI tests, on a simulate stats JSON.
+# simulate_scene(OUT_JSON TIMEOUT ARGS...): runs `CLI simulate SCENE ARGS...
+# --stats-json OUT_JSON`, prints its output, fails when it fails, and sets
+# `stats` in the caller to the JSON.
+function(simulate_scene out_json timeout)
+  execute_process(COMMAND "${CLI}" simulate "${SCENE}" ${ARGN} --stats-json "${out_json}"
+    RESULT_VARIABLE exit_code OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT ${timeout})
+  string(JOIN " " args ${ARGN})
+  message("simulate ${args}: exit ${exit_code}\nstdout: ${out}\nstderr: ${err}")
+  if(NOT exit_code EQUAL 0)
+    message(FATAL_ERROR "simulate ${args} failed")
+  endif()
+  file(READ "${out_json}" json)
+  set(stats "${json}" PARENT_SCOPE)
+endfunction()
+
 # check_body_and_stretch(STATS KEY MAX WHEN): the body holds at most MAX cloth
 # vertices by the stats' KEY (penetrating_vertices: at the last frame,
 # max_penetrating_vertices: in any frame; WHEN says which in the message), and

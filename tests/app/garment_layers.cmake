@@ -7,14 +7,7 @@ include("${CMAKE_CURRENT_LIST_DIR}/garment_checks.cmake")
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 function(simulate name frames layers)
-  execute_process(COMMAND "${CLI}" simulate "${SCENE}" --frames ${frames} --layers ${layers}
-                          --stats-json "${WORK}/${name}.json"
-    RESULT_VARIABLE exit_code OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 600)
-  message("${name}: exit ${exit_code}\nstdout: ${out}\nstderr: ${err}")
-  if(NOT exit_code EQUAL 0)
-    message(FATAL_ERROR "simulate --layers ${layers} failed")
-  endif()
-  file(READ "${WORK}/${name}.json" stats)
+  simulate_scene("${WORK}/${name}.json" 600 --frames ${frames} --layers ${layers})
   set(stats "${stats}" PARENT_SCOPE)
 endfunction()
 

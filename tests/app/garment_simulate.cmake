@@ -6,14 +6,7 @@
 include("${CMAKE_CURRENT_LIST_DIR}/garment_checks.cmake")
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
-execute_process(COMMAND "${CLI}" simulate "${SCENE}" --frames ${FRAMES} --stats-json "${WORK}/stats.json"
-                        --export-dir "${WORK}/frames"
-  RESULT_VARIABLE exit_code OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 1200)
-message("exit ${exit_code}\nstdout: ${out}\nstderr: ${err}")
-if(NOT exit_code EQUAL 0)
-  message(FATAL_ERROR "simulate failed")
-endif()
-file(READ "${WORK}/stats.json" stats)
+simulate_scene("${WORK}/stats.json" 1200 --frames ${FRAMES} --export-dir "${WORK}/frames")
 message("${stats}")
 string(JSON frames GET "${stats}" frames)
 string(JSON welded GET "${stats}" garments 0 welded)

@@ -80,18 +80,30 @@ TEST(ClothCollision, SheetDroppedOnTheDefaultMannequinSettlesOutsideIt) {
   EXPECT_LE(sim.stats().maxStretchEver, 1.1f);
 }
 
-TEST(ClothCollision, AMovingBodyCarriesTheClothWithoutPenetration) {
+// A denim sheet resting 2 cm above the top of a sphere body (radius 0.3 m)
+// that rises.
+struct SheetOnRisingSphere {
   std::vector<float> rest;
   std::vector<uint32_t> triangles;
-  uvSphere(0.3f, 32, 16, rest, triangles);
-  ClothSimulator sim(test::horizontalSheetMesh(20, 0.8f, {0, 0.32f, 0}), fabricPreset("denim"), ClothSettings{});
-  sim.setBody(rest, triangles);
-  for (int frame = 0; frame < 48; ++frame) {
-    std::vector<float> posed = rest;  // the body rises 0.4 m in 2 s
-    for (size_t i = 1; i < posed.size(); i += 3) posed[i] += 0.4f * float(frame + 1) / 48.0f;
+  ClothSimulator sim{test::horizontalSheetMesh(20, 0.8f, {0, 0.32f, 0}), fabricPreset("denim"), ClothSettings{}};
+
+  SheetOnRisingSphere() {
+    uvSphere(0.3f, 32, 16, rest, triangles);
+    sim.setBody(rest, triangles);
+  }
+  // One 1/24 s frame, at whose end the body is `rise` metres above its rest pose.
+  void stepWithBodyRaised(float rise) {
+    std::vector<float> posed = rest;
+    for (size_t i = 1; i < posed.size(); i += 3) posed[i] += rise;
     sim.updateBody(posed);
     sim.step(1.0f / 24.0f);
   }
+};
+
+TEST(ClothCollision, AMovingBodyCarriesTheClothWithoutPenetration) {
+  SheetOnRisingSphere scene;
+  const ClothSimulator& sim = scene.sim;
+  for (int frame = 0; frame < 48; ++frame) scene.stepWithBodyRaised(0.4f * float(frame + 1) / 48.0f);  // 0.4 m in 2 s
   EXPECT_TRUE(test::allFinite(sim));
   EXPECT_EQ(sim.countPenetrating(), 0);
   EXPECT_GT(sim.stats().boundsMax.y, 0.7f);  // lifted with the body
@@ -101,16 +113,10 @@ TEST(ClothCollision, AMovingBodyCarriesTheClothWithoutPenetration) {
 // last query at the same body pose need no search (collisions run twice a
 // substep; most of the sheet is still by the second).
 TEST(ClothCollision, StepsCountTheirBodyQueriesAndSearches) {
-  std::vector<float> rest;
-  std::vector<uint32_t> triangles;
-  uvSphere(0.3f, 32, 16, rest, triangles);
-  ClothSimulator sim(test::horizontalSheetMesh(20, 0.8f, {0, 0.32f, 0}), fabricPreset("denim"), ClothSettings{});
-  sim.setBody(rest, triangles);
+  SheetOnRisingSphere scene;
+  const ClothSimulator& sim = scene.sim;
   for (int frame = 0; frame < 12; ++frame) {
-    std::vector<float> posed = rest;
-    for (size_t i = 1; i < posed.size(); i += 3) posed[i] += 0.1f * float(frame + 1) / 12.0f;
-    sim.updateBody(posed);
-    sim.step(1.0f / 24.0f);
+    scene.stepWithBodyRaised(0.1f * float(frame + 1) / 12.0f);
     const long long vertices = (long long)sim.positions().size();
     EXPECT_GE(sim.stats().bodyQueries, 3 * vertices * sim.stats().substeps);  // resting contacts, collisions twice
     EXPECT_GT(sim.stats().bodySearches, 0);

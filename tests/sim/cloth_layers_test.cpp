@@ -51,12 +51,22 @@ float maxY(const std::vector<float>& flat) {
   return y;
 }
 
+// A sheet 2 cm above the floor and a smaller one dropped onto it from 15 cm,
+// both colliding with the floor.
+struct SheetDroppedOnASheet {
+  GarmentSimulation inner{sheetFacingUp(16, 0.6f, {0, 0.02f, 0}), sheetSettings(), {}, {}};
+  GarmentSimulation outer{sheetFacingUp(12, 0.4f, {0.02f, 0.15f, 0.01f}), sheetSettings(), {}, {}};
+
+  SheetDroppedOnASheet() {
+    const PrimitiveCollider floor = PrimitiveCollider::plane({0, 0, 0}, {0, 1, 0});
+    inner.addCollider(floor);
+    outer.addCollider(floor);
+  }
+};
+
 TEST(ClothLayers, ASheetDroppedOnASheetOnTheFloorRestsOnIt) {
-  const PrimitiveCollider floor = PrimitiveCollider::plane({0, 0, 0}, {0, 1, 0});
-  GarmentSimulation inner(sheetFacingUp(16, 0.6f, {0, 0.02f, 0}), sheetSettings(), {}, {});
-  GarmentSimulation outer(sheetFacingUp(12, 0.4f, {0.02f, 0.15f, 0.01f}), sheetSettings(), {}, {});
-  inner.addCollider(floor);
-  outer.addCollider(floor);
+  SheetDroppedOnASheet scene;
+  GarmentSimulation &inner = scene.inner, &outer = scene.outer;
   const std::vector<GarmentSimulation*> sims = {&outer, &inner};
   wearInLayers(sims, layerOrder(std::vector<int>{1, 0}));  // the first on layer 1: over the second
   const float dt = 1.0f / 30.0f;
@@ -73,11 +83,8 @@ TEST(ClothLayers, ASheetDroppedOnASheetOnTheFloorRestsOnIt) {
 }
 
 TEST(ClothLayers, WithoutLayersTheDroppedSheetFallsThrough) {
-  const PrimitiveCollider floor = PrimitiveCollider::plane({0, 0, 0}, {0, 1, 0});
-  GarmentSimulation inner(sheetFacingUp(16, 0.6f, {0, 0.02f, 0}), sheetSettings(), {}, {});
-  GarmentSimulation outer(sheetFacingUp(12, 0.4f, {0.02f, 0.15f, 0.01f}), sheetSettings(), {}, {});
-  inner.addCollider(floor);
-  outer.addCollider(floor);
+  SheetDroppedOnASheet scene;
+  GarmentSimulation &inner = scene.inner, &outer = scene.outer;
   for (int frame = 0; frame < 45; ++frame) inner.step(1.0f / 30.0f), outer.step(1.0f / 30.0f);
   // On the floor beside the inner sheet: what the layering test guards against.
   EXPECT_LT(minY(outer.positions()), maxY(inner.positions()) + 0.5f * sheetSettings().cloth.collisionThickness);
