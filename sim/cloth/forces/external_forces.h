@@ -20,6 +20,7 @@ class ExternalForces : public ForceTerm {
   void prepareImplicit(const ClothState& s, float h, std::vector<glm::vec3>& hKv,
                        std::vector<glm::mat3>& diagonal) override;
   void productPass(const std::vector<glm::vec3>& p) const override { p_ = &p; }
+  bool productPassOnlyKeepsP() const override { return true; }
   glm::vec3 productAt(size_t vertex) const override { return (h_ * airDamping_ * vertexArea_[vertex]) * (*p_)[vertex]; }
   // The same, without a virtual call per vertex (the solver's hot loop).
   void addProductRange(size_t begin, size_t end, glm::vec3* y) const override {

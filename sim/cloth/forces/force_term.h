@@ -29,6 +29,9 @@ class ForceTerm {
                                std::vector<glm::mat3>& diagonal) = 0;
   virtual void productPass(const std::vector<glm::vec3>& p) const = 0;
   virtual glm::vec3 productAt(size_t vertex) const = 0;
+  // True when productPass() only keeps a pointer to p (no pass over p): the
+  // solver may then fill p after calling it, in the same parallel job as the product.
+  virtual bool productPassOnlyKeepsP() const { return false; }
   // y[v] += productAt(v) for v in [begin, end) (after productPass); terms
   // with a faster bulk form override it.
   virtual void addProductRange(size_t begin, size_t end, glm::vec3* y) const {

@@ -38,6 +38,7 @@ class SpringForce : public ForceTerm {
   // vertex's row of the assembled matrix, kept as compact blocks in a
   // sliced-ELL layout (8 vertices side by side) that vectorises.
   void productPass(const std::vector<glm::vec3>& p) const override { product_ = &p; }
+  bool productPassOnlyKeepsP() const override { return true; }
   glm::vec3 productAt(size_t vertex) const override;
   void addProductRange(size_t begin, size_t end, glm::vec3* y) const override;
 

@@ -224,8 +224,13 @@ void CoarseCorrection::factorise() {
 }
 
 double CoarseCorrection::solve(const std::vector<glm::vec3>& r, std::vector<glm::vec3>& perPatch) {
+  restrictResidual(r, 0, patchCount_);
+  return solveRestricted(perPatch);
+}
+
+void CoarseCorrection::restrictResidual(const std::vector<glm::vec3>& r, size_t begin, size_t end) {
   // Summed patch by patch (in registers: not one read-modify-write per vertex).
-  for (size_t p = 0; p < patchCount_; ++p) {
+  for (size_t p = begin; p < end; ++p) {
     double sx = 0.0, sy = 0.0, sz = 0.0;
     for (uint32_t k = patchStart_[p]; k < patchStart_[p + 1]; ++k) {
       const glm::vec3& rv = r[patchVertices_[k]];
@@ -233,6 +238,9 @@ double CoarseCorrection::solve(const std::vector<glm::vec3>& r, std::vector<glm:
     }
     rhs_[3 * p] = sx, rhs_[3 * p + 1] = sy, rhs_[3 * p + 2] = sz;
   }
+}
+
+double CoarseCorrection::solveRestricted(std::vector<glm::vec3>& perPatch) {
   x_.assign(rhs_.begin(), rhs_.end());
   std::vector<double>& x = x_;
   for (size_t i = 0; i < order_; ++i) {

@@ -48,6 +48,10 @@ class CoarseCorrection {
   // Coarse solution of the (filtered) residual r: fills perPatch (one vec3 per
   // patch, to be added as S_i perPatch[patchOf(i)]) and returns r . S P perPatch.
   double solve(const std::vector<glm::vec3>& r, std::vector<glm::vec3>& perPatch);
+  // The same in two steps, so the first can run in parallel (patch ranges):
+  // P^T r for the patches [begin, end), then the solve of all patches.
+  void restrictResidual(const std::vector<glm::vec3>& r, size_t begin, size_t end);
+  double solveRestricted(std::vector<glm::vec3>& perPatch);
 
  private:
   double& at(size_t i, size_t j) { return matrix_[i * order_ + j]; }

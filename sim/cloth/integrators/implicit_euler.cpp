@@ -25,20 +25,18 @@ float ImplicitEuler::stableStep(const ClothState&, const ClothForces&) const {
   return std::numeric_limits<float>::infinity();
 }
 
-double ImplicitEuler::multiplyFiltered(const ClothState& s, ClothForces& forces, const std::vector<glm::vec3>& p,
-                                       std::vector<glm::vec3>& y) const {
+double ImplicitEuler::multiplyFilteredRange(const ClothState& s, const ClothForces& forces,
+                                            const std::vector<glm::vec3>& p, std::vector<glm::vec3>& y, size_t b,
+                                            size_t e) const {
   const auto& terms = forces.terms();
-  for (const ForceTerm* t : terms) t->productPass(p);
-  return blockReduce(s.size(), [&](size_t b, size_t e) {
-    for (size_t i = b; i < e; ++i) y[i] = s.mass[i] * p[i];
-    for (const ForceTerm* t : terms) t->addProductRange(b, e, y.data());
-    double dot = 0.0;
-    for (size_t i = b; i < e; ++i) {
-      y[i] = filtered(s, i, y[i]);
-      dot += double(glm::dot(p[i], y[i]));
-    }
-    return dot;
-  });
+  for (size_t i = b; i < e; ++i) y[i] = s.mass[i] * p[i];
+  for (const ForceTerm* t : terms) t->addProductRange(b, e, y.data());
+  double dot = 0.0;
+  for (size_t i = b; i < e; ++i) {
+    y[i] = filtered(s, i, y[i]);
+    dot += double(glm::dot(p[i], y[i]));
+  }
+  return dot;
 }
 
 IntegratorReport ImplicitEuler::step(ClothState& s, float h, ClothForces& forces) {
@@ -62,17 +60,14 @@ IntegratorReport ImplicitEuler::step(ClothState& s, float h, ClothForces& forces
       } else {
         diagonal_[i] += glm::mat3(s.mass[i]);
       }
-      preconditioner_[i] = glm::inverse(diagonal_[i]);
+      preconditioner_.set(i, glm::inverse(diagonal_[i]));
       // z: the constrained part of dv (stop a resting contact's normal velocity).
       dv_[i] = glm::vec3(0.0f);
       if (!s.contactNormal.empty() && s.invMass[i] != 0.0f)
         dv_[i] = (s.contactSpeed[i] - glm::dot(s.v[i], s.contactNormal[i])) * s.contactNormal[i];
     }
   });
-  if (twoLevel_) {
-    if (!coarse_.built(n)) coarse_.build(forces.springs(), n);
-    coarse_.assemble(s, otherDiagonal_, forces.springs());
-  }
+  if (twoLevel_ && !coarse_.built(n)) coarse_.build(forces.springs(), n);
   const IntegratorReport report = solve(s, forces);
   forRange(n, [&](size_t bb, size_t e) {
     for (size_t i = bb; i < e; ++i) {
@@ -83,57 +78,117 @@ IntegratorReport ImplicitEuler::step(ClothState& s, float h, ClothForces& forces
   return report;
 }
 
-double ImplicitEuler::coarseSolve() { return twoLevel_ ? coarse_.solve(r_, coarseZ_) : 0.0; }
+namespace {
 
+// Sum of the blocks' partial results in block order (as blockReduce adds them).
+double sumInOrder(const double* partial) {
+  double total = 0.0;
+  for (size_t b = 0; b < ReduceBlocks::kCount; ++b) total += partial[b];
+  return total;
+}
+
+// Patches per block of the parallel restriction P^T r.
+constexpr size_t kPatchesPerBlock = 8;
+
+}  // namespace
+
+// The CG's vertex loops run as phases of one pool job per iteration (see
+// PhasedJob): the new direction, the product and its dot, the update and its
+// dot, and the coarse level's restriction; only the small coarse solve runs
+// alone. Every vertex's arithmetic and every sum's order are those of one
+// loop per phase, so the result does not depend on the grouping.
 IntegratorReport ImplicitEuler::solve(const ClothState& s, ClothForces& forces) {
   const size_t n = s.size();
   r_.resize(n);
   z_.resize(n);
   q_.resize(n);
   c_.resize(n);
+  const ReduceBlocks blocks(n);
+  constexpr size_t kBlocks = ReduceBlocks::kCount;
+  const bool parallel = n >= 2 * kParallelGrain;
+  const size_t patchBlocks = twoLevel_ ? (coarse_.patchCount() + kPatchesPerBlock - 1) / kPatchesPerBlock : 0;
+  auto addRestriction = [&](PhasedJob& job, int after) {
+    if (!twoLevel_) return;
+    job.add(patchBlocks, after, [&](size_t b) {
+      coarse_.restrictResidual(r_, b * kPatchesPerBlock,
+                               std::min(coarse_.patchCount(), (b + 1) * kPatchesPerBlock));
+    });
+  };
   // z = P r is z_ (block Jacobi) plus the coarse level's per-patch part.
   auto coarseAt = [&](size_t i) { return twoLevel_ ? coarseZ_[coarse_.patchOf()[i]] : glm::vec3(0.0f); };
-  // r = filter(b - A z), c = filter(P r).
-  multiplyFiltered(s, forces, dv_, q_);
-  double delta = blockReduce(n, [&](size_t b, size_t e) {
-    double dot = 0.0;
-    for (size_t i = b; i < e; ++i) {
-      r_[i] = filtered(s, i, b_[i]) - q_[i];
-      z_[i] = preconditioner_[i] * r_[i];
-      c_[i] = filtered(s, i, z_[i]);
-      dot += double(glm::dot(r_[i], c_[i]));
-    }
-    return dot;
-  });
-  if (twoLevel_) {
-    delta += coarseSolve();
-    forRange(n, [&](size_t b, size_t e) {
-      for (size_t i = b; i < e; ++i) c_[i] = filtered(s, i, z_[i] + coarseAt(i));
+  double productDots[kBlocks] = {}, updateDots[kBlocks] = {};
+
+  // r = filter(b - A z), c = filter(P r). The coarse matrix is assembled
+  // meanwhile (by whichever thread takes that block first).
+  for (const ForceTerm* t : forces.terms()) t->productPass(dv_);
+  {
+    PhasedJob job;
+    if (twoLevel_) job.add(1, -1, [&](size_t) { coarse_.assemble(s, otherDiagonal_, forces.springs()); });
+    const int product = job.add(kBlocks, -1, [&](size_t b) {
+      if (blocks.begin(b) < blocks.end(b)) multiplyFilteredRange(s, forces, dv_, q_, blocks.begin(b), blocks.end(b));
     });
+    const int residual = job.add(kBlocks, product, [&](size_t bk) {
+      double dot = 0.0;
+      for (size_t i = blocks.begin(bk); i < blocks.end(bk); ++i) {
+        r_[i] = filtered(s, i, b_[i]) - q_[i];
+        const glm::vec3 z = preconditioner_.times(i, r_[i]);
+        z_.x[i] = z.x, z_.y[i] = z.y, z_.z[i] = z.z;
+        c_[i] = filtered(s, i, z);
+        dot += double(glm::dot(r_[i], c_[i]));
+      }
+      updateDots[bk] = dot;
+    });
+    addRestriction(job, residual);
+    job.run(parallel);
   }
+  double delta = sumInOrder(updateDots);
+  if (twoLevel_) delta += coarse_.solveRestricted(coarseZ_);
   const double delta0 = delta;
   const double stop = double(tolerance_) * double(tolerance_) * delta0;
+  // The next direction: c = filter(z + coarse + beta c); the first one
+  // (beta = 0) only needs the coarse part added.
+  bool firstDirection = true;
+  float beta = 0.0f;
+  auto direction = [&](size_t b, size_t e) {
+    if (firstDirection) {
+      if (twoLevel_)
+        for (size_t i = b; i < e; ++i) c_[i] = filtered(s, i, z_.at(i) + coarseAt(i));
+      return;
+    }
+    for (size_t i = b; i < e; ++i) c_[i] = filtered(s, i, z_.at(i) + coarseAt(i) + beta * c_[i]);
+  };
+  bool fuseDirection = true;
+  for (const ForceTerm* t : forces.terms()) fuseDirection = fuseDirection && t->productPassOnlyKeepsP();
   int it = 0;
   for (; it < maxIterations_ && delta > stop && delta > 0.0; ++it) {
-    const double cq = multiplyFiltered(s, forces, c_, q_);
-    if (!(cq > 0.0)) break;
-    const float alpha = float(delta / cq);
-    double deltaNew = blockReduce(n, [&](size_t b, size_t e) {
-      double dot = 0.0;
-      for (size_t i = b; i < e; ++i) {
-        dv_[i] += alpha * c_[i];
-        r_[i] -= alpha * q_[i];
-        z_[i] = preconditioner_[i] * r_[i];
-        dot += double(glm::dot(r_[i], z_[i]));
-      }
-      return dot;
+    PhasedJob job;
+    int directionPhase = -1;
+    if (fuseDirection)
+      directionPhase = job.add(kBlocks, -1, [&](size_t b) { direction(blocks.begin(b), blocks.end(b)); });
+    else
+      forRange(n, direction);
+    for (const ForceTerm* t : forces.terms()) t->productPass(c_);
+    const int product = job.add(kBlocks, directionPhase, [&](size_t b) {
+      productDots[b] = 0.0;
+      if (blocks.begin(b) < blocks.end(b))
+        productDots[b] = multiplyFilteredRange(s, forces, c_, q_, blocks.begin(b), blocks.end(b));
     });
-    deltaNew += coarseSolve();
-    const float beta = float(deltaNew / delta);
+    const double deltaOld = delta;
+    const int update = job.add(kBlocks, product, [&](size_t bk) {
+      updateDots[bk] = 0.0;
+      const double cq = sumInOrder(productDots);
+      if (!(cq > 0.0)) return;
+      const CgUpdate step{float(deltaOld / cq), c_.data(), q_.data(), dv_.data(), r_.data(), &preconditioner_, &z_};
+      updateDots[bk] = cgUpdateRange(step, blocks.begin(bk), blocks.end(bk));
+    });
+    addRestriction(job, update);
+    job.run(parallel);
+    if (!(sumInOrder(productDots) > 0.0)) break;
+    double deltaNew = sumInOrder(updateDots);
+    deltaNew += twoLevel_ ? coarse_.solveRestricted(coarseZ_) : 0.0;
+    beta = float(deltaNew / delta);
     delta = deltaNew;
-    forRange(n, [&](size_t b, size_t e) {
-      for (size_t i = b; i < e; ++i) c_[i] = filtered(s, i, z_[i] + coarseAt(i) + beta * c_[i]);
-    });
+    firstDirection = false;
   }
   return {it, delta0 > 0.0 ? float(std::sqrt(std::max(delta, 0.0) / delta0)) : 0.0f};
 }

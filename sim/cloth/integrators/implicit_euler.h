@@ -12,10 +12,12 @@
 // preconditioner is the inverse of A's 3x3 diagonal blocks, optionally plus a
 // coarse level (coarse_correction.h). Each CG iteration is three fused vertex
 // loops (product and dot, update and dot, direction), in parallel on large
-// cloths, and with the coarse level one small sequential solve.
+// cloths as phases of one pool job, and with the coarse level one small
+// sequential solve.
 
 #include <vector>
 
+#include "sim/cloth/integrators/cg_update.h"
 #include "sim/cloth/integrators/coarse_correction.h"
 #include "sim/cloth/integrators/integrator.h"
 
@@ -30,19 +32,20 @@ class ImplicitEuler : public Integrator {
 
  private:
   IntegratorReport solve(const ClothState& s, ClothForces& forces);
-  // y_i = filter(M p + sum of the terms' products)_i; returns p . y.
-  double multiplyFiltered(const ClothState& s, ClothForces& forces, const std::vector<glm::vec3>& p,
-                          std::vector<glm::vec3>& y) const;
-  // Adds the coarse level's part of z = P r (per patch, in coarseZ_); returns its share of r . z.
-  double coarseSolve();
+  // y_i = filter(M p + sum of the terms' products)_i for i in [b, e) (after
+  // the terms' productPass(p)); returns the sum of p_i . y_i.
+  double multiplyFilteredRange(const ClothState& s, const ClothForces& forces, const std::vector<glm::vec3>& p,
+                               std::vector<glm::vec3>& y, size_t b, size_t e) const;
 
   int maxIterations_;
   float tolerance_;
   bool twoLevel_;
   CoarseCorrection coarse_;
   std::vector<glm::vec3> coarseZ_;
-  std::vector<glm::vec3> f_, b_, dv_, r_, z_, c_, q_;
-  std::vector<glm::mat3> diagonal_, otherDiagonal_, preconditioner_;
+  std::vector<glm::vec3> f_, b_, dv_, r_, c_, q_;
+  SplitVec3 z_;
+  std::vector<glm::mat3> diagonal_, otherDiagonal_;
+  LaneBlocks preconditioner_;
 };
 
 }  // namespace mq::cloth
