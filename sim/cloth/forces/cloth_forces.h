@@ -27,6 +27,7 @@ class ClothForces {
   const std::vector<ForceTerm*>& terms() const { return terms_; }
 
   const SpringForce& springs() const { return *springs_; }
+  SpringForce& springs() { return *springs_; }
   size_t structuralCount() const { return structuralCount_; }
   const CantileverBending* cantilever() const { return cantilever_.get(); }
   ExternalForces& external() { return *external_; }

@@ -9,7 +9,7 @@ ExternalForces::ExternalForces(glm::vec3 gravity, glm::vec3 wind, float airDampi
 
 void ExternalForces::addForces(const ClothState& s, std::vector<glm::vec3>& f) const {
   forRange(s.size(), [&](size_t b, size_t e) {
-    for (size_t i = b; i < e; ++i) f[i] += s.mass[i] * gravity_ - airDamping_ * vertexArea_[i] * (s.v[i] - wind_);
+    for (size_t i = b; i < e; ++i) f[i] += forceAt(s, i);
   });
 }
 
@@ -19,9 +19,9 @@ double ExternalForces::potentialEnergy(const ClothState& s) const {
 
 void ExternalForces::prepareImplicit(const ClothState& s, float h, std::vector<glm::vec3>&,
                                      std::vector<glm::mat3>& diagonal) {
-  h_ = h;
+  setStep(h);
   forRange(s.size(), [&](size_t b, size_t e) {
-    for (size_t i = b; i < e; ++i) diagonal[i] += glm::mat3(h * airDamping_ * vertexArea_[i]);
+    for (size_t i = b; i < e; ++i) diagonal[i] += glm::mat3(implicitDiagonalAt(i));
   });
 }
 

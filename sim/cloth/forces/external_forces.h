@@ -22,6 +22,14 @@ class ExternalForces : public ForceTerm {
   void productPass(const std::vector<glm::vec3>& p) const override { p_ = &p; }
   bool productPassOnlyKeepsP() const override { return true; }
   glm::vec3 productAt(size_t vertex) const override { return (h_ * airDamping_ * vertexArea_[vertex]) * (*p_)[vertex]; }
+  // Per vertex, for the implicit solver's fused pass: the force (as
+  // addForces adds it) and the diagonal of the implicit matrix (a multiple
+  // of I, as prepareImplicit adds it) for the step h.
+  glm::vec3 forceAt(const ClothState& s, size_t i) const {
+    return s.mass[i] * gravity_ - airDamping_ * vertexArea_[i] * (s.v[i] - wind_);
+  }
+  void setStep(float h) { h_ = h; }
+  float implicitDiagonalAt(size_t i) const { return h_ * airDamping_ * vertexArea_[i]; }
   // The same, without a virtual call per vertex (the solver's hot loop).
   void addProductRange(size_t begin, size_t end, glm::vec3* y) const override {
     const glm::vec3* p = p_->data();

@@ -13,10 +13,7 @@ namespace mq::cloth {
 
 namespace {
 
-struct SpringFrame {
-  glm::vec3 d;  // unit direction a - b
-  float length;
-};
+using SpringFrame = SpringForce::SpringFrame;
 
 // Inlined: called per spring in the force and the implicit passes of every
 // step (out of line it cost more than its arithmetic).
@@ -50,6 +47,7 @@ SpringForce::SpringForce(std::vector<Spring> springs, size_t vertexCount) : spri
     incidence_[fill[springs_[i].b]++] = -int32_t(i + 1);
   }
   perSpring_.resize(springs_.size());
+  force_.resize(springs_.size());
   blocks_.resize(springs_.size());
   buildRows(vertexCount);
 }
@@ -60,13 +58,16 @@ void SpringForce::gather(const std::vector<glm::vec3>& perSpring, std::vector<gl
   });
 }
 
+glm::vec3 SpringForce::forceOf(const Spring& s, const ClothState& st, const SpringFrame& fr) {
+  const float relSpeed = glm::dot(st.v[s.a] - st.v[s.b], fr.d);
+  return -(s.k * (fr.length - s.rest) + s.kd * relSpeed) * fr.d;
+}
+
 void SpringForce::addForces(const ClothState& st, std::vector<glm::vec3>& f) const {
   forRange(springs_.size(), [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) {
       const Spring& s = springs_[i];
-      const SpringFrame fr = frameOf(st.x[s.a], st.x[s.b]);
-      const float relSpeed = glm::dot(st.v[s.a] - st.v[s.b], fr.d);
-      perSpring_[i] = -(s.k * (fr.length - s.rest) + s.kd * relSpeed) * fr.d;
+      perSpring_[i] = forceOf(s, st, frameOf(st.x[s.a], st.x[s.b]));
     }
   });
   gather(perSpring_, f);
@@ -80,49 +81,69 @@ double SpringForce::potentialEnergy(const ClothState& st) const {
   });
 }
 
+void SpringForce::linearise(size_t i, const ClothState& st, float h, const SpringFrame& fr) {
+  const Spring& s = springs_[i];
+  // -h^2 K + h kd d d^T with K = -k [d d^T + lateral (I - d d^T)].
+  const float lateral = fr.length > 1e-12f ? std::max(0.0f, 1.0f - s.rest / fr.length) : 0.0f;
+  const float alpha = h * h * s.k * (1.0f - lateral) + h * s.kd, beta = h * h * s.k * lateral;
+  blocks_[i] = {std::sqrt(alpha) * fr.d, beta};
+  // h^2 K (v_a - v_b) = -h^2 k [(1 - lateral) (d . dv) d + lateral dv].
+  const glm::vec3 dv = st.v[s.a] - st.v[s.b];
+  perSpring_[i] = -(h * h * s.k) * ((1.0f - lateral) * glm::dot(fr.d, dv) * fr.d + lateral * dv);
+}
+
+// One pass per vertex (in the order of its incidences, as gather() sums):
+// its part of h^2 K v0, its diagonal block and its sliced-ELL slots.
+void SpringForce::collectImplicit(size_t v, glm::vec3& hKv, glm::mat3& diagonal) {
+  const uint32_t first = incidenceStart_[v], degree = incidenceStart_[v + 1] - first;
+  const size_t firstSlot = rowStart_[v / kLanes] + v % kLanes;
+  // The diagonal block sum of e e^T + beta I: its six distinct entries
+  // (summed as the full matrix would be, entry by entry).
+  float xx = 0.0f, xy = 0.0f, xz = 0.0f, yy = 0.0f, yz = 0.0f, zz = 0.0f;
+  glm::vec3 kv(0.0f);
+  for (uint32_t k = 0; k < degree; ++k) {
+    const int32_t signedIndex = incidence_[first + k];
+    const uint32_t spring = uint32_t(std::abs(signedIndex) - 1);
+    const ImplicitBlock& block = blocks_[spring];
+    kv += signedIndex > 0 ? perSpring_[spring] : -perSpring_[spring];
+    const glm::vec3& e = block.e;
+    xx += e.x * e.x + block.beta, yy += e.y * e.y + block.beta, zz += e.z * e.z + block.beta;
+    xy += e.x * e.y, xz += e.x * e.z, yz += e.y * e.z;
+    const size_t slot = firstSlot + k * kLanes;  // spare slots (k >= degree) stay zero
+    rowEx_[slot] = block.e.x;
+    rowEy_[slot] = block.e.y;
+    rowEz_[slot] = block.e.z;
+    rowBeta_[slot] = block.beta;
+  }
+  hKv += kv;
+  diagonal += glm::mat3(xx, xy, xz, xy, yy, yz, xz, yz, zz);
+}
+
 void SpringForce::prepareImplicit(const ClothState& st, float h, std::vector<glm::vec3>& hKv,
                                   std::vector<glm::mat3>& diagonal) {
   forRange(springs_.size(), [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) {
       const Spring& s = springs_[i];
-      const SpringFrame fr = frameOf(st.x[s.a], st.x[s.b]);
-      // -h^2 K + h kd d d^T with K = -k [d d^T + lateral (I - d d^T)].
-      const float lateral = fr.length > 1e-12f ? std::max(0.0f, 1.0f - s.rest / fr.length) : 0.0f;
-      const float alpha = h * h * s.k * (1.0f - lateral) + h * s.kd, beta = h * h * s.k * lateral;
-      blocks_[i] = {std::sqrt(alpha) * fr.d, beta};
-      // h^2 K (v_a - v_b) = -h^2 k [(1 - lateral) (d . dv) d + lateral dv].
-      const glm::vec3 dv = st.v[s.a] - st.v[s.b];
-      perSpring_[i] = -(h * h * s.k) * ((1.0f - lateral) * glm::dot(fr.d, dv) * fr.d + lateral * dv);
+      linearise(i, st, h, frameOf(st.x[s.a], st.x[s.b]));
     }
   });
-  // One pass per vertex (in the order of its incidences, as gather() sums):
-  // its part of h^2 K v0, its diagonal block and its sliced-ELL slots.
   forRange(diagonal.size(), [&](size_t b, size_t e) {
-    for (size_t v = b; v < e; ++v) {
-      const uint32_t first = incidenceStart_[v], degree = incidenceStart_[v + 1] - first;
-      const size_t firstSlot = rowStart_[v / kLanes] + v % kLanes;
-      // The diagonal block sum of e e^T + beta I: its six distinct entries
-      // (summed as the full matrix would be, entry by entry).
-      float xx = 0.0f, xy = 0.0f, xz = 0.0f, yy = 0.0f, yz = 0.0f, zz = 0.0f;
-      glm::vec3 kv(0.0f);
-      for (uint32_t k = 0; k < degree; ++k) {
-        const int32_t signedIndex = incidence_[first + k];
-        const uint32_t spring = uint32_t(std::abs(signedIndex) - 1);
-        const ImplicitBlock& block = blocks_[spring];
-        kv += signedIndex > 0 ? perSpring_[spring] : -perSpring_[spring];
-        const glm::vec3& e = block.e;
-        xx += e.x * e.x + block.beta, yy += e.y * e.y + block.beta, zz += e.z * e.z + block.beta;
-        xy += e.x * e.y, xz += e.x * e.z, yz += e.y * e.z;
-        const size_t slot = firstSlot + k * kLanes;  // spare slots (k >= degree) stay zero
-        rowEx_[slot] = block.e.x;
-        rowEy_[slot] = block.e.y;
-        rowEz_[slot] = block.e.z;
-        rowBeta_[slot] = block.beta;
-      }
-      hKv[v] += kv;
-      diagonal[v] += glm::mat3(xx, xy, xz, xy, yy, yz, xz, yz, zz);
-    }
+    for (size_t v = b; v < e; ++v) collectImplicit(v, hKv[v], diagonal[v]);
   });
+}
+
+void SpringForce::prepareStepSprings(const ClothState& st, float h, size_t begin, size_t end) {
+  for (size_t i = begin; i < end; ++i) {
+    const Spring& s = springs_[i];
+    const SpringFrame fr = frameOf(st.x[s.a], st.x[s.b]);
+    force_[i] = forceOf(s, st, fr);
+    linearise(i, st, h, fr);
+  }
+}
+
+void SpringForce::prepareStepVertex(size_t v, glm::vec3& f, glm::vec3& hKv, glm::mat3& diagonal) {
+  f += gatherAt(v, force_);
+  collectImplicit(v, hKv, diagonal);
 }
 
 void SpringForce::buildRows(size_t vertexCount) {

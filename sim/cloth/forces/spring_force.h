@@ -54,7 +54,26 @@ class SpringForce : public ForceTerm {
   // df_a/dx_a of one spring (exact, or filtered as the solver uses it).
   glm::mat3 stiffnessBlock(size_t spring, const std::vector<glm::vec3>& x, bool filtered) const;
 
+  // addForces() and prepareImplicit() fused for the implicit step, in two
+  // passes the solver runs as phases of one parallel job: over springs
+  // [begin, end) (each spring's frame computed once for both), then per
+  // vertex v once every spring is done: f += its spring forces, and what
+  // prepareImplicit() adds to hKv and diagonal. Same results as the two calls.
+  void prepareStepSprings(const ClothState& s, float h, size_t begin, size_t end);
+  void prepareStepVertex(size_t v, glm::vec3& f, glm::vec3& hKv, glm::mat3& diagonal);
+
+  struct SpringFrame {
+    glm::vec3 d;  // unit direction a - b
+    float length;
+  };
+
  private:
+  static glm::vec3 forceOf(const Spring& s, const ClothState& st, const SpringFrame& fr);
+  // Spring i's implicit block and its part of h^2 K v0 (in perSpring_).
+  void linearise(size_t i, const ClothState& st, float h, const SpringFrame& fr);
+  // Vertex v's sums of those, in incidence order, and its sliced-ELL slots.
+  void collectImplicit(size_t v, glm::vec3& hKv, glm::mat3& diagonal);
+
   static constexpr size_t kLanes = 8;
   void buildRows(size_t vertexCount);
 
@@ -81,6 +100,7 @@ class SpringForce : public ForceTerm {
   std::vector<float> rowEx_, rowEy_, rowEz_, rowBeta_;
   std::vector<ImplicitBlock> blocks_;  // per spring, filled by prepareImplicit
   mutable std::vector<glm::vec3> perSpring_;
+  std::vector<glm::vec3> force_;  // per spring, for prepareStepVertex()
   mutable const std::vector<glm::vec3>* product_ = nullptr;
 };
 

@@ -39,36 +39,70 @@ double ImplicitEuler::multiplyFilteredRange(const ClothState& s, const ClothForc
   return dot;
 }
 
+// The last of a vertex's preparation, once every term has added its part:
+// b = h (f0 + h df/dx v0), A's diagonal block and its inverse, and the
+// start value of dv.
+void ImplicitEuler::finishVertex(const ClothState& s, float h, size_t i) {
+  b_[i] = h * f_[i] + b_[i];
+  if (twoLevel_) {
+    otherDiagonal_[i] += glm::mat3(s.mass[i]);
+    diagonal_[i] += otherDiagonal_[i];
+  } else {
+    diagonal_[i] += glm::mat3(s.mass[i]);
+  }
+  preconditioner_.set(i, glm::inverse(diagonal_[i]));
+  // z: the constrained part of dv (stop a resting contact's normal velocity).
+  dv_[i] = glm::vec3(0.0f);
+  if (!s.contactNormal.empty() && s.invMass[i] != 0.0f)
+    dv_[i] = (s.contactSpeed[i] - glm::dot(s.v[i], s.contactNormal[i])) * s.contactNormal[i];
+}
+
 IntegratorReport ImplicitEuler::step(ClothState& s, float h, ClothForces& forces) {
   const size_t n = s.size();
-  forces.computeForces(s, f_);
-  b_.assign(n, glm::vec3(0.0f));  // collects h^2 df/dx v0
-  diagonal_.assign(n, glm::mat3(0.0f));
+  f_.resize(n);
+  b_.resize(n);
+  diagonal_.resize(n);
   // Two-level: the springs' diagonal blocks apart from the others' (the coarse
   // level takes the springs exactly, block by block).
-  if (twoLevel_) otherDiagonal_.assign(n, glm::mat3(0.0f));
-  for (ForceTerm* t : forces.terms())
-    t->prepareImplicit(s, h, b_, twoLevel_ && t != &forces.springs() ? otherDiagonal_ : diagonal_);
+  if (twoLevel_) otherDiagonal_.resize(n);
   preconditioner_.resize(n);
   dv_.resize(n);
-  forRange(n, [&](size_t bb, size_t e) {
-    for (size_t i = bb; i < e; ++i) {
-      b_[i] = h * f_[i] + b_[i];
-      if (twoLevel_) {
-        otherDiagonal_[i] += glm::mat3(s.mass[i]);
-        diagonal_[i] += otherDiagonal_[i];
-      } else {
-        diagonal_[i] += glm::mat3(s.mass[i]);
-      }
-      preconditioner_.set(i, glm::inverse(diagonal_[i]));
-      // z: the constrained part of dv (stop a resting contact's normal velocity).
-      dv_[i] = glm::vec3(0.0f);
-      if (!s.contactNormal.empty() && s.invMass[i] != 0.0f)
-        dv_[i] = (s.contactSpeed[i] - glm::dot(s.v[i], s.contactNormal[i])) * s.contactNormal[i];
-    }
-  });
   if (twoLevel_ && !coarse_.built(n)) coarse_.build(forces.springs(), n);
-  const IntegratorReport report = solve(s, forces);
+  PhasedJob job;
+  int prepared = -1;
+  const auto& terms = forces.terms();
+  SpringForce& springs = forces.springs();
+  ExternalForces& external = forces.external();
+  if (terms.size() == 2 && terms[0] == &springs && terms[1] == &external) {
+    // Springs and external forces only: their force and linearisation passes
+    // fused into two phases (springs, then vertices) of the solve's first job.
+    external.setStep(h);
+    const size_t springCount = springs.springs().size();
+    const int springPhase = job.add((springCount + kParallelBlock - 1) / kParallelBlock, -1, [&](size_t b) {
+      springs.prepareStepSprings(s, h, b * kParallelBlock, std::min(springCount, (b + 1) * kParallelBlock));
+    });
+    prepared = job.add((n + kParallelBlock - 1) / kParallelBlock, springPhase, [&](size_t b) {
+      for (size_t i = b * kParallelBlock; i < std::min(n, (b + 1) * kParallelBlock); ++i) {
+        f_[i] = b_[i] = glm::vec3(0.0f);
+        diagonal_[i] = glm::mat3(0.0f);
+        springs.prepareStepVertex(i, f_[i], b_[i], diagonal_[i]);
+        f_[i] += external.forceAt(s, i);
+        if (twoLevel_) otherDiagonal_[i] = glm::mat3(0.0f);
+        (twoLevel_ ? otherDiagonal_[i] : diagonal_[i]) += glm::mat3(external.implicitDiagonalAt(i));
+        finishVertex(s, h, i);
+      }
+    });
+  } else {
+    forces.computeForces(s, f_);
+    b_.assign(n, glm::vec3(0.0f));  // collects h^2 df/dx v0
+    diagonal_.assign(n, glm::mat3(0.0f));
+    if (twoLevel_) otherDiagonal_.assign(n, glm::mat3(0.0f));
+    for (ForceTerm* t : terms) t->prepareImplicit(s, h, b_, twoLevel_ && t != &springs ? otherDiagonal_ : diagonal_);
+    forRange(n, [&](size_t bb, size_t e) {
+      for (size_t i = bb; i < e; ++i) finishVertex(s, h, i);
+    });
+  }
+  const IntegratorReport report = solve(s, forces, job, prepared);
   forRange(n, [&](size_t bb, size_t e) {
     for (size_t i = bb; i < e; ++i) {
       s.v[i] += dv_[i];
@@ -97,7 +131,7 @@ constexpr size_t kPatchesPerBlock = 8;
 // dot, and the coarse level's restriction; only the small coarse solve runs
 // alone. Every vertex's arithmetic and every sum's order are those of one
 // loop per phase, so the result does not depend on the grouping.
-IntegratorReport ImplicitEuler::solve(const ClothState& s, ClothForces& forces) {
+IntegratorReport ImplicitEuler::solve(const ClothState& s, ClothForces& forces, PhasedJob& job, int prepared) {
   const size_t n = s.size();
   r_.resize(n);
   z_.resize(n);
@@ -118,13 +152,13 @@ IntegratorReport ImplicitEuler::solve(const ClothState& s, ClothForces& forces) 
   auto coarseAt = [&](size_t i) { return twoLevel_ ? coarseZ_[coarse_.patchOf()[i]] : glm::vec3(0.0f); };
   double productDots[kBlocks] = {}, updateDots[kBlocks] = {};
 
-  // r = filter(b - A z), c = filter(P r). The coarse matrix is assembled
-  // meanwhile (by whichever thread takes that block first).
+  // r = filter(b - A z), c = filter(P r), after the phases `prepared` of
+  // the job if any. The coarse matrix is assembled meanwhile (by whichever
+  // thread takes that block first).
   for (const ForceTerm* t : forces.terms()) t->productPass(dv_);
   {
-    PhasedJob job;
-    if (twoLevel_) job.add(1, -1, [&](size_t) { coarse_.assemble(s, otherDiagonal_, forces.springs()); });
-    const int product = job.add(kBlocks, -1, [&](size_t b) {
+    if (twoLevel_) job.add(1, prepared, [&](size_t) { coarse_.assemble(s, otherDiagonal_, forces.springs()); });
+    const int product = job.add(kBlocks, prepared, [&](size_t b) {
       if (blocks.begin(b) < blocks.end(b)) multiplyFilteredRange(s, forces, dv_, q_, blocks.begin(b), blocks.end(b));
     });
     const int residual = job.add(kBlocks, product, [&](size_t bk) {

@@ -23,6 +23,8 @@
 
 namespace mq::cloth {
 
+class PhasedJob;
+
 class ImplicitEuler : public Integrator {
  public:
   ImplicitEuler(int maxIterations, float tolerance, bool twoLevel = false)
@@ -31,7 +33,10 @@ class ImplicitEuler : public Integrator {
   float stableStep(const ClothState& s, const ClothForces& forces) const override;
 
  private:
-  IntegratorReport solve(const ClothState& s, ClothForces& forces);
+  void finishVertex(const ClothState& s, float h, size_t i);
+  // Runs `job` (the step's preparation, its last phase `prepared`, or empty
+  // and -1) with the solve's first phases, then the CG iterations.
+  IntegratorReport solve(const ClothState& s, ClothForces& forces, PhasedJob& job, int prepared);
   // y_i = filter(M p + sum of the terms' products)_i for i in [b, e) (after
   // the terms' productPass(p)); returns the sum of p_i . y_i.
   double multiplyFilteredRange(const ClothState& s, const ClothForces& forces, const std::vector<glm::vec3>& p,
