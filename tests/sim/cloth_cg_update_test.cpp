@@ -1,12 +1,14 @@
 // The implicit solver's building blocks: the CG update loop's AVX2 path must
-// give the scalar path's results bit for bit (and both glm's arithmetic), and
-// a phased parallel job must run its phases in order whichever thread runs
-// which block.
+// give the scalar path's results bit for bit (and both glm's arithmetic), the
+// springs' fused step preparation must equal addForces() + prepareImplicit(),
+// and a phased parallel job must run its phases in order whichever thread
+// runs which block.
 #include <gtest/gtest.h>
 
 #include <cstring>
 #include <random>
 
+#include "sim/cloth/forces/spring_force.h"
 #include "sim/cloth/integrators/cg_update.h"
 #include "sim/cloth/parallel.h"
 
@@ -68,6 +70,58 @@ TEST(ClothCgUpdate, ScalarPathIsGlmArithmetic) {
     expectedDot += double(glm::dot(r, z));
   }
   EXPECT_EQ(dot, expectedDot);
+}
+
+// A jittered 12 x 12 grid with edge, diagonal and skip-one springs (stretched
+// and compressed), moving at random velocities.
+struct SpringGrid {
+  static constexpr int kColumns = 12;
+  ClothState state;
+  std::vector<Spring> springs;
+  SpringGrid() {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> jitter(-0.004f, 0.004f), speed(-0.5f, 0.5f), scale(0.8f, 1.2f);
+    for (int r = 0; r < kColumns; ++r)
+      for (int c = 0; c < kColumns; ++c) {
+        state.x.push_back({0.02f * c + jitter(rng), jitter(rng), 0.02f * r + jitter(rng)});
+        state.v.push_back({speed(rng), speed(rng), speed(rng)});
+      }
+    auto at = [](int r, int c) { return uint32_t(r * kColumns + c); };
+    auto add = [&](uint32_t a, uint32_t b, float k) {
+      springs.push_back({a, b, scale(rng) * glm::length(state.x[a] - state.x[b]), k, 0.02f * k});
+    };
+    for (int r = 0; r < kColumns; ++r)
+      for (int c = 0; c < kColumns; ++c) {
+        if (c + 1 < kColumns) add(at(r, c), at(r, c + 1), 80.0f);
+        if (r + 1 < kColumns) add(at(r, c), at(r + 1, c), 80.0f);
+        if (r + 1 < kColumns && c + 1 < kColumns) add(at(r, c), at(r + 1, c + 1), 40.0f);
+        if (c + 2 < kColumns) add(at(r, c), at(r, c + 2), 10.0f);
+      }
+  }
+};
+
+TEST(ClothCgUpdate, FusedSpringPreparationEqualsForcesThenLinearisation) {
+  const SpringGrid grid;
+  const size_t n = grid.state.x.size();
+  const float h = 1.0f / 30.0f;
+  SpringForce separate(grid.springs, n), fused(grid.springs, n);
+  std::vector<glm::vec3> f(n, glm::vec3(0.0f)), hKv(n, glm::vec3(0.0f));
+  std::vector<glm::mat3> diagonal(n, glm::mat3(0.0f));
+  separate.addForces(grid.state, f);
+  separate.prepareImplicit(grid.state, h, hKv, diagonal);
+  std::vector<glm::vec3> fusedF(n, glm::vec3(0.0f)), fusedHKv(n, glm::vec3(0.0f));
+  std::vector<glm::mat3> fusedDiagonal(n, glm::mat3(0.0f));
+  fused.prepareStepSprings(grid.state, h, 0, grid.springs.size() / 2);
+  fused.prepareStepSprings(grid.state, h, grid.springs.size() / 2, grid.springs.size());
+  for (size_t v = 0; v < n; ++v) fused.prepareStepVertex(v, fusedF[v], fusedHKv[v], fusedDiagonal[v]);
+  EXPECT_TRUE(sameBits(f, fusedF));
+  EXPECT_TRUE(sameBits(hKv, fusedHKv));
+  EXPECT_TRUE(sameBits(diagonal, fusedDiagonal));
+  // The same matrix rows: the same products.
+  std::vector<glm::vec3> p(grid.state.v), y(n, glm::vec3(0.0f)), fusedY(n, glm::vec3(0.0f));
+  separate.addProduct(p, y);
+  fused.addProduct(p, fusedY);
+  EXPECT_TRUE(sameBits(y, fusedY));
 }
 
 // Each phase reads what every block of the previous one wrote: a phase
