@@ -125,7 +125,7 @@ class PhasedJob {
     }
     for (unsigned seen; (seen = counter.load(std::memory_order_acquire)) < target;) counter.wait(seen);
   }
-  static constexpr int kSpinMicroseconds = 30;
+  static constexpr int kSpinMicroseconds = 10;
   std::vector<Phase> phases_;
   const std::atomic<bool>* cancel_ = nullptr;
 };

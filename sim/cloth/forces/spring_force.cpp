@@ -58,7 +58,7 @@ void SpringForce::gather(const std::vector<glm::vec3>& perSpring, std::vector<gl
   });
 }
 
-glm::vec3 SpringForce::forceOf(const Spring& s, const ClothState& st, const SpringFrame& fr) {
+[[gnu::always_inline]] inline glm::vec3 SpringForce::forceOf(const Spring& s, const ClothState& st, const SpringFrame& fr) {
   const float relSpeed = glm::dot(st.v[s.a] - st.v[s.b], fr.d);
   return -(s.k * (fr.length - s.rest) + s.kd * relSpeed) * fr.d;
 }
@@ -81,7 +81,7 @@ double SpringForce::potentialEnergy(const ClothState& st) const {
   });
 }
 
-void SpringForce::linearise(size_t i, const ClothState& st, float h, const SpringFrame& fr) {
+[[gnu::always_inline]] inline void SpringForce::linearise(size_t i, const ClothState& st, float h, const SpringFrame& fr) {
   const Spring& s = springs_[i];
   // -h^2 K + h kd d d^T with K = -k [d d^T + lateral (I - d d^T)].
   const float lateral = fr.length > 1e-12f ? std::max(0.0f, 1.0f - s.rest / fr.length) : 0.0f;
@@ -92,9 +92,10 @@ void SpringForce::linearise(size_t i, const ClothState& st, float h, const Sprin
   perSpring_[i] = -(h * h * s.k) * ((1.0f - lateral) * glm::dot(fr.d, dv) * fr.d + lateral * dv);
 }
 
+// (The three helpers are inlined: called per spring and per vertex in every step.)
 // One pass per vertex (in the order of its incidences, as gather() sums):
 // its part of h^2 K v0, its diagonal block and its sliced-ELL slots.
-void SpringForce::collectImplicit(size_t v, glm::vec3& hKv, glm::mat3& diagonal) {
+[[gnu::always_inline]] inline void SpringForce::collectImplicit(size_t v, glm::vec3& hKv, glm::mat3& diagonal) {
   const uint32_t first = incidenceStart_[v], degree = incidenceStart_[v + 1] - first;
   const size_t firstSlot = rowStart_[v / kLanes] + v % kLanes;
   // The diagonal block sum of e e^T + beta I: its six distinct entries
