@@ -5,10 +5,9 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cstddef>
 #include <functional>
-#include <initializer_list>
+#include <thread>
 #include <vector>
 
 #if defined(__x86_64__)
@@ -52,82 +51,58 @@ struct ReduceBlocks {
 };
 
 // One pool job made of phases that must run in order (a block of a phase
-// starts once every block of the phases it depends on is done). Each phase
-// of a solver iteration as its own parallel loop would wake the pool worker
-// once per phase (tens of microseconds each, more on a loaded machine); here
-// it wakes once per job, and waits spinning for the next phase meanwhile.
+// starts once every block of the phase it depends on is done). Each phase of
+// a solver iteration as its own parallel loop would wake the pool worker
+// once per phase (tens of microseconds each); here it wakes once per job.
 // Blocks are claimed in order, so a block only ever waits for blocks already
 // claimed, and run by a thread that does not wait for a later one: no
 // deadlock, and results do not depend on which thread runs which block.
 class PhasedJob {
  public:
-  // Adds a phase of `blocks` blocks calling body(block), to start once the
-  // phases `after` (indices; -1 for none) are done. Returns its index.
-  template <class Body>
-  int add(size_t blocks, std::initializer_list<int> after, Body&& body) {
-    Phase phase{blocks, {}, std::forward<Body>(body)};
-    for (int a : after)
-      if (a >= 0) phase.after.push_back(a);
-    phases_.push_back(std::move(phase));
-    return int(phases_.size()) - 1;
-  }
+  // Adds a phase of `blocks` blocks calling body(block); `after` is the
+  // index of the phase it waits for (-1: none). Returns the phase's index.
   template <class Body>
   int add(size_t blocks, int after, Body&& body) {
-    return add(blocks, {after}, std::forward<Body>(body));
+    phases_.push_back({blocks, after, std::forward<Body>(body)});
+    return int(phases_.size()) - 1;
   }
-  // Once *flag is set (by a block), the blocks not yet started are skipped.
-  void cancelWhen(const std::atomic<bool>* flag) { cancel_ = flag; }
-
   // Runs every phase, on the pool when `parallel`, else in order on the caller.
   void run(bool parallel) {
-    if (!parallel) {
-      for (const Phase& phase : phases_)
-        for (size_t b = 0; b < phase.blocks; ++b) {
-          if (cancelled()) return;
-          phase.body(b);
-        }
-      return;
-    }
     std::vector<size_t> first(phases_.size() + 1, 0);
     for (size_t k = 0; k < phases_.size(); ++k) first[k + 1] = first[k] + phases_[k].blocks;
-    std::vector<std::atomic<unsigned>> done(phases_.size());  // blocks finished, per phase
+    if (!parallel) {
+      for (const Phase& phase : phases_)
+        for (size_t b = 0; b < phase.blocks; ++b) phase.body(b);
+      return;
+    }
+    std::vector<std::atomic<size_t>> done(phases_.size());
     for (auto& d : done) d.store(0, std::memory_order_relaxed);
     ThreadPool::shared().parallelBlocks(first.back(), [&](size_t index) {
       const size_t k = size_t(std::upper_bound(first.begin(), first.end(), index) - first.begin()) - 1;
       const Phase& phase = phases_[k];
-      for (int a : phase.after)
-        if (!cancelled()) waitFor(done[size_t(a)], unsigned(phases_[size_t(a)].blocks));
-      if (!cancelled()) phase.body(index - first[k]);
-      done[k].fetch_add(1, std::memory_order_seq_cst);
-      done[k].notify_all();  // cheap unless a thread sleeps on it
+      if (phase.after >= 0) waitFor(done[size_t(phase.after)], phases_[size_t(phase.after)].blocks);
+      phase.body(index - first[k]);
+      done[k].fetch_add(1, std::memory_order_release);
     });
   }
 
  private:
   struct Phase {
     size_t blocks;
-    std::vector<int> after;
+    int after;
     std::function<void(size_t)> body;
   };
-  bool cancelled() const { return cancel_ && cancel_->load(std::memory_order_acquire); }
-  // The block awaited runs on the other thread right now: spin for a short
-  // while (the usual wait: a few microseconds, or the coarse solve's tens),
-  // then sleep (a long serial block, or that thread lost its core: spinning
-  // would take CPU from it on a loaded machine).
-  static void waitFor(const std::atomic<unsigned>& counter, unsigned target) {
-    using Clock = std::chrono::steady_clock;
-    const auto deadline = Clock::now() + std::chrono::microseconds(kSpinMicroseconds);
-    for (unsigned spins = 1; counter.load(std::memory_order_acquire) < target; ++spins) {
+  // The block awaited runs on the other thread right now: spin, and yield
+  // now and then in case that thread lost its core.
+  static void waitFor(const std::atomic<size_t>& counter, size_t target) {
+    for (unsigned spins = 0; counter.load(std::memory_order_acquire) < target; ++spins) {
 #if defined(__x86_64__)
       _mm_pause();
 #endif
-      if (spins % 64 == 0 && Clock::now() > deadline) break;
+      if (spins % 1024 == 1023) std::this_thread::yield();
     }
-    for (unsigned seen; (seen = counter.load(std::memory_order_acquire)) < target;) counter.wait(seen);
   }
-  static constexpr int kSpinMicroseconds = 10;
   std::vector<Phase> phases_;
-  const std::atomic<bool>* cancel_ = nullptr;
 };
 
 // Runs body(begin, end) -> double over [0, count) in 64 fixed blocks (in

@@ -1,6 +1,5 @@
 #include "sim/cloth/integrators/implicit_euler.h"
 
-#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -127,13 +126,11 @@ constexpr size_t kPatchesPerBlock = 8;
 
 }  // namespace
 
-// The CG's loops run as phases of as few pool jobs as possible (see
-// PhasedJob): the step's preparation, the start (product, residual, coarse
-// restriction, the small coarse solve), then per iteration the new
-// direction, the product and its dot, the update and its dot, the coarse
-// restriction and the coarse solve with the scalars (one block, while the
-// other thread waits). Every vertex's arithmetic and every sum's order are
-// those of one loop per phase, so the result does not depend on the grouping.
+// The CG's vertex loops run as phases of one pool job per iteration (see
+// PhasedJob): the new direction, the product and its dot, the update and its
+// dot, and the coarse level's restriction; only the small coarse solve runs
+// alone. Every vertex's arithmetic and every sum's order are those of one
+// loop per phase, so the result does not depend on the grouping.
 IntegratorReport ImplicitEuler::solve(const ClothState& s, ClothForces& forces, PhasedJob& job, int prepared) {
   const size_t n = s.size();
   r_.resize(n);
@@ -144,111 +141,88 @@ IntegratorReport ImplicitEuler::solve(const ClothState& s, ClothForces& forces, 
   constexpr size_t kBlocks = ReduceBlocks::kCount;
   const bool parallel = n >= 2 * kParallelGrain;
   const size_t patchBlocks = twoLevel_ ? (coarse_.patchCount() + kPatchesPerBlock - 1) / kPatchesPerBlock : 0;
-  auto addRestriction = [&](PhasedJob& j, int after) {
-    if (!twoLevel_) return after;
-    return j.add(patchBlocks, after, [&](size_t b) {
-      coarse_.restrictResidual(r_, b * kPatchesPerBlock, std::min(coarse_.patchCount(), (b + 1) * kPatchesPerBlock));
+  auto addRestriction = [&](PhasedJob& job, int after) {
+    if (!twoLevel_) return;
+    job.add(patchBlocks, after, [&](size_t b) {
+      coarse_.restrictResidual(r_, b * kPatchesPerBlock,
+                               std::min(coarse_.patchCount(), (b + 1) * kPatchesPerBlock));
     });
   };
   // z = P r is z_ (block Jacobi) plus the coarse level's per-patch part.
   auto coarseAt = [&](size_t i) { return twoLevel_ ? coarseZ_[coarse_.patchOf()[i]] : glm::vec3(0.0f); };
   double productDots[kBlocks] = {}, updateDots[kBlocks] = {};
-  std::atomic<bool> stopped{false};
-  job.cancelWhen(&stopped);
-  double delta = 0.0, delta0 = 0.0, stop = 0.0;
-  float beta = 0.0f;
-  int it = 0;
-  auto continues = [&] { return it < maxIterations_ && delta > stop && delta > 0.0; };
-  bool fuseDirection = true;
-  for (const ForceTerm* t : forces.terms()) fuseDirection = fuseDirection && t->productPassOnlyKeepsP();
 
-  // r = filter(b - A z), c = filter(P r), after the phase `prepared` of the
-  // job if any. The coarse matrix is assembled meanwhile (by whichever
+  // r = filter(b - A z), c = filter(P r), after the phases `prepared` of
+  // the job if any. The coarse matrix is assembled meanwhile (by whichever
   // thread takes that block first).
   for (const ForceTerm* t : forces.terms()) t->productPass(dv_);
-  const int assembled = !twoLevel_ ? -1 : job.add(1, prepared, [&](size_t) {
-    coarse_.assemble(s, otherDiagonal_, forces.springs());
-  });
-  const int product = job.add(kBlocks, prepared, [&](size_t b) {
-    if (blocks.begin(b) < blocks.end(b)) multiplyFilteredRange(s, forces, dv_, q_, blocks.begin(b), blocks.end(b));
-  });
-  const int residual = job.add(kBlocks, product, [&](size_t bk) {
-    double dot = 0.0;
-    for (size_t i = blocks.begin(bk); i < blocks.end(bk); ++i) {
-      r_[i] = filtered(s, i, b_[i]) - q_[i];
-      const glm::vec3 z = preconditioner_.times(i, r_[i]);
-      z_.x[i] = z.x, z_.y[i] = z.y, z_.z[i] = z.z;
-      c_[i] = filtered(s, i, z);
-      dot += double(glm::dot(r_[i], c_[i]));
-    }
-    updateDots[bk] = dot;
-  });
-  int last = job.add(1, {addRestriction(job, residual), assembled}, [&](size_t) {
-    delta = sumInOrder(updateDots);
-    if (twoLevel_) delta += coarse_.solveRestricted(coarseZ_);
-    delta0 = delta;
-    stop = double(tolerance_) * double(tolerance_) * delta0;
-    if (fuseDirection)
-      for (const ForceTerm* t : forces.terms()) t->productPass(c_);  // only keeps c_ (read from the next phase on)
-    if (!continues()) stopped = true;
-  });
-
+  {
+    if (twoLevel_) job.add(1, prepared, [&](size_t) { coarse_.assemble(s, otherDiagonal_, forces.springs()); });
+    const int product = job.add(kBlocks, prepared, [&](size_t b) {
+      if (blocks.begin(b) < blocks.end(b)) multiplyFilteredRange(s, forces, dv_, q_, blocks.begin(b), blocks.end(b));
+    });
+    const int residual = job.add(kBlocks, product, [&](size_t bk) {
+      double dot = 0.0;
+      for (size_t i = blocks.begin(bk); i < blocks.end(bk); ++i) {
+        r_[i] = filtered(s, i, b_[i]) - q_[i];
+        const glm::vec3 z = preconditioner_.times(i, r_[i]);
+        z_.x[i] = z.x, z_.y[i] = z.y, z_.z[i] = z.z;
+        c_[i] = filtered(s, i, z);
+        dot += double(glm::dot(r_[i], c_[i]));
+      }
+      updateDots[bk] = dot;
+    });
+    addRestriction(job, residual);
+    job.run(parallel);
+  }
+  double delta = sumInOrder(updateDots);
+  if (twoLevel_) delta += coarse_.solveRestricted(coarseZ_);
+  const double delta0 = delta;
+  const double stop = double(tolerance_) * double(tolerance_) * delta0;
   // The next direction: c = filter(z + coarse + beta c); the first one
   // (beta = 0) only needs the coarse part added.
-  auto direction = [&](size_t b, size_t e, bool first) {
-    if (first) {
+  bool firstDirection = true;
+  float beta = 0.0f;
+  auto direction = [&](size_t b, size_t e) {
+    if (firstDirection) {
       if (twoLevel_)
         for (size_t i = b; i < e; ++i) c_[i] = filtered(s, i, z_.at(i) + coarseAt(i));
       return;
     }
     for (size_t i = b; i < e; ++i) c_[i] = filtered(s, i, z_.at(i) + coarseAt(i) + beta * c_[i]);
   };
-  auto addIteration = [&](PhasedJob& j, int after, int iteration) {
+  bool fuseDirection = true;
+  for (const ForceTerm* t : forces.terms()) fuseDirection = fuseDirection && t->productPassOnlyKeepsP();
+  int it = 0;
+  for (; it < maxIterations_ && delta > stop && delta > 0.0; ++it) {
+    PhasedJob job;
+    int directionPhase = -1;
     if (fuseDirection)
-      after = j.add(kBlocks, after, [&, iteration](size_t b) { direction(blocks.begin(b), blocks.end(b), iteration == 0); });
-    after = j.add(kBlocks, after, [&](size_t b) {
+      directionPhase = job.add(kBlocks, -1, [&](size_t b) { direction(blocks.begin(b), blocks.end(b)); });
+    else
+      forRange(n, direction);
+    for (const ForceTerm* t : forces.terms()) t->productPass(c_);
+    const int product = job.add(kBlocks, directionPhase, [&](size_t b) {
       productDots[b] = 0.0;
       if (blocks.begin(b) < blocks.end(b))
         productDots[b] = multiplyFilteredRange(s, forces, c_, q_, blocks.begin(b), blocks.end(b));
     });
-    after = j.add(kBlocks, after, [&](size_t bk) {
+    const double deltaOld = delta;
+    const int update = job.add(kBlocks, product, [&](size_t bk) {
       updateDots[bk] = 0.0;
       const double cq = sumInOrder(productDots);
       if (!(cq > 0.0)) return;
-      const CgUpdate step{float(delta / cq), c_.data(), q_.data(), dv_.data(), r_.data(), &preconditioner_, &z_};
+      const CgUpdate step{float(deltaOld / cq), c_.data(), q_.data(), dv_.data(), r_.data(), &preconditioner_, &z_};
       updateDots[bk] = cgUpdateRange(step, blocks.begin(bk), blocks.end(bk));
     });
-    return j.add(1, addRestriction(j, after), [&](size_t) {
-      if (!(sumInOrder(productDots) > 0.0)) {
-        stopped = true;
-        return;
-      }
-      double deltaNew = sumInOrder(updateDots);
-      deltaNew += twoLevel_ ? coarse_.solveRestricted(coarseZ_) : 0.0;
-      beta = float(deltaNew / delta);
-      delta = deltaNew;
-      ++it;
-      if (!continues()) stopped = true;
-    });
-  };
-  // Up to kIterationsPerJob iterations per job (beyond a solve's usual cap,
-  // iterations planned after the solve stopped are skipped blocks).
-  constexpr int kIterationsPerJob = 32;
-  int planned = 0;
-  if (fuseDirection)
-    for (; planned < kIterationsPerJob && planned < maxIterations_; ++planned) last = addIteration(job, last, planned);
-  job.run(parallel);
-  while (!stopped) {
-    PhasedJob next;
-    next.cancelWhen(&stopped);
-    if (!fuseDirection) {  // a term's productPass() reads c: not inside the job
-      forRange(n, [&](size_t b, size_t e) { direction(b, e, it == 0); });
-      for (const ForceTerm* t : forces.terms()) t->productPass(c_);
-    }
-    last = -1;
-    const int count = fuseDirection ? kIterationsPerJob : 1;
-    for (int k = 0; k < count && planned < maxIterations_; ++k, ++planned) last = addIteration(next, last, planned);
-    next.run(parallel);
+    addRestriction(job, update);
+    job.run(parallel);
+    if (!(sumInOrder(productDots) > 0.0)) break;
+    double deltaNew = sumInOrder(updateDots);
+    deltaNew += twoLevel_ ? coarse_.solveRestricted(coarseZ_) : 0.0;
+    beta = float(deltaNew / delta);
+    delta = deltaNew;
+    firstDirection = false;
   }
   return {it, delta0 > 0.0 ? float(std::sqrt(std::max(delta, 0.0) / delta0)) : 0.0f};
 }
