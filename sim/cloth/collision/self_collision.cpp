@@ -9,6 +9,7 @@
 #endif
 
 #include "sim/cloth/collision/proximity.h"
+#include "sim/cloth/collision/segment_reach.h"
 #include "core/util/thread_pool.h"
 
 namespace mq::cloth {
@@ -288,15 +289,58 @@ std::vector<T> collectInBlocks(size_t count, Body&& body) {
 // edge tree, as columns padded by three places: four places from any one
 // are read at once.
 void SelfCollision::EdgeColumns::resize(size_t places) {
-  for (std::vector<uint32_t>* c : {&v0, &v1}) c->resize(places + 3, UINT32_MAX);
+  for (std::vector<uint32_t>* c : {&v0, &v1, &edge}) c->resize(places + 3, UINT32_MAX);
   for (std::vector<float>* c : {&midX, &midY, &midZ, &half, &moveX, &moveY, &moveZ, &spread}) c->resize(places + 3, 0.0f);
+  for (int end = 0; end < 2; ++end)
+    for (std::vector<float>* c : {&startX[end], &startY[end], &startZ[end], &stepX[end], &stepY[end], &stepZ[end]})
+      c->resize(places + 3, 0.0f);
 }
 
-void SelfCollision::EdgeColumns::set(size_t k, uint32_t a, uint32_t b, const glm::vec3& mid, float halfLength,
-                                     const glm::vec3& meanMove, float moveSpread) {
-  v0[k] = a, v1[k] = b;
+void SelfCollision::EdgeColumns::set(size_t k, uint32_t e, uint32_t a, uint32_t b, const glm::vec3& mid,
+                                     float halfLength, const glm::vec3& meanMove, float moveSpread) {
+  edge[k] = e, v0[k] = a, v1[k] = b;
   midX[k] = mid.x, midY[k] = mid.y, midZ[k] = mid.z, half[k] = halfLength;
   moveX[k] = meanMove.x, moveY[k] = meanMove.y, moveZ[k] = meanMove.z, spread[k] = moveSpread;
+}
+
+void SelfCollision::EdgeColumns::setVertices(size_t k, const glm::vec3 (&start)[2], const glm::vec3 (&move)[2]) {
+  for (int end = 0; end < 2; ++end) {
+    startX[end][k] = start[end].x, startY[end][k] = start[end].y, startZ[end][k] = start[end].z;
+    stepX[end][k] = move[end].x, stepY[end][k] = move[end].y, stepZ[end][k] = move[end].z;
+  }
+}
+
+inline unsigned SelfCollision::EdgeColumns::withinReach(uint32_t i, uint32_t first, float thickness) const {
+#ifdef MQ_SEGMENT_REACH_SSE
+  auto own = [&](const std::vector<float>& c) { return _mm_set1_ps(c[i]); };
+  auto column = [&](const std::vector<float>& c) { return _mm_loadu_ps(&c[first]); };
+  // The exact test takes the edge of lower index first: per lane, the own
+  // edge or the other's.
+  const __m128 ownFirst = _mm_castsi128_ps(_mm_cmplt_epi32(
+      _mm_set1_epi32(int(edge[i])), _mm_loadu_si128(reinterpret_cast<const __m128i*>(&edge[first]))));
+  auto pick = [&](const std::vector<float>& c, bool firstEdge) {
+    const __m128 a = own(c), b = column(c);
+    return firstEdge ? _mm_or_ps(_mm_and_ps(ownFirst, a), _mm_andnot_ps(ownFirst, b))
+                     : _mm_or_ps(_mm_and_ps(ownFirst, b), _mm_andnot_ps(ownFirst, a));
+  };
+  auto point = [&](int end, bool firstEdge) {
+    return Vec3x4{pick(startX[end], firstEdge), pick(startY[end], firstEdge), pick(startZ[end], firstEdge)};
+  };
+  // The largest difference of the two edges' vertices' moves (the same
+  // either way round: a difference's negation is exact).
+  __m128 worst = _mm_setzero_ps();
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b) {
+      const __m128 dx = _mm_sub_ps(own(stepX[a]), column(stepX[b])), dy = _mm_sub_ps(own(stepY[a]), column(stepY[b]));
+      const __m128 dz = _mm_sub_ps(own(stepZ[a]), column(stepZ[b]));
+      worst = _mm_max_ps(worst, _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz)));
+    }
+  const __m128 reach = _mm_add_ps(_mm_set1_ps(thickness), _mm_sqrt_ps(worst));
+  return segmentsWithinReach(point(0, true), point(1, true), point(0, false), point(1, false), reach);
+#else
+  (void)i, (void)first, (void)thickness;
+  return 0xFu;  // testEdgeEdge tests them one by one
+#endif
 }
 
 inline unsigned SelfCollision::EdgeColumns::apartOrNeighbours(uint32_t i, uint32_t first, float thickness) const {
@@ -689,7 +733,8 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
       const auto [p0, p1] = edgeAtPlace_[k];
       const EdgeBound& b = bounds[k] = {0.5f * (x0[p0] + x0[p1]), 0.5f * glm::length(x0[p0] - x0[p1]),
                                         0.5f * (move[p0] + move[p1]), 0.5f * glm::length(move[p0] - move[p1])};
-      columns.set(k, p0, p1, b.mid, b.halfLength, b.meanMove, b.spread);
+      columns.set(k, edgeTree_.primitive(uint32_t(k)), p0, p1, b.mid, b.halfLength, b.meanMove, b.spread);
+      columns.setVertices(k, {x0[p0], x0[p1]}, {move[p0], move[p1]});
     }
   });
   // Two edges at places of the edge tree whose boxes overlap, not in one
@@ -712,17 +757,10 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     const bool ordered = i < k;
     const uint32_t e = ordered ? i : k, f = ordered ? k : i;
     const uint32_t p0 = ordered ? a0 : b0, p1 = ordered ? a1 : b1, q0 = ordered ? b0 : a0, q1 = ordered ? b1 : a1;
-    const float reach = thickness + closing({p0, p1}, {q0, q1});
-    // Bounding balls first: the segments' points lie within half their
-    // lengths of their midpoints.
-    const float apart = glm::length(0.5f * (x0[p0] + x0[p1] - x0[q0] - x0[q1])) -
-                        0.5f * (glm::length(x0[p0] - x0[p1]) + glm::length(x0[q0] - x0[q1]));
-    if (apart > reach) return;
+    if (!segmentsWithinReach(x0[p0], x0[p1], x0[q0], x0[q1], thickness + closing({p0, p1}, {q0, q1}))) return;
     const glm::vec2 st = closestSegmentParameters(x0[p0], x0[p1], x0[q0], x0[q1]);
     const glm::vec3 d = glm::mix(x0[p0], x0[p1], st.x) - glm::mix(x0[q0], x0[q1], st.y);
-    const float l = glm::length(d);
-    if (l < 1e-9f || l > reach) return;
-    out.push_back({e, f, st, d / l});
+    out.push_back({e, f, st, d / glm::length(d)});
   };
   std::vector<std::vector<EdgeEdge>> found;
   if (exhaustive_) {
@@ -744,9 +782,12 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     const std::vector<AabbTree::PairJob> jobs = edgeTree_.pairJobs(4 * kBlocks, flatEdgePatch);
     found.resize(jobs.size());
     ThreadPool::shared().parallelBlocks(jobs.size(), [&](size_t j) {
-      // The neighbours and the cheap bound above for four pairs at once.
+      // The neighbours and the cheap bound above for four pairs at once,
+      // then the exact test's distance conditions (few pairs pass them).
       edgeTree_.runJobInQuads(jobs[j], [&](uint32_t placeI, uint32_t first, unsigned mask) {
-        for (mask &= columns.apartOrNeighbours(placeI, first, thickness) ^ 0xFu; mask != 0; mask &= mask - 1)
+        mask &= columns.apartOrNeighbours(placeI, first, thickness) ^ 0xFu;
+        if (mask != 0) mask &= columns.withinReach(placeI, first, thickness);
+        for (; mask != 0; mask &= mask - 1)
           testEdgeEdge(placeI, first + uint32_t(__builtin_ctz(mask)), found[j], kScreened);
       }, flatEdgePatch, outOfReach);
     });
