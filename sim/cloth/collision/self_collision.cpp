@@ -30,7 +30,9 @@ bool sharesVertex(uint32_t a0, uint32_t a1, uint32_t b0, uint32_t b1) {
 constexpr uint32_t kNoTriangle = UINT32_MAX;
 constexpr float kFlatCosine = 0.7071f;  // cos 45 degrees: a patch's normals within it of its axis are flat
 
-NormalCone merged(const NormalCone& a, const NormalCone& b) {
+}  // namespace
+
+NormalCone mergedCones(const NormalCone& a, const NormalCone& b) {
   // Cones only matter while they are flat, and a merged cone is no narrower
   // than either: the wide ones are not merged.
   if (a.cosine < kFlatCosine || b.cosine < kFlatCosine) return {};
@@ -47,6 +49,53 @@ NormalCone merged(const NormalCone& a, const NormalCone& b) {
   const NormalCone& wider = ra.cosine < rb.cosine ? ra : rb;
   return wider.cosine < 0.0f ? NormalCone{} : wider;
 }
+
+void mergeFourCones(NormalCone (&cones)[4], const NormalCone (&others)[4], unsigned lanes) {
+#ifdef __SSE2__
+  // mergedCones() lane by lane, its branches as selects.
+  struct Lanes {
+    __m128 x, y, z, cosine, sine;
+  };
+  auto load = [](const NormalCone (&c)[4]) {
+    auto column = [&](auto field) { return _mm_setr_ps(field(c[0]), field(c[1]), field(c[2]), field(c[3])); };
+    return Lanes{column([](const NormalCone& n) { return n.axis.x; }), column([](const NormalCone& n) { return n.axis.y; }),
+                 column([](const NormalCone& n) { return n.axis.z; }), column([](const NormalCone& n) { return n.cosine; }),
+                 column([](const NormalCone& n) { return n.sine; })};
+  };
+  auto select = [](__m128 when, __m128 yes, __m128 no) { return _mm_or_ps(_mm_and_ps(when, yes), _mm_andnot_ps(when, no)); };
+  const Lanes a = load(cones), b = load(others);
+  const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
+  const __m128 flat = _mm_and_ps(_mm_cmpnlt_ps(a.cosine, _mm_set1_ps(kFlatCosine)),
+                                 _mm_cmpnlt_ps(b.cosine, _mm_set1_ps(kFlatCosine)));
+  const __m128 sx = _mm_add_ps(a.x, b.x), sy = _mm_add_ps(a.y, b.y), sz = _mm_add_ps(a.z, b.z);
+  const __m128 length = _mm_sqrt_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(sx, sx), _mm_mul_ps(sy, sy)), _mm_mul_ps(sz, sz)));
+  const __m128 ax = _mm_div_ps(sx, length), ay = _mm_div_ps(sy, length), az = _mm_div_ps(sz, length);
+  auto reach = [&](const Lanes& c, __m128& cosine, __m128& sine) {
+    const __m128 dot = _mm_add_ps(_mm_add_ps(_mm_mul_ps(ax, c.x), _mm_mul_ps(ay, c.y)), _mm_mul_ps(az, c.z));
+    const __m128 cd = _mm_min_ps(dot, one), sd = _mm_sqrt_ps(_mm_max_ps(_mm_sub_ps(one, _mm_mul_ps(cd, cd)), zero));
+    cosine = _mm_sub_ps(_mm_mul_ps(cd, c.cosine), _mm_mul_ps(sd, c.sine));
+    sine = _mm_add_ps(_mm_mul_ps(sd, c.cosine), _mm_mul_ps(cd, c.sine));
+  };
+  __m128 ca, sa, cb, sb;
+  reach(a, ca, sa);
+  reach(b, cb, sb);
+  const __m128 aWider = _mm_cmplt_ps(ca, cb);
+  const __m128 cosine = select(aWider, ca, cb), sine = select(aWider, sa, sb);
+  const __m128 kept = _mm_and_ps(_mm_and_ps(flat, _mm_cmpnlt_ps(length, _mm_set1_ps(1e-6f))), _mm_cmpnlt_ps(cosine, zero));
+  alignas(16) float x[4], y[4], z[4], c[4], sn[4];
+  _mm_store_ps(x, _mm_and_ps(kept, ax)), _mm_store_ps(y, _mm_and_ps(kept, ay)), _mm_store_ps(z, _mm_and_ps(kept, az));
+  _mm_store_ps(c, select(kept, cosine, _mm_set1_ps(-1.0f))), _mm_store_ps(sn, _mm_and_ps(kept, sine));
+  for (int k = 0; k < 4; ++k)
+    if (lanes >> k & 1u) cones[k] = {{x[k], y[k], z[k]}, c[k], sn[k]};
+#else
+  for (int k = 0; k < 4; ++k)
+    if (lanes >> k & 1u) cones[k] = mergedCones(cones[k], others[k]);
+#endif
+}
+
+namespace {
+
+NormalCone merged(const NormalCone& a, const NormalCone& b) { return mergedCones(a, b); }
 
 // The cone of a triangle's normals at the start and the end of the step.
 NormalCone triangleCone(const glm::vec3& a0, const glm::vec3& b0, const glm::vec3& c0, const glm::vec3& a1,
@@ -97,19 +146,34 @@ std::vector<uint8_t> connectedNodes(const AabbTree& tree, size_t vertexCount, Ve
   return connected;
 }
 
-// Per leaf of `tree`: its primitives' normal cone (cone(p)), in parallel.
+// Per leaf of `tree`: its primitives' normal cone (cone(p)), four leaves at
+// a time (each merged in the order of its primitives), in parallel.
 template <class Cone>
 void findLeafCones(const AabbTree& tree, Cone&& cone, std::vector<NormalCone>& cones) {
   const size_t nodes = tree.nodeCount();
   cones.resize(nodes);
   inChunks(nodes, 256, [&](size_t i0, size_t i1) {
+    AabbTree::NodeInfo leaves[4];
+    size_t at[4], count = 0;
+    auto mergeLeaves = [&] {
+      NormalCone merging[4], next[4];
+      for (size_t k = 0; k < count; ++k) merging[k] = cone(tree.primitive(leaves[k].first));
+      for (uint32_t j = 1; j < 4; ++j) {
+        unsigned lanes = 0;
+        for (size_t k = 0; k < count; ++k)
+          if (j < leaves[k].count) next[k] = cone(tree.primitive(leaves[k].first + j)), lanes |= 1u << k;
+        if (lanes != 0) mergeFourCones(merging, next, lanes);
+      }
+      for (size_t k = 0; k < count; ++k) cones[at[k]] = merging[k];
+      count = 0;
+    };
     for (size_t i = i0; i < i1; ++i) {
       const AabbTree::NodeInfo node = tree.nodeInfo(i);
       if (node.left >= 0) continue;
-      cones[i] = cone(tree.primitive(node.first));
-      for (uint32_t k = node.first + 1; k < node.first + node.count; ++k)
-        cones[i] = merged(cones[i], cone(tree.primitive(k)));
+      leaves[count] = node, at[count++] = i;
+      if (count == 4) mergeLeaves();
     }
+    if (count > 0) mergeLeaves();
   });
 }
 
@@ -471,11 +535,22 @@ void SelfCollision::findFlatPatches(const ClothState& s, const std::vector<glm::
       triangleCones_[t] = triangleCone(x0[a], x0[b], x0[c], s.x[a], s.x[b], s.x[c]);
     }
   });
-  findLeafCones(edgeTree_, [&](uint32_t e) {
-    const auto [t0, t1] = edgeTriangles_[e];
-    if (t0 >= kNoTriangle - 1) return NormalCone{};
-    return t1 == kNoTriangle ? triangleCones_[t0] : merged(triangleCones_[t0], triangleCones_[t1]);
-  }, edgeNodeCones_);
+  // Each edge's cone (its triangles' cones merged), four edges at a time.
+  edgeCones_.resize(edges_.size());
+  inChunks(edges_.size(), 1024, [&](size_t e0, size_t e1) {
+    for (size_t e = e0; e < e1; e += 4) {
+      NormalCone cones[4], others[4];
+      unsigned lanes = 0;
+      for (size_t k = 0; k < 4 && e + k < e1; ++k) {
+        const auto [t0, t1] = edgeTriangles_[e + k];
+        if (t0 < kNoTriangle - 1) cones[k] = triangleCones_[t0];
+        if (t0 < kNoTriangle - 1 && t1 != kNoTriangle) others[k] = triangleCones_[t1], lanes |= 1u << k;
+      }
+      if (lanes != 0) mergeFourCones(cones, others, lanes);
+      std::copy_n(cones, std::min<size_t>(4, e1 - e), edgeCones_.begin() + e);
+    }
+  });
+  findLeafCones(edgeTree_, [&](uint32_t e) { return edgeCones_[e]; }, edgeNodeCones_);
   findLeafCones(tree_, [&](uint32_t t) { return triangleCones_[t]; }, nodeCones_);
   // The serial bottom-up and top-down sweeps of the two trees at once.
   ThreadPool::shared().parallelBlocks(2, [&](size_t which) {
@@ -592,8 +667,12 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     findConnectedPatches();
     stepsSinceBuild_ = 0;
   } else {
-    tree_.refit(boxes);
-    edgeTree_.refit(edgeBoxes);
+    ThreadPool::shared().parallelBlocks(2, [&](size_t which) {
+      if (which == 0)
+        edgeTree_.refit(edgeBoxes);
+      else
+        tree_.refit(boxes);
+    });
   }
   ++stepsSinceBuild_;
   // The swept boxes checked on each pair in the trees' order (read in sequence).
@@ -706,8 +785,12 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
         const AabbTree::NodeInfo info = tree_.nodeInfo(node);
         return group.placeFirst - info.first < info.count && group.placeFirst + group.placeCount - info.first <= info.count;
       };
-      tree_.queryPlaces(groupBox, [&](uint32_t place) {
-        for (uint32_t k = 0; k < count; ++k) testVertexTriangle(queries[k], place, out);
+      // Each vertex against a leaf's four boxes at once.
+      tree_.queryLeaves(groupBox, [&](int32_t leaf) {
+        const uint32_t first = tree_.nodeInfo(leaf).first;
+        for (uint32_t k = 0; k < count; ++k)
+          for (unsigned mask = tree_.leafOverlaps(leaf, queries[k].box); mask != 0; mask &= mask - 1)
+            testVertexTriangle(queries[k], first + uint32_t(__builtin_ctz(mask)), out);
       }, skipped);
     });
   }

@@ -44,6 +44,11 @@ struct NormalCone {
   glm::vec3 axis{0.0f};
   float cosine = -1.0f, sine = 0.0f;
 };
+// A cone that holds the normals of both (wide when either is).
+NormalCone mergedCones(const NormalCone& a, const NormalCone& b);
+// cones[k] = mergedCones(cones[k], others[k]) for the lanes k whose bit is
+// set, four at once (SSE: the same float operations, so the same cones).
+void mergeFourCones(NormalCone (&cones)[4], const NormalCone (&others)[4], unsigned lanes);
 
 // Where a part of the cloth is at the start of a step and how its vertices
 // move in the step: the boxes of their start positions and of their moves,
@@ -127,7 +132,7 @@ class SelfCollision {
   // flat patch, -1 if none. Two places are in one flat patch when they have
   // the same such node (a vertex's place: that of its triangle).
   std::vector<int32_t> topFlatNode_, topFlatEdgeNode_, topFlatPlace_, topFlatEdgePlace_;
-  std::vector<NormalCone> triangleCones_, nodeCones_, edgeNodeCones_;
+  std::vector<NormalCone> triangleCones_, edgeCones_, nodeCones_, edgeNodeCones_;
   // Per triangle and edge (in their trees' order), and per node of the trees.
   std::vector<NodeMotion> triangleMotions_, edgeMotions_, nodeMotions_, edgeNodeMotions_;
   // Per place of the edge tree, as columns (see EdgeColumns::resize).
