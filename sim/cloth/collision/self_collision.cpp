@@ -266,6 +266,37 @@ inline __m128 row(const glm::vec4& v) { return _mm_load_ps(&v.x); }
 // read back at once stalls on the store).
 inline __m128 row(const glm::vec3& p) { return _mm_setr_ps(p.x, p.y, p.z, 0.0f); }
 #endif
+
+// The box of an element's vertices at the start of the step (and at its end
+// when `end` is given) grown by `grow`: the box Box::extend makes, in registers.
+template <size_t N>
+Box grownBox(const std::array<uint32_t, N>& vertices, const std::vector<glm::vec3>& start,
+             const std::vector<glm::vec3>* end, float grow) {
+#ifdef __SSE2__
+  __m128 lo = row(start[vertices[0]]), hi = lo;
+  for (uint32_t v : vertices) {
+    const __m128 p = row(start[v]);
+    lo = _mm_min_ps(lo, p), hi = _mm_max_ps(hi, p);
+    if (end) {
+      const __m128 q = row((*end)[v]);
+      lo = _mm_min_ps(lo, q), hi = _mm_max_ps(hi, q);
+    }
+  }
+  const __m128 g = _mm_set1_ps(grow);
+  alignas(16) float low[4], high[4];
+  _mm_store_ps(low, _mm_sub_ps(lo, g)), _mm_store_ps(high, _mm_add_ps(hi, g));
+  return Box{{low[0], low[1], low[2]}, {high[0], high[1], high[2]}};
+#else
+  Box b;
+  for (uint32_t v : vertices) {
+    b.extend(start[v]);
+    if (end) b.extend((*end)[v]);
+  }
+  b.min -= glm::vec3(grow);
+  b.max += glm::vec3(grow);
+  return b;
+#endif
+}
 inline bool withinReach(const NodeMotion& a, const NodeMotion& b, float thickness) {
 #ifdef __SSE2__
   return withinReach(row(a.startMin), row(a.startMax), row(a.moveMin), row(a.moveMax), row(b.startMin),
@@ -621,10 +652,6 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     b.max += glm::vec3(grow);
     return b;
   };
-  auto triangleBox = [&](auto&& box, size_t t) {
-    return box({triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]});
-  };
-  auto edgeBox = [&](auto&& box, size_t e) { return box({edges_[e].first, edges_[e].second}); };
   auto extentSum = [](const std::vector<Box>& boxes) {
     double sum = 0.0;
     for (const Box& b : boxes) sum += double(b.max.x - b.min.x) + double(b.max.y - b.min.y) + double(b.max.z - b.min.z);
@@ -635,16 +662,25 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
   std::vector<Box> boxes(triangleCount), edgeBoxes(edges_.size()), sweptBoxes, sweptEdgeBoxes;
   if (swept) sweptBoxes.resize(triangleCount), sweptEdgeBoxes.resize(edges_.size());
   // In parallel (each element on its own: the same boxes).
+  // The same boxes as relativeBox() and sweptBox(), in registers.
+  auto relativeElementBox = [&](const auto& vertices) {
+    float grow = 0.0f;
+    for (uint32_t v : vertices) grow = std::max(grow, offMean[v]);
+    return grownBox(vertices, x0, nullptr, grow + 0.5f * thickness);
+  };
+  auto sweptElementBox = [&](const auto& vertices) { return grownBox(vertices, x0, &s.x, thickness); };
   inChunks(triangleCount, 4096, [&](size_t t0, size_t t1) {
     for (size_t t = t0; t < t1; ++t) {
-      boxes[t] = triangleBox(relativeBox, t);
-      if (swept) sweptBoxes[t] = triangleBox(sweptBox, t);
+      const std::array<uint32_t, 3> corners{triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]};
+      boxes[t] = relativeElementBox(corners);
+      if (swept) sweptBoxes[t] = sweptElementBox(corners);
     }
   });
   inChunks(edges_.size(), 4096, [&](size_t e0, size_t e1) {
     for (size_t e = e0; e < e1; ++e) {
-      edgeBoxes[e] = edgeBox(relativeBox, e);
-      if (swept) sweptEdgeBoxes[e] = edgeBox(sweptBox, e);
+      const std::array<uint32_t, 2> ends{edges_[e].first, edges_[e].second};
+      edgeBoxes[e] = relativeElementBox(ends);
+      if (swept) sweptEdgeBoxes[e] = sweptElementBox(ends);
     }
   });
   bool checkSwept = false;  // the trees hold relative boxes, candidates need swept ones to overlap
