@@ -56,8 +56,9 @@ inline __m128 select(__m128 when, __m128 yes, __m128 no) {
 }
 }  // namespace segment_reach_detail
 
-// Bit k set: lane k passes segmentsWithinReach.
-inline unsigned segmentsWithinReach(const Vec3x4& p0, const Vec3x4& p1, const Vec3x4& q0, const Vec3x4& q1,
+// Bit k set: lane k passes segmentsWithinReach. Inlined into its caller:
+// its lanes stay in registers.
+__attribute__((always_inline)) inline unsigned segmentsWithinReach(const Vec3x4& p0, const Vec3x4& p1, const Vec3x4& q0, const Vec3x4& q1,
                                     __m128 reach) {
   using namespace segment_reach_detail;
   const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f), half = _mm_set1_ps(0.5f);

@@ -207,11 +207,13 @@ void findTopFlatPlaces(const AabbTree& tree, const std::vector<uint8_t>& flat, s
   }
 }
 
-// Per place of `tree`: the value of the primitive there.
+// Per place of `tree`: the value of the primitive there (in parallel).
 template <class T>
 std::vector<T> placeOrdered(const AabbTree& tree, const std::vector<T>& byPrimitive) {
   std::vector<T> byPlace(byPrimitive.size());
-  for (uint32_t k = 0; k < byPlace.size(); ++k) byPlace[k] = byPrimitive[tree.primitive(k)];
+  inChunks(byPlace.size(), 4096, [&](size_t k0, size_t k1) {
+    for (size_t k = k0; k < k1; ++k) byPlace[k] = byPrimitive[tree.primitive(uint32_t(k))];
+  });
   return byPlace;
 }
 
