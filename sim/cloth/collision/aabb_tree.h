@@ -310,14 +310,15 @@ void AabbTree::pairsBetween(int32_t a, int32_t b, Visit& visit, SkipBetween& ski
       if (const unsigned mask = overlapMask(quad, leafBoxes_[i])) visit(i, nb.first, mask);
     return;
   }
-  // Split the node that is not a leaf (the larger when neither is).
+  // Split the node that is not a leaf (the larger when neither is); a
+  // child whose box misses the other node's is not entered (no call).
   const glm::vec3 ea = na.box.max - na.box.min, eb = nb.box.max - nb.box.min;
   if (nb.left < 0 || (na.left >= 0 && ea.x + ea.y + ea.z >= eb.x + eb.y + eb.z)) {
-    pairsBetween(na.left, b, visit, skipBetween);
-    pairsBetween(na.right, b, visit, skipBetween);
+    if (nodes_[na.left].box.overlaps(nb.box)) pairsBetween(na.left, b, visit, skipBetween);
+    if (nodes_[na.right].box.overlaps(nb.box)) pairsBetween(na.right, b, visit, skipBetween);
   } else {
-    pairsBetween(a, nb.left, visit, skipBetween);
-    pairsBetween(a, nb.right, visit, skipBetween);
+    if (na.box.overlaps(nodes_[nb.left].box)) pairsBetween(a, nb.left, visit, skipBetween);
+    if (na.box.overlaps(nodes_[nb.right].box)) pairsBetween(a, nb.right, visit, skipBetween);
   }
 }
 
