@@ -123,10 +123,11 @@ TEST(BodyFeatureContact, ClothBeyondAThinBodyPartIsLeftAlone) {
 
 // The trousers of the app test's scene, their panels as placed around the
 // default mannequin before sewing (flat, so the walking legs cross them),
-// swaying a little from frame to frame, against the legs over 24 frames of
-// the walk: the tree search (four-wide tree, refitted and rebuilt, tests
-// four body vertices at once) finds exactly the pairs of testing every body
-// vertex against every cloth triangle one at a time, in the same order.
+// swaying a little from frame to frame (and once widened), against the legs
+// over 24 frames of the walk: the tree search (a four-wide tree, refitted and
+// rebuilt; four body vertices tested at once) finds exactly the pairs of
+// testing every body vertex against every cloth triangle one at a time, in
+// the same order.
 TEST(BodyFeatureContact, TheTreeFindsThePairsOfTestingEveryTriangle) {
   const std::string file = std::string(MANNEQUIN_SOURCE_DIR) + "/tests/app/scenes/trousers_walk.json";
   const LoadedScene scene = openScene(file);
@@ -157,6 +158,9 @@ TEST(BodyFeatureContact, TheTreeFindsThePairsOfTestingEveryTriangle) {
     for (size_t i = 0; i < cloth.size(); ++i)
       cloth.x[i] += 0.003f * glm::vec3(std::sin(0.7f * float(frame) + 0.01f * float(i)), 0.0f,
                                        std::cos(0.5f * float(frame) + 0.02f * float(i)));
+    // Once the cloth 40% wider: its tree is rebuilt.
+    if (frame == 12)
+      for (glm::vec3& x : cloth.x) x *= glm::vec3(1.4f, 1.0f, 1.4f);
     ClothState clothToo = cloth;
     const int found = tree.resolve(cloth, body, thickness, touched, 1, 2);
     EXPECT_EQ(found, everyTriangle.resolve(clothToo, body, thickness, touchedToo, 1, 2)) << "frame " << frame;

@@ -104,14 +104,8 @@ BodyFeatureContact::BodyFeatureContact(const std::vector<uint32_t>& clothTriangl
 
 void BodyFeatureContact::prepareBody(const BodyCollider& body) {
   const std::vector<uint32_t>& triangles = body.triangles();
-  if (triangles.size() == bodyTriangleCount_ && ringStart_.size() == body.positions().size() + 1) return;
+  if (triangles.size() == bodyTriangleCount_ && clusterOrder_.size() == body.positions().size()) return;
   const size_t n = body.positions().size();
-  ringStart_.assign(n + 1, 0);
-  for (uint32_t v : triangles) ++ringStart_[v + 1];
-  for (size_t v = 0; v < n; ++v) ringStart_[v + 1] += ringStart_[v];
-  ringTriangles_.resize(triangles.size());
-  std::vector<uint32_t> fill(ringStart_.begin(), ringStart_.end() - 1);
-  for (size_t e = 0; e < triangles.size(); ++e) ringTriangles_[fill[triangles[e]]++] = uint32_t(e / 3);
   bodyTriangleCount_ = triangles.size();
   // Body vertices in Morton order of the pose now, so each run of
   // kClusterSize is a compact patch (skinning keeps it one) that shares one
@@ -127,6 +121,20 @@ void BodyFeatureContact::prepareBody(const BodyCollider& body) {
   std::sort(keyed.begin(), keyed.end());
   clusterOrder_.resize(n);
   for (size_t k = 0; k < n; ++k) clusterOrder_[k] = keyed[k].second;
+  // Each vertex's triangles in increasing order (the order of the normal's sum).
+  std::vector<uint32_t> start(n + 1, 0);
+  for (uint32_t v : triangles) ++start[v + 1];
+  for (size_t v = 0; v < n; ++v) start[v + 1] += start[v];
+  std::vector<uint32_t> around(triangles.size());
+  std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+  for (size_t e = 0; e < triangles.size(); ++e) around[fill[triangles[e]]++] = uint32_t(e / 3);
+  ringStart_.assign(1, 0);
+  ringCorners_.clear();
+  for (const uint32_t v : clusterOrder_) {
+    for (uint32_t k = start[v]; k < start[v + 1]; ++k)
+      ringCorners_.emplace_back(triangles[3 * around[k]], triangles[3 * around[k] + 1], triangles[3 * around[k] + 2]);
+    ringStart_.push_back(uint32_t(ringCorners_.size()));
+  }
 }
 
 void BodyFeatureContact::updateTriangles(const ClothState& s, float thickness) {
@@ -153,12 +161,11 @@ void BodyFeatureContact::updateTriangles(const ClothState& s, float thickness) {
       boxes[t].extend(c);
     }
   });
-  if (callsSinceBuild_ >= kRebuildEvery || nodes_.empty()) {
+  if (search_ != Search::Tree) return;
+  if (nodes_.empty() || refitTree() > kRebuildGrowth * builtSize_) {
     buildTree();
-    callsSinceBuild_ = 0;
+    builtSize_ = refitTree();
   }
-  refitTree();
-  ++callsSinceBuild_;
 }
 
 void BodyFeatureContact::buildTree() {
@@ -201,7 +208,8 @@ int32_t BodyFeatureContact::buildNode(std::vector<uint32_t>& order, uint32_t fir
   return index;
 }
 
-void BodyFeatureContact::refitTree() {
+float BodyFeatureContact::refitTree() {
+  float size = 0.0f;
   // Children follow their parent, so a reverse sweep is bottom-up.
   for (size_t i = nodes_.size(); i-- > 0;) {
     TreeNode& n = nodes_[i];
@@ -210,12 +218,15 @@ void BodyFeatureContact::refitTree() {
       if (n.child[k] >= 0) {
         const TreeNode& c = nodes_[n.child[k]];
         for (int j = 0; j < 4; ++j) b.extend(Box{{c.lo[0][j], c.lo[1][j], c.lo[2][j]}, {c.hi[0][j], c.hi[1][j], c.hi[2][j]}});
+        const glm::vec3 extent = b.max - b.min;
+        size += extent.x + extent.y + extent.z;
       } else if (n.child[k] != kNoChild) {
         b = boxes_[uint32_t(~n.child[k])];
       }
       for (int axis = 0; axis < 3; ++axis) n.lo[axis][k] = b.min[axis], n.hi[axis][k] = b.max[axis];
     }
   }
+  return size;
 }
 
 template <class Visit>
@@ -238,7 +249,7 @@ void BodyFeatureContact::forTrianglesOverlapping(const Box& box, Visit&& visit) 
 
 // The same arithmetic, in the same order, as the scalar tests with glm would
 // do (no fused multiply-add on the baseline x86-64), so the same pairs pass.
-unsigned BodyFeatureContact::nearMask(const float (&run)[3][4], int count, uint32_t t) const {
+[[gnu::always_inline]] inline unsigned BodyFeatureContact::nearMask(const float (&run)[3][4], int count, uint32_t t) const {
   const Plane& plane = planes_[t];
   const float ball = plane.reach + maxDepth_;
 #ifdef __SSE2__
@@ -284,13 +295,12 @@ std::vector<BodyFeatureContact::Contact> BodyFeatureContact::findContacts(const 
                                                                           const BodyCollider& body,
                                                                           float thickness) const {
   const std::vector<glm::vec3>& bodyX = body.positions();
-  const std::vector<uint32_t>& bodyTriangles = body.triangles();
   const float gap = kGapFraction * thickness, keep = gap + kReapplyMargin * thickness;
-  // Area-weighted outward unit normal of body vertex v.
-  auto outward = [&](uint32_t v) {
+  // Area-weighted outward unit normal of the body vertex at `place` in clusterOrder_.
+  auto outward = [&](size_t place) {
     glm::vec3 sum(0.0f);
-    for (uint32_t k = ringStart_[v]; k < ringStart_[v + 1]; ++k) {
-      const uint32_t* t = &bodyTriangles[3 * ringTriangles_[k]];
+    for (uint32_t k = ringStart_[place]; k < ringStart_[place + 1]; ++k) {
+      const glm::uvec3& t = ringCorners_[k];
       sum += glm::cross(bodyX[t[1]] - bodyX[t[0]], bodyX[t[2]] - bodyX[t[0]]);
     }
     const float l = glm::length(sum);
@@ -339,7 +349,7 @@ std::vector<BodyFeatureContact::Contact> BodyFeatureContact::findContacts(const 
           const uint32_t t = entry >> 4;
           const Plane& plane = planes_[t];
           const float above = plane.offset - glm::dot(plane.normal, p);  // the plane seen from p, along its normal
-          if (!normalKnown) bodyNormal = outward(v), normalKnown = true;
+          if (!normalKnown) bodyNormal = outward(begin + i), normalKnown = true;
           const float alignment = glm::dot(plane.normal, bodyNormal);
           if (std::abs(alignment) < kMinAlignment) continue;
           const float side = alignment > 0.0f ? 1.0f : -1.0f;

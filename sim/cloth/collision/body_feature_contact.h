@@ -103,7 +103,8 @@ class BodyFeatureContact {
   static constexpr int32_t kNoChild = INT32_MIN;
   void buildTree();
   int32_t buildNode(std::vector<uint32_t>& order, uint32_t first, uint32_t count, const std::vector<glm::vec3>& centres);
-  void refitTree();
+  // Returns the sum of the half-perimeters of the boxes of the tree's nodes.
+  float refitTree();
   // Calls visit(triangle) for the triangles whose boxes overlap `box`.
   template <class Visit>
   void forTrianglesOverlapping(const Box& box, Visit&& visit) const;
@@ -119,10 +120,15 @@ class BodyFeatureContact {
   std::vector<Plane> planes_;
   std::vector<Box> boxes_;  // the triangles' boxes now
   std::vector<TreeNode> nodes_;
-  static constexpr int kRebuildEvery = 16;  // calls between tree rebuilds (refitted in between)
-  int callsSinceBuild_ = 0;
-  // Body vertex -> its triangles (CSR), for outward vertex normals.
-  std::vector<uint32_t> ringStart_, ringTriangles_;
+  // The tree is refitted every call and rebuilt when its nodes' boxes have
+  // grown by this factor since it was built (their sum of half-perimeters):
+  // cloth keeps its neighbours, so a refitted tree stays good for long.
+  static constexpr float kRebuildGrowth = 1.25f;
+  float builtSize_ = 0.0f;
+  // The corners of the body's triangles around each body vertex, for its
+  // outward normal (CSR, the vertices in clusterOrder_'s order: read in sequence).
+  std::vector<uint32_t> ringStart_;
+  std::vector<glm::uvec3> ringCorners_;
   std::vector<uint32_t> clusterOrder_;  // body vertices, runs of nearby ones
   size_t bodyTriangleCount_ = 0;
 };
