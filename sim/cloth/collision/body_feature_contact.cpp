@@ -139,20 +139,16 @@ void BodyFeatureContact::prepareBody(const BodyCollider& body) {
 
 void BodyFeatureContact::updateTriangles(const ClothState& s, float thickness) {
   const size_t count = triangles_.size() / 3;
-  if (triangleAt_.size() != count) {
-    triangleAt_.resize(count);
-    for (uint32_t t = 0; t < count; ++t) triangleAt_[t] = t;
-  }
   planes_.resize(count);
-  boxes_.resize(count);
+  boxes_.assign(count, Box{});
+  std::vector<Box>& boxes = boxes_;
   // Each triangle on its own: in parallel.
-  auto measure = [&](size_t begin, size_t end) {
-    for (size_t place = begin; place < end; ++place) {
-      const uint32_t t = triangleAt_[place];
+  forRange(count, [&](size_t begin, size_t end) {
+    for (size_t t = begin; t < end; ++t) {
       const glm::vec3 &a = s.x[triangles_[3 * t]], &b = s.x[triangles_[3 * t + 1]], &c = s.x[triangles_[3 * t + 2]];
       const glm::vec3 normal = glm::cross(b - a, c - a);
       const float length = glm::length(normal);
-      Plane& plane = planes_[place];
+      Plane& plane = planes_[t];
       plane.normal = length > 0.0f ? normal / length : glm::vec3(0.0f);
       plane.offset = glm::dot(plane.normal, a);
       plane.centroid = (a + b + c) / 3.0f;
@@ -160,18 +156,14 @@ void BodyFeatureContact::updateTriangles(const ClothState& s, float thickness) {
                                  glm::dot(b - plane.centroid, b - plane.centroid),
                                  glm::dot(c - plane.centroid, c - plane.centroid)});
       plane.reach = std::sqrt(r2) + thickness;
-      Box& box = boxes_[place];
-      box = Box{};
-      box.extend(a);
-      box.extend(b);
-      box.extend(c);
+      boxes[t].extend(a);
+      boxes[t].extend(b);
+      boxes[t].extend(c);
     }
-  };
-  forRange(count, measure);
+  });
   if (search_ != Search::Tree) return;
   if (nodes_.empty() || refitTree() > kRebuildGrowth * builtSize_) {
-    buildTree();  // new places
-    forRange(count, measure);
+    buildTree();
     builtSize_ = refitTree();
   }
 }
@@ -180,14 +172,11 @@ void BodyFeatureContact::buildTree() {
   nodes_.clear();
   if (boxes_.empty()) return;
   std::vector<glm::vec3> centres(boxes_.size());
-  for (size_t place = 0; place < boxes_.size(); ++place)
-    centres[triangleAt_[place]] = 0.5f * (boxes_[place].min + boxes_[place].max);
+  for (size_t t = 0; t < boxes_.size(); ++t) centres[t] = 0.5f * (boxes_[t].min + boxes_[t].max);
   std::vector<uint32_t> order(boxes_.size());
   for (uint32_t t = 0; t < order.size(); ++t) order[t] = t;
   nodes_.reserve(boxes_.size() / 2 + 1);
   buildNode(order, 0, uint32_t(order.size()), centres);
-  // A node's triangles are one after the other in `order`, at its slots' places.
-  triangleAt_ = order;
 }
 
 int32_t BodyFeatureContact::buildNode(std::vector<uint32_t>& order, uint32_t first, uint32_t count,
@@ -214,7 +203,7 @@ int32_t BodyFeatureContact::buildNode(std::vector<uint32_t>& order, uint32_t fir
   }
   int32_t children[4] = {kNoChild, kNoChild, kNoChild, kNoChild};
   for (int g = 0; g < groups; ++g)
-    children[g] = groupCount[g] == 1 ? ~int32_t(groupFirst[g]) : buildNode(order, groupFirst[g], groupCount[g], centres);
+    children[g] = groupCount[g] == 1 ? ~int32_t(order[groupFirst[g]]) : buildNode(order, groupFirst[g], groupCount[g], centres);
   std::copy(children, children + 4, nodes_[index].child);
   return index;
 }
@@ -260,8 +249,8 @@ void BodyFeatureContact::forTrianglesOverlapping(const Box& box, Visit&& visit) 
 
 // The same arithmetic, in the same order, as the scalar tests with glm would
 // do (no fused multiply-add on the baseline x86-64), so the same pairs pass.
-[[gnu::always_inline]] inline unsigned BodyFeatureContact::nearMask(const float (&run)[3][4], int count, uint32_t place) const {
-  const Plane& plane = planes_[place];
+[[gnu::always_inline]] inline unsigned BodyFeatureContact::nearMask(const float (&run)[3][4], int count, uint32_t t) const {
+  const Plane& plane = planes_[t];
   const float ball = plane.reach + maxDepth_;
 #ifdef __SSE2__
   const __m128 px = _mm_load_ps(run[0]), py = _mm_load_ps(run[1]), pz = _mm_load_ps(run[2]);
@@ -282,12 +271,12 @@ void BodyFeatureContact::forTrianglesOverlapping(const Box& box, Visit&& visit) 
   const unsigned all = unsigned(_mm_movemask_ps(_mm_and_ps(_mm_and_ps(inBall, nearPlane), inCircle)));
   return all & ((1u << count) - 1);
 #else
-  return nearMaskScalar(run, count, place);
+  return nearMaskScalar(run, count, t);
 #endif
 }
 
-unsigned BodyFeatureContact::nearMaskScalar(const float (&run)[3][4], int count, uint32_t place) const {
-  const Plane& plane = planes_[place];
+unsigned BodyFeatureContact::nearMaskScalar(const float (&run)[3][4], int count, uint32_t t) const {
+  const Plane& plane = planes_[t];
   const float ball = plane.reach + maxDepth_;
   unsigned mask = 0;
   for (int k = 0; k < count; ++k) {
@@ -322,11 +311,8 @@ std::vector<BodyFeatureContact::Contact> BodyFeatureContact::findContacts(const 
   std::vector<std::vector<Contact>> blocks(kBlocks);
   auto scan = [&](size_t block) {
     std::vector<Contact>& out = blocks[block];
-    // The triangles near some vertex of the run: triangle << 32 | place << 4 | the vertices' bits.
-    std::vector<uint64_t> near;
-    auto add = [&](uint32_t place, unsigned mask) {
-      if (mask != 0) near.push_back(uint64_t(triangleAt_[place]) << 32 | uint64_t(place) << 4 | mask);
-    };
+    // The triangles near some vertex of the run: index << 4 | the vertices' bits.
+    std::vector<uint32_t> near;
     for (size_t k = block * blockSize; k < std::min(clusters, (block + 1) * blockSize); ++k) {
       const size_t begin = k * kClusterSize, end = std::min(bodyX.size(), begin + kClusterSize);
       const int count = int(end - begin);
@@ -341,10 +327,13 @@ std::vector<BodyFeatureContact::Contact> BodyFeatureContact::findContacts(const 
       box.max += glm::vec3(maxDepth_);
       near.clear();
       if (search_ == Search::Tree) {
-        forTrianglesOverlapping(box, [&](uint32_t place) { add(place, nearMask(run, count, place)); });
+        forTrianglesOverlapping(box, [&](uint32_t t) {
+          if (const unsigned mask = nearMask(run, count, t)) near.push_back(t << 4 | mask);
+        });
       } else {
-        for (uint32_t place = 0; place < boxes_.size(); ++place)
-          if (boxes_[place].overlaps(box)) add(place, nearMaskScalar(run, count, place));
+        for (uint32_t t = 0; t < boxes_.size(); ++t)
+          if (boxes_[t].overlaps(box))
+            if (const unsigned mask = nearMaskScalar(run, count, t)) near.push_back(t << 4 | mask);
       }
       if (near.empty()) continue;
       std::sort(near.begin(), near.end());  // by triangle: the tree's order depends on the boxes
@@ -353,12 +342,12 @@ std::vector<BodyFeatureContact::Contact> BodyFeatureContact::findContacts(const 
         const glm::vec3 p = bodyX[v];
         glm::vec3 bodyNormal(0.0f);
         bool normalKnown = false;
-        for (const uint64_t entry : near) {
+        for (const uint32_t entry : near) {
           if (!(entry & (1u << i))) continue;
           // p is within the depth of the triangle's bounding ball, of its
           // plane, and p's foot on the plane within its circle (nearMask()).
-          const uint32_t t = uint32_t(entry >> 32);
-          const Plane& plane = planes_[uint32_t(entry) >> 4];
+          const uint32_t t = entry >> 4;
+          const Plane& plane = planes_[t];
           const float above = plane.offset - glm::dot(plane.normal, p);  // the plane seen from p, along its normal
           if (!normalKnown) bodyNormal = outward(begin + i), normalKnown = true;
           const float alignment = glm::dot(plane.normal, bodyNormal);

@@ -98,31 +98,27 @@ class BodyFeatureContact {
   // a triangle. Built by median splits, children after their parent.
   struct alignas(16) TreeNode {
     float lo[3][4], hi[3][4];  // the children's boxes: [axis][child]
-    int32_t child[4];  // >= 0: a node; kNoChild: empty (its box is empty); otherwise the triangle at place ~child
+    int32_t child[4];  // >= 0: a node; kNoChild: empty (its box is empty); otherwise triangle ~child
   };
   static constexpr int32_t kNoChild = INT32_MIN;
   void buildTree();
   int32_t buildNode(std::vector<uint32_t>& order, uint32_t first, uint32_t count, const std::vector<glm::vec3>& centres);
   // Returns the sum of the half-perimeters of the boxes of the tree's nodes.
   float refitTree();
-  // Calls visit(place) for the triangles whose boxes overlap `box`.
+  // Calls visit(triangle) for the triangles whose boxes overlap `box`.
   template <class Visit>
   void forTrianglesOverlapping(const Box& box, Visit&& visit) const;
   // Bit k set: body vertex k of the run passes the ball, plane and circle
-  // tests of the triangle at `place` (k < count).
-  unsigned nearMask(const float (&run)[3][4], int count, uint32_t place) const;
-  unsigned nearMaskScalar(const float (&run)[3][4], int count, uint32_t place) const;
+  // tests of triangle t (k < count).
+  unsigned nearMask(const float (&run)[3][4], int count, uint32_t t) const;
+  unsigned nearMaskScalar(const float (&run)[3][4], int count, uint32_t t) const;
 
   Search search_;
   std::vector<uint32_t> triangles_;
   std::vector<Contact> contacts_;  // of the last resolve()
   float maxDepth_ = kMaxDepth;
-  // The triangles' planes and boxes now, by place: the triangles in the
-  // order of the tree's slots (a node's triangles side by side), or their
-  // own order without the tree.
-  std::vector<uint32_t> triangleAt_;  // place -> triangle
   std::vector<Plane> planes_;
-  std::vector<Box> boxes_;
+  std::vector<Box> boxes_;  // the triangles' boxes now
   std::vector<TreeNode> nodes_;
   // The tree is refitted every call and rebuilt when its nodes' boxes have
   // grown by this factor since it was built (their sum of half-perimeters):
