@@ -72,9 +72,11 @@ unsigned overlapMask(const float (&lo)[3][4], const float (&hi)[3][4], const Box
 
 // Splits order[first, first + count) at its middle along the longest axis of
 // the centres; returns the size of the first part.
-uint32_t medianSplit(std::vector<uint32_t>& order, uint32_t first, uint32_t count, const std::vector<glm::vec3>& centres) {
+uint32_t medianSplit(std::vector<uint32_t>& order, uint32_t first, uint32_t count,
+                     const std::vector<glm::vec3>& centres) {
   glm::vec3 lo(1e30f), hi(-1e30f);
-  for (uint32_t k = first; k < first + count; ++k) lo = glm::min(lo, centres[order[k]]), hi = glm::max(hi, centres[order[k]]);
+  for (uint32_t k = first; k < first + count; ++k)
+    lo = glm::min(lo, centres[order[k]]), hi = glm::max(hi, centres[order[k]]);
   const glm::vec3 extent = hi - lo;
   const int axis = extent.x > extent.y ? (extent.x > extent.z ? 0 : 2) : (extent.y > extent.z ? 1 : 2);
   const uint32_t half = count / 2;
@@ -203,7 +205,8 @@ int32_t BodyFeatureContact::buildNode(std::vector<uint32_t>& order, uint32_t fir
   }
   int32_t children[4] = {kNoChild, kNoChild, kNoChild, kNoChild};
   for (int g = 0; g < groups; ++g)
-    children[g] = groupCount[g] == 1 ? ~int32_t(order[groupFirst[g]]) : buildNode(order, groupFirst[g], groupCount[g], centres);
+    children[g] = groupCount[g] == 1 ? ~int32_t(order[groupFirst[g]])
+                                     : buildNode(order, groupFirst[g], groupCount[g], centres);
   std::copy(children, children + 4, nodes_[index].child);
   return index;
 }
@@ -217,7 +220,8 @@ float BodyFeatureContact::refitTree() {
       Box b;
       if (n.child[k] >= 0) {
         const TreeNode& c = nodes_[n.child[k]];
-        for (int j = 0; j < 4; ++j) b.extend(Box{{c.lo[0][j], c.lo[1][j], c.lo[2][j]}, {c.hi[0][j], c.hi[1][j], c.hi[2][j]}});
+        for (int j = 0; j < 4; ++j)
+          b.extend(Box{{c.lo[0][j], c.lo[1][j], c.lo[2][j]}, {c.hi[0][j], c.hi[1][j], c.hi[2][j]}});
         const glm::vec3 extent = b.max - b.min;
         size += extent.x + extent.y + extent.z;
       } else if (n.child[k] != kNoChild) {
@@ -249,7 +253,8 @@ void BodyFeatureContact::forTrianglesOverlapping(const Box& box, Visit&& visit) 
 
 // The same arithmetic, in the same order, as the scalar tests with glm would
 // do (no fused multiply-add on the baseline x86-64), so the same pairs pass.
-[[gnu::always_inline]] inline unsigned BodyFeatureContact::nearMask(const float (&run)[3][4], int count, uint32_t t) const {
+[[gnu::always_inline]] inline unsigned BodyFeatureContact::nearMask(const float (&run)[3][4], int count,
+                                                                    uint32_t t) const {
   const Plane& plane = planes_[t];
   const float ball = plane.reach + maxDepth_;
 #ifdef __SSE2__

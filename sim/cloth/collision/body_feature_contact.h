@@ -8,23 +8,24 @@
 //
 // Candidates: the body's vertices, in runs of four nearby ones (Morton
 // order), against a 4-wide BVH over the cloth's triangles (refitted every
-// call, rebuilt now and then); each triangle the run's box meets gets cheap
-// ball, plane and circle tests against the four vertices at once (SSE). The cloth belongs
-// outside the body, so "out" for a triangle is the side the body vertex's
-// outward normal points to; a triangle whose point under the vertex lies
-// behind it by up to maxDepth() (unless that point is outside the body
-// beyond a surface facing the other way: cloth beyond a thin body part) or in
-// front of it by less than half the thickness is pushed along its normal
-// until that point is half the thickness in front of the body vertex. The
-// push is shared by the triangle's vertices by barycentric weight and inverse
-// mass, so the point under the body vertex moves that far (Bridson, Fedkiw
-// and Anderson 2002; no vertex more than 4 times that), and the approaching
-// normal velocity relative to the body is removed the same way. Contacts are
-// found in parallel and applied in a fixed order, Gauss-Seidel:
-// deterministic. The simulator calls it after the vertex contacts, before the
-// final elongation limit, which holds the vertices of pierced triangles like
-// those a moving body part swept along; when that fails, reapply() pushes the
-// same pairs out again between the rounds of the limit.
+// call, rebuilt when it has grown loose); each triangle the run's box meets
+// gets cheap ball, plane and circle tests against the four vertices at once
+// (SSE). The cloth belongs outside the body, so "out" for a triangle is the
+// side the body vertex's outward normal points to; a triangle whose point
+// under the vertex lies behind it by up to maxDepth() (unless that point is
+// outside the body beyond a surface facing the other way: cloth beyond a
+// thin body part) or in front of it by less than half the thickness is pushed
+// along its normal until that point is half the thickness in front of the
+// body vertex. The push is shared by the triangle's vertices by barycentric
+// weight and inverse mass, so the point under the body vertex moves that far
+// (Bridson, Fedkiw and Anderson 2002; no vertex more than 4 times that), and
+// the approaching normal velocity relative to the body is removed the same
+// way. Contacts are found in parallel and applied in a fixed order,
+// Gauss-Seidel: deterministic. The simulator calls it after the vertex
+// contacts, before the final elongation limit, which holds the vertices of
+// pierced triangles like those a moving body part swept along; when that
+// fails, reapply() pushes the same pairs out again between the rounds of the
+// limit.
 
 #include <cstdint>
 #include <vector>
@@ -102,7 +103,8 @@ class BodyFeatureContact {
   };
   static constexpr int32_t kNoChild = INT32_MIN;
   void buildTree();
-  int32_t buildNode(std::vector<uint32_t>& order, uint32_t first, uint32_t count, const std::vector<glm::vec3>& centres);
+  int32_t buildNode(std::vector<uint32_t>& order, uint32_t first, uint32_t count,
+                    const std::vector<glm::vec3>& centres);
   // Returns the sum of the half-perimeters of the boxes of the tree's nodes.
   float refitTree();
   // Calls visit(triangle) for the triangles whose boxes overlap `box`.
