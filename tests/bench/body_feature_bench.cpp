@@ -6,7 +6,8 @@
 //  - Arg(0): at the rest pose (the shirt resting on it), or
 //  - Arg(1): 0.3 s into the walk, reached over one frame (the arms swung
 //    through the sleeves: pierced triangles, moving body vertices).
-// The tree over the cloth is rebuilt every few calls, as in a simulation.
+// Each iteration resolves a fresh copy of the same state (the tree over the
+// cloth refitted, as every call of a simulation).
 //
 //   mannequin-bench --benchmark_filter=BodyFeature
 #include <benchmark/benchmark.h>
