@@ -7,7 +7,12 @@
 #include <optional>
 
 #include "cloth_test_scenes.h"
+#include "core/character/posed_character.h"
+#include "core/garment/garment_json.h"
+#include "core/scene/open_scene.h"
+#include "sim/cloth/cloth_scene_io.h"
 #include "sim/cloth/collision/body_feature_contact.h"
+#include "sim/garment/garment_scene.h"
 
 namespace mq::cloth {
 namespace {
@@ -114,6 +119,61 @@ TEST(BodyFeatureContact, ClothBeyondAThinBodyPartIsLeftAlone) {
   const std::optional<float> cloth = clothHeightAt(sim, 0.07f, 0.06f);  // under a top corner
   ASSERT_TRUE(cloth.has_value());
   EXPECT_LT(*cloth, bottom);
+}
+
+// The trousers of the app test's scene, their panels as placed around the
+// default mannequin before sewing (flat, so the walking legs cross them),
+// swaying a little from frame to frame (and once widened), against the legs
+// over 24 frames of the walk: the tree search (a four-wide tree, refitted and
+// rebuilt; four body vertices tested at once) finds exactly the pairs of
+// testing every body vertex against every cloth triangle one at a time, in
+// the same order.
+TEST(BodyFeatureContact, TheTreeFindsThePairsOfTestingEveryTriangle) {
+  const std::string file = std::string(MANNEQUIN_SOURCE_DIR) + "/tests/app/scenes/trousers_walk.json";
+  const LoadedScene scene = openScene(file);
+  const std::vector<Garment> garments = garmentsFromJson(scene.document.garments);
+  const ClothSceneSpec spec = parseClothScene(scene.document.cloth, scene.document.colliders, file, true);
+  ASSERT_EQ(garments.size(), 1u);
+  ASSERT_GE(scene.clipIndex, 0);
+  PosedCharacter posed;
+  posed.evaluate(scene.character, -1, 0.0f, &scene.edits, nullptr);
+  const std::vector<float> rest = concatenatedPositions(posed.meshes());
+  const std::vector<uint32_t> bodyTriangles = concatenatedTriangles(scene.character);
+  const auto garment = makeGarmentSimulation(garments[0], spec, rest, bodyTriangles, "garments[0]");
+  const ClothState placed = garment->simulator().state();
+  const std::vector<uint32_t>& triangles = garment->simulator().triangles();
+  const float thickness = garment->simulator().settings().collisionThickness, dt = 1.0f / spec.fps;
+
+  BodyFeatureContact tree(triangles, placed.x), everyTriangle(triangles, placed.x,
+                                                               BodyFeatureContact::Search::EveryTriangle);
+  BodyCollider body;
+  body.setMesh(rest, bodyTriangles, 0.02f);
+  ClothState cloth = placed;
+  std::vector<uint8_t> touched(cloth.size(), 0), touchedToo(cloth.size(), 0);
+  size_t pairs = 0, pierced = 0;
+  for (int frame = 0; frame < 24; ++frame) {
+    posed.evaluate(scene.character, scene.clipIndex, float(frame) * dt, &scene.edits, nullptr);
+    body.setTarget(concatenatedPositions(posed.meshes()), dt);
+    body.moveTo(1.0f);
+    for (size_t i = 0; i < cloth.size(); ++i)
+      cloth.x[i] += 0.003f * glm::vec3(std::sin(0.7f * float(frame) + 0.01f * float(i)), 0.0f,
+                                       std::cos(0.5f * float(frame) + 0.02f * float(i)));
+    // Once the cloth 40% wider: its tree is rebuilt.
+    if (frame == 12)
+      for (glm::vec3& x : cloth.x) x *= glm::vec3(1.4f, 1.0f, 1.4f);
+    ClothState clothToo = cloth;
+    const int found = tree.resolve(cloth, body, thickness, touched, 1, 2);
+    EXPECT_EQ(found, everyTriangle.resolve(clothToo, body, thickness, touchedToo, 1, 2)) << "frame " << frame;
+    const std::vector<BodyFeatureContact::Pair> got = tree.lastPairs();
+    ASSERT_TRUE(got == everyTriangle.lastPairs()) << "frame " << frame;
+    EXPECT_TRUE(cloth.x == clothToo.x) << "frame " << frame;
+    pairs += got.size();
+    for (const auto& p : got) pierced += p.pierced ? 1 : 0;
+  }
+  // Not a vacuous comparison: pairs in front of body vertices and pierced ones.
+  EXPECT_GT(pairs - pierced, 100u);
+  EXPECT_GT(pierced, 20u);
+  std::printf("%zu pairs, %zu pierced\n", pairs, pierced);
 }
 
 }  // namespace

@@ -30,7 +30,40 @@ void AabbTree::build(const std::vector<Box>& boxes) {
   centres_.resize(count);
   for (uint32_t t = 0; t < count; ++t) centres_[t] = boxes[t].min + boxes[t].max;
   if (count > 0) buildNode(0, count, boxes);
+  grandNodes_.clear();
+  if (count > 0 && nodes_[0].left >= 0) buildGrandNode(0);
   gatherLeafBoxes(boxes);
+}
+
+int32_t AabbTree::buildGrandNode(int32_t node) {
+  const int32_t index = int32_t(grandNodes_.size());
+  grandNodes_.emplace_back();
+  int32_t lanes[4] = {-1, -1, -1, -1};
+  int count = 0;
+  for (int32_t child : {nodes_[node].left, nodes_[node].right}) {
+    if (nodes_[child].left < 0) {
+      lanes[count++] = child;
+    } else {
+      lanes[count++] = nodes_[child].left;
+      lanes[count++] = nodes_[child].right;
+    }
+  }
+  for (int k = 0; k < 4; ++k) {
+    const int32_t lane = lanes[k];
+    const int32_t below = lane >= 0 && nodes_[lane].left >= 0 ? buildGrandNode(lane) : -1;
+    grandNodes_[index].node[k] = lane;  // after the recursion: it may move grandNodes_
+    grandNodes_[index].below[k] = below;
+  }
+  return index;
+}
+
+void AabbTree::gatherGrandBoxes() {
+  for (GrandNode& g : grandNodes_)
+    for (int k = 0; k < 4; ++k) {
+      const Box b = g.node[k] >= 0 ? nodes_[g.node[k]].box : Box{};
+      g.boxes.minX[k] = b.min.x, g.boxes.minY[k] = b.min.y, g.boxes.minZ[k] = b.min.z;
+      g.boxes.maxX[k] = b.max.x, g.boxes.maxY[k] = b.max.y, g.boxes.maxZ[k] = b.max.z;
+    }
 }
 
 void AabbTree::gatherLeafBoxes(const std::vector<Box>& boxes) {
@@ -45,6 +78,7 @@ void AabbTree::gatherLeafBoxes(const std::vector<Box>& boxes) {
       q.maxX[k] = b.max.x, q.maxY[k] = b.max.y, q.maxZ[k] = b.max.z;
     }
   }
+  gatherGrandBoxes();
 }
 
 int32_t AabbTree::buildNode(uint32_t first, uint32_t count, const std::vector<Box>& boxes) {

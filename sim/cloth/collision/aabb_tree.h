@@ -2,7 +2,8 @@
 // A bounding volume hierarchy over primitives given by their boxes (triangles,
 // or triangles swept over a time step): built by median splits on the longest
 // axis, refitted bottom-up when the primitives move (the topology of a skinned
-// body or a cloth never changes).
+// body or a cloth never changes). Queries can walk it two levels at a time:
+// each inner node's grandchildren's boxes kept side by side, tested at once.
 
 #include <cstdint>
 #include <functional>
@@ -43,6 +44,14 @@ class AabbTree {
   // The same, but visit(k) is given the primitive's place k (see primitive()).
   template <class Visit, class Skip>
   void queryPlaces(const Box& box, Visit&& visit, Skip&& skip) const;
+  // The leaves whose box overlaps `box`: visitLeaf(leaf), the node of a
+  // leaf (see nodeInfo(), leafOverlaps()). The tree is walked two levels at
+  // a time (a node's grandchildren's boxes tested at once), and skip(node)
+  // is asked only of those: it may leave out less than with query().
+  template <class VisitLeaf, class Skip>
+  void queryLeaves(const Box& box, VisitLeaf&& visitLeaf, Skip&& skip) const;
+  // Bit k set: the box of the leaf's primitive at place nodeInfo(leaf).first + k overlaps `box`.
+  unsigned leafOverlaps(int32_t leaf, const Box& box) const { return overlapMask(leafQuads_[nodes_[leaf].quad], box); }
   // Calls visit(primitive) for the primitives whose box is closer to p than
   // `best`, nearer subtrees first; visit may lower `best` (a nearest-point
   // search: far subtrees are then skipped).
@@ -112,6 +121,15 @@ class AabbTree {
   };
   // Bit k set: the leaf's k-th box overlaps `box`.
   static unsigned overlapMask(const LeafQuad& q, const Box& box);
+  // An inner node's grandchildren (or a child, where that is a leaf), up
+  // to four, their boxes as columns (the empty box in unused lanes).
+  struct alignas(64) GrandNode {
+    LeafQuad boxes;
+    int32_t node[4];   // the nodes in the lanes, -1 if none
+    int32_t below[4];  // the GrandNode of a lane's node, -1 for a leaf or none
+  };
+  int32_t buildGrandNode(int32_t node);
+  void gatherGrandBoxes();
   int32_t buildNode(uint32_t first, uint32_t count, const std::vector<Box>& boxes);
   // visit: as runJobInQuads()'s visitQuad.
   template <class Visit, class SkipWithin, class SkipBetween>
@@ -124,6 +142,7 @@ class AabbTree {
   std::vector<uint32_t> order_;  // primitive indices, leaf ranges
   std::vector<Box> leafBoxes_;   // the primitives' boxes in order_'s order
   std::vector<LeafQuad> leafQuads_;
+  std::vector<GrandNode> grandNodes_;  // grandNodes_[0]: the root's, when the root is not a leaf
   std::vector<glm::vec3> centres_;  // build()'s scratch
 };
 
@@ -180,6 +199,26 @@ void AabbTree::queryPlaces(const Box& box, Visit&& visit, Skip&& skip) const {
     } else {
       stack[top++] = n.left;
       stack[top++] = n.right;
+    }
+  }
+}
+
+template <class VisitLeaf, class Skip>
+void AabbTree::queryLeaves(const Box& box, VisitLeaf&& visitLeaf, Skip&& skip) const {
+  if (nodes_.empty() || !nodes_[0].box.overlaps(box) || skip(0)) return;
+  if (nodes_[0].left < 0) return visitLeaf(0);
+  int32_t stack[64];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const GrandNode& g = grandNodes_[stack[--top]];
+    for (unsigned mask = overlapMask(g.boxes, box); mask != 0; mask &= mask - 1) {
+      const int lane = __builtin_ctz(mask);
+      if (skip(g.node[lane])) continue;
+      if (g.below[lane] < 0)
+        visitLeaf(g.node[lane]);
+      else
+        stack[top++] = g.below[lane];
     }
   }
 }
@@ -271,14 +310,15 @@ void AabbTree::pairsBetween(int32_t a, int32_t b, Visit& visit, SkipBetween& ski
       if (const unsigned mask = overlapMask(quad, leafBoxes_[i])) visit(i, nb.first, mask);
     return;
   }
-  // Split the node that is not a leaf (the larger when neither is).
+  // Split the node that is not a leaf (the larger when neither is); a
+  // child whose box misses the other node's is not entered (no call).
   const glm::vec3 ea = na.box.max - na.box.min, eb = nb.box.max - nb.box.min;
   if (nb.left < 0 || (na.left >= 0 && ea.x + ea.y + ea.z >= eb.x + eb.y + eb.z)) {
-    pairsBetween(na.left, b, visit, skipBetween);
-    pairsBetween(na.right, b, visit, skipBetween);
+    if (nodes_[na.left].box.overlaps(nb.box)) pairsBetween(na.left, b, visit, skipBetween);
+    if (nodes_[na.right].box.overlaps(nb.box)) pairsBetween(na.right, b, visit, skipBetween);
   } else {
-    pairsBetween(a, nb.left, visit, skipBetween);
-    pairsBetween(a, nb.right, visit, skipBetween);
+    if (na.box.overlaps(nodes_[nb.left].box)) pairsBetween(a, nb.left, visit, skipBetween);
+    if (na.box.overlaps(nodes_[nb.right].box)) pairsBetween(a, nb.right, visit, skipBetween);
   }
 }
 

@@ -60,6 +60,7 @@ void BodyCollider::setMesh(const std::vector<float>& positions, const std::vecto
   searchRadius_ = searchRadius;
   tree_.build(triangleBoxes(current_, triangles_, kBoxSlack));
   updateSlotCorners();
+  updateSlotSpeeds();
   ++pose_;
   ++move_;
   sweptTree_ = tree_;
@@ -75,6 +76,31 @@ void BodyCollider::setTarget(const std::vector<float>& positions, float frameTim
     speed2 = std::max(speed2, glm::dot(velocity_[i], velocity_[i]));
   }
   maxSpeed_ = std::sqrt(speed2);
+  updateSlotSpeeds();
+}
+
+void BodyCollider::updateSlotSpeeds() {
+  std::vector<float> speed(velocity_.size());
+  for (size_t v = 0; v < speed.size(); ++v) speed[v] = glm::length(velocity_[v]);
+  slotSpeeds_.assign(tree_.nodeCount(), SlotSpeeds{});
+  // Children follow their parent: a reverse sweep is bottom-up.
+  for (uint32_t node = uint32_t(slotSpeeds_.size()); node-- > 0;)
+    for (int slot = 0; slot < 4; ++slot) {
+      float fastest = 0.0f;
+      if (const int32_t t = tree_.primitiveAt(node, slot); t >= 0) {
+        for (int corner = 0; corner < 3; ++corner) fastest = std::max(fastest, speed[triangles_[3 * size_t(t) + corner]]);
+      } else if (const int32_t child = tree_.childNodeAt(node, slot); child >= 0) {
+        for (float s : slotSpeeds_[child].speed) fastest = std::max(fastest, s);
+      }
+      slotSpeeds_[node].speed[slot] = fastest;
+    }
+}
+
+bool BodyCollider::fasterWithin(const glm::vec3& p, float radius, float speed) const {
+  return tree_.anyNear(p, radius * radius, [&](uint32_t node) {
+    const float* s = slotSpeeds_[node].speed;
+    return int(s[0] > speed) | int(s[1] > speed) << 1 | int(s[2] > speed) << 2 | int(s[3] > speed) << 3;
+  });
 }
 
 void BodyCollider::moveTo(float fraction) {

@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#ifdef __SSE2__
+#include <immintrin.h>
+#endif
+
 #include "sim/cloth/collision/proximity.h"
 #include "sim/cloth/parallel.h"
 
@@ -35,7 +39,8 @@ constexpr float kBeyond = -0.5f;
 constexpr float kMaxShare = 4.0f;
 constexpr int kPasses = 4;
 constexpr size_t kBlocks = 64;
-constexpr size_t kClusterSize = 4;  // body vertices per tree query
+constexpr size_t kClusterSize = 4;  // body vertices per tree query: the lanes of nearMask()
+static_assert(kClusterSize == 4);
 
 // Interleaves the low 10 bits of x with two zero bits between each.
 uint32_t spreadBits(uint32_t x) {
@@ -47,11 +52,47 @@ uint32_t spreadBits(uint32_t x) {
   return x;
 }
 
+// Bit k set: child box k (columns of `lo`, `hi`: [axis][child]) overlaps `box`.
+unsigned overlapMask(const float (&lo)[3][4], const float (&hi)[3][4], const Box& box) {
+#ifdef __SSE2__
+  __m128 inside = _mm_castsi128_ps(_mm_set1_epi32(-1));
+  for (int axis = 0; axis < 3; ++axis)
+    inside = _mm_and_ps(inside, _mm_and_ps(_mm_cmple_ps(_mm_load_ps(lo[axis]), _mm_set1_ps(box.max[axis])),
+                                           _mm_cmple_ps(_mm_set1_ps(box.min[axis]), _mm_load_ps(hi[axis]))));
+  return unsigned(_mm_movemask_ps(inside));
+#else
+  unsigned mask = 0;
+  for (int k = 0; k < 4; ++k)
+    mask |= unsigned((lo[0][k] <= box.max.x) & (box.min.x <= hi[0][k]) & (lo[1][k] <= box.max.y) &
+                     (box.min.y <= hi[1][k]) & (lo[2][k] <= box.max.z) & (box.min.z <= hi[2][k]))
+            << k;
+  return mask;
+#endif
+}
+
+// Splits order[first, first + count) at its middle along the longest axis of
+// the centres; returns the size of the first part.
+uint32_t medianSplit(std::vector<uint32_t>& order, uint32_t first, uint32_t count,
+                     const std::vector<glm::vec3>& centres) {
+  glm::vec3 lo(1e30f), hi(-1e30f);
+  for (uint32_t k = first; k < first + count; ++k)
+    lo = glm::min(lo, centres[order[k]]), hi = glm::max(hi, centres[order[k]]);
+  const glm::vec3 extent = hi - lo;
+  const int axis = extent.x > extent.y ? (extent.x > extent.z ? 0 : 2) : (extent.y > extent.z ? 1 : 2);
+  const uint32_t half = count / 2;
+  std::nth_element(order.begin() + first, order.begin() + first + half, order.begin() + first + count,
+                   [&](uint32_t a, uint32_t b) {
+                     const float ca = centres[a][axis], cb = centres[b][axis];
+                     return ca < cb || (ca == cb && a < b);
+                   });
+  return half;
+}
+
 }  // namespace
 
 BodyFeatureContact::BodyFeatureContact(const std::vector<uint32_t>& clothTriangles,
-                                       const std::vector<glm::vec3>& restPositions)
-    : triangles_(clothTriangles) {
+                                       const std::vector<glm::vec3>& restPositions, Search search)
+    : search_(search), triangles_(clothTriangles) {
   // A smooth body part can come between cloth vertices that are outside it
   // by about the sagitta of a cloth edge, far less than the edge: half the
   // mean edge length is plenty, and the search (whose cost grows with the
@@ -65,14 +106,8 @@ BodyFeatureContact::BodyFeatureContact(const std::vector<uint32_t>& clothTriangl
 
 void BodyFeatureContact::prepareBody(const BodyCollider& body) {
   const std::vector<uint32_t>& triangles = body.triangles();
-  if (triangles.size() == bodyTriangleCount_ && ringStart_.size() == body.positions().size() + 1) return;
+  if (triangles.size() == bodyTriangleCount_ && clusterOrder_.size() == body.positions().size()) return;
   const size_t n = body.positions().size();
-  ringStart_.assign(n + 1, 0);
-  for (uint32_t v : triangles) ++ringStart_[v + 1];
-  for (size_t v = 0; v < n; ++v) ringStart_[v + 1] += ringStart_[v];
-  ringTriangles_.resize(triangles.size());
-  std::vector<uint32_t> fill(ringStart_.begin(), ringStart_.end() - 1);
-  for (size_t e = 0; e < triangles.size(); ++e) ringTriangles_[fill[triangles[e]]++] = uint32_t(e / 3);
   bodyTriangleCount_ = triangles.size();
   // Body vertices in Morton order of the pose now, so each run of
   // kClusterSize is a compact patch (skinning keeps it one) that shares one
@@ -88,12 +123,27 @@ void BodyFeatureContact::prepareBody(const BodyCollider& body) {
   std::sort(keyed.begin(), keyed.end());
   clusterOrder_.resize(n);
   for (size_t k = 0; k < n; ++k) clusterOrder_[k] = keyed[k].second;
+  // Each vertex's triangles in increasing order (the order of the normal's sum).
+  std::vector<uint32_t> start(n + 1, 0);
+  for (uint32_t v : triangles) ++start[v + 1];
+  for (size_t v = 0; v < n; ++v) start[v + 1] += start[v];
+  std::vector<uint32_t> around(triangles.size());
+  std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+  for (size_t e = 0; e < triangles.size(); ++e) around[fill[triangles[e]]++] = uint32_t(e / 3);
+  ringStart_.assign(1, 0);
+  ringCorners_.clear();
+  for (const uint32_t v : clusterOrder_) {
+    for (uint32_t k = start[v]; k < start[v + 1]; ++k)
+      ringCorners_.emplace_back(triangles[3 * around[k]], triangles[3 * around[k] + 1], triangles[3 * around[k] + 2]);
+    ringStart_.push_back(uint32_t(ringCorners_.size()));
+  }
 }
 
 void BodyFeatureContact::updateTriangles(const ClothState& s, float thickness) {
   const size_t count = triangles_.size() / 3;
   planes_.resize(count);
-  std::vector<Box> boxes(count);
+  boxes_.assign(count, Box{});
+  std::vector<Box>& boxes = boxes_;
   // Each triangle on its own: in parallel.
   forRange(count, [&](size_t begin, size_t end) {
     for (size_t t = begin; t < end; ++t) {
@@ -113,26 +163,149 @@ void BodyFeatureContact::updateTriangles(const ClothState& s, float thickness) {
       boxes[t].extend(c);
     }
   });
-  if (callsSinceBuild_ >= kRebuildEvery || tree_.empty()) {
-    tree_.build(boxes);
-    callsSinceBuild_ = 0;
-  } else {
-    tree_.refit(boxes);
+  if (search_ != Search::Tree) return;
+  if (nodes_.empty() || refitTree() > kRebuildGrowth * builtSize_) {
+    buildTree();
+    builtSize_ = refitTree();
   }
-  ++callsSinceBuild_;
+}
+
+void BodyFeatureContact::buildTree() {
+  nodes_.clear();
+  if (boxes_.empty()) return;
+  std::vector<glm::vec3> centres(boxes_.size());
+  for (size_t t = 0; t < boxes_.size(); ++t) centres[t] = 0.5f * (boxes_[t].min + boxes_[t].max);
+  std::vector<uint32_t> order(boxes_.size());
+  for (uint32_t t = 0; t < order.size(); ++t) order[t] = t;
+  nodes_.reserve(boxes_.size() / 2 + 1);
+  buildNode(order, 0, uint32_t(order.size()), centres);
+}
+
+int32_t BodyFeatureContact::buildNode(std::vector<uint32_t>& order, uint32_t first, uint32_t count,
+                                      const std::vector<glm::vec3>& centres) {
+  const int32_t index = int32_t(nodes_.size());
+  nodes_.emplace_back();
+  // Up to four groups: the triangles themselves, or the quarters of two
+  // levels of median splits.
+  uint32_t groupFirst[4], groupCount[4];
+  int groups = 0;
+  if (count <= 4) {
+    for (uint32_t k = 0; k < count; ++k) groupFirst[groups] = first + k, groupCount[groups++] = 1;
+  } else {
+    const uint32_t half = medianSplit(order, first, count, centres);
+    for (const auto& [f, c] : {std::pair{first, half}, std::pair{first + half, count - half}}) {
+      if (c == 1) {
+        groupFirst[groups] = f, groupCount[groups++] = 1;
+        continue;
+      }
+      const uint32_t quarter = medianSplit(order, f, c, centres);
+      groupFirst[groups] = f, groupCount[groups++] = quarter;
+      groupFirst[groups] = f + quarter, groupCount[groups++] = c - quarter;
+    }
+  }
+  int32_t children[4] = {kNoChild, kNoChild, kNoChild, kNoChild};
+  for (int g = 0; g < groups; ++g)
+    children[g] = groupCount[g] == 1 ? ~int32_t(order[groupFirst[g]])
+                                     : buildNode(order, groupFirst[g], groupCount[g], centres);
+  std::copy(children, children + 4, nodes_[index].child);
+  return index;
+}
+
+float BodyFeatureContact::refitTree() {
+  float size = 0.0f;
+  // Children follow their parent, so a reverse sweep is bottom-up.
+  for (size_t i = nodes_.size(); i-- > 0;) {
+    TreeNode& n = nodes_[i];
+    for (int k = 0; k < 4; ++k) {
+      Box b;
+      if (n.child[k] >= 0) {
+        const TreeNode& c = nodes_[n.child[k]];
+        for (int j = 0; j < 4; ++j)
+          b.extend(Box{{c.lo[0][j], c.lo[1][j], c.lo[2][j]}, {c.hi[0][j], c.hi[1][j], c.hi[2][j]}});
+        const glm::vec3 extent = b.max - b.min;
+        size += extent.x + extent.y + extent.z;
+      } else if (n.child[k] != kNoChild) {
+        b = boxes_[uint32_t(~n.child[k])];
+      }
+      for (int axis = 0; axis < 3; ++axis) n.lo[axis][k] = b.min[axis], n.hi[axis][k] = b.max[axis];
+    }
+  }
+  return size;
+}
+
+template <class Visit>
+void BodyFeatureContact::forTrianglesOverlapping(const Box& box, Visit&& visit) const {
+  if (nodes_.empty()) return;
+  int32_t stack[256];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const TreeNode& n = nodes_[stack[--top]];
+    for (unsigned mask = overlapMask(n.lo, n.hi, box); mask != 0; mask &= mask - 1) {
+      const int32_t c = n.child[__builtin_ctz(mask)];
+      if (c >= 0)
+        stack[top++] = c;
+      else
+        visit(uint32_t(~c));
+    }
+  }
+}
+
+// The same arithmetic, in the same order, as the scalar tests with glm would
+// do (no fused multiply-add on the baseline x86-64), so the same pairs pass.
+[[gnu::always_inline]] inline unsigned BodyFeatureContact::nearMask(const float (&run)[3][4], int count,
+                                                                    uint32_t t) const {
+  const Plane& plane = planes_[t];
+  const float ball = plane.reach + maxDepth_;
+#ifdef __SSE2__
+  const __m128 px = _mm_load_ps(run[0]), py = _mm_load_ps(run[1]), pz = _mm_load_ps(run[2]);
+  const __m128 nx = _mm_set1_ps(plane.normal.x), ny = _mm_set1_ps(plane.normal.y), nz = _mm_set1_ps(plane.normal.z);
+  const __m128 dx = _mm_sub_ps(px, _mm_set1_ps(plane.centroid.x)), dy = _mm_sub_ps(py, _mm_set1_ps(plane.centroid.y)),
+               dz = _mm_sub_ps(pz, _mm_set1_ps(plane.centroid.z));
+  auto dot = [](__m128 ax, __m128 ay, __m128 az, __m128 bx, __m128 by, __m128 bz) {
+    return _mm_add_ps(_mm_add_ps(_mm_mul_ps(ax, bx), _mm_mul_ps(ay, by)), _mm_mul_ps(az, bz));
+  };
+  const __m128 inBall = _mm_cmple_ps(dot(dx, dy, dz, dx, dy, dz), _mm_set1_ps(ball * ball));
+  const __m128 above = _mm_sub_ps(_mm_set1_ps(plane.offset), dot(nx, ny, nz, px, py, pz));
+  const __m128 absAbove = _mm_andnot_ps(_mm_set1_ps(-0.0f), above);
+  const __m128 nearPlane = _mm_cmple_ps(absAbove, _mm_set1_ps(maxDepth_));
+  const __m128 along = dot(dx, dy, dz, nx, ny, nz);
+  const __m128 ix = _mm_sub_ps(dx, _mm_mul_ps(along, nx)), iy = _mm_sub_ps(dy, _mm_mul_ps(along, ny)),
+               iz = _mm_sub_ps(dz, _mm_mul_ps(along, nz));
+  const __m128 inCircle = _mm_cmple_ps(dot(ix, iy, iz, ix, iy, iz), _mm_set1_ps(plane.reach * plane.reach));
+  const unsigned all = unsigned(_mm_movemask_ps(_mm_and_ps(_mm_and_ps(inBall, nearPlane), inCircle)));
+  return all & ((1u << count) - 1);
+#else
+  return nearMaskScalar(run, count, t);
+#endif
+}
+
+unsigned BodyFeatureContact::nearMaskScalar(const float (&run)[3][4], int count, uint32_t t) const {
+  const Plane& plane = planes_[t];
+  const float ball = plane.reach + maxDepth_;
+  unsigned mask = 0;
+  for (int k = 0; k < count; ++k) {
+    const glm::vec3 p(run[0][k], run[1][k], run[2][k]);
+    const glm::vec3 d = p - plane.centroid;
+    if (glm::dot(d, d) > ball * ball) continue;
+    if (std::abs(plane.offset - glm::dot(plane.normal, p)) > maxDepth_) continue;
+    const glm::vec3 inPlane = d - glm::dot(d, plane.normal) * plane.normal;
+    if (glm::dot(inPlane, inPlane) > plane.reach * plane.reach) continue;
+    mask |= 1u << k;
+  }
+  return mask;
 }
 
 std::vector<BodyFeatureContact::Contact> BodyFeatureContact::findContacts(const ClothState& s,
                                                                           const BodyCollider& body,
                                                                           float thickness) const {
   const std::vector<glm::vec3>& bodyX = body.positions();
-  const std::vector<uint32_t>& bodyTriangles = body.triangles();
   const float gap = kGapFraction * thickness, keep = gap + kReapplyMargin * thickness;
-  // Area-weighted outward unit normal of body vertex v.
-  auto outward = [&](uint32_t v) {
+  // Area-weighted outward unit normal of the body vertex at `place` in clusterOrder_.
+  auto outward = [&](size_t place) {
     glm::vec3 sum(0.0f);
-    for (uint32_t k = ringStart_[v]; k < ringStart_[v + 1]; ++k) {
-      const uint32_t* t = &bodyTriangles[3 * ringTriangles_[k]];
+    for (uint32_t k = ringStart_[place]; k < ringStart_[place + 1]; ++k) {
+      const glm::uvec3& t = ringCorners_[k];
       sum += glm::cross(bodyX[t[1]] - bodyX[t[0]], bodyX[t[2]] - bodyX[t[0]]);
     }
     const float l = glm::length(sum);
@@ -143,34 +316,45 @@ std::vector<BodyFeatureContact::Contact> BodyFeatureContact::findContacts(const 
   std::vector<std::vector<Contact>> blocks(kBlocks);
   auto scan = [&](size_t block) {
     std::vector<Contact>& out = blocks[block];
+    // The triangles near some vertex of the run: index << 4 | the vertices' bits.
     std::vector<uint32_t> near;
     for (size_t k = block * blockSize; k < std::min(clusters, (block + 1) * blockSize); ++k) {
       const size_t begin = k * kClusterSize, end = std::min(bodyX.size(), begin + kClusterSize);
+      const int count = int(end - begin);
+      alignas(16) float run[3][4] = {};
       Box box;
-      for (size_t i = begin; i < end; ++i) box.extend(bodyX[clusterOrder_[i]]);
+      for (int i = 0; i < count; ++i) {
+        const glm::vec3& p = bodyX[clusterOrder_[begin + i]];
+        box.extend(p);
+        for (int axis = 0; axis < 3; ++axis) run[axis][i] = p[axis];
+      }
       box.min -= glm::vec3(maxDepth_);
       box.max += glm::vec3(maxDepth_);
       near.clear();
-      tree_.query(box, [&](uint32_t t) { near.push_back(t); });
+      if (search_ == Search::Tree) {
+        forTrianglesOverlapping(box, [&](uint32_t t) {
+          if (const unsigned mask = nearMask(run, count, t)) near.push_back(t << 4 | mask);
+        });
+      } else {
+        for (uint32_t t = 0; t < boxes_.size(); ++t)
+          if (boxes_[t].overlaps(box))
+            if (const unsigned mask = nearMaskScalar(run, count, t)) near.push_back(t << 4 | mask);
+      }
       if (near.empty()) continue;
-      std::sort(near.begin(), near.end());  // the tree's order depends on the boxes
-      for (size_t i = begin; i < end; ++i) {
-        const uint32_t v = clusterOrder_[i];
+      std::sort(near.begin(), near.end());  // by triangle: the tree's order depends on the boxes
+      for (int i = 0; i < count; ++i) {
+        const uint32_t v = clusterOrder_[begin + i];
         const glm::vec3 p = bodyX[v];
         glm::vec3 bodyNormal(0.0f);
         bool normalKnown = false;
-        for (uint32_t t : near) {
-          // Cheap tests first: p within the depth of the triangle's bounding
-          // ball, of its plane, and p's foot on the plane within its circle.
+        for (const uint32_t entry : near) {
+          if (!(entry & (1u << i))) continue;
+          // p is within the depth of the triangle's bounding ball, of its
+          // plane, and p's foot on the plane within its circle (nearMask()).
+          const uint32_t t = entry >> 4;
           const Plane& plane = planes_[t];
-          const glm::vec3 d = p - plane.centroid;
-          const float ball = plane.reach + maxDepth_;
-          if (glm::dot(d, d) > ball * ball) continue;
           const float above = plane.offset - glm::dot(plane.normal, p);  // the plane seen from p, along its normal
-          if (std::abs(above) > maxDepth_) continue;
-          const glm::vec3 inPlane = d - glm::dot(d, plane.normal) * plane.normal;
-          if (glm::dot(inPlane, inPlane) > plane.reach * plane.reach) continue;
-          if (!normalKnown) bodyNormal = outward(v), normalKnown = true;
+          if (!normalKnown) bodyNormal = outward(begin + i), normalKnown = true;
           const float alignment = glm::dot(plane.normal, bodyNormal);
           if (std::abs(alignment) < kMinAlignment) continue;
           const float side = alignment > 0.0f ? 1.0f : -1.0f;
@@ -258,6 +442,13 @@ int BodyFeatureContact::resolve(ClothState& s, const BodyCollider& body, float t
     if (!any) break;
   }
   return int(std::count_if(contacts_.begin(), contacts_.end(), [](const Contact& c) { return c.withinGap; }));
+}
+
+std::vector<BodyFeatureContact::Pair> BodyFeatureContact::lastPairs() const {
+  std::vector<Pair> pairs;
+  pairs.reserve(contacts_.size());
+  for (const Contact& c : contacts_) pairs.push_back({c.bodyVertex, c.triangle, c.pierced, c.withinGap});
+  return pairs;
 }
 
 int BodyFeatureContact::reapply(ClothState& s, const BodyCollider& body, float thickness,

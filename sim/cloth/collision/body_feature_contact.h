@@ -6,24 +6,26 @@
 // on a cloth coarser than the body (3 cm trouser triangles over a body of
 // about 8 mm edges) a limb can pass between them.
 //
-// Candidates: the body's vertices, in runs of nearby ones (Morton order),
-// against a BVH over the cloth's triangles (refitted every call, rebuilt now
-// and then), then cheap ball, plane and circle tests. The cloth belongs
-// outside the body, so "out" for a triangle is the side the body vertex's
-// outward normal points to; a triangle whose point under the vertex lies
-// behind it by up to maxDepth() (unless that point is outside the body
-// beyond a surface facing the other way: cloth beyond a thin body part) or in
-// front of it by less than half the thickness is pushed along its normal
-// until that point is half the thickness in front of the body vertex. The
-// push is shared by the triangle's vertices by barycentric weight and inverse
-// mass, so the point under the body vertex moves that far (Bridson, Fedkiw
-// and Anderson 2002; no vertex more than 4 times that), and the approaching
-// normal velocity relative to the body is removed the same way. Contacts are
-// found in parallel and applied in a fixed order, Gauss-Seidel:
-// deterministic. The simulator calls it after the vertex contacts, before the
-// final elongation limit, which holds the vertices of pierced triangles like
-// those a moving body part swept along; when that fails, reapply() pushes the
-// same pairs out again between the rounds of the limit.
+// Candidates: the body's vertices, in runs of four nearby ones (Morton
+// order), against a 4-wide BVH over the cloth's triangles (refitted every
+// call, rebuilt when it has grown loose); each triangle the run's box meets
+// gets cheap ball, plane and circle tests against the four vertices at once
+// (SSE). The cloth belongs outside the body, so "out" for a triangle is the
+// side the body vertex's outward normal points to; a triangle whose point
+// under the vertex lies behind it by up to maxDepth() (unless that point is
+// outside the body beyond a surface facing the other way: cloth beyond a
+// thin body part) or in front of it by less than half the thickness is pushed
+// along its normal until that point is half the thickness in front of the
+// body vertex. The push is shared by the triangle's vertices by barycentric
+// weight and inverse mass, so the point under the body vertex moves that far
+// (Bridson, Fedkiw and Anderson 2002; no vertex more than 4 times that), and
+// the approaching normal velocity relative to the body is removed the same
+// way. Contacts are found in parallel and applied in a fixed order,
+// Gauss-Seidel: deterministic. The simulator calls it after the vertex
+// contacts, before the final elongation limit, which holds the vertices of
+// pierced triangles like those a moving body part swept along; when that
+// fails, reapply() pushes the same pairs out again between the rounds of the
+// limit.
 
 #include <cstdint>
 #include <vector>
@@ -36,7 +38,11 @@ namespace mq::cloth {
 
 class BodyFeatureContact {
  public:
-  BodyFeatureContact(const std::vector<uint32_t>& clothTriangles, const std::vector<glm::vec3>& restPositions);
+  // How the triangles near a run of body vertices are found: the tree, or
+  // (a reference for tests) every triangle's box tested, with scalar tests.
+  enum class Search { Tree, EveryTriangle };
+  BodyFeatureContact(const std::vector<uint32_t>& clothTriangles, const std::vector<glm::vec3>& restPositions,
+                     Search search = Search::Tree);
   // Pushes cloth triangles off the body's vertices (the body as it is now);
   // the cloth vertices it moves get touched[v] = max(touched[v], mark), mark
   // = piercedMark where a body vertex was through the triangle, else nearMark.
@@ -54,6 +60,17 @@ class BodyFeatureContact {
   // it: half the cloth's mean edge length, within these bounds (m).
   static constexpr float kMinDepth = 0.005f, kMaxDepth = 0.02f;
   float maxDepth() const { return maxDepth_; }
+
+  // The body vertex - cloth triangle pairs of the last resolve() (those in
+  // contact and those kept for reapply()), in the order they are applied.
+  struct Pair {
+    uint32_t bodyVertex, triangle;
+    bool pierced, withinGap;
+    bool operator==(const Pair& o) const {
+      return bodyVertex == o.bodyVertex && triangle == o.triangle && pierced == o.pierced && withinGap == o.withinGap;
+    }
+  };
+  std::vector<Pair> lastPairs() const;
 
  private:
   struct Contact {
@@ -77,15 +94,43 @@ class BodyFeatureContact {
     glm::vec3 centroid;
     float reach;  // circumscribing radius about the centroid plus the thickness
   };
+  // The tree over the cloth's triangles: each node holds its four children's
+  // boxes side by side, so one visit tests them at once; a child is a node or
+  // a triangle. Built by median splits, children after their parent.
+  struct alignas(16) TreeNode {
+    float lo[3][4], hi[3][4];  // the children's boxes: [axis][child]
+    int32_t child[4];  // >= 0: a node; kNoChild: empty (its box is empty); otherwise triangle ~child
+  };
+  static constexpr int32_t kNoChild = INT32_MIN;
+  void buildTree();
+  int32_t buildNode(std::vector<uint32_t>& order, uint32_t first, uint32_t count,
+                    const std::vector<glm::vec3>& centres);
+  // Returns the sum of the half-perimeters of the boxes of the tree's nodes.
+  float refitTree();
+  // Calls visit(triangle) for the triangles whose boxes overlap `box`.
+  template <class Visit>
+  void forTrianglesOverlapping(const Box& box, Visit&& visit) const;
+  // Bit k set: body vertex k of the run passes the ball, plane and circle
+  // tests of triangle t (k < count).
+  unsigned nearMask(const float (&run)[3][4], int count, uint32_t t) const;
+  unsigned nearMaskScalar(const float (&run)[3][4], int count, uint32_t t) const;
+
+  Search search_;
   std::vector<uint32_t> triangles_;
   std::vector<Contact> contacts_;  // of the last resolve()
   float maxDepth_ = kMaxDepth;
   std::vector<Plane> planes_;
-  AabbTree tree_;
-  static constexpr int kRebuildEvery = 16;  // calls between tree rebuilds (refitted in between)
-  int callsSinceBuild_ = 0;
-  // Body vertex -> its triangles (CSR), for outward vertex normals.
-  std::vector<uint32_t> ringStart_, ringTriangles_;
+  std::vector<Box> boxes_;  // the triangles' boxes now
+  std::vector<TreeNode> nodes_;
+  // The tree is refitted every call and rebuilt when its nodes' boxes have
+  // grown by this factor since it was built (their sum of half-perimeters):
+  // cloth keeps its neighbours, so a refitted tree stays good for long.
+  static constexpr float kRebuildGrowth = 1.25f;
+  float builtSize_ = 0.0f;
+  // The corners of the body's triangles around each body vertex, for its
+  // outward normal (CSR, the vertices in clusterOrder_'s order: read in sequence).
+  std::vector<uint32_t> ringStart_;
+  std::vector<glm::uvec3> ringCorners_;
   std::vector<uint32_t> clusterOrder_;  // body vertices, runs of nearby ones
   size_t bodyTriangleCount_ = 0;
 };

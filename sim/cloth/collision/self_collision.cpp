@@ -9,6 +9,7 @@
 #endif
 
 #include "sim/cloth/collision/proximity.h"
+#include "sim/cloth/collision/segment_reach.h"
 #include "core/util/thread_pool.h"
 
 namespace mq::cloth {
@@ -29,7 +30,9 @@ bool sharesVertex(uint32_t a0, uint32_t a1, uint32_t b0, uint32_t b1) {
 constexpr uint32_t kNoTriangle = UINT32_MAX;
 constexpr float kFlatCosine = 0.7071f;  // cos 45 degrees: a patch's normals within it of its axis are flat
 
-NormalCone merged(const NormalCone& a, const NormalCone& b) {
+}  // namespace
+
+NormalCone mergedCones(const NormalCone& a, const NormalCone& b) {
   // Cones only matter while they are flat, and a merged cone is no narrower
   // than either: the wide ones are not merged.
   if (a.cosine < kFlatCosine || b.cosine < kFlatCosine) return {};
@@ -46,6 +49,53 @@ NormalCone merged(const NormalCone& a, const NormalCone& b) {
   const NormalCone& wider = ra.cosine < rb.cosine ? ra : rb;
   return wider.cosine < 0.0f ? NormalCone{} : wider;
 }
+
+void mergeFourCones(NormalCone (&cones)[4], const NormalCone (&others)[4], unsigned lanes) {
+#ifdef __SSE2__
+  // mergedCones() lane by lane, its branches as selects.
+  struct Lanes {
+    __m128 x, y, z, cosine, sine;
+  };
+  auto load = [](const NormalCone (&c)[4]) {
+    auto column = [&](auto field) { return _mm_setr_ps(field(c[0]), field(c[1]), field(c[2]), field(c[3])); };
+    return Lanes{column([](const NormalCone& n) { return n.axis.x; }), column([](const NormalCone& n) { return n.axis.y; }),
+                 column([](const NormalCone& n) { return n.axis.z; }), column([](const NormalCone& n) { return n.cosine; }),
+                 column([](const NormalCone& n) { return n.sine; })};
+  };
+  auto select = [](__m128 when, __m128 yes, __m128 no) { return _mm_or_ps(_mm_and_ps(when, yes), _mm_andnot_ps(when, no)); };
+  const Lanes a = load(cones), b = load(others);
+  const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
+  const __m128 flat = _mm_and_ps(_mm_cmpnlt_ps(a.cosine, _mm_set1_ps(kFlatCosine)),
+                                 _mm_cmpnlt_ps(b.cosine, _mm_set1_ps(kFlatCosine)));
+  const __m128 sx = _mm_add_ps(a.x, b.x), sy = _mm_add_ps(a.y, b.y), sz = _mm_add_ps(a.z, b.z);
+  const __m128 length = _mm_sqrt_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(sx, sx), _mm_mul_ps(sy, sy)), _mm_mul_ps(sz, sz)));
+  const __m128 ax = _mm_div_ps(sx, length), ay = _mm_div_ps(sy, length), az = _mm_div_ps(sz, length);
+  auto reach = [&](const Lanes& c, __m128& cosine, __m128& sine) {
+    const __m128 dot = _mm_add_ps(_mm_add_ps(_mm_mul_ps(ax, c.x), _mm_mul_ps(ay, c.y)), _mm_mul_ps(az, c.z));
+    const __m128 cd = _mm_min_ps(dot, one), sd = _mm_sqrt_ps(_mm_max_ps(_mm_sub_ps(one, _mm_mul_ps(cd, cd)), zero));
+    cosine = _mm_sub_ps(_mm_mul_ps(cd, c.cosine), _mm_mul_ps(sd, c.sine));
+    sine = _mm_add_ps(_mm_mul_ps(sd, c.cosine), _mm_mul_ps(cd, c.sine));
+  };
+  __m128 ca, sa, cb, sb;
+  reach(a, ca, sa);
+  reach(b, cb, sb);
+  const __m128 aWider = _mm_cmplt_ps(ca, cb);
+  const __m128 cosine = select(aWider, ca, cb), sine = select(aWider, sa, sb);
+  const __m128 kept = _mm_and_ps(_mm_and_ps(flat, _mm_cmpnlt_ps(length, _mm_set1_ps(1e-6f))), _mm_cmpnlt_ps(cosine, zero));
+  alignas(16) float x[4], y[4], z[4], c[4], sn[4];
+  _mm_store_ps(x, _mm_and_ps(kept, ax)), _mm_store_ps(y, _mm_and_ps(kept, ay)), _mm_store_ps(z, _mm_and_ps(kept, az));
+  _mm_store_ps(c, select(kept, cosine, _mm_set1_ps(-1.0f))), _mm_store_ps(sn, _mm_and_ps(kept, sine));
+  for (int k = 0; k < 4; ++k)
+    if (lanes >> k & 1u) cones[k] = {{x[k], y[k], z[k]}, c[k], sn[k]};
+#else
+  for (int k = 0; k < 4; ++k)
+    if (lanes >> k & 1u) cones[k] = mergedCones(cones[k], others[k]);
+#endif
+}
+
+namespace {
+
+NormalCone merged(const NormalCone& a, const NormalCone& b) { return mergedCones(a, b); }
 
 // The cone of a triangle's normals at the start and the end of the step.
 NormalCone triangleCone(const glm::vec3& a0, const glm::vec3& b0, const glm::vec3& c0, const glm::vec3& a1,
@@ -96,19 +146,34 @@ std::vector<uint8_t> connectedNodes(const AabbTree& tree, size_t vertexCount, Ve
   return connected;
 }
 
-// Per leaf of `tree`: its primitives' normal cone (cone(p)), in parallel.
+// Per leaf of `tree`: its primitives' normal cone (cone(p)), four leaves at
+// a time (each merged in the order of its primitives), in parallel.
 template <class Cone>
 void findLeafCones(const AabbTree& tree, Cone&& cone, std::vector<NormalCone>& cones) {
   const size_t nodes = tree.nodeCount();
   cones.resize(nodes);
   inChunks(nodes, 256, [&](size_t i0, size_t i1) {
+    AabbTree::NodeInfo leaves[4];
+    size_t at[4], count = 0;
+    auto mergeLeaves = [&] {
+      NormalCone merging[4], next[4];
+      for (size_t k = 0; k < count; ++k) merging[k] = cone(tree.primitive(leaves[k].first));
+      for (uint32_t j = 1; j < 4; ++j) {
+        unsigned lanes = 0;
+        for (size_t k = 0; k < count; ++k)
+          if (j < leaves[k].count) next[k] = cone(tree.primitive(leaves[k].first + j)), lanes |= 1u << k;
+        if (lanes != 0) mergeFourCones(merging, next, lanes);
+      }
+      for (size_t k = 0; k < count; ++k) cones[at[k]] = merging[k];
+      count = 0;
+    };
     for (size_t i = i0; i < i1; ++i) {
       const AabbTree::NodeInfo node = tree.nodeInfo(i);
       if (node.left >= 0) continue;
-      cones[i] = cone(tree.primitive(node.first));
-      for (uint32_t k = node.first + 1; k < node.first + node.count; ++k)
-        cones[i] = merged(cones[i], cone(tree.primitive(k)));
+      leaves[count] = node, at[count++] = i;
+      if (count == 4) mergeLeaves();
     }
+    if (count > 0) mergeLeaves();
   });
 }
 
@@ -142,11 +207,13 @@ void findTopFlatPlaces(const AabbTree& tree, const std::vector<uint8_t>& flat, s
   }
 }
 
-// Per place of `tree`: the value of the primitive there.
+// Per place of `tree`: the value of the primitive there (in parallel).
 template <class T>
 std::vector<T> placeOrdered(const AabbTree& tree, const std::vector<T>& byPrimitive) {
   std::vector<T> byPlace(byPrimitive.size());
-  for (uint32_t k = 0; k < byPlace.size(); ++k) byPlace[k] = byPrimitive[tree.primitive(k)];
+  inChunks(byPlace.size(), 4096, [&](size_t k0, size_t k1) {
+    for (size_t k = k0; k < k1; ++k) byPlace[k] = byPrimitive[tree.primitive(uint32_t(k))];
+  });
   return byPlace;
 }
 
@@ -201,6 +268,37 @@ inline __m128 row(const glm::vec4& v) { return _mm_load_ps(&v.x); }
 // read back at once stalls on the store).
 inline __m128 row(const glm::vec3& p) { return _mm_setr_ps(p.x, p.y, p.z, 0.0f); }
 #endif
+
+// The box of an element's vertices at the start of the step (and at its end
+// when `end` is given) grown by `grow`: the box Box::extend makes, in registers.
+template <size_t N>
+Box grownBox(const std::array<uint32_t, N>& vertices, const std::vector<glm::vec3>& start,
+             const std::vector<glm::vec3>* end, float grow) {
+#ifdef __SSE2__
+  __m128 lo = row(start[vertices[0]]), hi = lo;
+  for (uint32_t v : vertices) {
+    const __m128 p = row(start[v]);
+    lo = _mm_min_ps(lo, p), hi = _mm_max_ps(hi, p);
+    if (end) {
+      const __m128 q = row((*end)[v]);
+      lo = _mm_min_ps(lo, q), hi = _mm_max_ps(hi, q);
+    }
+  }
+  const __m128 g = _mm_set1_ps(grow);
+  alignas(16) float low[4], high[4];
+  _mm_store_ps(low, _mm_sub_ps(lo, g)), _mm_store_ps(high, _mm_add_ps(hi, g));
+  return Box{{low[0], low[1], low[2]}, {high[0], high[1], high[2]}};
+#else
+  Box b;
+  for (uint32_t v : vertices) {
+    b.extend(start[v]);
+    if (end) b.extend((*end)[v]);
+  }
+  b.min -= glm::vec3(grow);
+  b.max += glm::vec3(grow);
+  return b;
+#endif
+}
 inline bool withinReach(const NodeMotion& a, const NodeMotion& b, float thickness) {
 #ifdef __SSE2__
   return withinReach(row(a.startMin), row(a.startMax), row(a.moveMin), row(a.moveMax), row(b.startMin),
@@ -288,15 +386,58 @@ std::vector<T> collectInBlocks(size_t count, Body&& body) {
 // edge tree, as columns padded by three places: four places from any one
 // are read at once.
 void SelfCollision::EdgeColumns::resize(size_t places) {
-  for (std::vector<uint32_t>* c : {&v0, &v1}) c->resize(places + 3, UINT32_MAX);
+  for (std::vector<uint32_t>* c : {&v0, &v1, &edge}) c->resize(places + 3, UINT32_MAX);
   for (std::vector<float>* c : {&midX, &midY, &midZ, &half, &moveX, &moveY, &moveZ, &spread}) c->resize(places + 3, 0.0f);
+  for (int end = 0; end < 2; ++end)
+    for (std::vector<float>* c : {&startX[end], &startY[end], &startZ[end], &stepX[end], &stepY[end], &stepZ[end]})
+      c->resize(places + 3, 0.0f);
 }
 
-void SelfCollision::EdgeColumns::set(size_t k, uint32_t a, uint32_t b, const glm::vec3& mid, float halfLength,
-                                     const glm::vec3& meanMove, float moveSpread) {
-  v0[k] = a, v1[k] = b;
+void SelfCollision::EdgeColumns::set(size_t k, uint32_t e, uint32_t a, uint32_t b, const glm::vec3& mid,
+                                     float halfLength, const glm::vec3& meanMove, float moveSpread) {
+  edge[k] = e, v0[k] = a, v1[k] = b;
   midX[k] = mid.x, midY[k] = mid.y, midZ[k] = mid.z, half[k] = halfLength;
   moveX[k] = meanMove.x, moveY[k] = meanMove.y, moveZ[k] = meanMove.z, spread[k] = moveSpread;
+}
+
+void SelfCollision::EdgeColumns::setVertices(size_t k, const glm::vec3 (&start)[2], const glm::vec3 (&move)[2]) {
+  for (int end = 0; end < 2; ++end) {
+    startX[end][k] = start[end].x, startY[end][k] = start[end].y, startZ[end][k] = start[end].z;
+    stepX[end][k] = move[end].x, stepY[end][k] = move[end].y, stepZ[end][k] = move[end].z;
+  }
+}
+
+inline unsigned SelfCollision::EdgeColumns::withinReach(uint32_t i, uint32_t first, float thickness) const {
+#ifdef MQ_SEGMENT_REACH_SSE
+  auto own = [&](const std::vector<float>& c) { return _mm_set1_ps(c[i]); };
+  auto column = [&](const std::vector<float>& c) { return _mm_loadu_ps(&c[first]); };
+  // The exact test takes the edge of lower index first: per lane, the own
+  // edge or the other's.
+  const __m128 ownFirst = _mm_castsi128_ps(_mm_cmplt_epi32(
+      _mm_set1_epi32(int(edge[i])), _mm_loadu_si128(reinterpret_cast<const __m128i*>(&edge[first]))));
+  auto pick = [&](const std::vector<float>& c, bool firstEdge) {
+    const __m128 a = own(c), b = column(c);
+    return firstEdge ? _mm_or_ps(_mm_and_ps(ownFirst, a), _mm_andnot_ps(ownFirst, b))
+                     : _mm_or_ps(_mm_and_ps(ownFirst, b), _mm_andnot_ps(ownFirst, a));
+  };
+  auto point = [&](int end, bool firstEdge) {
+    return Vec3x4{pick(startX[end], firstEdge), pick(startY[end], firstEdge), pick(startZ[end], firstEdge)};
+  };
+  // The largest difference of the two edges' vertices' moves (the same
+  // either way round: a difference's negation is exact).
+  __m128 worst = _mm_setzero_ps();
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b) {
+      const __m128 dx = _mm_sub_ps(own(stepX[a]), column(stepX[b])), dy = _mm_sub_ps(own(stepY[a]), column(stepY[b]));
+      const __m128 dz = _mm_sub_ps(own(stepZ[a]), column(stepZ[b]));
+      worst = _mm_max_ps(worst, _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz)));
+    }
+  const __m128 reach = _mm_add_ps(_mm_set1_ps(thickness), _mm_sqrt_ps(worst));
+  return segmentsWithinReach(point(0, true), point(1, true), point(0, false), point(1, false), reach);
+#else
+  (void)i, (void)first, (void)thickness;
+  return 0xFu;  // testEdgeEdge tests them one by one
+#endif
 }
 
 inline unsigned SelfCollision::EdgeColumns::apartOrNeighbours(uint32_t i, uint32_t first, float thickness) const {
@@ -427,11 +568,22 @@ void SelfCollision::findFlatPatches(const ClothState& s, const std::vector<glm::
       triangleCones_[t] = triangleCone(x0[a], x0[b], x0[c], s.x[a], s.x[b], s.x[c]);
     }
   });
-  findLeafCones(edgeTree_, [&](uint32_t e) {
-    const auto [t0, t1] = edgeTriangles_[e];
-    if (t0 >= kNoTriangle - 1) return NormalCone{};
-    return t1 == kNoTriangle ? triangleCones_[t0] : merged(triangleCones_[t0], triangleCones_[t1]);
-  }, edgeNodeCones_);
+  // Each edge's cone (its triangles' cones merged), four edges at a time.
+  edgeCones_.resize(edges_.size());
+  inChunks(edges_.size(), 1024, [&](size_t e0, size_t e1) {
+    for (size_t e = e0; e < e1; e += 4) {
+      NormalCone cones[4], others[4];
+      unsigned lanes = 0;
+      for (size_t k = 0; k < 4 && e + k < e1; ++k) {
+        const auto [t0, t1] = edgeTriangles_[e + k];
+        if (t0 < kNoTriangle - 1) cones[k] = triangleCones_[t0];
+        if (t0 < kNoTriangle - 1 && t1 != kNoTriangle) others[k] = triangleCones_[t1], lanes |= 1u << k;
+      }
+      if (lanes != 0) mergeFourCones(cones, others, lanes);
+      std::copy_n(cones, std::min<size_t>(4, e1 - e), edgeCones_.begin() + e);
+    }
+  });
+  findLeafCones(edgeTree_, [&](uint32_t e) { return edgeCones_[e]; }, edgeNodeCones_);
   findLeafCones(tree_, [&](uint32_t t) { return triangleCones_[t]; }, nodeCones_);
   // The serial bottom-up and top-down sweeps of the two trees at once.
   ThreadPool::shared().parallelBlocks(2, [&](size_t which) {
@@ -502,10 +654,6 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     b.max += glm::vec3(grow);
     return b;
   };
-  auto triangleBox = [&](auto&& box, size_t t) {
-    return box({triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]});
-  };
-  auto edgeBox = [&](auto&& box, size_t e) { return box({edges_[e].first, edges_[e].second}); };
   auto extentSum = [](const std::vector<Box>& boxes) {
     double sum = 0.0;
     for (const Box& b : boxes) sum += double(b.max.x - b.min.x) + double(b.max.y - b.min.y) + double(b.max.z - b.min.z);
@@ -516,16 +664,25 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
   std::vector<Box> boxes(triangleCount), edgeBoxes(edges_.size()), sweptBoxes, sweptEdgeBoxes;
   if (swept) sweptBoxes.resize(triangleCount), sweptEdgeBoxes.resize(edges_.size());
   // In parallel (each element on its own: the same boxes).
+  // The same boxes as relativeBox() and sweptBox(), in registers.
+  auto relativeElementBox = [&](const auto& vertices) {
+    float grow = 0.0f;
+    for (uint32_t v : vertices) grow = std::max(grow, offMean[v]);
+    return grownBox(vertices, x0, nullptr, grow + 0.5f * thickness);
+  };
+  auto sweptElementBox = [&](const auto& vertices) { return grownBox(vertices, x0, &s.x, thickness); };
   inChunks(triangleCount, 4096, [&](size_t t0, size_t t1) {
     for (size_t t = t0; t < t1; ++t) {
-      boxes[t] = triangleBox(relativeBox, t);
-      if (swept) sweptBoxes[t] = triangleBox(sweptBox, t);
+      const std::array<uint32_t, 3> corners{triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]};
+      boxes[t] = relativeElementBox(corners);
+      if (swept) sweptBoxes[t] = sweptElementBox(corners);
     }
   });
   inChunks(edges_.size(), 4096, [&](size_t e0, size_t e1) {
     for (size_t e = e0; e < e1; ++e) {
-      edgeBoxes[e] = edgeBox(relativeBox, e);
-      if (swept) sweptEdgeBoxes[e] = edgeBox(sweptBox, e);
+      const std::array<uint32_t, 2> ends{edges_[e].first, edges_[e].second};
+      edgeBoxes[e] = relativeElementBox(ends);
+      if (swept) sweptEdgeBoxes[e] = sweptElementBox(ends);
     }
   });
   bool checkSwept = false;  // the trees hold relative boxes, candidates need swept ones to overlap
@@ -548,8 +705,12 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     findConnectedPatches();
     stepsSinceBuild_ = 0;
   } else {
-    tree_.refit(boxes);
-    edgeTree_.refit(edgeBoxes);
+    ThreadPool::shared().parallelBlocks(2, [&](size_t which) {
+      if (which == 0)
+        edgeTree_.refit(edgeBoxes);
+      else
+        tree_.refit(boxes);
+    });
   }
   ++stepsSinceBuild_;
   // The swept boxes checked on each pair in the trees' order (read in sequence).
@@ -662,8 +823,12 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
         const AabbTree::NodeInfo info = tree_.nodeInfo(node);
         return group.placeFirst - info.first < info.count && group.placeFirst + group.placeCount - info.first <= info.count;
       };
-      tree_.queryPlaces(groupBox, [&](uint32_t place) {
-        for (uint32_t k = 0; k < count; ++k) testVertexTriangle(queries[k], place, out);
+      // Each vertex against a leaf's four boxes at once.
+      tree_.queryLeaves(groupBox, [&](int32_t leaf) {
+        const uint32_t first = tree_.nodeInfo(leaf).first;
+        for (uint32_t k = 0; k < count; ++k)
+          for (unsigned mask = tree_.leafOverlaps(leaf, queries[k].box); mask != 0; mask &= mask - 1)
+            testVertexTriangle(queries[k], first + uint32_t(__builtin_ctz(mask)), out);
       }, skipped);
     });
   }
@@ -689,7 +854,8 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
       const auto [p0, p1] = edgeAtPlace_[k];
       const EdgeBound& b = bounds[k] = {0.5f * (x0[p0] + x0[p1]), 0.5f * glm::length(x0[p0] - x0[p1]),
                                         0.5f * (move[p0] + move[p1]), 0.5f * glm::length(move[p0] - move[p1])};
-      columns.set(k, p0, p1, b.mid, b.halfLength, b.meanMove, b.spread);
+      columns.set(k, edgeTree_.primitive(uint32_t(k)), p0, p1, b.mid, b.halfLength, b.meanMove, b.spread);
+      columns.setVertices(k, {x0[p0], x0[p1]}, {move[p0], move[p1]});
     }
   });
   // Two edges at places of the edge tree whose boxes overlap, not in one
@@ -712,17 +878,10 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     const bool ordered = i < k;
     const uint32_t e = ordered ? i : k, f = ordered ? k : i;
     const uint32_t p0 = ordered ? a0 : b0, p1 = ordered ? a1 : b1, q0 = ordered ? b0 : a0, q1 = ordered ? b1 : a1;
-    const float reach = thickness + closing({p0, p1}, {q0, q1});
-    // Bounding balls first: the segments' points lie within half their
-    // lengths of their midpoints.
-    const float apart = glm::length(0.5f * (x0[p0] + x0[p1] - x0[q0] - x0[q1])) -
-                        0.5f * (glm::length(x0[p0] - x0[p1]) + glm::length(x0[q0] - x0[q1]));
-    if (apart > reach) return;
+    if (!segmentsWithinReach(x0[p0], x0[p1], x0[q0], x0[q1], thickness + closing({p0, p1}, {q0, q1}))) return;
     const glm::vec2 st = closestSegmentParameters(x0[p0], x0[p1], x0[q0], x0[q1]);
     const glm::vec3 d = glm::mix(x0[p0], x0[p1], st.x) - glm::mix(x0[q0], x0[q1], st.y);
-    const float l = glm::length(d);
-    if (l < 1e-9f || l > reach) return;
-    out.push_back({e, f, st, d / l});
+    out.push_back({e, f, st, d / glm::length(d)});
   };
   std::vector<std::vector<EdgeEdge>> found;
   if (exhaustive_) {
@@ -744,9 +903,12 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     const std::vector<AabbTree::PairJob> jobs = edgeTree_.pairJobs(4 * kBlocks, flatEdgePatch);
     found.resize(jobs.size());
     ThreadPool::shared().parallelBlocks(jobs.size(), [&](size_t j) {
-      // The neighbours and the cheap bound above for four pairs at once.
+      // The neighbours and the cheap bound above for four pairs at once,
+      // then the exact test's distance conditions (few pairs pass them).
       edgeTree_.runJobInQuads(jobs[j], [&](uint32_t placeI, uint32_t first, unsigned mask) {
-        for (mask &= columns.apartOrNeighbours(placeI, first, thickness) ^ 0xFu; mask != 0; mask &= mask - 1)
+        mask &= columns.apartOrNeighbours(placeI, first, thickness) ^ 0xFu;
+        if (mask != 0) mask &= columns.withinReach(placeI, first, thickness);
+        for (; mask != 0; mask &= mask - 1)
           testEdgeEdge(placeI, first + uint32_t(__builtin_ctz(mask)), found[j], kScreened);
       }, flatEdgePatch, outOfReach);
     });

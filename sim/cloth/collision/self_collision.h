@@ -44,6 +44,11 @@ struct NormalCone {
   glm::vec3 axis{0.0f};
   float cosine = -1.0f, sine = 0.0f;
 };
+// A cone that holds the normals of both (wide when either is).
+NormalCone mergedCones(const NormalCone& a, const NormalCone& b);
+// cones[k] = mergedCones(cones[k], others[k]) for the lanes k whose bit is
+// set, four at once (SSE: the same float operations, so the same cones).
+void mergeFourCones(NormalCone (&cones)[4], const NormalCone (&others)[4], unsigned lanes);
 
 // Where a part of the cloth is at the start of a step and how its vertices
 // move in the step: the boxes of their start positions and of their moves,
@@ -127,19 +132,26 @@ class SelfCollision {
   // flat patch, -1 if none. Two places are in one flat patch when they have
   // the same such node (a vertex's place: that of its triangle).
   std::vector<int32_t> topFlatNode_, topFlatEdgeNode_, topFlatPlace_, topFlatEdgePlace_;
-  std::vector<NormalCone> triangleCones_, nodeCones_, edgeNodeCones_;
+  std::vector<NormalCone> triangleCones_, edgeCones_, nodeCones_, edgeNodeCones_;
   // Per triangle and edge (in their trees' order), and per node of the trees.
   std::vector<NodeMotion> triangleMotions_, edgeMotions_, nodeMotions_, edgeNodeMotions_;
   // Per place of the edge tree, as columns (see EdgeColumns::resize).
   struct EdgeColumns {
-    std::vector<uint32_t> v0, v1;
+    std::vector<uint32_t> v0, v1, edge;
     std::vector<float> midX, midY, midZ, half, moveX, moveY, moveZ, spread;
+    // The vertices' start positions and moves (vertex v0: index 0, v1: index 1).
+    std::array<std::vector<float>, 2> startX, startY, startZ, stepX, stepY, stepZ;
     void resize(size_t places);
-    void set(size_t place, uint32_t a, uint32_t b, const glm::vec3& mid, float halfLength, const glm::vec3& meanMove,
-             float moveSpread);
+    void set(size_t place, uint32_t e, uint32_t a, uint32_t b, const glm::vec3& mid, float halfLength,
+             const glm::vec3& meanMove, float moveSpread);
+    void setVertices(size_t place, const glm::vec3 (&start)[2], const glm::vec3 (&move)[2]);
     // Bit k set: the edges at places i and first + k share a vertex, or
     // their cheap bound keeps them apart.
     unsigned apartOrNeighbours(uint32_t i, uint32_t first, float thickness) const;
+    // Bit k set: the edges at places i and first + k pass the exact test's
+    // distance conditions (segmentsWithinReach, the same outcome); all set
+    // without SSE.
+    unsigned withinReach(uint32_t i, uint32_t first, float thickness) const;
   };
   EdgeColumns edgeColumns_;
   bool motionBounds_ = true, exhaustive_ = false;

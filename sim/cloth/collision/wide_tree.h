@@ -7,6 +7,7 @@
 // topology of a skinned body never changes). Half the depth of the binary
 // AabbTree, and the boxes a visit compares are side by side in memory.
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -43,6 +44,11 @@ class WideTree {
   // (visited later: their data can be on its way meanwhile).
   template <class VisitSlots, class Prefetch>
   void nearestByNode(const glm::vec3& p, float& best2, VisitSlots&& visitSlots, Prefetch&& prefetch) const;
+  // Whether some primitive's box is within sqrt(bound2) of p, looking only
+  // into the slots of each node whose bits keep(node) sets (the others'
+  // subtrees are skipped).
+  template <class Keep>
+  bool anyNear(const glm::vec3& p, float bound2, Keep&& keep) const;
   // Starts loading a node's boxes into the cache.
   void prefetchNode(int32_t node) const {
 #ifdef MQ_WIDE_TREE_SSE
@@ -53,6 +59,8 @@ class WideTree {
     (void)node;
 #endif
   }
+  // The child node in slot `slot` of node `node`, or -1 (a primitive or empty).
+  int32_t childNodeAt(uint32_t node, int slot) const { return std::max(nodes_[node].child[slot], -1); }
   // The primitive in slot `slot` of node `node`, or -1 (a child node or empty).
   int32_t primitiveAt(uint32_t node, int slot) const {
     const int32_t c = nodes_[node].child[slot];
@@ -178,6 +186,25 @@ void WideTree::nearest(const glm::vec3& p, float& best2, Visit&& visit) const {
     }
     for (int j = 0; j < count; ++j) stack[top++] = near[j];
   }
+}
+
+template <class Keep>
+bool WideTree::anyNear(const glm::vec3& p, float bound2, Keep&& keep) const {
+  if (nodes_.empty()) return false;
+  int32_t stack[256];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const int32_t index = stack[--top];
+    const Node& n = nodes_[index];
+    float d2[4];
+    squaredDistances(n, p, d2);
+    const int slots = withinMask(d2, bound2) & keep(uint32_t(index));
+    if (slots & n.primitiveSlots) return true;
+    for (int k = 0; k < 4; ++k)
+      if ((slots & n.nodeSlots) >> k & 1) stack[top++] = n.child[k];
+  }
+  return false;
 }
 
 template <class VisitSlots, class Prefetch>
