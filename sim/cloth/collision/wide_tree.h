@@ -199,10 +199,10 @@ bool WideTree::anyNear(const glm::vec3& p, float bound2, Keep&& keep) const {
     const Node& n = nodes_[index];
     float d2[4];
     squaredDistances(n, p, d2);
-    const int slots = withinMask(d2, bound2) & keep(uint32_t(index));
-    if (slots & n.primitiveSlots) return true;
+    const int nearSlots = withinMask(d2, bound2) & keep(uint32_t(index));
+    if (nearSlots & n.primitiveSlots) return true;
     for (int k = 0; k < 4; ++k)
-      if ((slots & n.nodeSlots) >> k & 1) stack[top++] = n.child[k];
+      if ((nearSlots & n.nodeSlots) >> k & 1) stack[top++] = n.child[k];
   }
   return false;
 }
