@@ -277,7 +277,9 @@ TEST(BodyCollider, FasterWithinSeesEveryFastTriangleWithinTheRadius) {
           fastNear = glm::length(p - (w.x * a + w.y * b + w.z * c)) < radius;
         }
         const bool said = body.fasterWithin(p, radius, speed);
-        if (fastNear) ASSERT_TRUE(said) << "point " << p.x << " " << p.y << " " << p.z << " radius " << radius << " speed " << speed;
+        if (fastNear) {
+          ASSERT_TRUE(said) << "point " << p.x << " " << p.y << " " << p.z << " radius " << radius << " speed " << speed;
+        }
         (said ? yes : no)++;
       }
   EXPECT_GT(no, 1000);
@@ -338,7 +340,9 @@ TEST(BodyCollider, QueriesFromTheLastQueryAnswerAsAFreshSearch) {
         // The same through the last query without updating it.
         BodyContact since;
         ASSERT_EQ(body.nearestContactSince(points[i], since, radius, last[i]), hit);
-        if (hit) EXPECT_TRUE(sameContact(fresh, since)) << "query " << queries;
+        if (hit) {
+          EXPECT_TRUE(sameContact(fresh, since)) << "query " << queries;
+        }
         if (body.provesNoneWithin(last[i], points[i], radius)) {
           ++provenEmpty;
           ASSERT_FALSE(hit) << "proven empty, yet a contact at " << fresh.signedDistance;

@@ -147,9 +147,9 @@ class BodyCollider {
   };
   std::vector<SlotCorners> slotCorners_;
   // For each node of tree_, the fastest vertex speed in the current frame
-  // under each slot (for fasterWithin()).
+  // under each slot, squared (for fasterWithin()).
   struct alignas(16) SlotSpeeds {
-    float speed[4];
+    float speed2[4];
   };
   std::vector<SlotSpeeds> slotSpeeds_;
   void updateSlotSpeeds();
