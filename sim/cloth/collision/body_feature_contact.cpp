@@ -52,42 +52,6 @@ uint32_t spreadBits(uint32_t x) {
   return x;
 }
 
-// Bit k set: child box k (columns of `lo`, `hi`: [axis][child]) overlaps `box`.
-unsigned overlapMask(const float (&lo)[3][4], const float (&hi)[3][4], const Box& box) {
-#ifdef __SSE2__
-  __m128 inside = _mm_castsi128_ps(_mm_set1_epi32(-1));
-  for (int axis = 0; axis < 3; ++axis)
-    inside = _mm_and_ps(inside, _mm_and_ps(_mm_cmple_ps(_mm_load_ps(lo[axis]), _mm_set1_ps(box.max[axis])),
-                                           _mm_cmple_ps(_mm_set1_ps(box.min[axis]), _mm_load_ps(hi[axis]))));
-  return unsigned(_mm_movemask_ps(inside));
-#else
-  unsigned mask = 0;
-  for (int k = 0; k < 4; ++k)
-    mask |= unsigned((lo[0][k] <= box.max.x) & (box.min.x <= hi[0][k]) & (lo[1][k] <= box.max.y) &
-                     (box.min.y <= hi[1][k]) & (lo[2][k] <= box.max.z) & (box.min.z <= hi[2][k]))
-            << k;
-  return mask;
-#endif
-}
-
-// Splits order[first, first + count) at its middle along the longest axis of
-// the centres; returns the size of the first part.
-uint32_t medianSplit(std::vector<uint32_t>& order, uint32_t first, uint32_t count,
-                     const std::vector<glm::vec3>& centres) {
-  glm::vec3 lo(1e30f), hi(-1e30f);
-  for (uint32_t k = first; k < first + count; ++k)
-    lo = glm::min(lo, centres[order[k]]), hi = glm::max(hi, centres[order[k]]);
-  const glm::vec3 extent = hi - lo;
-  const int axis = extent.x > extent.y ? (extent.x > extent.z ? 0 : 2) : (extent.y > extent.z ? 1 : 2);
-  const uint32_t half = count / 2;
-  std::nth_element(order.begin() + first, order.begin() + first + half, order.begin() + first + count,
-                   [&](uint32_t a, uint32_t b) {
-                     const float ca = centres[a][axis], cb = centres[b][axis];
-                     return ca < cb || (ca == cb && a < b);
-                   });
-  return half;
-}
-
 }  // namespace
 
 BodyFeatureContact::BodyFeatureContact(const std::vector<uint32_t>& clothTriangles,
@@ -164,91 +128,7 @@ void BodyFeatureContact::updateTriangles(const ClothState& s, float thickness) {
     }
   });
   if (search_ != Search::Tree) return;
-  if (nodes_.empty() || refitTree() > kRebuildGrowth * builtSize_) {
-    buildTree();
-    builtSize_ = refitTree();
-  }
-}
-
-void BodyFeatureContact::buildTree() {
-  nodes_.clear();
-  if (boxes_.empty()) return;
-  std::vector<glm::vec3> centres(boxes_.size());
-  for (size_t t = 0; t < boxes_.size(); ++t) centres[t] = 0.5f * (boxes_[t].min + boxes_[t].max);
-  std::vector<uint32_t> order(boxes_.size());
-  for (uint32_t t = 0; t < order.size(); ++t) order[t] = t;
-  nodes_.reserve(boxes_.size() / 2 + 1);
-  buildNode(order, 0, uint32_t(order.size()), centres);
-}
-
-int32_t BodyFeatureContact::buildNode(std::vector<uint32_t>& order, uint32_t first, uint32_t count,
-                                      const std::vector<glm::vec3>& centres) {
-  const int32_t index = int32_t(nodes_.size());
-  nodes_.emplace_back();
-  // Up to four groups: the triangles themselves, or the quarters of two
-  // levels of median splits.
-  uint32_t groupFirst[4], groupCount[4];
-  int groups = 0;
-  if (count <= 4) {
-    for (uint32_t k = 0; k < count; ++k) groupFirst[groups] = first + k, groupCount[groups++] = 1;
-  } else {
-    const uint32_t half = medianSplit(order, first, count, centres);
-    for (const auto& [f, c] : {std::pair{first, half}, std::pair{first + half, count - half}}) {
-      if (c == 1) {
-        groupFirst[groups] = f, groupCount[groups++] = 1;
-        continue;
-      }
-      const uint32_t quarter = medianSplit(order, f, c, centres);
-      groupFirst[groups] = f, groupCount[groups++] = quarter;
-      groupFirst[groups] = f + quarter, groupCount[groups++] = c - quarter;
-    }
-  }
-  int32_t children[4] = {kNoChild, kNoChild, kNoChild, kNoChild};
-  for (int g = 0; g < groups; ++g)
-    children[g] = groupCount[g] == 1 ? ~int32_t(order[groupFirst[g]])
-                                     : buildNode(order, groupFirst[g], groupCount[g], centres);
-  std::copy(children, children + 4, nodes_[index].child);
-  return index;
-}
-
-float BodyFeatureContact::refitTree() {
-  float size = 0.0f;
-  // Children follow their parent, so a reverse sweep is bottom-up.
-  for (size_t i = nodes_.size(); i-- > 0;) {
-    TreeNode& n = nodes_[i];
-    for (int k = 0; k < 4; ++k) {
-      Box b;
-      if (n.child[k] >= 0) {
-        const TreeNode& c = nodes_[n.child[k]];
-        for (int j = 0; j < 4; ++j)
-          b.extend(Box{{c.lo[0][j], c.lo[1][j], c.lo[2][j]}, {c.hi[0][j], c.hi[1][j], c.hi[2][j]}});
-        const glm::vec3 extent = b.max - b.min;
-        size += extent.x + extent.y + extent.z;
-      } else if (n.child[k] != kNoChild) {
-        b = boxes_[uint32_t(~n.child[k])];
-      }
-      for (int axis = 0; axis < 3; ++axis) n.lo[axis][k] = b.min[axis], n.hi[axis][k] = b.max[axis];
-    }
-  }
-  return size;
-}
-
-template <class Visit>
-void BodyFeatureContact::forTrianglesOverlapping(const Box& box, Visit&& visit) const {
-  if (nodes_.empty()) return;
-  int32_t stack[256];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const TreeNode& n = nodes_[stack[--top]];
-    for (unsigned mask = overlapMask(n.lo, n.hi, box); mask != 0; mask &= mask - 1) {
-      const int32_t c = n.child[__builtin_ctz(mask)];
-      if (c >= 0)
-        stack[top++] = c;
-      else
-        visit(uint32_t(~c));
-    }
-  }
+  if (tree_.empty() || tree_.refit(boxes_) > kRebuildGrowth * builtSize_) builtSize_ = tree_.build(boxes_);
 }
 
 // The same arithmetic, in the same order, as the scalar tests with glm would
@@ -332,7 +212,7 @@ std::vector<BodyFeatureContact::Contact> BodyFeatureContact::findContacts(const 
       box.max += glm::vec3(maxDepth_);
       near.clear();
       if (search_ == Search::Tree) {
-        forTrianglesOverlapping(box, [&](uint32_t t) {
+        tree_.query(box, [&](uint32_t t) {
           if (const unsigned mask = nearMask(run, count, t)) near.push_back(t << 4 | mask);
         });
       } else {

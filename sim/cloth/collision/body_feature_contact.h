@@ -32,6 +32,7 @@
 
 #include "sim/cloth/cloth_state.h"
 #include "sim/cloth/collision/aabb_tree.h"
+#include "sim/cloth/collision/wide_tree.h"
 #include "sim/cloth/collision/body_collider.h"
 
 namespace mq::cloth {
@@ -94,22 +95,6 @@ class BodyFeatureContact {
     glm::vec3 centroid;
     float reach;  // circumscribing radius about the centroid plus the thickness
   };
-  // The tree over the cloth's triangles: each node holds its four children's
-  // boxes side by side, so one visit tests them at once; a child is a node or
-  // a triangle. Built by median splits, children after their parent.
-  struct alignas(16) TreeNode {
-    float lo[3][4], hi[3][4];  // the children's boxes: [axis][child]
-    int32_t child[4];  // >= 0: a node; kNoChild: empty (its box is empty); otherwise triangle ~child
-  };
-  static constexpr int32_t kNoChild = INT32_MIN;
-  void buildTree();
-  int32_t buildNode(std::vector<uint32_t>& order, uint32_t first, uint32_t count,
-                    const std::vector<glm::vec3>& centres);
-  // Returns the sum of the half-perimeters of the boxes of the tree's nodes.
-  float refitTree();
-  // Calls visit(triangle) for the triangles whose boxes overlap `box`.
-  template <class Visit>
-  void forTrianglesOverlapping(const Box& box, Visit&& visit) const;
   // Bit k set: body vertex k of the run passes the ball, plane and circle
   // tests of triangle t (k < count).
   unsigned nearMask(const float (&run)[3][4], int count, uint32_t t) const;
@@ -121,7 +106,7 @@ class BodyFeatureContact {
   float maxDepth_ = kMaxDepth;
   std::vector<Plane> planes_;
   std::vector<Box> boxes_;  // the triangles' boxes now
-  std::vector<TreeNode> nodes_;
+  WideTree tree_;  // over boxes_
   // The tree is refitted every call and rebuilt when its nodes' boxes have
   // grown by this factor since it was built (their sum of half-perimeters):
   // cloth keeps its neighbours, so a refitted tree stays good for long.

@@ -27,16 +27,16 @@ uint32_t medianSplit(std::vector<uint32_t>& order, uint32_t first, uint32_t coun
 
 }  // namespace
 
-void WideTree::build(const std::vector<Box>& boxes) {
+float WideTree::build(const std::vector<Box>& boxes) {
   nodes_.clear();
-  if (boxes.empty()) return;
+  if (boxes.empty()) return 0.0f;
   std::vector<glm::vec3> centres(boxes.size());
   for (size_t t = 0; t < boxes.size(); ++t) centres[t] = 0.5f * (boxes[t].min + boxes[t].max);
   std::vector<uint32_t> order(boxes.size());
   for (uint32_t t = 0; t < order.size(); ++t) order[t] = t;
   nodes_.reserve(boxes.size() / 2 + 1);
   buildNode(order, 0, uint32_t(order.size()), centres);
-  refit(boxes);
+  return refit(boxes);
 }
 
 int32_t WideTree::buildNode(std::vector<uint32_t>& order, uint32_t first, uint32_t count,
@@ -73,7 +73,8 @@ int32_t WideTree::buildNode(std::vector<uint32_t>& order, uint32_t first, uint32
   return index;
 }
 
-void WideTree::refit(const std::vector<Box>& boxes) {
+float WideTree::refit(const std::vector<Box>& boxes) {
+  float size = 0.0f;
   // Children follow their parent, so a reverse sweep is bottom-up.
   for (size_t i = nodes_.size(); i-- > 0;) {
     Node& n = nodes_[i];
@@ -82,6 +83,8 @@ void WideTree::refit(const std::vector<Box>& boxes) {
       if (n.child[k] >= 0) {
         const Node& c = nodes_[n.child[k]];
         for (int j = 0; j < 4; ++j) b.extend(Box{{c.minX[j], c.minY[j], c.minZ[j]}, {c.maxX[j], c.maxY[j], c.maxZ[j]}});
+        const glm::vec3 extent = b.max - b.min;
+        size += extent.x + extent.y + extent.z;
       } else if (n.child[k] != kNoChild) {
         b = boxes[uint32_t(~n.child[k])];
       }
@@ -89,6 +92,7 @@ void WideTree::refit(const std::vector<Box>& boxes) {
       n.maxX[k] = b.max.x, n.maxY[k] = b.max.y, n.maxZ[k] = b.max.z;
     }
   }
+  return size;
 }
 
 }  // namespace mq::cloth

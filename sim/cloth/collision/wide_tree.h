@@ -24,9 +24,12 @@ namespace mq::cloth {
 
 class WideTree {
  public:
-  void build(const std::vector<Box>& boxes);
+  // build() and refit() return the sum of the half-perimeters of the boxes
+  // of the tree's nodes: grown much since the build, the tree has gone loose
+  // (a cloth's tree, refitted as the cloth moves, is then rebuilt).
+  float build(const std::vector<Box>& boxes);
   // New boxes for the same primitives.
-  void refit(const std::vector<Box>& boxes);
+  float refit(const std::vector<Box>& boxes);
   // Calls visit(primitive) for every primitive whose box overlaps `box`.
   template <class Visit>
   void query(const Box& box, Visit&& visit) const;
