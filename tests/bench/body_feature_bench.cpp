@@ -12,17 +12,14 @@
 //   mannequin-bench --benchmark_filter=BodyFeature
 #include <benchmark/benchmark.h>
 
-#include <fstream>
 #include <memory>
-#include <sstream>
 
-#include <nlohmann/json.hpp>
 
 #include "core/character/default_mannequin.h"
 #include "core/character/posed_character.h"
-#include "core/garment/garment_json.h"
 #include "sim/cloth/collision/body_feature_contact.h"
 #include "sim/garment/garment_scene.h"
+#include "tests/bench/tshirt_scene.h"
 
 namespace {
 
@@ -38,13 +35,9 @@ struct SewnShirt {
 const SewnShirt& sewnShirt() {
   static const SewnShirt shirt = [] {
     SewnShirt out;
-    const std::string path = std::string(MANNEQUIN_SOURCE_DIR) + "/tests/bench/scenes/tshirt_walk_10k.json";
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    const nlohmann::json doc = nlohmann::json::parse(text.str());
-    const std::vector<mq::Garment> garments = mq::garmentsFromJson(doc["garments"]);
-    const ClothSceneSpec spec = parseClothScene(doc["cloth"], nlohmann::json(), path, true);
+    const mq::bench::TShirtScene scene = mq::bench::loadTShirtScene();
+    const std::vector<mq::Garment>& garments = scene.garments;
+    const ClothSceneSpec& spec = scene.spec;
     const mq::Character mannequin = mq::makeDefaultMannequin();
     mq::PosedCharacter posed;
     posed.evaluate(mannequin, -1, 0.0f, nullptr, nullptr);

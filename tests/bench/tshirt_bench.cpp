@@ -20,18 +20,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <memory>
-#include <sstream>
 
-#include <nlohmann/json.hpp>
 
 #include "core/character/default_mannequin.h"
 #include "core/character/posed_character.h"
-#include "core/garment/garment_json.h"
 #include "sim/cloth/collision/self_collision.h"
 #include "sim/cloth/constraints/stretch_limit.h"
 #include "sim/garment/garment_scene.h"
+#include "tests/bench/tshirt_scene.h"
 
 namespace {
 
@@ -47,13 +44,9 @@ struct ShirtStates {
 const ShirtStates& shirtStates() {
   static const ShirtStates states = [] {
     ShirtStates out;
-    const std::string path = std::string(MANNEQUIN_SOURCE_DIR) + "/tests/bench/scenes/tshirt_walk_10k.json";
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    const nlohmann::json doc = nlohmann::json::parse(text.str());
-    const std::vector<mq::Garment> garments = mq::garmentsFromJson(doc["garments"]);
-    const ClothSceneSpec spec = parseClothScene(doc["cloth"], nlohmann::json(), path, true);
+    const mq::bench::TShirtScene scene = mq::bench::loadTShirtScene();
+    const std::vector<mq::Garment>& garments = scene.garments;
+    const ClothSceneSpec& spec = scene.spec;
     const mq::Character mannequin = mq::makeDefaultMannequin();
     mq::PosedCharacter posed;
     posed.evaluate(mannequin, -1, 0.0f, nullptr, nullptr);  // rest pose

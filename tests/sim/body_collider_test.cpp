@@ -229,15 +229,21 @@ TEST(BodyCollider, NearestTriangleIsTheBruteForceNearestExactly) {
   EXPECT_GT(found, 3000);
 }
 
-TEST(BodyCollider, NearestTriangleOnTheWalkingMannequinIsTheBruteForceNearest) {
+// The default mannequin's body `t` s into its walk, its target one 1/30 s frame later.
+BodyCollider walkingBodyFrameFrom(float t) {
   const Character mannequin = makeDefaultMannequin();
   const int walk = mannequin.findClip("walk");
   PosedCharacter posed;
-  posed.evaluate(mannequin, walk, 0.3f, nullptr, nullptr);
+  posed.evaluate(mannequin, walk, t, nullptr, nullptr);
   BodyCollider body;
   body.setMesh(concatenatedPositions(posed.meshes()), concatenatedTriangles(mannequin), 0.02f);
-  posed.evaluate(mannequin, walk, 0.3f + 1.0f / 30.0f, nullptr, nullptr);
+  posed.evaluate(mannequin, walk, t + 1.0f / 30.0f, nullptr, nullptr);
   body.setTarget(concatenatedPositions(posed.meshes()), 1.0f / 30.0f);
+  return body;
+}
+
+TEST(BodyCollider, NearestTriangleOnTheWalkingMannequinIsTheBruteForceNearest) {
+  BodyCollider body = walkingBodyFrameFrom(0.3f);
   body.moveTo(1.0f);
   int found = 0;
   expectBruteForceNearest(body, probePoints(body, 17, 300, 0.03f), 0.02f, found);
@@ -250,14 +256,7 @@ TEST(BodyCollider, NearestTriangleOnTheWalkingMannequinIsTheBruteForceNearest) {
 // triangle with a vertex faster than the speed is within the radius it says
 // so, and it says no often (else it would prove nothing).
 TEST(BodyCollider, FasterWithinSeesEveryFastTriangleWithinTheRadius) {
-  const Character mannequin = makeDefaultMannequin();
-  const int walk = mannequin.findClip("walk");
-  PosedCharacter posed;
-  posed.evaluate(mannequin, walk, 0.3f, nullptr, nullptr);
-  BodyCollider body;
-  body.setMesh(concatenatedPositions(posed.meshes()), concatenatedTriangles(mannequin), 0.02f);
-  posed.evaluate(mannequin, walk, 0.3f + 1.0f / 30.0f, nullptr, nullptr);
-  body.setTarget(concatenatedPositions(posed.meshes()), 1.0f / 30.0f);
+  BodyCollider body = walkingBodyFrameFrom(0.3f);
   ASSERT_GT(body.maxSpeed(), 1.0f);
   const std::vector<glm::vec3>& x = body.positions();
   const std::vector<uint32_t>& triangles = body.triangles();
