@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "cloth_test_scenes.h"
+#include "garment_test_garments.h"
 #include "core/character/posed_character.h"
 #include "core/garment/garment_json.h"
 #include "core/scene/open_scene.h"
@@ -129,10 +130,10 @@ TEST(BodyFeatureContact, ClothBeyondAThinBodyPartIsLeftAlone) {
 // testing every body vertex against every cloth triangle one at a time, in
 // the same order.
 TEST(BodyFeatureContact, TheTreeFindsThePairsOfTestingEveryTriangle) {
-  const std::string file = std::string(MANNEQUIN_SOURCE_DIR) + "/tests/app/scenes/trousers_walk.json";
-  const LoadedScene scene = openScene(file);
-  const std::vector<Garment> garments = garmentsFromJson(scene.document.garments);
-  const ClothSceneSpec spec = parseClothScene(scene.document.cloth, scene.document.colliders, file, true);
+  const mq::test::TrousersWalk walk;
+  const LoadedScene& scene = walk.scene;
+  const std::vector<Garment>& garments = walk.garments;
+  const ClothSceneSpec& spec = walk.spec;
   ASSERT_EQ(garments.size(), 1u);
   ASSERT_GE(scene.clipIndex, 0);
   PosedCharacter posed;

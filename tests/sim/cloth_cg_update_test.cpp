@@ -11,6 +11,7 @@
 #include "sim/cloth/forces/spring_force.h"
 #include "sim/cloth/integrators/cg_update.h"
 #include "sim/cloth/parallel.h"
+#include "tests/sim/cloth_test_scenes.h"
 
 namespace mq::cloth {
 namespace {
@@ -80,23 +81,13 @@ struct SpringGrid {
   std::vector<Spring> springs;
   SpringGrid() {
     std::mt19937 rng(5);
-    std::uniform_real_distribution<float> jitter(-0.004f, 0.004f), speed(-0.5f, 0.5f), scale(0.8f, 1.2f);
+    std::uniform_real_distribution<float> jitter(-0.004f, 0.004f), speed(-0.5f, 0.5f);
     for (int r = 0; r < kColumns; ++r)
       for (int c = 0; c < kColumns; ++c) {
         state.x.push_back({0.02f * c + jitter(rng), jitter(rng), 0.02f * r + jitter(rng)});
         state.v.push_back({speed(rng), speed(rng), speed(rng)});
       }
-    auto at = [](int r, int c) { return uint32_t(r * kColumns + c); };
-    auto add = [&](uint32_t a, uint32_t b, float k) {
-      springs.push_back({a, b, scale(rng) * glm::length(state.x[a] - state.x[b]), k, 0.02f * k});
-    };
-    for (int r = 0; r < kColumns; ++r)
-      for (int c = 0; c < kColumns; ++c) {
-        if (c + 1 < kColumns) add(at(r, c), at(r, c + 1), 80.0f);
-        if (r + 1 < kColumns) add(at(r, c), at(r + 1, c), 80.0f);
-        if (r + 1 < kColumns && c + 1 < kColumns) add(at(r, c), at(r + 1, c + 1), 40.0f);
-        if (c + 2 < kColumns) add(at(r, c), at(r, c + 2), 10.0f);
-      }
+    springs = test::gridSprings(state.x, kColumns, rng);
   }
 };
 

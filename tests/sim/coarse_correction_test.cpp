@@ -6,6 +6,7 @@
 #include <random>
 
 #include "sim/cloth/integrators/coarse_correction.h"
+#include "tests/sim/cloth_test_scenes.h"
 
 namespace mq::cloth {
 namespace {
@@ -16,20 +17,8 @@ uint32_t at(int row, int column) { return uint32_t(row * kColumns + column); }
 
 // A grid with edge, diagonal and skip-one springs, some stretched, some compressed.
 std::vector<Spring> gridSprings(const ClothState& s) {
-  std::vector<Spring> springs;
   std::mt19937 rng(3);
-  std::uniform_real_distribution<float> scale(0.8f, 1.2f);
-  auto add = [&](uint32_t a, uint32_t b, float k) {
-    springs.push_back({a, b, scale(rng) * glm::length(s.x[a] - s.x[b]), k, 0.02f * k});
-  };
-  for (int r = 0; r < kColumns; ++r)
-    for (int c = 0; c < kColumns; ++c) {
-      if (c + 1 < kColumns) add(at(r, c), at(r, c + 1), 80.0f);
-      if (r + 1 < kColumns) add(at(r, c), at(r + 1, c), 80.0f);
-      if (r + 1 < kColumns && c + 1 < kColumns) add(at(r, c), at(r + 1, c + 1), 40.0f);
-      if (c + 2 < kColumns) add(at(r, c), at(r, c + 2), 10.0f);
-    }
-  return springs;
+  return test::gridSprings(s.x, kColumns, rng);
 }
 
 ClothState jitteredGrid() {

@@ -2,8 +2,12 @@
 // Small garments shared by the garment tests.
 
 #include <string>
+#include <vector>
 
 #include "core/garment/garment.h"
+#include "core/garment/garment_json.h"
+#include "core/scene/open_scene.h"
+#include "sim/cloth/cloth_scene_io.h"
 
 namespace mq::test {
 
@@ -25,5 +29,14 @@ inline Garment twoSewnSquares(float y = 1.0f) {
   g.seams.push_back({"left", "east", "right", "west", true});
   return g;
 }
+
+// tests/app/scenes/trousers_walk.json: the default mannequin's walk with
+// trousers, its garments and cloth settings as read.
+struct TrousersWalk {
+  std::string file = std::string(MANNEQUIN_SOURCE_DIR) + "/tests/app/scenes/trousers_walk.json";
+  LoadedScene scene = openScene(file);
+  std::vector<Garment> garments = garmentsFromJson(scene.document.garments);
+  cloth::ClothSceneSpec spec = cloth::parseClothScene(scene.document.cloth, scene.document.colliders, file, true);
+};
 
 }  // namespace mq::test

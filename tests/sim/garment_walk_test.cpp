@@ -17,6 +17,7 @@
 #include "sim/cloth/collision/proximity.h"
 #include "sim/garment/drape_schedule.h"
 #include "sim/garment/garment_scene.h"
+#include "tests/sim/garment_test_garments.h"
 
 namespace mq::cloth {
 namespace {
@@ -61,10 +62,10 @@ int skinInFrontOfTheCloth(const std::vector<float>& body, const std::vector<uint
 }
 
 TEST(GarmentWalk, TrousersKeepTheBentKneeCovered) {
-  const std::string file = std::string(MANNEQUIN_SOURCE_DIR) + "/tests/app/scenes/trousers_walk.json";
-  const LoadedScene scene = openScene(file);
-  const std::vector<Garment> garments = garmentsFromJson(scene.document.garments);
-  const ClothSceneSpec spec = parseClothScene(scene.document.cloth, scene.document.colliders, file, true);
+  const mq::test::TrousersWalk walk;
+  const LoadedScene& scene = walk.scene;
+  const std::vector<Garment>& garments = walk.garments;
+  const ClothSceneSpec& spec = walk.spec;
   ASSERT_EQ(garments.size(), 1u);
   ASSERT_GE(scene.clipIndex, 0);
   const int clip = scene.clipIndex;
