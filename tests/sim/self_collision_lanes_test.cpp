@@ -2,14 +2,17 @@
 // stand in for, which define its candidates: the edge-edge distance test
 // (the search drops the pairs it rejects), also where the float arithmetic
 // is delicate (parallel and point segments, reach at the distance), and the
-// normal cones' merges (flat patches), bit for bit.
+// normal cones' merges (flat patches) and the vertex-triangle screen, bit
+// for bit.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <set>
 
 #include "sim/cloth/collision/segment_reach.h"
 #include "sim/cloth/collision/self_collision.h"
+#include "sim/cloth/collision/triangle_reach.h"
 
 namespace mq::cloth {
 namespace {
@@ -148,6 +151,63 @@ TEST(NormalCones, FourLaneMergesGiveTheScalarCones) {
   }
   EXPECT_GT(flat, 10000);
   EXPECT_GT(wide, 10000);
+}
+
+// Cloth-like triangles (1.5 cm) with random moves, some of them collapsed to
+// a point or to a segment; the vertices near them, half of them at the
+// screen's bound to the last bits, some of them a corner, some in the
+// triangle's flat patch.
+TEST(TriangleScreen, FourLanesGiveTheScalarAnswers) {
+  std::mt19937 rng(2027);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f), fraction(0.0f, 1.0f);
+  auto direction = [&](float length) { return glm::vec3(unit(rng), unit(rng), unit(rng)) * length; };
+  const uint32_t places = 4096;
+  const float thickness = 0.004f;
+  TriangleColumns columns;
+  columns.resize(places);
+  std::vector<TriangleReach> reaches(places);
+  std::vector<std::array<uint32_t, 3>> corners(places);
+  std::vector<int32_t> flats(places);
+  for (uint32_t k = 0; k < places; ++k) {
+    glm::vec3 start[3], moves[3];
+    start[0] = direction(0.3f);
+    start[1] = start[0] + direction(0.015f);
+    start[2] = rng() % 8 == 0 ? start[0] : start[0] + direction(0.015f);  // some collapsed
+    if (rng() % 8 == 0) start[1] = glm::mix(start[0], start[2], fraction(rng));
+    const glm::vec3 common = direction(0.01f);
+    for (glm::vec3& m : moves) m = common + direction(rng() % 2 ? 0.002f : 0.0f);
+    corners[k] = {uint32_t(3 * k), uint32_t(3 * k + 1), uint32_t(3 * k + 2)};
+    flats[k] = rng() % 3 == 0 ? -1 : int32_t(rng() % 8);
+    reaches[k] = triangleReach(start, moves);
+    columns.set(k, corners[k], flats[k], reaches[k]);
+  }
+  int passed = 0, failed = 0, boundPassed = 0, boundFailed = 0;  // boundX: the lane placed at the bound
+  for (int round = 0; round < 40000; ++round) {
+    const uint32_t first = uint32_t(rng() % (places - 3)), near = first + uint32_t(rng() % 4);
+    const TriangleReach& t = reaches[near];
+    const uint32_t vertex = rng() % 16 == 0 ? corners[near][rng() % 3] : uint32_t(3 * places + rng() % 100);
+    const int32_t flat = rng() % 4 == 0 ? flats[near] : int32_t(rng() % 8) - 1;
+    const glm::vec3 move = t.meanMove + direction(0.003f);
+    const float farthest = thickness + glm::length(move - t.meanMove) + t.spread;
+    const glm::vec3 away = glm::normalize(direction(1.0f) + glm::vec3(0.0f, 0.0f, 1e-3f));
+    const bool atBound = rng() % 2 == 0;
+    glm::vec3 start = t.centre + away * (atBound ? t.radius + 1.0001f * farthest + 1e-6f : 0.05f * fraction(rng));
+    for (int ulps = int(rng() % 5) - 2; ulps != 0; ulps += ulps > 0 ? -1 : 1)
+      start.x = std::nextafter(start.x, ulps > 0 ? 1.0f : -1.0f);
+    unsigned expected = 0;
+    for (uint32_t k = 0; k < 4; ++k) {
+      const bool scalar = columns.screen(first + k, vertex, flat, start, move, thickness);
+      expected |= unsigned(scalar) << k;
+      (scalar ? passed : failed) += 1;
+      const bool screenedByIndex = vertex < 3 * places || (flat >= 0 && flat == flats[near]);
+      if (atBound && first + k == near && !screenedByIndex) (scalar ? boundPassed : boundFailed) += 1;
+    }
+    ASSERT_EQ(columns.screenFour(first, vertex, flat, start, move, thickness), expected) << "round " << round;
+  }
+  EXPECT_GT(passed, 10000);
+  EXPECT_GT(failed, 100000);
+  EXPECT_GT(boundPassed, 1000);
+  EXPECT_GT(boundFailed, 1000);
 }
 
 }  // namespace

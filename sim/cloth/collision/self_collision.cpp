@@ -738,27 +738,15 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     });
   }
   findFlatPatches(s, x0);
-  // A cheap bound before the exact vertex-triangle test, as for the edges
-  // below: the triangle lies within `radius` of its centre, and a vertex's
-  // move differs from its corners' by at most |move - meanMove| + spread.
-  struct TriangleBound {
-    glm::vec3 centre;
-    float radius;
-    glm::vec3 meanMove;
-    float spread;
-  };
-  std::vector<TriangleBound> triangleBounds(triangleCount);  // by place
+  // The screen before the exact vertex-triangle test (corners, flat patches
+  // and a cheap bound, as for the edges below), by place.
+  triangleColumns_.resize(triangleCount);
   inChunks(triangleCount, 4096, [&](size_t k0, size_t k1) {
     for (size_t k = k0; k < k1; ++k) {
       const std::array<uint32_t, 3>& corners = triangleAtPlace_[k];
-      TriangleBound& b = triangleBounds[k];
-      b.centre = (x0[corners[0]] + x0[corners[1]] + x0[corners[2]]) / 3.0f;
-      b.meanMove = (move[corners[0]] + move[corners[1]] + move[corners[2]]) / 3.0f;
-      b.radius = b.spread = 0.0f;
-      for (int k = 0; k < 3; ++k) {
-        b.radius = std::max(b.radius, glm::length(x0[corners[k]] - b.centre));
-        b.spread = std::max(b.spread, glm::length(move[corners[k]] - b.meanMove));
-      }
+      const glm::vec3 start[3] = {x0[corners[0]], x0[corners[1]], x0[corners[2]]};
+      const glm::vec3 moves[3] = {move[corners[0]], move[corners[1]], move[corners[2]]};
+      triangleColumns_.set(k, corners, topFlatPlace_[k], triangleReach(start, moves));
     }
   });
   // A vertex's query: its box (of the trees' kind) and swept box, and its
@@ -773,18 +761,17 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     const int32_t flat = vertexPlace_[v] == UINT32_MAX ? -1 : topFlatPlace_[vertexPlace_[v]];
     return VertexQuery{v, flat, swept && !checkSwept ? vertexSwept : relativeBox({v}), vertexSwept};
   };
-  // A vertex and the triangle at a place in the tree: whose boxes overlap,
-  // not in one flat patch, within reach.
+  // Whether a vertex and the triangle at a place in the tree pass the screen.
+  auto screened = [&](const VertexQuery& q, uint32_t place) {
+    return triangleColumns_.screen(place, q.vertex, q.flat, x0[q.vertex], move[q.vertex], thickness);
+  };
+  // A vertex and the triangle at a place in the tree whose boxes overlap and
+  // that passed the screen: within reach.
   auto testVertexTriangle = [&](const VertexQuery& q, uint32_t place, std::vector<VertexTriangle>& out) {
     const uint32_t v = q.vertex;
-    if (!q.box.overlaps(tree_.leafBox(place)) || (q.flat >= 0 && q.flat == topFlatPlace_[place])) return;
     if (bounded && !withinReach(triangleMotions_[place], x0[v], move[v], thickness)) return;
-    const auto [a, b, c] = triangleAtPlace_[place];
-    if (v == a || v == b || v == c) return;
     if (checkSwept && !q.swept.overlaps(sweptBoxes[place])) return;
-    const TriangleBound& bound = triangleBounds[place];
-    const float farthest = thickness + glm::length(move[v] - bound.meanMove) + bound.spread;
-    if (glm::length(x0[v] - bound.centre) - bound.radius > 1.0001f * farthest + 1e-6f) return;
+    const auto [a, b, c] = triangleAtPlace_[place];
     const glm::vec3 w = closestTriangleWeights(x0[v], x0[a], x0[b], x0[c]);
     const glm::vec3 normal = glm::cross(x0[b] - x0[a], x0[c] - x0[a]);
     const glm::vec3 offset = x0[v] - (w.x * x0[a] + w.y * x0[b] + w.z * x0[c]);
@@ -796,7 +783,8 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
   if (exhaustive_) {
     vertexTriangle_ = collectInBlocks<VertexTriangle>(n, [&](size_t v, std::vector<VertexTriangle>& out) {
       const VertexQuery q = vertexQuery(uint32_t(v));
-      for (uint32_t place = 0; place < triangleCount; ++place) testVertexTriangle(q, place, out);
+      for (uint32_t place = 0; place < triangleCount; ++place)
+        if (q.box.overlaps(tree_.leafBox(place)) && screened(q, place)) testVertexTriangle(q, place, out);
     });
   } else {
     // One query per vertex group (vertices close in the tree, so close in
@@ -823,12 +811,16 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
         const AabbTree::NodeInfo info = tree_.nodeInfo(node);
         return group.placeFirst - info.first < info.count && group.placeFirst + group.placeCount - info.first <= info.count;
       };
-      // Each vertex against a leaf's four boxes at once.
+      // Each vertex against a leaf's four boxes and screens at once.
       tree_.queryLeaves(groupBox, [&](int32_t leaf) {
         const uint32_t first = tree_.nodeInfo(leaf).first;
-        for (uint32_t k = 0; k < count; ++k)
-          for (unsigned mask = tree_.leafOverlaps(leaf, queries[k].box); mask != 0; mask &= mask - 1)
-            testVertexTriangle(queries[k], first + uint32_t(__builtin_ctz(mask)), out);
+        for (uint32_t k = 0; k < count; ++k) {
+          const VertexQuery& q = queries[k];
+          unsigned mask = tree_.leafOverlaps(leaf, q.box);
+          if (mask != 0)
+            mask &= triangleColumns_.screenFour(first, q.vertex, q.flat, x0[q.vertex], move[q.vertex], thickness);
+          for (; mask != 0; mask &= mask - 1) testVertexTriangle(q, first + uint32_t(__builtin_ctz(mask)), out);
+        }
       }, skipped);
     });
   }

@@ -33,6 +33,7 @@
 
 #include "sim/cloth/cloth_state.h"
 #include "sim/cloth/collision/aabb_tree.h"
+#include "sim/cloth/collision/triangle_reach.h"
 
 namespace mq::cloth {
 
@@ -128,6 +129,7 @@ class SelfCollision {
     uint32_t vertexBegin, vertexEnd, placeFirst, placeCount;
   };
   std::vector<VertexGroup> vertexGroups_;
+  TriangleColumns triangleColumns_;  // per place of the triangle tree, for the vertex-triangle screen
   // Per place of the triangle and edge trees: its highest ancestor that is a
   // flat patch, -1 if none. Two places are in one flat patch when they have
   // the same such node (a vertex's place: that of its triangle).
