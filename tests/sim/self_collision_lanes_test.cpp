@@ -6,6 +6,7 @@
 // for bit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <set>
@@ -114,6 +115,47 @@ TEST(AabbTree, LeafQueriesTwoLevelsAtATimeFindEveryOverlappingBox) {
       EXPECT_EQ(found, expected);
     }
   }
+}
+
+TEST(AabbTree, LeafQueriesFromSharedEntriesFindTheLeavesOfQueriesFromTheRoot) {
+  // The vertex groups of a run start their walks where the run's walk
+  // parts: each group's leaves are those of its walk from the root, with
+  // the same nodes skipped, for any split.
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<float> position(0.0f, 1.0f), size(0.0f, 0.05f);
+  std::vector<Box> boxes(3001);
+  for (Box& b : boxes) {
+    b.min = {position(rng), position(rng), position(rng)};
+    b.max = b.min + glm::vec3(size(rng), size(rng), size(rng));
+  }
+  AabbTree tree;
+  tree.build(boxes);
+  std::vector<uint8_t> skipped(tree.nodeCount());
+  for (uint8_t& s : skipped) s = rng() % 16 == 0;
+  skipped[0] = 0;
+  size_t leaves = 0;
+  auto skip = [&](int32_t node) { return skipped[size_t(node)] != 0; };
+  std::vector<AabbTree::Entry> entries;
+  for (int run = 0; run < 200; ++run) {
+    const glm::vec3 centre(position(rng), position(rng), position(rng));
+    Box probes[6], around;
+    for (Box& probe : probes) {
+      const glm::vec3 at = centre + 0.1f * glm::vec3(position(rng), position(rng), position(rng));
+      probe = {at, at + glm::vec3(0.05f * position(rng))};
+      around.extend(probe);
+    }
+    tree.queryEntries(around, uint32_t(1 + rng() % 400), skip, entries);
+    for (const Box& probe : probes) {
+      std::vector<int32_t> fromRoot, fromEntries;
+      tree.queryLeaves(probe, [&](int32_t leaf) { fromRoot.push_back(leaf); }, skip);
+      tree.queryLeavesFrom(entries, probe, [&](int32_t leaf) { fromEntries.push_back(leaf); }, skip);
+      std::sort(fromRoot.begin(), fromRoot.end());
+      std::sort(fromEntries.begin(), fromEntries.end());
+      ASSERT_EQ(fromEntries, fromRoot) << "run " << run;
+      leaves += fromRoot.size();
+    }
+  }
+  EXPECT_GT(leaves, 500u);
 }
 
 // Cones around random axes, many near the flat limit (45 degrees), some

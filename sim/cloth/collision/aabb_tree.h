@@ -50,6 +50,20 @@ class AabbTree {
   // is asked only of those: it may leave out less than with query().
   template <class VisitLeaf, class Skip>
   void queryLeaves(const Box& box, VisitLeaf&& visitLeaf, Skip&& skip) const;
+  // queryLeaves() in two parts, for many boxes near each other: the places
+  // where the walks for the boxes within `around` part (the first nodes of
+  // at most `split` primitives, or leaves, that overlap it and that skip()
+  // keeps), then one box's walk from them. A walk from them visits the
+  // leaves a walk from the root visits when the first part's skip leaves
+  // out no node the second's keeps (it may visit more where a node the
+  // second's skip leaves out is above an entry).
+  struct Entry {
+    int32_t node, grand;  // grand: the node's GrandNode, -1 for a leaf
+  };
+  template <class Skip>
+  void queryEntries(const Box& around, uint32_t split, Skip&& skip, std::vector<Entry>& entries) const;
+  template <class VisitLeaf, class Skip>
+  void queryLeavesFrom(const std::vector<Entry>& entries, const Box& box, VisitLeaf&& visitLeaf, Skip&& skip) const;
   // Bit k set: the box of the leaf's primitive at place nodeInfo(leaf).first + k overlaps `box`.
   unsigned leafOverlaps(int32_t leaf, const Box& box) const { return overlapMask(leafQuads_[nodes_[leaf].quad], box); }
   // Calls visit(primitive) for the primitives whose box is closer to p than
@@ -129,6 +143,10 @@ class AabbTree {
     int32_t below[4];  // the GrandNode of a lane's node, -1 for a leaf or none
   };
   int32_t buildGrandNode(int32_t node);
+  // queryLeaves()'s walk below a GrandNode; a node for which enter(node,
+  // grand) is false is not walked into (enter is asked of inner nodes only).
+  template <class VisitLeaf, class Skip, class Enter>
+  void walkGrandNodes(int32_t grand, const Box& box, VisitLeaf& visitLeaf, Skip& skip, Enter& enter) const;
   void gatherGrandBoxes();
   int32_t buildNode(uint32_t first, uint32_t count, const std::vector<Box>& boxes);
   // visit: as runJobInQuads()'s visitQuad.
@@ -203,13 +221,11 @@ void AabbTree::queryPlaces(const Box& box, Visit&& visit, Skip&& skip) const {
   }
 }
 
-template <class VisitLeaf, class Skip>
-void AabbTree::queryLeaves(const Box& box, VisitLeaf&& visitLeaf, Skip&& skip) const {
-  if (nodes_.empty() || !nodes_[0].box.overlaps(box) || skip(0)) return;
-  if (nodes_[0].left < 0) return visitLeaf(0);
+template <class VisitLeaf, class Skip, class Enter>
+void AabbTree::walkGrandNodes(int32_t grand, const Box& box, VisitLeaf& visitLeaf, Skip& skip, Enter& enter) const {
   int32_t stack[64];
   int top = 0;
-  stack[top++] = 0;
+  stack[top++] = grand;
   while (top > 0) {
     const GrandNode& g = grandNodes_[stack[--top]];
     for (unsigned mask = overlapMask(g.boxes, box); mask != 0; mask &= mask - 1) {
@@ -217,9 +233,44 @@ void AabbTree::queryLeaves(const Box& box, VisitLeaf&& visitLeaf, Skip&& skip) c
       if (skip(g.node[lane])) continue;
       if (g.below[lane] < 0)
         visitLeaf(g.node[lane]);
-      else
+      else if (enter(g.node[lane], g.below[lane]))
         stack[top++] = g.below[lane];
     }
+  }
+}
+
+template <class VisitLeaf, class Skip>
+void AabbTree::queryLeaves(const Box& box, VisitLeaf&& visitLeaf, Skip&& skip) const {
+  if (nodes_.empty() || !nodes_[0].box.overlaps(box) || skip(0)) return;
+  if (nodes_[0].left < 0) return visitLeaf(0);
+  auto always = [](int32_t, int32_t) { return true; };
+  walkGrandNodes(0, box, visitLeaf, skip, always);
+}
+
+template <class Skip>
+void AabbTree::queryEntries(const Box& around, uint32_t split, Skip&& skip, std::vector<Entry>& entries) const {
+  entries.clear();
+  if (nodes_.empty() || !nodes_[0].box.overlaps(around) || skip(0)) return;
+  if (nodes_[0].left < 0 || nodes_[0].count <= split) return entries.push_back({0, nodes_[0].left < 0 ? -1 : 0});
+  auto leaf = [&](int32_t node) { entries.push_back({node, -1}); };
+  auto enter = [&](int32_t node, int32_t grand) {
+    if (nodes_[node].count > split) return true;
+    entries.push_back({node, grand});
+    return false;
+  };
+  walkGrandNodes(0, around, leaf, skip, enter);
+}
+
+template <class VisitLeaf, class Skip>
+void AabbTree::queryLeavesFrom(const std::vector<Entry>& entries, const Box& box, VisitLeaf&& visitLeaf,
+                               Skip&& skip) const {
+  auto always = [](int32_t, int32_t) { return true; };
+  for (const Entry& e : entries) {
+    if (!nodes_[e.node].box.overlaps(box) || skip(e.node)) continue;
+    if (e.grand < 0)
+      visitLeaf(e.node);
+    else
+      walkGrandNodes(e.grand, box, visitLeaf, skip, always);
   }
 }
 

@@ -790,38 +790,70 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     // One query per vertex group (vertices close in the tree, so close in
     // space) with the group's box and motion, then each vertex against the
     // triangles found: the pairs of the vertices' own queries. The groups in
-    // the tree's order: one query after the other walks the same nodes.
-    vertexTriangle_ = collectInBlocks<VertexTriangle>(vertexGroups_.size(), [&](size_t g, std::vector<VertexTriangle>& out) {
-      const VertexGroup& group = vertexGroups_[g];
-      VertexQuery queries[kGroupVertices];
-      Box groupBox;
-      NodeMotion groupMotion;
-      uint32_t count = 0;
-      for (uint32_t i = group.vertexBegin; i < group.vertexEnd; ++i) {
-        const uint32_t v = vertexOrder_[i];
-        queries[count] = vertexQuery(v);
-        groupBox.extend(queries[count++].box);
-        if (bounded) extend(groupMotion, pointMotion(x0[v], move[v]));
-      }
-      // Not into a node out of the group's reach, nor into a flat patch that
-      // holds all the group's places (no triangle there can reach its vertices).
-      auto skipped = [&](int32_t node) {
-        if (bounded && !withinReach(nodeMotions_[node], groupMotion, thickness)) return true;
-        if (!flatTrianglePatch_[node] || group.placeCount == 0) return false;
-        const AabbTree::NodeInfo info = tree_.nodeInfo(node);
-        return group.placeFirst - info.first < info.count && group.placeFirst + group.placeCount - info.first <= info.count;
-      };
-      // Each vertex against a leaf's four boxes and screens at once.
-      tree_.queryLeaves(groupBox, [&](int32_t leaf) {
-        const uint32_t first = tree_.nodeInfo(leaf).first;
-        for (uint32_t k = 0; k < count; ++k) {
-          const VertexQuery& q = queries[k];
-          unsigned mask = tree_.leafOverlaps(leaf, q.box);
-          if (mask != 0)
-            mask &= triangleColumns_.screenFour(first, q.vertex, q.flat, x0[q.vertex], move[q.vertex], thickness);
-          for (; mask != 0; mask &= mask - 1) testVertexTriangle(q, first + uint32_t(__builtin_ctz(mask)), out);
+    // the tree's order, a few at a time: their walks start where they part
+    // (their nodes near the root are the same), one after the other walks
+    // the same nodes.
+    struct GroupQuery {
+      uint32_t begin = 0, end = 0, placeFirst = 0, placeCount = 0;  // its vertices' queries [begin, end)
+      Box box;
+      NodeMotion motion;
+    };
+    // Not into a node out of the vertices' reach, nor into a flat patch that
+    // holds all their places (no triangle there can reach them).
+    auto skipped = [&](int32_t node, const GroupQuery& g) {
+      if (bounded && !withinReach(nodeMotions_[node], g.motion, thickness)) return true;
+      if (!flatTrianglePatch_[node] || g.placeCount == 0) return false;
+      const AabbTree::NodeInfo info = tree_.nodeInfo(node);
+      return g.placeFirst - info.first < info.count && g.placeFirst + g.placeCount - info.first <= info.count;
+    };
+    const size_t runs = (vertexGroups_.size() + kRunGroups - 1) / kRunGroups;
+    vertexTriangle_ = collectInBlocks<VertexTriangle>(runs, [&](size_t r, std::vector<VertexTriangle>& out) {
+      const size_t g0 = r * kRunGroups, g1 = std::min(vertexGroups_.size(), g0 + kRunGroups);
+      GroupQuery groups[kRunGroups];
+      std::vector<VertexQuery> queries;
+      queries.reserve(vertexGroups_[g1 - 1].vertexEnd - vertexGroups_[g0].vertexBegin);
+      // The run's box, motion and places hold its groups' (no places: a vertex without a triangle).
+      GroupQuery run;
+      uint32_t placeEnd = 0;
+      bool placeless = false;
+      run.placeFirst = UINT32_MAX;
+      for (size_t g = g0; g < g1; ++g) {
+        const VertexGroup& group = vertexGroups_[g];
+        GroupQuery& q = groups[g - g0];
+        q.begin = uint32_t(queries.size());
+        for (uint32_t i = group.vertexBegin; i < group.vertexEnd; ++i) {
+          const uint32_t v = vertexOrder_[i];
+          queries.push_back(vertexQuery(v));
+          q.box.extend(queries.back().box);
+          if (bounded) extend(q.motion, pointMotion(x0[v], move[v]));
         }
-      }, skipped);
+        q.end = uint32_t(queries.size());
+        q.placeFirst = group.placeFirst, q.placeCount = group.placeCount;
+        run.box.extend(q.box);
+        if (bounded) extend(run.motion, q.motion);
+        placeless |= group.placeCount == 0;
+        run.placeFirst = std::min(run.placeFirst, group.placeFirst);
+        placeEnd = std::max(placeEnd, group.placeFirst + group.placeCount);
+      }
+      run.placeCount = placeless ? 0 : placeEnd - run.placeFirst;
+      // The run's box, motion and places hold each group's: its walk leaves
+      // out no node a group's walk keeps.
+      std::vector<AabbTree::Entry> entries;
+      tree_.queryEntries(run.box, kRunSplit, [&](int32_t node) { return skipped(node, run); }, entries);
+      for (size_t g = g0; g < g1; ++g) {
+        const GroupQuery& group = groups[g - g0];
+        // Each vertex against a leaf's four boxes and screens at once.
+        tree_.queryLeavesFrom(entries, group.box, [&](int32_t leaf) {
+          const uint32_t first = tree_.nodeInfo(leaf).first;
+          for (uint32_t k = group.begin; k < group.end; ++k) {
+            const VertexQuery& q = queries[k];
+            unsigned mask = tree_.leafOverlaps(leaf, q.box);
+            if (mask != 0)
+              mask &= triangleColumns_.screenFour(first, q.vertex, q.flat, x0[q.vertex], move[q.vertex], thickness);
+            for (; mask != 0; mask &= mask - 1) testVertexTriangle(q, first + uint32_t(__builtin_ctz(mask)), out);
+          }
+        }, [&](int32_t node) { return skipped(node, group); });
+      }
     });
   }
   // In order of the vertex, then the triangle (the tree's order depends on the boxes).

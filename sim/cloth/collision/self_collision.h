@@ -9,7 +9,9 @@
 // position constraint) and loses its approaching relative normal velocity.
 // Pairs are processed in a fixed order: deterministic. The vertices are
 // looked up in the triangle tree a few at a time (those whose first triangle
-// in the tree is in one leaf), the edge pairs from the edge tree against itself.
+// in the tree is in one small subtree), the walks of a few such groups started
+// together, and each pair screened four triangles at once (TriangleColumns)
+// before its exact test; the edge pairs from the edge tree against itself.
 //
 // A candidate also passes dist(x0) <= thickness + the largest difference of
 // its vertices' moves in the step. When the moves differ much (a sleeve
@@ -109,7 +111,11 @@ class SelfCollision {
   std::vector<VertexTriangle> vertexTriangle_;
   std::vector<EdgeEdge> edgeEdge_;
   // The most triangles whose vertices are queried as one group, and the most vertices in a group.
-  static constexpr uint32_t kGroupTriangles = 4, kGroupVertices = 3 * kGroupTriangles;
+  static constexpr uint32_t kGroupTriangles = 8, kGroupVertices = 3 * kGroupTriangles;
+  // Groups whose walks start together, where the walk for their boxes' union
+  // reaches nodes of at most kRunSplit triangles.
+  static constexpr size_t kRunGroups = 8;
+  static constexpr uint32_t kRunSplit = 128;
   static constexpr int kRebuildEvery = 16;  // steps between tree rebuilds (refitted in between)
   int stepsSinceBuild_ = 0;
   // Per node of the edge and triangle trees: its primitives are connected
