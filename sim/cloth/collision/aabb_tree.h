@@ -337,8 +337,13 @@ void AabbTree::pairsBetween(int32_t a, int32_t b, Visit& visit, SkipBetween& ski
     const Node& split = splitA ? na : nb;
     const Box& other = splitA ? nb.box : na.box;
     for (const int32_t child : {split.right, split.left}) {
+      const Node& c = nodes_[child];
       stack[top] = splitA ? NodePair{child, pair.b} : NodePair{pair.a, child};
-      top += int(nodes_[child].box.overlaps(other));
+      top += int(c.box.overlaps(other));
+      // What the pair reads once popped, fetched now (the walk waits on
+      // memory): a leaf's boxes, or an inner node's right child (the left
+      // one follows it in nodes_).
+      __builtin_prefetch(c.left < 0 ? static_cast<const void*>(&leafQuads_[c.quad]) : &nodes_[c.right]);
     }
   }
 }
