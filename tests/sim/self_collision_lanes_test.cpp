@@ -1,9 +1,9 @@
 // The self-collision's four-lane computations against the scalar ones they
 // stand in for, which define its candidates: the edge-edge distance test
 // (the search drops the pairs it rejects), also where the float arithmetic
-// is delicate (parallel and point segments, reach at the distance), and the
-// normal cones' merges (flat patches) and the vertex-triangle screen, bit
-// for bit.
+// is delicate (parallel and point segments, reach at the distance), its
+// cheaper screen (never dropping a pair the scalar test keeps), the normal
+// cones' merges (flat patches) and the vertex-triangle screen, bit for bit.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -79,6 +79,41 @@ TEST(SegmentReach, FourLanesGiveTheScalarAnswers) {
   }
   EXPECT_GT(within, 10000);
   EXPECT_GT(apart, 10000);
+}
+
+TEST(SegmentReach, TheMidpointLineBoundRejectsOnlyPairsTheScalarTestRejects) {
+  // The edge search's screen (segmentsApart) drops pairs before their exact
+  // test: it must never drop one the scalar test keeps, also with the reach
+  // at the distance to the last bit, and it must drop most pairs whose
+  // distance is well beyond the reach. Its inputs as the search computes them.
+  std::mt19937 rng(33);
+  int kept = 0, dropped = 0, farDropped = 0, far = 0;
+  for (int round = 0; round < 20000; ++round) {
+    SegmentPair pairs[4];
+    float reach[4];
+    float mid[3][4], halfP[3][4], halfQ[3][4];
+    for (int k = 0; k < 4; ++k) {
+      pairs[k] = randomPair(rng);
+      // A quarter of the lanes with a small reach: their segments are far apart.
+      if (k == 3) pairs[k].reach *= 0.25f;
+      reach[k] = pairs[k].reach;
+      const glm::vec3 m = 0.5f * (pairs[k].p0 + pairs[k].p1) - 0.5f * (pairs[k].q0 + pairs[k].q1);
+      const glm::vec3 hp = 0.5f * (pairs[k].p1 - pairs[k].p0), hq = 0.5f * (pairs[k].q1 - pairs[k].q0);
+      for (int c = 0; c < 3; ++c) mid[c][k] = m[c], halfP[c][k] = hp[c], halfQ[c][k] = hq[c];
+    }
+    auto lanes3 = [](float (&v)[3][4]) { return Vec3x4{_mm_loadu_ps(v[0]), _mm_loadu_ps(v[1]), _mm_loadu_ps(v[2])}; };
+    const unsigned apart = segmentsApart(lanes3(mid), lanes3(halfP), lanes3(halfQ), _mm_loadu_ps(reach));
+    for (int k = 0; k < 4; ++k) {
+      const bool within = segmentsWithinReach(pairs[k].p0, pairs[k].p1, pairs[k].q0, pairs[k].q1, pairs[k].reach);
+      const bool drop = (apart >> k & 1u) != 0;
+      ASSERT_FALSE(within && drop) << "round " << round << " lane " << k;
+      (drop ? dropped : kept) += 1;
+      if (k == 3 && !within) far += 1, farDropped += drop;
+    }
+  }
+  EXPECT_GT(kept, 20000);
+  EXPECT_GT(dropped, 10000);
+  EXPECT_GT(farDropped, far / 2);
 }
 #endif
 

@@ -86,7 +86,7 @@ int32_t AabbTree::buildNode(uint32_t first, uint32_t count, const std::vector<Bo
   nodes_.emplace_back();
   Box box;
   for (uint32_t k = first; k < first + count; ++k) box.extend(boxes[order_[k]]);
-  nodes_[index].box = box;
+  nodes_[index].setBox(box);
   nodes_[index].first = first;
   nodes_[index].count = count;
   if (count <= kLeafSize) {
@@ -118,7 +118,7 @@ void AabbTree::refit(const std::vector<Box>& boxes) {
       box = nodes_[n.left].box;
       box.extend(nodes_[n.right].box);
     }
-    n.box = box;
+    n.setBox(box);
   }
   gatherLeafBoxes(boxes);
 }

@@ -127,6 +127,12 @@ class AabbTree {
     int32_t left = -1, right = -1;  // children; leaves have left = -1
     uint32_t first = 0, count = 0;  // the node's range in order_
     int32_t quad = -1;              // a leaf's boxes in leafQuads_
+    float extent = 0.0f;            // the box's width + height + depth: pairsBetween splits the larger node
+    void setBox(const Box& b) {
+      box = b;
+      const glm::vec3 sides = b.max - b.min;
+      extent = sides.x + sides.y + sides.z;
+    }
   };
   // A leaf's primitives' boxes as columns (the empty box in the lanes past
   // its count): one primitive is tested against all of them at once.
@@ -353,23 +359,43 @@ void AabbTree::pairsWithin(int32_t node, Visit& visit, SkipWithin& skipWithin, S
 
 template <class Visit, class SkipBetween>
 void AabbTree::pairsBetween(int32_t a, int32_t b, Visit& visit, SkipBetween& skipBetween) const {
-  const Node &na = nodes_[a], &nb = nodes_[b];
-  if (!na.box.overlaps(nb.box) || skipBetween(a, b)) return;
-  if (na.left < 0 && nb.left < 0) {
-    const LeafQuad& quad = leafQuads_[nb.quad];
-    for (uint32_t i = na.first; i < na.first + na.count; ++i)
-      if (const unsigned mask = overlapMask(quad, leafBoxes_[i])) visit(i, nb.first, mask);
-    return;
-  }
-  // Split the node that is not a leaf (the larger when neither is); a
-  // child whose box misses the other node's is not entered (no call).
-  const glm::vec3 ea = na.box.max - na.box.min, eb = nb.box.max - nb.box.min;
-  if (nb.left < 0 || (na.left >= 0 && ea.x + ea.y + ea.z >= eb.x + eb.y + eb.z)) {
-    if (nodes_[na.left].box.overlaps(nb.box)) pairsBetween(na.left, b, visit, skipBetween);
-    if (nodes_[na.right].box.overlaps(nb.box)) pairsBetween(na.right, b, visit, skipBetween);
-  } else {
-    if (na.box.overlaps(nodes_[nb.left].box)) pairsBetween(a, nb.left, visit, skipBetween);
-    if (na.box.overlaps(nodes_[nb.right].box)) pairsBetween(a, nb.right, visit, skipBetween);
+  if (!nodes_[a].box.overlaps(nodes_[b].box)) return;
+  // Depth first over a stack of node pairs whose boxes overlap (tested
+  // before they are pushed), not by recursion: the pairs are the calls'.
+  // Each pair pops one and pushes at most two: the stack holds at most the
+  // two nodes' depths plus one.
+  struct NodePair {
+    int32_t a, b;
+  };
+  NodePair stack[128];
+  int top = 0;
+  stack[top++] = {a, b};
+  while (top > 0) {
+    const NodePair pair = stack[--top];
+    const Node &na = nodes_[pair.a], &nb = nodes_[pair.b];
+    if (skipBetween(pair.a, pair.b)) continue;
+    if (na.left < 0 && nb.left < 0) {
+      const LeafQuad& quad = leafQuads_[nb.quad];
+      for (uint32_t i = na.first; i < na.first + na.count; ++i)
+        if (const unsigned mask = overlapMask(quad, leafBoxes_[i])) visit(i, nb.first, mask);
+      continue;
+    }
+    // Split the node that is not a leaf (the larger when neither is); a
+    // child whose box misses the other node's is not pushed. Branch-free
+    // (each child written, kept when it overlaps): the outcomes follow no
+    // pattern. The right child first: the left is visited first.
+    const bool splitA = nb.left < 0 || (na.left >= 0 && na.extent >= nb.extent);
+    const Node& split = splitA ? na : nb;
+    const Box& other = splitA ? nb.box : na.box;
+    for (const int32_t child : {split.right, split.left}) {
+      const Node& c = nodes_[child];
+      stack[top] = splitA ? NodePair{child, pair.b} : NodePair{pair.a, child};
+      top += int(c.box.overlaps(other));
+      // What the pair reads once popped, fetched now (the walk waits on
+      // memory): a leaf's boxes, or an inner node's right child (the left
+      // one follows it in nodes_).
+      __builtin_prefetch(c.left < 0 ? static_cast<const void*>(&leafQuads_[c.quad]) : &nodes_[c.right]);
+    }
   }
 }
 

@@ -90,6 +90,23 @@ __attribute__((always_inline)) inline unsigned segmentsWithinReach(const Vec3x4&
                                     _mm_or_ps(_mm_cmplt_ps(l, _mm_set1_ps(1e-9f)), _mm_cmpgt_ps(l, reach)));
   return unsigned(_mm_movemask_ps(rejected)) ^ 0xFu;
 }
+
+// Bit k set: lane k's segments are surely farther apart than `reach`, from
+// the line through their midpoints: the segments (midpoints m_p, m_q, half
+// vectors h_p, h_q, d = m_p - m_q) project onto it at least
+// |d| - (|d.h_p| + |d.h_q|) / |d| apart, no more than their distance. That
+// bound is rounded, so it is compared with `reach` grown by 0.1% and 10 um:
+// far more than its rounding and the exact test's, so a pair it rejects
+// fails segmentsWithinReach too (a cheap screen before it).
+inline unsigned segmentsApart(const Vec3x4& midOffset, const Vec3x4& halfP, const Vec3x4& halfQ, __m128 reach) {
+  using namespace segment_reach_detail;
+  const __m128 sign = _mm_set1_ps(-0.0f);
+  const __m128 length2 = dot(midOffset, midOffset), length = _mm_sqrt_ps(length2);
+  const __m128 projected = _mm_add_ps(_mm_andnot_ps(sign, dot(midOffset, halfP)), _mm_andnot_ps(sign, dot(midOffset, halfQ)));
+  const __m128 grown = _mm_add_ps(_mm_mul_ps(_mm_set1_ps(1.001f), reach), _mm_set1_ps(1e-5f));
+  // (|d|^2 - projected) / |d| > grown, without the division (|d| = 0 keeps the pair).
+  return unsigned(_mm_movemask_ps(_mm_cmpgt_ps(_mm_sub_ps(length2, projected), _mm_mul_ps(length, grown))));
+}
 #endif
 
 }  // namespace mq::cloth

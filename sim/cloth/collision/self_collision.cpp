@@ -387,16 +387,18 @@ std::vector<T> collectInBlocks(size_t count, Body&& body) {
 // are read at once.
 void SelfCollision::EdgeColumns::resize(size_t places) {
   for (std::vector<uint32_t>* c : {&v0, &v1, &edge}) c->resize(places + 3, UINT32_MAX);
-  for (std::vector<float>* c : {&midX, &midY, &midZ, &half, &moveX, &moveY, &moveZ, &spread}) c->resize(places + 3, 0.0f);
+  for (std::vector<float>* c : {&midX, &midY, &midZ, &halfX, &halfY, &halfZ, &moveX, &moveY, &moveZ, &spread})
+    c->resize(places + 3, 0.0f);
   for (int end = 0; end < 2; ++end)
     for (std::vector<float>* c : {&startX[end], &startY[end], &startZ[end], &stepX[end], &stepY[end], &stepZ[end]})
       c->resize(places + 3, 0.0f);
 }
 
 void SelfCollision::EdgeColumns::set(size_t k, uint32_t e, uint32_t a, uint32_t b, const glm::vec3& mid,
-                                     float halfLength, const glm::vec3& meanMove, float moveSpread) {
+                                     const glm::vec3& halfEdge, const glm::vec3& meanMove, float moveSpread) {
   edge[k] = e, v0[k] = a, v1[k] = b;
-  midX[k] = mid.x, midY[k] = mid.y, midZ[k] = mid.z, half[k] = halfLength;
+  midX[k] = mid.x, midY[k] = mid.y, midZ[k] = mid.z;
+  halfX[k] = halfEdge.x, halfY[k] = halfEdge.y, halfZ[k] = halfEdge.z;
   moveX[k] = meanMove.x, moveY[k] = meanMove.y, moveZ[k] = meanMove.z, spread[k] = moveSpread;
 }
 
@@ -444,20 +446,22 @@ inline unsigned SelfCollision::EdgeColumns::apartOrNeighbours(uint32_t i, uint32
 #ifdef __SSE2__
   auto column = [&](const std::vector<float>& c) { return _mm_loadu_ps(&c[first]); };
   auto own = [&](const std::vector<float>& c) { return _mm_set1_ps(c[i]); };
-  auto length = [&](const std::vector<float>& x, const std::vector<float>& y, const std::vector<float>& z) {
-    const __m128 dx = _mm_sub_ps(own(x), column(x)), dy = _mm_sub_ps(own(y), column(y)), dz = _mm_sub_ps(own(z), column(z));
-    return _mm_sqrt_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz)));
+  auto offset = [&](const std::vector<float>& x, const std::vector<float>& y, const std::vector<float>& z) {
+    return Vec3x4{_mm_sub_ps(own(x), column(x)), _mm_sub_ps(own(y), column(y)), _mm_sub_ps(own(z), column(z))};
+  };
+  auto length = [&](const Vec3x4& d) {
+    return _mm_sqrt_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(d.x, d.x), _mm_mul_ps(d.y, d.y)), _mm_mul_ps(d.z, d.z)));
   };
   const __m128i a0 = _mm_set1_epi32(int(v0[i])), a1 = _mm_set1_epi32(int(v1[i]));
   const __m128i b0 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(&v0[first]));
   const __m128i b1 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(&v1[first]));
   const __m128i shared = _mm_or_si128(_mm_or_si128(_mm_cmpeq_epi32(a0, b0), _mm_cmpeq_epi32(a0, b1)),
                                       _mm_or_si128(_mm_cmpeq_epi32(a1, b0), _mm_cmpeq_epi32(a1, b1)));
-  const __m128 bound = _mm_add_ps(_mm_add_ps(_mm_set1_ps(thickness), length(moveX, moveY, moveZ)),
+  const __m128 bound = _mm_add_ps(_mm_add_ps(_mm_set1_ps(thickness), length(offset(moveX, moveY, moveZ))),
                                   _mm_add_ps(own(spread), column(spread)));
-  const __m128 apart = _mm_sub_ps(length(midX, midY, midZ), _mm_add_ps(own(half), column(half)));
-  const __m128 far = _mm_cmpgt_ps(apart, _mm_add_ps(_mm_mul_ps(_mm_set1_ps(1.0001f), bound), _mm_set1_ps(1e-6f)));
-  return unsigned(_mm_movemask_ps(_mm_or_ps(_mm_castsi128_ps(shared), far)));
+  const Vec3x4 ownHalf{own(halfX), own(halfY), own(halfZ)}, otherHalf{column(halfX), column(halfY), column(halfZ)};
+  return unsigned(_mm_movemask_ps(_mm_castsi128_ps(shared))) |
+         segmentsApart(offset(midX, midY, midZ), ownHalf, otherHalf, bound);
 #else
   (void)i, (void)first, (void)thickness;
   return 0;  // testEdgeEdge tests them one by one (kScreened false)
@@ -863,7 +867,11 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
   // Edge pairs from the edge tree against itself. A cheap bound first, from
   // each edge's midpoint, half length, mean move and move spread: any two of
   // their vertices' moves differ by at most |mean_e - mean_f| + spread_e +
-  // spread_f, so a pair it rejects fails the exact test below too.
+  // spread_f, so a pair it rejects fails the exact test below too. The
+  // four-lane screen (EdgeColumns::apartOrNeighbours) bounds their distance
+  // along the line through their midpoints instead of by their half lengths
+  // (tighter: most close pairs of a curved part are left out before the exact
+  // test).
   struct EdgeBound {
     glm::vec3 mid;
     float halfLength;
@@ -878,13 +886,13 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
       const auto [p0, p1] = edgeAtPlace_[k];
       const EdgeBound& b = bounds[k] = {0.5f * (x0[p0] + x0[p1]), 0.5f * glm::length(x0[p0] - x0[p1]),
                                         0.5f * (move[p0] + move[p1]), 0.5f * glm::length(move[p0] - move[p1])};
-      columns.set(k, edgeTree_.primitive(uint32_t(k)), p0, p1, b.mid, b.halfLength, b.meanMove, b.spread);
+      columns.set(k, edgeTree_.primitive(uint32_t(k)), p0, p1, b.mid, 0.5f * (x0[p1] - x0[p0]), b.meanMove, b.spread);
       columns.setVertices(k, {x0[p0], x0[p1]}, {move[p0], move[p1]});
     }
   });
   // Two edges at places of the edge tree whose boxes overlap, not in one
-  // flat patch (screened: not neighbours and within the cheap bound, as
-  // EdgeColumns::apartOrNeighbours found).
+  // flat patch (screened: not neighbours and within the four-lane screen's
+  // bound, as EdgeColumns::apartOrNeighbours found).
   auto testEdgeEdge = [&](uint32_t placeI, uint32_t placeK, std::vector<EdgeEdge>& out, bool screened) {
     // Neighbours first, from the edges' vertices in the tree's order (read in sequence).
     const auto [a0, a1] = edgeAtPlace_[placeI];

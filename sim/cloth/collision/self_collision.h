@@ -146,15 +146,17 @@ class SelfCollision {
   // Per place of the edge tree, as columns (see EdgeColumns::resize).
   struct EdgeColumns {
     std::vector<uint32_t> v0, v1, edge;
-    std::vector<float> midX, midY, midZ, half, moveX, moveY, moveZ, spread;
+    std::vector<float> midX, midY, midZ, halfX, halfY, halfZ, moveX, moveY, moveZ, spread;
     // The vertices' start positions and moves (vertex v0: index 0, v1: index 1).
     std::array<std::vector<float>, 2> startX, startY, startZ, stepX, stepY, stepZ;
     void resize(size_t places);
-    void set(size_t place, uint32_t e, uint32_t a, uint32_t b, const glm::vec3& mid, float halfLength,
+    // halfEdge: from the edge's midpoint to its vertex b.
+    void set(size_t place, uint32_t e, uint32_t a, uint32_t b, const glm::vec3& mid, const glm::vec3& halfEdge,
              const glm::vec3& meanMove, float moveSpread);
     void setVertices(size_t place, const glm::vec3 (&start)[2], const glm::vec3 (&move)[2]);
     // Bit k set: the edges at places i and first + k share a vertex, or
-    // their cheap bound keeps them apart.
+    // their cheap bound keeps them apart (segmentsApart with the cheap
+    // bound's reach).
     unsigned apartOrNeighbours(uint32_t i, uint32_t first, float thickness) const;
     // Bit k set: the edges at places i and first + k pass the exact test's
     // distance conditions (segmentsWithinReach, the same outcome); all set
