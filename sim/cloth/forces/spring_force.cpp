@@ -143,6 +143,18 @@ void SpringForce::prepareStepSprings(const ClothState& st, float h, size_t begin
 }
 
 void SpringForce::prepareStepVertex(size_t v, glm::vec3& f, glm::vec3& hKv, glm::mat3& diagonal) {
+  // The springs' records are read in incidence order, scattered over three
+  // arrays written by the spring pass (often on the other core): fetch a few
+  // vertices ahead so the misses overlap.
+  constexpr size_t kAhead = 3;
+  if (v + kAhead + 1 < incidenceStart_.size()) {
+    for (uint32_t k = incidenceStart_[v + kAhead]; k < incidenceStart_[v + kAhead + 1]; ++k) {
+      const uint32_t spring = uint32_t(std::abs(incidence_[k]) - 1);
+      __builtin_prefetch(&force_[spring]);
+      __builtin_prefetch(&perSpring_[spring]);
+      __builtin_prefetch(&blocks_[spring]);
+    }
+  }
   f += gatherAt(v, force_);
   collectImplicit(v, hKv, diagonal);
 }
