@@ -194,11 +194,11 @@ void SpringForce::buildRows(size_t vertexCount) {
     const uint32_t v = uint32_t(laneVertex_[j]), vertexDegree = j < vertexCount ? degree(v) : 0;
     for (uint32_t k = 0; k < rowWidth_[b]; ++k) {
       const size_t slot = rowStart_[b] + k * kLanes + lane;
-      rowOther_[slot] = int32_t(v);
+      rowOther_[slot] = int32_t(3 * v);
       if (k >= vertexDegree) continue;
       const int32_t signedIndex = incidence_[incidenceStart_[v] + k];
       const uint32_t spring = uint32_t(std::abs(signedIndex) - 1);
-      rowOther_[slot] = int32_t(signedIndex > 0 ? springs_[spring].b : springs_[spring].a);
+      rowOther_[slot] = int32_t(3 * (signedIndex > 0 ? springs_[spring].b : springs_[spring].a));
     }
   }
   for (auto* row : {&rowEx_, &rowEy_, &rowEz_, &rowBeta_}) row->assign(slots, 0.0f);
@@ -212,7 +212,7 @@ glm::vec3 SpringForce::productAt(size_t v) const {
   for (uint32_t k = 0; k < rowWidth_[positionOf_[v] / kLanes]; ++k) {
     const size_t slot = firstSlot + k * kLanes;
     const glm::vec3 e(rowEx_[slot], rowEy_[slot], rowEz_[slot]);
-    const glm::vec3 dp = pv - p[rowOther_[slot]];
+    const glm::vec3 dp = pv - p[rowOther_[slot] / 3];
     sum += glm::dot(e, dp) * e + rowBeta_[slot] * dp;
   }
   return sum;
@@ -222,12 +222,13 @@ glm::vec3 SpringForce::productAt(size_t v) const {
 namespace {
 
 // Eight vertices at once (one sliced-ELL block), AVX2 + FMA chosen at run
-// time: lane l accumulates vertex v0 + l's row, so no horizontal sums. The
-// eight neighbours' positions are read as eight masked 16-byte loads (x, y, z;
+// time: lane l accumulates vertex lanes[l]'s row, so no horizontal sums. The
+// eight neighbours' (and the lanes' own) positions are read as eight masked
+// 16-byte loads (x, y, z;
 // the masked fourth float is never touched) and transposed into x, y and z
 // vectors: cheaper than three 8-wide gathers.
-__attribute__((target("avx2,fma"))) inline __m128 loadXyz(const float* p, int32_t vertex) {
-  return _mm_maskload_ps(p + 3 * ptrdiff_t(vertex), _mm_setr_epi32(-1, -1, -1, 0));
+__attribute__((target("avx2,fma"))) inline __m128 loadXyz(const float* p, int32_t offset) {
+  return _mm_maskload_ps(p + offset, _mm_setr_epi32(-1, -1, -1, 0));
 }
 
 __attribute__((target("avx2,fma"))) inline void loadNeighbours(const float* p, const int32_t* other, __m256& x,
@@ -250,8 +251,10 @@ __attribute__((target("avx2,fma"))) void blockProductAvx2(const float* p, const 
                                                           uint32_t width, const int32_t* other, const float* ex,
                                                           const float* ey, const float* ez, const float* beta,
                                                           float* y) {
+  int32_t self[8];
+  for (int l = 0; l < 8; ++l) self[l] = 3 * lanes[l];
   __m256 px, py, pz;
-  loadNeighbours(p, lanes, px, py, pz);
+  loadNeighbours(p, self, px, py, pz);
   __m256 ax = _mm256_setzero_ps(), ay = _mm256_setzero_ps(), az = _mm256_setzero_ps();
   for (uint32_t k = 0; k < width; ++k) {
     const uint32_t s = start + 8 * k;

@@ -95,7 +95,9 @@ class SpringForce : public ForceTerm {
   // positionOf_ is the inverse) has slots rowStart_[b] + 8 k + lane,
   // k < rowWidth_[b] (the block's largest degree; spare slots have zero
   // blocks and point at the vertex itself). Per slot: the implicit block
-  // e e^T + beta I (ImplicitBlock) acting on p_v - p_other.
+  // e e^T + beta I (ImplicitBlock) acting on p_v - p_other, and rowOther_
+  // the other vertex's first float (3 other: no multiply in the product's
+  // eight loads per slot).
   size_t slotOf(size_t v) const { return rowStart_[positionOf_[v] / kLanes] + positionOf_[v] % kLanes; }
   std::vector<int32_t> laneVertex_;
   std::vector<uint32_t> positionOf_;
