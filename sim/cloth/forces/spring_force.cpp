@@ -164,7 +164,8 @@ void SpringForce::buildRows(size_t vertexCount) {
   // Lane order: the solver's product ranges (ReduceBlocks) hold whole
   // blocks, so within each range the full blocks may take its vertices in
   // any order; by decreasing degree, a block's width wastes few slots (the
-  // vertex order left a quarter of them spare). The last, partial block
+  // 10k T-shirt: 169,600 slots for 165,876 incidences, against 204,960 in
+  // the vertex order). The last, partial block
   // keeps the vertex order (the scalar path takes it).
   const size_t blocks = (vertexCount + kLanes - 1) / kLanes, fullEnd = vertexCount / kLanes * kLanes;
   laneVertex_.resize(blocks * kLanes);
@@ -224,9 +225,8 @@ namespace {
 // Eight vertices at once (one sliced-ELL block), AVX2 + FMA chosen at run
 // time: lane l accumulates vertex lanes[l]'s row, so no horizontal sums. The
 // eight neighbours' (and the lanes' own) positions are read as eight masked
-// 16-byte loads (x, y, z;
-// the masked fourth float is never touched) and transposed into x, y and z
-// vectors: cheaper than three 8-wide gathers.
+// 16-byte loads (x, y, z; the masked fourth float is never touched) and
+// transposed into x, y and z vectors: cheaper than three 8-wide gathers.
 __attribute__((target("avx2,fma"))) inline __m128 loadXyz(const float* p, int32_t offset) {
   return _mm_maskload_ps(p + offset, _mm_setr_epi32(-1, -1, -1, 0));
 }
