@@ -160,19 +160,22 @@ IntegratorReport ImplicitEuler::solve(const ClothState& s, ClothForces& forces, 
   // the job if any. The coarse matrix is assembled meanwhile.
   for (const ForceTerm* t : forces.terms()) t->productPass(dv_);
   {
+    // In parts by patch range; the factorisation is claimed after the
+    // product's blocks, so the thread done first with its part goes on with
+    // those instead of waiting for the other part.
+    int parts = -1;
     if (twoLevel_) {
-      // In parts by patch range, then factorised by the first thread free.
       const size_t patches = coarse_.patchCount();
       const int filters = job.add(1, prepared, [&](size_t) { coarse_.prepareAssembly(s); });
-      const int parts = job.add(kAssemblyParts, filters, [&](size_t part) {
+      parts = job.add(kAssemblyParts, filters, [&](size_t part) {
         coarse_.assemblePatches(s, otherDiagonal_, forces.springs(), part * patches / kAssemblyParts,
                                 (part + 1) * patches / kAssemblyParts);
       });
-      job.add(1, parts, [&](size_t) { coarse_.factorise(); });
     }
     const int product = job.add(kBlocks, prepared, [&](size_t b) {
       if (blocks.begin(b) < blocks.end(b)) multiplyFilteredRange(s, forces, dv_, q_, blocks.begin(b), blocks.end(b));
     });
+    if (twoLevel_) job.add(1, parts, [&](size_t) { coarse_.factorise(); });
     const int residual = job.add(kBlocks, product, [&](size_t bk) {
       double dot = 0.0;
       for (size_t i = blocks.begin(bk); i < blocks.end(bk); ++i) {
