@@ -2,10 +2,13 @@
 // finite differences of the energy and of the forces.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "sim/cloth/forces/cantilever_bending.h"
 #include "sim/cloth/forces/spring_force.h"
+#include "sim/cloth/parallel.h"
+#include "tests/sim/cloth_test_scenes.h"
 
 namespace mq::cloth {
 namespace {
@@ -149,6 +152,60 @@ TEST(ClothForces, SpringImplicitProductMatchesTheAssembledMatrix) {
     EXPECT_LT(glm::length(split[v] - expected[v]), tolerance) << v;
     for (int c = 0; c < 3; ++c)
       EXPECT_LT(glm::length(diagonal[v][c] - expectedDiagonal[v][c]), 1e-4f * (1.0f + glm::length(expectedDiagonal[v][c])));
+  }
+}
+
+// The solver's spring product (eight vertices per AVX2 step, lanes in the
+// order of decreasing degree within each of its ranges) against a scalar
+// reference doing the same fused multiply-adds vertex by vertex, in
+// incidence order: bit for bit, over the solver's ranges (ReduceBlocks);
+// the last partial block takes the scalar path, pinned to productAt().
+TEST(ClothForces, SpringProductMatchesItsFusedMultiplyAddReferenceBitForBit) {
+#if defined(__x86_64__) && defined(__GNUC__)
+  if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma")) GTEST_SKIP() << "no AVX2 + FMA";
+#else
+  GTEST_SKIP() << "no AVX2 path";
+#endif
+  constexpr int kColumns = 37;  // 1,369 vertices: ranges of 3 blocks, and a last partial block
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<float> jitter(-0.004f, 0.004f);
+  ClothState s;
+  for (int r = 0; r < kColumns; ++r)
+    for (int c = 0; c < kColumns; ++c) s.x.push_back({0.02f * c + jitter(rng), jitter(rng), 0.02f * r + jitter(rng)});
+  const size_t n = s.x.size();
+  std::normal_distribution<float> g;
+  for (size_t i = 0; i < n; ++i) s.v.push_back(0.1f * glm::vec3(g(rng), g(rng), g(rng)));
+  std::vector<Spring> list = test::gridSprings(s.x, kColumns, rng);
+  // Drop some springs so the degrees vary inside the grid too.
+  std::vector<Spring> kept;
+  for (size_t k = 0; k < list.size(); ++k)
+    if (k % 5 != 2 || k % 3 == 0) kept.push_back(list[k]);
+  SpringForce springs(kept, n);
+  std::vector<glm::vec3> hKv(n, glm::vec3(0.0f));
+  std::vector<glm::mat3> diagonal(n, glm::mat3(0.0f));
+  springs.prepareImplicit(s, 1.0f / 30.0f, hKv, diagonal);
+  std::vector<glm::vec3> p(n), start(n);
+  for (size_t i = 0; i < n; ++i) p[i] = glm::vec3(g(rng), g(rng), g(rng)), start[i] = glm::vec3(g(rng), g(rng), g(rng));
+
+  springs.productPass(p);
+  std::vector<glm::vec3> y = start;
+  const ReduceBlocks ranges(n);
+  for (size_t r = 0; r < ReduceBlocks::kCount; ++r)
+    if (ranges.begin(r) < ranges.end(r)) springs.addProductRange(ranges.begin(r), ranges.end(r), y.data());
+
+  std::vector<glm::vec3> sum(n, glm::vec3(0.0f));
+  for (size_t k = 0; k < kept.size(); ++k) {  // each vertex's springs in index order, as its incidences
+    const SpringForce::ImplicitBlock& b = springs.implicitBlock(k);
+    for (const auto& [v, other] : {std::pair(kept[k].a, kept[k].b), std::pair(kept[k].b, kept[k].a)}) {
+      const glm::vec3 q = p[v] - p[other];
+      const float t = std::fma(b.e.x, q.x, std::fma(b.e.y, q.y, b.e.z * q.z));
+      for (int c = 0; c < 3; ++c) sum[v][c] = std::fma(t, b.e[c], std::fma(b.beta, q[c], sum[v][c]));
+    }
+  }
+  const size_t vectorised = n / 8 * 8;
+  for (size_t v = 0; v < n; ++v) {
+    const glm::vec3 expected = start[v] + (v < vectorised ? sum[v] : springs.productAt(v));
+    for (int c = 0; c < 3; ++c) ASSERT_EQ(y[v][c], expected[c]) << "vertex " << v << " component " << c;
   }
 }
 

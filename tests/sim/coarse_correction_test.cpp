@@ -84,5 +84,39 @@ TEST(CoarseCorrection, SolvesTheGalerkinSystemOfTheFilteredMatrix) {
   EXPECT_GT(rDotCorrection, 0.0);
 }
 
+// The solver assembles A_c in parts by patch range, in parallel: any
+// partition, in any order, must give the whole assembly's solution bit for bit.
+TEST(CoarseCorrection, AssemblyInPartsMatchesTheWholeBitForBit) {
+  ClothState s = jitteredGrid();
+  const size_t n = s.size();
+  for (int c = 0; c < kColumns; c += 4) s.invMass[at(0, c)] = 0.0f;
+  for (int c = 0; c < kColumns; ++c) s.contactNormal[at(11, c)] = glm::normalize(glm::vec3(0.3f, 1.0f, 0.1f * (c % 2)));
+  SpringForce springs(gridSprings(s), n);
+  std::vector<glm::vec3> hKv(n, glm::vec3(0.0f));
+  std::vector<glm::mat3> springDiagonal(n, glm::mat3(0.0f)), otherDiagonal(n);
+  springs.prepareImplicit(s, 1.0f / 60.0f, hKv, springDiagonal);
+  for (size_t i = 0; i < n; ++i) otherDiagonal[i] = glm::mat3(s.mass[i] * (1.0f + 0.01f * float(i % 7)));
+
+  CoarseCorrection whole, parts;
+  whole.build(springs, n);
+  parts.build(springs, n);
+  whole.assemble(s, otherDiagonal, springs);
+  parts.prepareAssembly(s);
+  const size_t patches = parts.patchCount(), split = patches / 3;
+  parts.assemblePatches(s, otherDiagonal, springs, split, patches);  // the later rows first
+  parts.assemblePatches(s, otherDiagonal, springs, 0, split);
+  parts.factorise();
+
+  std::mt19937 rng(5);
+  std::normal_distribution<float> g;
+  std::vector<glm::vec3> r(n);
+  for (glm::vec3& v : r) v = glm::vec3(g(rng), g(rng), g(rng));
+  std::vector<glm::vec3> fromWhole, fromParts;
+  EXPECT_EQ(whole.solve(r, fromWhole), parts.solve(r, fromParts));
+  ASSERT_EQ(fromWhole.size(), fromParts.size());
+  for (size_t p = 0; p < fromWhole.size(); ++p)
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(fromWhole[p][c], fromParts[p][c]) << "patch " << p << " component " << c;
+}
+
 }  // namespace
 }  // namespace mq::cloth

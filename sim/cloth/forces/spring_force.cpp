@@ -97,7 +97,7 @@ double SpringForce::potentialEnergy(const ClothState& st) const {
 // its part of h^2 K v0, its diagonal block and its sliced-ELL slots.
 [[gnu::always_inline]] inline void SpringForce::collectImplicit(size_t v, glm::vec3& hKv, glm::mat3& diagonal) {
   const uint32_t first = incidenceStart_[v], degree = incidenceStart_[v + 1] - first;
-  const size_t firstSlot = rowStart_[v / kLanes] + v % kLanes;
+  const size_t firstSlot = slotOf(v);
   // The diagonal block sum of e e^T + beta I: its six distinct entries
   // (summed as the full matrix would be, entry by entry).
   float xx = 0.0f, xy = 0.0f, xz = 0.0f, yy = 0.0f, yz = 0.0f, zz = 0.0f;
@@ -143,33 +143,63 @@ void SpringForce::prepareStepSprings(const ClothState& st, float h, size_t begin
 }
 
 void SpringForce::prepareStepVertex(size_t v, glm::vec3& f, glm::vec3& hKv, glm::mat3& diagonal) {
+  // The springs' records are read in incidence order, scattered over three
+  // arrays written by the spring pass (often on the other core): fetch a few
+  // vertices ahead so the misses overlap.
+  constexpr size_t kAhead = 3;
+  if (v + kAhead + 1 < incidenceStart_.size()) {
+    for (uint32_t k = incidenceStart_[v + kAhead]; k < incidenceStart_[v + kAhead + 1]; ++k) {
+      const uint32_t spring = uint32_t(std::abs(incidence_[k]) - 1);
+      __builtin_prefetch(&force_[spring]);
+      __builtin_prefetch(&perSpring_[spring]);
+      __builtin_prefetch(&blocks_[spring]);
+    }
+  }
   f += gatherAt(v, force_);
   collectImplicit(v, hKv, diagonal);
 }
 
 void SpringForce::buildRows(size_t vertexCount) {
-  const size_t blocks = (vertexCount + kLanes - 1) / kLanes;
+  auto degree = [&](uint32_t v) { return incidenceStart_[v + 1] - incidenceStart_[v]; };
+  // Lane order: the solver's product ranges (ReduceBlocks) hold whole
+  // blocks, so within each range the full blocks may take its vertices in
+  // any order; by decreasing degree, a block's width wastes few slots (the
+  // 10k T-shirt: 169,600 slots for 165,876 incidences, against 204,960 in
+  // the vertex order). The last, partial block
+  // keeps the vertex order (the scalar path takes it).
+  const size_t blocks = (vertexCount + kLanes - 1) / kLanes, fullEnd = vertexCount / kLanes * kLanes;
+  laneVertex_.resize(blocks * kLanes);
+  for (size_t j = 0; j < laneVertex_.size(); ++j) laneVertex_[j] = int32_t(std::min(j, vertexCount - 1));
+  const ReduceBlocks ranges(vertexCount);
+  for (size_t r = 0; r < ReduceBlocks::kCount; ++r) {
+    const size_t begin = ranges.begin(r), end = std::min(ranges.end(r), fullEnd);
+    if (begin < end)
+      std::stable_sort(laneVertex_.begin() + ptrdiff_t(begin), laneVertex_.begin() + ptrdiff_t(end),
+                       [&](int32_t a, int32_t b) { return degree(uint32_t(a)) > degree(uint32_t(b)); });
+  }
+  positionOf_.resize(vertexCount);
+  for (size_t j = 0; j < vertexCount; ++j) positionOf_[size_t(laneVertex_[j])] = uint32_t(j);
   rowStart_.assign(blocks + 1, 0);
   rowWidth_.assign(blocks, 0);
   for (size_t b = 0; b < blocks; ++b) {
     uint32_t width = 0;
-    for (size_t v = b * kLanes; v < std::min(vertexCount, (b + 1) * kLanes); ++v)
-      width = std::max(width, incidenceStart_[v + 1] - incidenceStart_[v]);
+    for (size_t j = b * kLanes; j < std::min(vertexCount, (b + 1) * kLanes); ++j)
+      width = std::max(width, degree(uint32_t(laneVertex_[j])));
     rowWidth_[b] = width;
     rowStart_[b + 1] = rowStart_[b] + uint32_t(kLanes) * width;
   }
   const size_t slots = rowStart_[blocks];
   rowOther_.assign(slots, 0);
-  for (size_t v = 0; v < blocks * kLanes; ++v) {
-    const size_t b = v / kLanes, lane = v % kLanes;
-    const uint32_t degree = v < vertexCount ? incidenceStart_[v + 1] - incidenceStart_[v] : 0;
+  for (size_t j = 0; j < blocks * kLanes; ++j) {
+    const size_t b = j / kLanes, lane = j % kLanes;
+    const uint32_t v = uint32_t(laneVertex_[j]), vertexDegree = j < vertexCount ? degree(v) : 0;
     for (uint32_t k = 0; k < rowWidth_[b]; ++k) {
       const size_t slot = rowStart_[b] + k * kLanes + lane;
-      rowOther_[slot] = int32_t(std::min(v, vertexCount - 1));
-      if (k >= degree) continue;
+      rowOther_[slot] = int32_t(3 * v);
+      if (k >= vertexDegree) continue;
       const int32_t signedIndex = incidence_[incidenceStart_[v] + k];
       const uint32_t spring = uint32_t(std::abs(signedIndex) - 1);
-      rowOther_[slot] = int32_t(signedIndex > 0 ? springs_[spring].b : springs_[spring].a);
+      rowOther_[slot] = int32_t(3 * (signedIndex > 0 ? springs_[spring].b : springs_[spring].a));
     }
   }
   for (auto* row : {&rowEx_, &rowEy_, &rowEz_, &rowBeta_}) row->assign(slots, 0.0f);
@@ -178,12 +208,12 @@ void SpringForce::buildRows(size_t vertexCount) {
 glm::vec3 SpringForce::productAt(size_t v) const {
   const glm::vec3* p = product_->data();
   const glm::vec3 pv = p[v];
-  const size_t b = v / kLanes, lane = v % kLanes;
+  const size_t firstSlot = slotOf(v);
   glm::vec3 sum(0.0f);
-  for (uint32_t k = 0; k < rowWidth_[b]; ++k) {
-    const size_t slot = rowStart_[b] + k * kLanes + lane;
+  for (uint32_t k = 0; k < rowWidth_[positionOf_[v] / kLanes]; ++k) {
+    const size_t slot = firstSlot + k * kLanes;
     const glm::vec3 e(rowEx_[slot], rowEy_[slot], rowEz_[slot]);
-    const glm::vec3 dp = pv - p[rowOther_[slot]];
+    const glm::vec3 dp = pv - p[rowOther_[slot] / 3];
     sum += glm::dot(e, dp) * e + rowBeta_[slot] * dp;
   }
   return sum;
@@ -193,12 +223,12 @@ glm::vec3 SpringForce::productAt(size_t v) const {
 namespace {
 
 // Eight vertices at once (one sliced-ELL block), AVX2 + FMA chosen at run
-// time: lane l accumulates vertex v0 + l's row, so no horizontal sums. The
-// eight neighbours' positions are read as eight masked 16-byte loads (x, y, z;
-// the masked fourth float is never touched) and transposed into x, y and z
-// vectors: cheaper than three 8-wide gathers.
-__attribute__((target("avx2,fma"))) inline __m128 loadXyz(const float* p, int32_t vertex) {
-  return _mm_maskload_ps(p + 3 * ptrdiff_t(vertex), _mm_setr_epi32(-1, -1, -1, 0));
+// time: lane l accumulates vertex lanes[l]'s row, so no horizontal sums. The
+// eight neighbours' (and the lanes' own) positions are read as eight masked
+// 16-byte loads (x, y, z; the masked fourth float is never touched) and
+// transposed into x, y and z vectors: cheaper than three 8-wide gathers.
+__attribute__((target("avx2,fma"))) inline __m128 loadXyz(const float* p, int32_t offset) {
+  return _mm_maskload_ps(p + offset, _mm_setr_epi32(-1, -1, -1, 0));
 }
 
 __attribute__((target("avx2,fma"))) inline void loadNeighbours(const float* p, const int32_t* other, __m256& x,
@@ -217,13 +247,14 @@ __attribute__((target("avx2,fma"))) inline void loadNeighbours(const float* p, c
   z = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0));
 }
 
-__attribute__((target("avx2,fma"))) void blockProductAvx2(const float* p, size_t v0, uint32_t start, uint32_t width,
-                                                          const int32_t* other, const float* ex, const float* ey,
-                                                          const float* ez, const float* beta, float* y) {
-  const __m256i lane3 = _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21);
-  const float* self = p + 3 * v0;
-  const __m256 px = _mm256_i32gather_ps(self, lane3, 4), py = _mm256_i32gather_ps(self + 1, lane3, 4),
-               pz = _mm256_i32gather_ps(self + 2, lane3, 4);
+__attribute__((target("avx2,fma"))) void blockProductAvx2(const float* p, const int32_t* lanes, uint32_t start,
+                                                          uint32_t width, const int32_t* other, const float* ex,
+                                                          const float* ey, const float* ez, const float* beta,
+                                                          float* y) {
+  int32_t self[8];
+  for (int l = 0; l < 8; ++l) self[l] = 3 * lanes[l];
+  __m256 px, py, pz;
+  loadNeighbours(p, self, px, py, pz);
   __m256 ax = _mm256_setzero_ps(), ay = _mm256_setzero_ps(), az = _mm256_setzero_ps();
   for (uint32_t k = 0; k < width; ++k) {
     const uint32_t s = start + 8 * k;
@@ -237,14 +268,15 @@ __attribute__((target("avx2,fma"))) void blockProductAvx2(const float* p, size_t
     ay = _mm256_fmadd_ps(t, dy, _mm256_fmadd_ps(b, qy, ay));
     az = _mm256_fmadd_ps(t, dz, _mm256_fmadd_ps(b, qz, az));
   }
-  alignas(32) float lanes[3][8];
-  _mm256_store_ps(lanes[0], ax);
-  _mm256_store_ps(lanes[1], ay);
-  _mm256_store_ps(lanes[2], az);
+  alignas(32) float sums[3][8];
+  _mm256_store_ps(sums[0], ax);
+  _mm256_store_ps(sums[1], ay);
+  _mm256_store_ps(sums[2], az);
   for (int l = 0; l < 8; ++l) {
-    y[3 * l] += lanes[0][l];
-    y[3 * l + 1] += lanes[1][l];
-    y[3 * l + 2] += lanes[2][l];
+    float* yl = y + 3 * ptrdiff_t(lanes[l]);
+    yl[0] += sums[0][l];
+    yl[1] += sums[1][l];
+    yl[2] += sums[2][l];
   }
 }
 
@@ -257,20 +289,32 @@ bool hasAvx2() {
 #endif
 
 void SpringForce::addProductRange(size_t begin, size_t end, glm::vec3* y) const {
-  size_t v = begin;
 #if defined(__x86_64__) && defined(__GNUC__)
   static_assert(kLanes == 8 && sizeof(glm::vec3) == 3 * sizeof(float));
-  if (hasAvx2()) {
-    for (; v < end && v % kLanes != 0; ++v) y[v] += productAt(v);
+  if (hasAvx2() && !positionOf_.empty()) {
+    // Whole ranges of the lane order eight vertices at a time; the rest
+    // (partly covered ranges, the last partial block) one at a time.
     const float* p = &product_->data()->x;
-    for (; v + kLanes <= end; v += kLanes) {
-      const size_t b = v / kLanes;
-      blockProductAvx2(p, v, rowStart_[b], rowWidth_[b], rowOther_.data(), rowEx_.data(), rowEy_.data(), rowEz_.data(),
-                       rowBeta_.data(), &y[v].x);
+    const ReduceBlocks ranges(positionOf_.size());
+    const size_t fullEnd = positionOf_.size() / kLanes * kLanes;
+    size_t v = begin;
+    while (v < end) {
+      const size_t r = v / ranges.size, rangeEnd = std::min(ranges.end(r), fullEnd);
+      if (v >= fullEnd || v != ranges.begin(r) || rangeEnd > end) {
+        const size_t stop = std::min(end, v < fullEnd ? rangeEnd : end);
+        for (; v < stop; ++v) y[v] += productAt(v);
+        continue;
+      }
+      for (; v < rangeEnd; v += kLanes) {
+        const size_t b = v / kLanes;
+        blockProductAvx2(p, &laneVertex_[v], rowStart_[b], rowWidth_[b], rowOther_.data(), rowEx_.data(),
+                         rowEy_.data(), rowEz_.data(), rowBeta_.data(), &y->x);
+      }
     }
+    return;
   }
 #endif
-  for (; v < end; ++v) y[v] += productAt(v);
+  for (size_t v = begin; v < end; ++v) y[v] += productAt(v);
 }
 
 glm::mat3 SpringForce::stiffnessBlock(size_t spring, const std::vector<glm::vec3>& x, bool filtered) const {

@@ -91,10 +91,16 @@ class SpringForce : public ForceTerm {
   std::vector<Spring> springs_;
   std::vector<uint32_t> incidenceStart_;  // CSR over vertices
   std::vector<int32_t> incidence_;        // spring index + 1, negative when the vertex is b
-  // Sliced ELL: vertex v = 8 b + lane has slots rowStart_[b] + 8 k + lane,
+  // Sliced ELL: the vertex at lane position j = 8 b + lane (laneVertex_[j];
+  // positionOf_ is the inverse) has slots rowStart_[b] + 8 k + lane,
   // k < rowWidth_[b] (the block's largest degree; spare slots have zero
-  // blocks and point at v itself). Per slot: the implicit block
-  // e e^T + beta I (ImplicitBlock) acting on p_v - p_other.
+  // blocks and point at the vertex itself). Per slot: the implicit block
+  // e e^T + beta I (ImplicitBlock) acting on p_v - p_other, and rowOther_
+  // the other vertex's first float (3 other: no multiply in the product's
+  // eight loads per slot).
+  size_t slotOf(size_t v) const { return rowStart_[positionOf_[v] / kLanes] + positionOf_[v] % kLanes; }
+  std::vector<int32_t> laneVertex_;
+  std::vector<uint32_t> positionOf_;
   std::vector<uint32_t> rowStart_, rowWidth_;
   std::vector<int32_t> rowOther_;
   std::vector<float> rowEx_, rowEy_, rowEz_, rowBeta_;

@@ -116,24 +116,13 @@ void CoarseCorrection::build(const SpringForce& springs, size_t vertexCount) {
 
 void CoarseCorrection::assemble(const ClothState& s, const std::vector<glm::mat3>& otherDiagonal,
                                 const SpringForce& springs) {
-  // Only the lower triangle's envelope (and the diagonal 3x3 blocks) is used.
-  for (size_t row = 0; row < order_; ++row)
-    std::fill(&matrix_[row * order_ + firstColumn_[row]], &matrix_[row * order_ + row / 3 * 3 + 3], 0.0);
-  auto addBlock = [&](uint32_t pi, uint32_t pj, const glm::mat3& block) {
-    double* row = &matrix_[3 * pi * order_ + 3 * pj];
-    for (int r = 0; r < 3; ++r, row += order_)
-      for (int c = 0; c < 3; ++c) row[c] += double(block[c][r]);  // glm: [column][row]
-  };
-  // The diagonal blocks are summed apart (compact, in cache) and written once.
-  patchDiagonal_.assign(patchCount_, glm::dmat3(0.0));
-  auto addDiagonal = [&](uint32_t p, const glm::mat3& block) { patchDiagonal_[p] += glm::dmat3(block); };
-  // The block (i, j) of the symmetric A_c, stored at the lower one of (i, j) and (j, i).
-  auto addLower = [&](uint32_t pi, uint32_t pj, const glm::mat3& block) {
-    if (pi >= pj)
-      addBlock(pi, pj, block);
-    else
-      addBlock(pj, pi, glm::transpose(block));
-  };
+  prepareAssembly(s);
+  assemblePatches(s, otherDiagonal, springs, 0, patchCount_);
+  factorise();
+}
+
+void CoarseCorrection::prepareAssembly(const ClothState& s) {
+  patchDiagonal_.resize(patchCount_);
   // Most vertices are free (S = I): only pins and contacts pay for the
   // products, with their filters made once per vertex.
   const bool anyContact = !s.contactNormal.empty();
@@ -144,7 +133,36 @@ void CoarseCorrection::assemble(const ClothState& s, const std::vector<glm::mat3
     filterOf_[v] = uint32_t(filters_.size());
     filters_.push_back(filterMatrix(s, v));
   }
+}
+
+// Every entry gets its terms in the same order whatever the patch ranges
+// (vertices in order, then springs in order): the parts may run in parallel.
+void CoarseCorrection::assemblePatches(const ClothState& s, const std::vector<glm::mat3>& otherDiagonal,
+                                       const SpringForce& springs, size_t begin, size_t end) {
+  auto owns = [&](uint32_t p) { return p >= begin && p < end; };
+  // Only the lower triangle's envelope (and the diagonal 3x3 blocks) is used.
+  for (size_t row = 3 * begin; row < 3 * end; ++row)
+    std::fill(&matrix_[row * order_ + firstColumn_[row]], &matrix_[row * order_ + row / 3 * 3 + 3], 0.0);
+  auto addBlock = [&](uint32_t pi, uint32_t pj, const glm::mat3& block) {
+    double* row = &matrix_[3 * pi * order_ + 3 * pj];
+    for (int r = 0; r < 3; ++r, row += order_)
+      for (int c = 0; c < 3; ++c) row[c] += double(block[c][r]);  // glm: [column][row]
+  };
+  // The diagonal blocks are summed apart (compact, in cache) and written once.
+  std::fill(patchDiagonal_.begin() + ptrdiff_t(begin), patchDiagonal_.begin() + ptrdiff_t(end), glm::dmat3(0.0));
+  auto addDiagonal = [&](uint32_t p, const glm::mat3& block) {
+    if (owns(p)) patchDiagonal_[p] += glm::dmat3(block);
+  };
+  // The block (i, j) of the symmetric A_c, stored at the lower one of (i, j) and (j, i).
+  auto addLower = [&](uint32_t pi, uint32_t pj, const glm::mat3& block) {
+    if (!owns(std::max(pi, pj))) return;
+    if (pi >= pj)
+      addBlock(pi, pj, block);
+    else
+      addBlock(pj, pi, glm::transpose(block));
+  };
   for (size_t v = 0; v < s.size(); ++v) {
+    if (!owns(patchOf_[v])) continue;
     const glm::mat3& d = otherDiagonal[v];
     if (filterOf_[v] == kFree) {
       addDiagonal(patchOf_[v], d);
@@ -162,6 +180,7 @@ void CoarseCorrection::assemble(const ClothState& s, const std::vector<glm::mat3
   const auto& list = springs.springs();
   for (size_t k = 0; k < list.size(); ++k) {
     const uint32_t va = list[k].a, vb = list[k].b, pa = patchOf_[va], pb = patchOf_[vb];
+    if (!owns(pa) && !owns(pb)) continue;
     const bool freeA = filterOf_[va] == kFree, freeB = filterOf_[vb] == kFree;
     if (pa == pb && freeA && freeB) continue;
     const SpringForce::ImplicitBlock& b = springs.implicitBlock(k);
@@ -187,12 +206,11 @@ void CoarseCorrection::assemble(const ClothState& s, const std::vector<glm::mat3
       addDiagonal(pa, -glm::transpose(offDiagonal));
     }
   }
-  for (uint32_t p = 0; p < patchCount_; ++p) {
+  for (size_t p = begin; p < end; ++p) {
     double* row = &matrix_[3 * p * order_ + 3 * p];
     for (int r = 0; r < 3; ++r, row += order_)
       for (int c = 0; c < 3; ++c) row[c] += patchDiagonal_[p][c][r];
   }
-  factorise();
 }
 
 // In-place envelope Cholesky A_c = L L^T (lower triangle). An unknown without

@@ -44,6 +44,14 @@ class CoarseCorrection {
   // blocks without the springs' part (mass and the other terms), the springs
   // their implicit blocks.
   void assemble(const ClothState& s, const std::vector<glm::mat3>& otherDiagonal, const SpringForce& springs);
+  // The same in three steps, so the second can run in parallel: the
+  // filters of this step's pins and contacts, A_c's rows of the patches
+  // [begin, end) (the ranges of a partition, in any order), then the
+  // factorisation of all of it.
+  void prepareAssembly(const ClothState& s);
+  void assemblePatches(const ClothState& s, const std::vector<glm::mat3>& otherDiagonal, const SpringForce& springs,
+                       size_t begin, size_t end);
+  void factorise();
 
   // Coarse solution of the (filtered) residual r: fills perPatch (one vec3 per
   // patch, to be added as S_i perPatch[patchOf(i)]) and returns r . S P perPatch.
@@ -55,7 +63,6 @@ class CoarseCorrection {
 
  private:
   double& at(size_t i, size_t j) { return matrix_[i * order_ + j]; }
-  void factorise();
 
   std::vector<uint32_t> patchOf_;
   std::vector<uint32_t> patchStart_, patchVertices_;  // CSR: each patch's vertices, in vertex order

@@ -124,6 +124,10 @@ double sumInOrder(const double* partial) {
 // Patches per block of the parallel restriction P^T r.
 constexpr size_t kPatchesPerBlock = 8;
 
+// Parts of the coarse matrix's assembly (one per pool thread): assembled
+// alone it kept one thread busy while the other had only the first product.
+constexpr size_t kAssemblyParts = 2;
+
 }  // namespace
 
 // The CG's vertex loops run as phases of one pool job per iteration (see
@@ -153,14 +157,25 @@ IntegratorReport ImplicitEuler::solve(const ClothState& s, ClothForces& forces, 
   double productDots[kBlocks] = {}, updateDots[kBlocks] = {};
 
   // r = filter(b - A z), c = filter(P r), after the phases `prepared` of
-  // the job if any. The coarse matrix is assembled meanwhile (by whichever
-  // thread takes that block first).
+  // the job if any. The coarse matrix is assembled meanwhile.
   for (const ForceTerm* t : forces.terms()) t->productPass(dv_);
   {
-    if (twoLevel_) job.add(1, prepared, [&](size_t) { coarse_.assemble(s, otherDiagonal_, forces.springs()); });
+    // In parts by patch range; the factorisation is claimed after the
+    // product's blocks, so the thread done first with its part goes on with
+    // those instead of waiting for the other part.
+    int parts = -1;
+    if (twoLevel_) {
+      const size_t patches = coarse_.patchCount();
+      const int filters = job.add(1, prepared, [&](size_t) { coarse_.prepareAssembly(s); });
+      parts = job.add(kAssemblyParts, filters, [&](size_t part) {
+        coarse_.assemblePatches(s, otherDiagonal_, forces.springs(), part * patches / kAssemblyParts,
+                                (part + 1) * patches / kAssemblyParts);
+      });
+    }
     const int product = job.add(kBlocks, prepared, [&](size_t b) {
       if (blocks.begin(b) < blocks.end(b)) multiplyFilteredRange(s, forces, dv_, q_, blocks.begin(b), blocks.end(b));
     });
+    if (twoLevel_) job.add(1, parts, [&](size_t) { coarse_.factorise(); });
     const int residual = job.add(kBlocks, product, [&](size_t bk) {
       double dot = 0.0;
       for (size_t i = blocks.begin(bk); i < blocks.end(bk); ++i) {
