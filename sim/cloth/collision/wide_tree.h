@@ -44,9 +44,12 @@ class WideTree {
   // node's slots holding primitives whose boxes are within the bound; the
   // node's child nodes are visited after, nearer ones first.
   // prefetch(node) is called for the nodes put on the stack below the top
-  // (visited later: their data can be on its way meanwhile).
+  // (visited later: their data can be on its way meanwhile). `passed2` gets
+  // the least squared distance of the boxes passed over as beyond the bound
+  // (so the primitives not handed to visitSlots are no nearer than its root).
   template <class VisitSlots, class Prefetch>
-  void nearestByNode(const glm::vec3& p, float& best2, VisitSlots&& visitSlots, Prefetch&& prefetch) const;
+  void nearestByNode(const glm::vec3& p, float& best2, VisitSlots&& visitSlots, Prefetch&& prefetch,
+                     float& passed2) const;
   // Whether some primitive's box is within sqrt(bound2) of p, looking only
   // into the slots of each node whose bits keep(node) sets (the others'
   // subtrees are skipped).
@@ -86,6 +89,8 @@ class WideTree {
   static void squaredDistances(const Node& n, const glm::vec3& p, float out[4]);
   // Bit k set when d2[k] <= bound.
   static int withinMask(const float d2[4], float bound);
+  // The least d2[k] above bound (huge when none is: empty slots are).
+  static float leastBeyond(const float d2[4], float bound);
   // Bit k set when the box of slot k overlaps `box`.
   static int overlapMask(const Node& n, const Box& box);
 
@@ -117,6 +122,21 @@ inline int WideTree::withinMask(const float d2[4], float bound) {
   int mask = 0;
   for (int k = 0; k < 4; ++k) mask |= int(d2[k] <= bound) << k;
   return mask;
+#endif
+}
+
+inline float WideTree::leastBeyond(const float d2[4], float bound) {
+#ifdef MQ_WIDE_TREE_SSE
+  const __m128 d = _mm_loadu_ps(d2);
+  const __m128 beyond = _mm_or_ps(_mm_and_ps(_mm_cmpgt_ps(d, _mm_set1_ps(bound)), d),
+                                  _mm_and_ps(_mm_cmple_ps(d, _mm_set1_ps(bound)), _mm_set1_ps(1e30f)));
+  const __m128 pairs = _mm_min_ps(beyond, _mm_movehl_ps(beyond, beyond));
+  return _mm_cvtss_f32(_mm_min_ss(pairs, _mm_shuffle_ps(pairs, pairs, 1)));
+#else
+  float least = 1e30f;
+  for (int k = 0; k < 4; ++k)
+    if (d2[k] > bound) least = std::min(least, d2[k]);
+  return least;
 #endif
 }
 
@@ -211,7 +231,9 @@ bool WideTree::anyNear(const glm::vec3& p, float bound2, Keep&& keep) const {
 }
 
 template <class VisitSlots, class Prefetch>
-void WideTree::nearestByNode(const glm::vec3& p, float& best2, VisitSlots&& visitSlots, Prefetch&& prefetch) const {
+void WideTree::nearestByNode(const glm::vec3& p, float& best2, VisitSlots&& visitSlots, Prefetch&& prefetch,
+                             float& passed2) const {
+  passed2 = 1e30f;
   if (nodes_.empty()) return;
   // A search is a chain of dependent loads, a node's address and then its
   // boxes: so few branches (masks for the slots within the bound; only the
@@ -224,7 +246,10 @@ void WideTree::nearestByNode(const glm::vec3& p, float& best2, VisitSlots&& visi
   stackNode[0] = 0, stackDistance2[0] = 0.0f, ++top;
   while (top > 0) {
     --top;
-    if (stackDistance2[top] > best2) continue;
+    if (stackDistance2[top] > best2) {
+      passed2 = std::min(passed2, stackDistance2[top]);
+      continue;
+    }
     const int32_t index = stackNode[top];
     const Node& n = nodes_[index];
     float d2[4];
@@ -232,6 +257,7 @@ void WideTree::nearestByNode(const glm::vec3& p, float& best2, VisitSlots&& visi
     const int nearSlots = withinMask(d2, best2) & n.primitiveSlots;
     if (nearSlots) visitSlots(uint32_t(index), nearSlots);
     const int children = withinMask(d2, best2) & n.nodeSlots;  // the bound may be lower now
+    passed2 = std::min(passed2, leastBeyond(d2, best2));
     if (!children) continue;
     int nearest = __builtin_ctz(unsigned(children));
     for (int k = nearest + 1; k < 4; ++k)
