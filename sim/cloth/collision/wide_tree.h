@@ -89,8 +89,9 @@ class WideTree {
   static void squaredDistances(const Node& n, const glm::vec3& p, float out[4]);
   // Bit k set when d2[k] <= bound.
   static int withinMask(const float d2[4], float bound);
-  // The least d2[k] above bound (huge when none is: empty slots are).
-  static float leastBeyond(const float d2[4], float bound);
+  // Lowers least[k] to d2[k] where that is above bound (four lanes, their
+  // least taken once at the end of a search; empty slots' d2 are huge).
+  static void lowerToBeyond(const float d2[4], float bound, float least[4]);
   // Bit k set when the box of slot k overlaps `box`.
   static int overlapMask(const Node& n, const Box& box);
 
@@ -125,18 +126,15 @@ inline int WideTree::withinMask(const float d2[4], float bound) {
 #endif
 }
 
-inline float WideTree::leastBeyond(const float d2[4], float bound) {
+inline void WideTree::lowerToBeyond(const float d2[4], float bound, float least[4]) {
 #ifdef MQ_WIDE_TREE_SSE
+  // Within the bound: max(d2, huge); beyond: max(d2, 0) = d2.
   const __m128 d = _mm_loadu_ps(d2);
-  const __m128 beyond = _mm_or_ps(_mm_and_ps(_mm_cmpgt_ps(d, _mm_set1_ps(bound)), d),
-                                  _mm_and_ps(_mm_cmple_ps(d, _mm_set1_ps(bound)), _mm_set1_ps(1e30f)));
-  const __m128 pairs = _mm_min_ps(beyond, _mm_movehl_ps(beyond, beyond));
-  return _mm_cvtss_f32(_mm_min_ss(pairs, _mm_shuffle_ps(pairs, pairs, 1)));
+  const __m128 beyond = _mm_max_ps(d, _mm_and_ps(_mm_cmple_ps(d, _mm_set1_ps(bound)), _mm_set1_ps(1e30f)));
+  _mm_storeu_ps(least, _mm_min_ps(_mm_loadu_ps(least), beyond));
 #else
-  float least = 1e30f;
   for (int k = 0; k < 4; ++k)
-    if (d2[k] > bound) least = std::min(least, d2[k]);
-  return least;
+    if (d2[k] > bound) least[k] = std::min(least[k], d2[k]);
 #endif
 }
 
@@ -233,6 +231,7 @@ bool WideTree::anyNear(const glm::vec3& p, float bound2, Keep&& keep) const {
 template <class VisitSlots, class Prefetch>
 void WideTree::nearestByNode(const glm::vec3& p, float& best2, VisitSlots&& visitSlots, Prefetch&& prefetch,
                              float& passed2) const {
+  float passed[4] = {1e30f, 1e30f, 1e30f, 1e30f};
   passed2 = 1e30f;
   if (nodes_.empty()) return;
   // A search is a chain of dependent loads, a node's address and then its
@@ -257,7 +256,7 @@ void WideTree::nearestByNode(const glm::vec3& p, float& best2, VisitSlots&& visi
     const int nearSlots = withinMask(d2, best2) & n.primitiveSlots;
     if (nearSlots) visitSlots(uint32_t(index), nearSlots);
     const int children = withinMask(d2, best2) & n.nodeSlots;  // the bound may be lower now
-    passed2 = std::min(passed2, leastBeyond(d2, best2));
+    lowerToBeyond(d2, best2, passed);
     if (!children) continue;
     int nearest = __builtin_ctz(unsigned(children));
     for (int k = nearest + 1; k < 4; ++k)
@@ -269,6 +268,7 @@ void WideTree::nearestByNode(const glm::vec3& p, float& best2, VisitSlots&& visi
     }
     stackNode[top] = n.child[nearest], stackDistance2[top] = d2[nearest], ++top;
   }
+  passed2 = std::min(std::min(passed2, std::min(passed[0], passed[1])), std::min(passed[2], passed[3]));
 }
 
 }  // namespace mq::cloth
