@@ -347,7 +347,8 @@ BodyCollider::Nearest BodyCollider::searchNearest(const glm::vec3& p, float radi
   Nearest best;
   best.distance2 = radius * radius;
   if (hint >= 0 && size_t(hint) < triangles_.size() / 3) considerTriangle(uint32_t(hint), p, best);
-  float passedInTree2;
+  // Found within the radius already, the search will find one: no lower bound needed.
+  float passedInTree2 = 1e30f;
   tree_.nearestByNode(
       p, best.distance2, [&](uint32_t node, int slots) { considerSlots(node, slots, p, best); },
       [&](int32_t node) {
@@ -357,7 +358,7 @@ BodyCollider::Nearest BodyCollider::searchNearest(const glm::vec3& p, float radi
         for (int line = 0; line < 3; ++line) _mm_prefetch(corners + 64 * line, _MM_HINT_T0);
 #endif
       },
-      passedInTree2);
+      best.triangle < 0 ? &passedInTree2 : nullptr);
   best.passed2 = std::min(best.passed2, passedInTree2);
   return best;
 }

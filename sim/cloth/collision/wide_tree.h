@@ -44,12 +44,14 @@ class WideTree {
   // node's slots holding primitives whose boxes are within the bound; the
   // node's child nodes are visited after, nearer ones first.
   // prefetch(node) is called for the nodes put on the stack below the top
-  // (visited later: their data can be on its way meanwhile). `passed2` gets
-  // the least squared distance of the boxes passed over as beyond the bound
-  // (so the primitives not handed to visitSlots are no nearer than its root).
+  // (visited later: their data can be on its way meanwhile). `passed2`, if
+  // given, gets the least squared distance of the boxes passed over as
+  // beyond the bound (so the primitives not handed to visitSlots are no
+  // nearer than its root; not kept when the caller has a primitive within
+  // the bound already, for the work it costs).
   template <class VisitSlots, class Prefetch>
   void nearestByNode(const glm::vec3& p, float& best2, VisitSlots&& visitSlots, Prefetch&& prefetch,
-                     float& passed2) const;
+                     float* passed2) const;
   // Whether some primitive's box is within sqrt(bound2) of p, looking only
   // into the slots of each node whose bits keep(node) sets (the others'
   // subtrees are skipped).
@@ -230,9 +232,9 @@ bool WideTree::anyNear(const glm::vec3& p, float bound2, Keep&& keep) const {
 
 template <class VisitSlots, class Prefetch>
 void WideTree::nearestByNode(const glm::vec3& p, float& best2, VisitSlots&& visitSlots, Prefetch&& prefetch,
-                             float& passed2) const {
+                             float* passed2) const {
   float passed[4] = {1e30f, 1e30f, 1e30f, 1e30f};
-  passed2 = 1e30f;
+  if (passed2) *passed2 = 1e30f;
   if (nodes_.empty()) return;
   // A search is a chain of dependent loads, a node's address and then its
   // boxes: so few branches (masks for the slots within the bound; only the
@@ -246,7 +248,7 @@ void WideTree::nearestByNode(const glm::vec3& p, float& best2, VisitSlots&& visi
   while (top > 0) {
     --top;
     if (stackDistance2[top] > best2) {
-      passed2 = std::min(passed2, stackDistance2[top]);
+      if (passed2) *passed2 = std::min(*passed2, stackDistance2[top]);
       continue;
     }
     const int32_t index = stackNode[top];
@@ -256,7 +258,7 @@ void WideTree::nearestByNode(const glm::vec3& p, float& best2, VisitSlots&& visi
     const int nearSlots = withinMask(d2, best2) & n.primitiveSlots;
     if (nearSlots) visitSlots(uint32_t(index), nearSlots);
     const int children = withinMask(d2, best2) & n.nodeSlots;  // the bound may be lower now
-    lowerToBeyond(d2, best2, passed);
+    if (passed2) lowerToBeyond(d2, best2, passed);
     if (!children) continue;
     int nearest = __builtin_ctz(unsigned(children));
     for (int k = nearest + 1; k < 4; ++k)
@@ -268,7 +270,7 @@ void WideTree::nearestByNode(const glm::vec3& p, float& best2, VisitSlots&& visi
     }
     stackNode[top] = n.child[nearest], stackDistance2[top] = d2[nearest], ++top;
   }
-  passed2 = std::min(std::min(passed2, std::min(passed[0], passed[1])), std::min(passed[2], passed[3]));
+  if (passed2) *passed2 = std::min(std::min(*passed2, std::min(passed[0], passed[1])), std::min(passed[2], passed[3]));
 }
 
 }  // namespace mq::cloth
