@@ -361,7 +361,58 @@ TEST(BodyCollider, QueriesFromTheLastQueryAnswerAsAFreshSearch) {
   }
   EXPECT_GT(found, 1000);
   EXPECT_GT(provenEmpty, 500);                   // far points moved a little: no search
-  EXPECT_LT(searched, queries - provenEmpty - 800);  // unmoved points: the answer again
+  EXPECT_GT(provenEmpty, 3500);  // with the clearance of a miss (3151 with its radius alone)
+  EXPECT_GT(queries - provenEmpty - searched, 700);  // unmoved points: the answer again
+}
+
+// A miss keeps how far the surface is at least (the boxes and triangles the
+// search passed over): never farther than the nearest triangle (brute force),
+// and for a point well beyond the radius enough to prove the next miss a few
+// mm on without a search.
+TEST(BodyCollider, AMissesClearanceIsALowerBoundOfTheDistance) {
+  BumpyBody bumpy;
+  BodyCollider& body = bumpy.body;
+  body.setTarget(bumpy.target, 1.0f / 30.0f);
+  body.moveTo(0.5f);
+  const std::vector<glm::vec3>& x = body.positions();
+  const std::vector<uint32_t>& triangles = bumpy.triangles;
+  auto distanceToBody = [&](const glm::vec3& p) {
+    float nearest = 1e30f;
+    for (size_t t = 0; t < triangles.size() / 3; ++t) {
+      const glm::vec3 &a = x[triangles[3 * t]], &b = x[triangles[3 * t + 1]], &c = x[triangles[3 * t + 2]];
+      const glm::vec3 w = closestTriangleWeights(p, a, b, c);
+      nearest = std::min(nearest, glm::length(p - (w.x * a + w.y * b + w.z * c)));
+    }
+    return nearest;
+  };
+  std::mt19937 random(17);
+  std::uniform_real_distribution<float> where(-0.2f, 0.2f), step(-0.003f, 0.003f);
+  const float radius = 0.02f;
+  int misses = 0, far = 0, proven = 0, farProven = 0;
+  for (int q = 0; q < 2000; ++q) {
+    const glm::vec3 p(where(random), where(random), where(random));
+    BodyQuery last;
+    BodyContact contact;
+    if (body.nearestContact(p, contact, radius, last)) continue;
+    ++misses;
+    const float distance = distanceToBody(p);
+    ASSERT_GE(last.clearance, radius);
+    ASSERT_LE(last.clearance, distance + 1e-6f) << "query " << q;
+    const glm::vec3 moved = p + glm::vec3(step(random), step(random), step(random));
+    if (body.provesNoneWithin(last, moved, radius)) {
+      ++proven;
+      ASSERT_GE(distanceToBody(moved), radius);
+      ASSERT_FALSE(body.nearestContact(moved, contact, radius));
+    }
+    if (distance > radius + 0.02f) {
+      ++far;
+      farProven += body.provesNoneWithin(last, moved, radius);
+    }
+  }
+  EXPECT_GT(misses, 1000);
+  EXPECT_GT(far, 500);
+  EXPECT_GT(10 * farProven, 9 * far);  // 1534 of 1615 (none with the radius alone)
+  EXPECT_GE(proven, farProven);
 }
 
 // An answer kept from the same point takes the body's velocity of the new

@@ -223,15 +223,16 @@ inline glm::vec3 BodyCollider::velocityAt(uint32_t t, const glm::vec3& w) const 
   return w.x * velocity_[triangles_[3 * t]] + w.y * velocity_[triangles_[3 * t + 1]] + w.z * velocity_[triangles_[3 * t + 2]];
 }
 
-inline void BodyCollider::considerTriangle(uint32_t t, const glm::vec3& p, Nearest& best) const {
+inline float BodyCollider::considerTriangle(uint32_t t, const glm::vec3& p, Nearest& best) const {
   const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
   const glm::vec3 w = closestTriangleWeights(p, current_[a], current_[b], current_[c]);
   const glm::vec3 offset = p - (w.x * current_[a] + w.y * current_[b] + w.z * current_[c]);
   const float d2 = glm::dot(offset, offset);
-  if (d2 > best.distance2 || (d2 == best.distance2 && (best.triangle < 0 || t > best.triangle))) return;
+  if (d2 > best.distance2 || (d2 == best.distance2 && (best.triangle < 0 || t > best.triangle))) return d2;
   const glm::vec3 faceNormal = glm::cross(current_[b] - current_[a], current_[c] - current_[a]);
-  if (!(glm::dot(faceNormal, faceNormal) > 0.0f)) return;
-  best = {t, w, d2};
+  if (!(glm::dot(faceNormal, faceNormal) > 0.0f)) return d2;
+  best = {t, w, d2, best.passed2};
+  return d2;
 }
 
 void BodyCollider::updateSlotCorners() {
@@ -327,10 +328,14 @@ void BodyCollider::considerSlots(uint32_t node, int slots, const glm::vec3& p, N
     int k = -1;
     for (int j = 0; j < 4; ++j)
       if ((slots & (1 << j)) && (k < 0 || lower[j] < lower[k])) k = j;
-    if (!(lower[k] <= bound2)) return;  // the nearest bound's too far: all are
+    if (!(lower[k] <= bound2)) {  // the nearest bound's too far: all are
+      best.passed2 = std::min(best.passed2, lower[k]);
+      return;
+    }
     slots &= ~(1 << k);
     const float before = best.distance2;
-    considerTriangle(uint32_t(tree_.primitiveAt(node, k)), p, best);
+    const float distance2 = considerTriangle(uint32_t(tree_.primitiveAt(node, k)), p, best);
+    best.passed2 = std::min(best.passed2, distance2);
     if (best.distance2 != before) bound2 = boundOf(best.distance2);
   }
 }
@@ -342,6 +347,8 @@ BodyCollider::Nearest BodyCollider::searchNearest(const glm::vec3& p, float radi
   Nearest best;
   best.distance2 = radius * radius;
   if (hint >= 0 && size_t(hint) < triangles_.size() / 3) considerTriangle(uint32_t(hint), p, best);
+  // Found within the radius already, the search will find one: no lower bound needed.
+  float passedInTree2 = 1e30f;
   tree_.nearestByNode(
       p, best.distance2, [&](uint32_t node, int slots) { considerSlots(node, slots, p, best); },
       [&](int32_t node) {
@@ -350,7 +357,9 @@ BodyCollider::Nearest BodyCollider::searchNearest(const glm::vec3& p, float radi
         const char* corners = reinterpret_cast<const char*>(&slotCorners_[node]);
         for (int line = 0; line < 3; ++line) _mm_prefetch(corners + 64 * line, _MM_HINT_T0);
 #endif
-      });
+      },
+      best.triangle < 0 ? &passedInTree2 : nullptr);
+  best.passed2 = std::min(best.passed2, passedInTree2);
   return best;
 }
 
@@ -367,6 +376,7 @@ bool BodyCollider::nearestContact(const glm::vec3& p, BodyContact& contact, floa
   ++last.searches;
   const Nearest best = searchNearest(p, radius, last.contact.triangle);
   last.found = contactAt(p, best, last.contact);
+  last.clearance = last.found ? 0.0f : std::max(radius, std::sqrt(best.passed2));
   last.distance2 = best.distance2;
   last.weights = best.weights;
   last.pose = pose_;
@@ -397,7 +407,7 @@ bool BodyCollider::nearestContactSince(const glm::vec3& p, BodyContact& contact,
 
 bool BodyCollider::provesNoneWithin(const BodyQuery& last, const glm::vec3& p, float radius) const {
   if (last.pose != pose_) return false;
-  const float nearest = last.found ? std::abs(last.contact.signedDistance) : last.radius;  // from last.point, at least
+  const float nearest = last.found ? std::abs(last.contact.signedDistance) : last.clearance;  // from last.point, at least
   return nearest - glm::length(p - last.point) - kBoundSlack > radius;
 }
 

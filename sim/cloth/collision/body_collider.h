@@ -38,6 +38,7 @@ struct BodyQuery {
   glm::vec3 point{0.0f};
   float radius = 0.0f;
   bool found = false;
+  float clearance = 0.0f;  // when not found: the surface is no nearer than this (>= radius)
   BodyContact contact;  // when found
   float distance2 = 0.0f;      // when found: the nearest triangle's squared distance, as the search had it
   glm::vec3 weights{0.0f};     // ... and the contact point's barycentric weights on it
@@ -113,15 +114,20 @@ class BodyCollider {
     int64_t triangle = -1;
     glm::vec3 weights{0.0f};
     float distance2;
+    // When none is found: no triangle's squared distance is below this
+    // (but for rounding), from the boxes and triangles passed over.
+    float passed2 = 1e30f;
   };
   // Takes triangle t as `best` when it is nearer to p (of triangles equally
   // near, the lowest index wins: the answer does not depend on the order).
-  void considerTriangle(uint32_t t, const glm::vec3& p, Nearest& best) const;
+  // Returns t's squared distance.
+  float considerTriangle(uint32_t t, const glm::vec3& p, Nearest& best) const;
   // considerTriangle() for the triangles in the tree node's `slotMask`, nearest
   // lower bound first, skipping those whose lower bound (four at once)
   // proves them farther than `best` with a margin for rounding: so the
   // triangles that could be the nearest are all considered, and the answer
-  // is that of considering them all.
+  // is that of considering them all. best.passed2 takes the distances (or
+  // lower bounds) of those not taken.
   void considerSlots(uint32_t node, int slotMask, const glm::vec3& p, Nearest& best) const;
   // The corners of the triangles in the tree's slots, after a move.
   void updateSlotCorners();

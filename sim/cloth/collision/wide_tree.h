@@ -44,9 +44,14 @@ class WideTree {
   // node's slots holding primitives whose boxes are within the bound; the
   // node's child nodes are visited after, nearer ones first.
   // prefetch(node) is called for the nodes put on the stack below the top
-  // (visited later: their data can be on its way meanwhile).
+  // (visited later: their data can be on its way meanwhile). `passed2`, if
+  // given, gets the least squared distance of the boxes passed over as
+  // beyond the bound (so the primitives not handed to visitSlots are no
+  // nearer than its root; not kept when the caller has a primitive within
+  // the bound already, for the work it costs).
   template <class VisitSlots, class Prefetch>
-  void nearestByNode(const glm::vec3& p, float& best2, VisitSlots&& visitSlots, Prefetch&& prefetch) const;
+  void nearestByNode(const glm::vec3& p, float& best2, VisitSlots&& visitSlots, Prefetch&& prefetch,
+                     float* passed2) const;
   // Whether some primitive's box is within sqrt(bound2) of p, looking only
   // into the slots of each node whose bits keep(node) sets (the others'
   // subtrees are skipped).
@@ -86,6 +91,9 @@ class WideTree {
   static void squaredDistances(const Node& n, const glm::vec3& p, float out[4]);
   // Bit k set when d2[k] <= bound.
   static int withinMask(const float d2[4], float bound);
+  // Lowers least[k] to d2[k] where that is above bound (four lanes, their
+  // least taken once at the end of a search; empty slots' d2 are huge).
+  static void lowerToBeyond(const float d2[4], float bound, float least[4]);
   // Bit k set when the box of slot k overlaps `box`.
   static int overlapMask(const Node& n, const Box& box);
 
@@ -117,6 +125,18 @@ inline int WideTree::withinMask(const float d2[4], float bound) {
   int mask = 0;
   for (int k = 0; k < 4; ++k) mask |= int(d2[k] <= bound) << k;
   return mask;
+#endif
+}
+
+inline void WideTree::lowerToBeyond(const float d2[4], float bound, float least[4]) {
+#ifdef MQ_WIDE_TREE_SSE
+  // Within the bound: max(d2, huge); beyond: max(d2, 0) = d2.
+  const __m128 d = _mm_loadu_ps(d2);
+  const __m128 beyond = _mm_max_ps(d, _mm_and_ps(_mm_cmple_ps(d, _mm_set1_ps(bound)), _mm_set1_ps(1e30f)));
+  _mm_storeu_ps(least, _mm_min_ps(_mm_loadu_ps(least), beyond));
+#else
+  for (int k = 0; k < 4; ++k)
+    if (d2[k] > bound) least[k] = std::min(least[k], d2[k]);
 #endif
 }
 
@@ -211,7 +231,10 @@ bool WideTree::anyNear(const glm::vec3& p, float bound2, Keep&& keep) const {
 }
 
 template <class VisitSlots, class Prefetch>
-void WideTree::nearestByNode(const glm::vec3& p, float& best2, VisitSlots&& visitSlots, Prefetch&& prefetch) const {
+void WideTree::nearestByNode(const glm::vec3& p, float& best2, VisitSlots&& visitSlots, Prefetch&& prefetch,
+                             float* passed2) const {
+  float passed[4] = {1e30f, 1e30f, 1e30f, 1e30f};
+  if (passed2) *passed2 = 1e30f;
   if (nodes_.empty()) return;
   // A search is a chain of dependent loads, a node's address and then its
   // boxes: so few branches (masks for the slots within the bound; only the
@@ -224,7 +247,10 @@ void WideTree::nearestByNode(const glm::vec3& p, float& best2, VisitSlots&& visi
   stackNode[0] = 0, stackDistance2[0] = 0.0f, ++top;
   while (top > 0) {
     --top;
-    if (stackDistance2[top] > best2) continue;
+    if (stackDistance2[top] > best2) {
+      if (passed2) *passed2 = std::min(*passed2, stackDistance2[top]);
+      continue;
+    }
     const int32_t index = stackNode[top];
     const Node& n = nodes_[index];
     float d2[4];
@@ -232,6 +258,7 @@ void WideTree::nearestByNode(const glm::vec3& p, float& best2, VisitSlots&& visi
     const int nearSlots = withinMask(d2, best2) & n.primitiveSlots;
     if (nearSlots) visitSlots(uint32_t(index), nearSlots);
     const int children = withinMask(d2, best2) & n.nodeSlots;  // the bound may be lower now
+    if (passed2) lowerToBeyond(d2, best2, passed);
     if (!children) continue;
     int nearest = __builtin_ctz(unsigned(children));
     for (int k = nearest + 1; k < 4; ++k)
@@ -243,6 +270,7 @@ void WideTree::nearestByNode(const glm::vec3& p, float& best2, VisitSlots&& visi
     }
     stackNode[top] = n.child[nearest], stackDistance2[top] = d2[nearest], ++top;
   }
+  if (passed2) *passed2 = std::min(std::min(*passed2, std::min(passed[0], passed[1])), std::min(passed[2], passed[3]));
 }
 
 }  // namespace mq::cloth
