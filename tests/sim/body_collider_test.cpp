@@ -100,6 +100,20 @@ void bumpySphere(float phase, std::vector<float>& positions, std::vector<uint32_
   }
 }
 
+// The distance from p to triangle t of a mesh, and to the nearest of all its
+// triangles (brute force).
+float distanceToTriangle(const glm::vec3& p, const std::vector<glm::vec3>& x, const std::vector<uint32_t>& triangles,
+                         size_t t) {
+  const glm::vec3 &a = x[triangles[3 * t]], &b = x[triangles[3 * t + 1]], &c = x[triangles[3 * t + 2]];
+  const glm::vec3 w = closestTriangleWeights(p, a, b, c);
+  return glm::length(p - (w.x * a + w.y * b + w.z * c));
+}
+float distanceToMesh(const glm::vec3& p, const std::vector<glm::vec3>& x, const std::vector<uint32_t>& triangles) {
+  float nearest = 1e30f;
+  for (size_t t = 0; t < triangles.size() / 3; ++t) nearest = std::min(nearest, distanceToTriangle(p, x, triangles, t));
+  return nearest;
+}
+
 // The bumpy sphere as a body (2 cm search radius) and, as `target`, the same
 // sphere with its bumps turned (phase 0.7): a pose to move to.
 struct BumpyBody {
@@ -129,12 +143,7 @@ TEST(BodyCollider, NearestContactIsTheNearestOfAllTriangles) {
     const std::vector<glm::vec3>& x = body.positions();
     for (int q = 0; q < 3000; ++q) {
       const glm::vec3 p(where(random), where(random), where(random));
-      float expected = 1e30f;
-      for (size_t t = 0; t < triangles.size() / 3; ++t) {
-        const glm::vec3 &a = x[triangles[3 * t]], &b = x[triangles[3 * t + 1]], &c = x[triangles[3 * t + 2]];
-        const glm::vec3 w = closestTriangleWeights(p, a, b, c);
-        expected = std::min(expected, glm::length(p - (w.x * a + w.y * b + w.z * c)));
-      }
+      const float expected = distanceToMesh(p, x, triangles);
       BodyContact contact;
       const bool hit = body.nearestContact(p, contact, 0.02f);
       ASSERT_EQ(hit, expected < 0.02f) << "at " << p.x << " " << p.y << " " << p.z;
@@ -271,9 +280,7 @@ TEST(BodyCollider, FasterWithinSeesEveryFastTriangleWithinTheRadius) {
         bool fastNear = false;
         for (size_t t = 0; t < triangleSpeed.size() && !fastNear; ++t) {
           if (!(triangleSpeed[t] > speed)) continue;
-          const glm::vec3 &a = x[triangles[3 * t]], &b = x[triangles[3 * t + 1]], &c = x[triangles[3 * t + 2]];
-          const glm::vec3 w = closestTriangleWeights(p, a, b, c);
-          fastNear = glm::length(p - (w.x * a + w.y * b + w.z * c)) < radius;
+          fastNear = distanceToTriangle(p, x, triangles, t) < radius;
         }
         const bool said = body.fasterWithin(p, radius, speed);
         if (fastNear) {
@@ -376,15 +383,7 @@ TEST(BodyCollider, AMissesClearanceIsALowerBoundOfTheDistance) {
   body.moveTo(0.5f);
   const std::vector<glm::vec3>& x = body.positions();
   const std::vector<uint32_t>& triangles = bumpy.triangles;
-  auto distanceToBody = [&](const glm::vec3& p) {
-    float nearest = 1e30f;
-    for (size_t t = 0; t < triangles.size() / 3; ++t) {
-      const glm::vec3 &a = x[triangles[3 * t]], &b = x[triangles[3 * t + 1]], &c = x[triangles[3 * t + 2]];
-      const glm::vec3 w = closestTriangleWeights(p, a, b, c);
-      nearest = std::min(nearest, glm::length(p - (w.x * a + w.y * b + w.z * c)));
-    }
-    return nearest;
-  };
+  auto distanceToBody = [&](const glm::vec3& p) { return distanceToMesh(p, x, triangles); };
   std::mt19937 random(17);
   std::uniform_real_distribution<float> where(-0.2f, 0.2f), step(-0.003f, 0.003f);
   const float radius = 0.02f;
