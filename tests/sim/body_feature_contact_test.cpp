@@ -131,11 +131,8 @@ TEST(BodyFeatureContact, ClothBeyondAThinBodyPartIsLeftAlone) {
 // the same order.
 TEST(BodyFeatureContact, TheTreeFindsThePairsOfTestingEveryTriangle) {
   const mq::test::TrousersWalk walk;
-  const LoadedScene& scene = walk.scene;
-  const std::vector<Garment>& garments = walk.garments;
-  const ClothSceneSpec& spec = walk.spec;
-  ASSERT_EQ(garments.size(), 1u);
-  ASSERT_GE(scene.clipIndex, 0);
+  const auto& [file, scene, garments, spec] = walk;
+  ASSERT_TRUE(walk.hasOneGarmentAndAClip());
   PosedCharacter posed;
   posed.evaluate(scene.character, -1, 0.0f, &scene.edits, nullptr);
   const std::vector<float> rest = concatenatedPositions(posed.meshes());

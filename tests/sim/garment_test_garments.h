@@ -1,6 +1,8 @@
 #pragma once
 // Small garments shared by the garment tests.
 
+#include <gtest/gtest.h>
+
 #include <string>
 #include <vector>
 
@@ -37,6 +39,12 @@ struct TrousersWalk {
   LoadedScene scene = openScene(file);
   std::vector<Garment> garments = garmentsFromJson(scene.document.garments);
   cloth::ClothSceneSpec spec = cloth::parseClothScene(scene.document.cloth, scene.document.colliders, file, true);
+  // What the tests on it take for granted: one garment and a clip to walk.
+  ::testing::AssertionResult hasOneGarmentAndAClip() const {
+    if (garments.size() != 1) return ::testing::AssertionFailure() << garments.size() << " garments, not 1";
+    if (scene.clipIndex < 0) return ::testing::AssertionFailure() << "no clip";
+    return ::testing::AssertionSuccess();
+  }
 };
 
 }  // namespace mq::test

@@ -63,11 +63,8 @@ int skinInFrontOfTheCloth(const std::vector<float>& body, const std::vector<uint
 
 TEST(GarmentWalk, TrousersKeepTheBentKneeCovered) {
   const mq::test::TrousersWalk walk;
-  const LoadedScene& scene = walk.scene;
-  const std::vector<Garment>& garments = walk.garments;
-  const ClothSceneSpec& spec = walk.spec;
-  ASSERT_EQ(garments.size(), 1u);
-  ASSERT_GE(scene.clipIndex, 0);
+  const auto& [file, scene, garments, spec] = walk;
+  ASSERT_TRUE(walk.hasOneGarmentAndAClip());
   const int clip = scene.clipIndex;
   const BodyMeasurements measured = measureBody(scene.character);
   const float knee = 0.5f * (measured.knee[0].y + measured.knee[1].y);

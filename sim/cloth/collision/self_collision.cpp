@@ -814,8 +814,10 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     vertexTriangle_ = collectInBlocks<VertexTriangle>(runs, [&](size_t r, std::vector<VertexTriangle>& out) {
       const size_t g0 = r * kRunGroups, g1 = std::min(vertexGroups_.size(), g0 + kRunGroups);
       GroupQuery groups[kRunGroups];
-      std::vector<VertexQuery> queries;
-      queries.reserve(vertexGroups_[g1 - 1].vertexEnd - vertexGroups_[g0].vertexBegin);
+      // Scratch kept per thread: a step makes a few hundred runs.
+      thread_local std::vector<VertexQuery> queries;
+      thread_local std::vector<AabbTree::Entry> entries;
+      queries.clear();
       // The run's box, motion and places hold its groups' (no places: a vertex without a triangle).
       GroupQuery run;
       uint32_t placeEnd = 0;
@@ -842,7 +844,6 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
       run.placeCount = placeless ? 0 : placeEnd - run.placeFirst;
       // The run's box, motion and places hold each group's: its walk leaves
       // out no node a group's walk keeps.
-      std::vector<AabbTree::Entry> entries;
       tree_.queryEntries(run.box, kRunSplit, [&](int32_t node) { return skipped(node, run); }, entries);
       for (size_t g = g0; g < g1; ++g) {
         const GroupQuery& group = groups[g - g0];
