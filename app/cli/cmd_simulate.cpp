@@ -66,6 +66,8 @@ struct RunResult {
   int maxPenetrating = 0;  // the most cloth vertices inside the body in any frame
   long long solverIterations = 0;
   int substeps = 0;
+  double poseSeconds = 0.0;  // posing the character (skinning) for the frames
+  double phaseSeconds[cloth::kClothPhaseCount] = {};  // the sheet's solver phases (ClothPhase)
 };
 
 // All cloth of the scene, stepped frame by frame on the (animated) body.
@@ -90,9 +92,11 @@ RunResult run(SceneCloth& cloth, PosedBody& body, float startTime, bool animateB
     const std::clock_t cpu0 = std::clock();
     const bool posed = !body.empty() && animateBody;
     if (posed) body.pose(startTime + float(f + 1) / fps, bodyPositions, nullptr);
+    r.poseSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (cloth.sheet) {
       if (posed) cloth.sheet->updateBody(bodyPositions);
       cloth.sheet->step(1.0f / fps);
+      for (int k = 0; k < cloth::kClothPhaseCount; ++k) r.phaseSeconds[k] += cloth.sheet->stats().phaseSeconds[k];
       r.solverIterations += cloth.sheet->stats().solverIterations;
       r.substeps = cloth.sheet->stats().substeps;
     }
@@ -110,6 +114,17 @@ RunResult run(SceneCloth& cloth, PosedBody& body, float startTime, bool animateB
     if (cloth.garments) cloth.garments->exportFrame(exportDir, f + 1);
   }
   return r;
+}
+
+// Where the frames' wall time went: posing the character, then each phase
+// of the solvers (summed over the sheet and the garments), ms per frame.
+json phaseProfile(const RunResult& r, const SceneCloth& cloth, int frames) {
+  json profile = {{"pose_character", 1000.0 * r.poseSeconds / frames}};
+  for (int k = 0; k < cloth::kClothPhaseCount; ++k) {
+    const double seconds = r.phaseSeconds[k] + (cloth.garments ? cloth.garments->phaseSeconds()[k] : 0.0);
+    profile[cloth::clothPhaseName(cloth::ClothPhase(k))] = 1000.0 * seconds / frames;
+  }
+  return profile;
 }
 
 int runSimulate(const std::vector<std::string>& argv) {
@@ -180,6 +195,7 @@ int runSimulate(const std::vector<std::string>& argv) {
                 {"substeps_per_frame", r.substeps},
                 {"cg_iterations_per_frame", double(r.solverIterations) / frames},
                 {"threads", ThreadPool::shared().threadCount()}};
+  stats["phase_ms_per_frame"] = phaseProfile(r, cloth, frames);
   if (cloth.garments) {
     stats["garments"] = cloth.garments->stats();
     stats["dressing_steps"] = dressing.steps;

@@ -95,6 +95,7 @@ void SimulatedGarments::step(float dt, const std::vector<float>* posedBody) {
     substeps_[i] += sims_[i]->stats().substeps;
     stretchPasses_[i] += sims_[i]->stats().stretchPasses;
     solverIterations_[i] += sims_[i]->stats().solverIterations;
+    for (int k = 0; k < cloth::kClothPhaseCount; ++k) phaseSeconds_[k] += sims_[i]->stats().phaseSeconds[k];
   }
 }
 

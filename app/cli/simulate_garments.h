@@ -57,6 +57,8 @@ class SimulatedGarments {
   // Per garment: name, layer, vertices, welded, sewing_steps, seam_gap, max_stretch,
   // penetrating_vertices, inside_inner_vertices (now and max_: in any measured frame), bbox.
   nlohmann::json stats() const;
+  // The wall time of each phase of the solver (cloth::ClothPhase), all garments, summed over step().
+  const double* phaseSeconds() const { return phaseSeconds_; }
 
  private:
   std::vector<Garment> garments_;
@@ -68,6 +70,7 @@ class SimulatedGarments {
   int maxInsideInnerTotal_ = 0;
   std::vector<int> sewingSteps_;  // per garment: steps until the weld (in dress())
   std::vector<long long> substeps_, stretchPasses_, solverIterations_;  // per garment, summed over step()
+  double phaseSeconds_[cloth::kClothPhaseCount] = {};  // all garments, summed over step()
   int frames_ = 0;
 };
 

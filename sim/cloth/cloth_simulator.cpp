@@ -69,6 +69,13 @@ glm::vec3 firstContactAlong(const PrimitiveCollider& c, const glm::vec3& from, c
 
 }  // namespace
 
+const char* clothPhaseName(ClothPhase phase) {
+  static const char* const names[kClothPhaseCount] = {
+      "body_pose",     "approach",      "integrate",           "collide", "stretch_limit",
+      "self_collision", "body_features", "limit_after_contacts", "finish"};
+  return names[int(phase)];
+}
+
 ClothSimulator::ClothSimulator(const ClothMesh& mesh, const Fabric& fabric, const ClothSettings& settings)
     : ClothSimulator(mesh, buildClothTopology(mesh), fabric, settings) {}
 
@@ -216,8 +223,16 @@ void ClothSimulator::findNearestBody(float radius, std::vector<BodyContact>& con
   });
 }
 
+void ClothSimulator::endPhase(ClothPhase phase) {
+  const auto now = std::chrono::steady_clock::now();
+  stats_.phaseSeconds[int(phase)] += std::chrono::duration<double>(now - phaseStart_).count();
+  phaseStart_ = now;
+}
+
 void ClothSimulator::step(float dt) {
   if (!(dt > 0.0f) || !std::isfinite(dt)) throw Error("cloth step needs a positive time step");
+  std::fill(std::begin(stats_.phaseSeconds), std::end(stats_.phaseSeconds), 0.0);
+  phaseStart_ = std::chrono::steady_clock::now();
   checkFinite("before the step");
   if (!pendingBody_.empty()) {
     body_.setTarget(pendingBody_, dt);
@@ -230,6 +245,7 @@ void ClothSimulator::step(float dt) {
   const auto [queriesBefore, searchesBefore] = bodyQueryCounts();
   approachReach_ = 0.0f;
   const int baseSubsteps = std::max(substepsFor(dt), settings_.substeps > 0 ? 1 : substepsForBodySpeed(dt));
+  endPhase(ClothPhase::BodyPose);
   int substeps = baseSubsteps;
   // The state to redo the step from (not copied when no redo can come).
   const ClothState start = substeps < settings_.maxRefinement * baseSubsteps ? state_ : ClothState{};
@@ -252,6 +268,7 @@ void ClothSimulator::step(float dt) {
   ++stats_.steps;
   stats_.simulatedTime += dt;
   updateStats();
+  endPhase(ClothPhase::Finish);
 }
 
 void ClothSimulator::substep(float h, float bodyFraction, bool firstOfStep) {
@@ -261,11 +278,14 @@ void ClothSimulator::substep(float h, float bodyFraction, bool firstOfStep) {
   findRestingContacts();
   stepStart_ = state_.x;
   touched_.assign(state_.size(), 0);
+  endPhase(ClothPhase::Approach);
   stats_.solverIterations += integrator_->step(state_, h, *forces_).solverIterations;
   applyRestingFriction(h);
+  endPhase(ClothPhase::Integrate);
   const auto& springs = forces_->springs().springs();
   const size_t structural = forces_->structuralCount();
   collideWithColliders(h);
+  endPhase(ClothPhase::Collide);
   bool held = true;
   if (!sewing_.empty()) {
     held = limitStretchWhileSewing(h);
@@ -278,22 +298,28 @@ void ClothSimulator::substep(float h, float bodyFraction, bool firstOfStep) {
     stats_.stretchPasses += limitStretchByVelocities(state_, stepStart_, springs, structural, settings_.maxStretch,
                                                      settings_.stretchIterations, h)
                                 .passes;
+  endPhase(ClothPhase::StretchLimit);
   if (selfCollision_) stats_.selfContacts += selfCollision_->resolve(state_, stepStart_, settings_.selfThickness, 20);
+  endPhase(ClothPhase::SelfCollision);
   collideWithColliders(h);
   if (innerSurface_) collideWithInnerSurface(bodyFraction);
+  endPhase(ClothPhase::Collide);
   // Body vertices through cloth triangles, between the cloth's vertices
   // (not while sewing: the panels pulled together over the shoulders would
   // be pushed apart, and the seams close late).
   if (!body_.empty() && sewing_.empty())
     stats_.bodyFeatureContacts += bodyFeatures_->resolve(state_, body_, settings_.collisionThickness, touched_, kContact,
                                                       body_.moved() ? kSweptContact : kContact);
+  endPhase(ClothPhase::BodyFeatures);
   if (settings_.stretchLimit == StretchLimitMode::PositionCorrection &&
       (!colliders_.empty() || !body_.empty() || innerSurface_)) {
     held = limitStretchAfterContacts(h);
   }
+  endPhase(ClothPhase::LimitAfterContacts);
   limitHeld_ = limitHeld_ && held;
   placePins();
   checkFinite("after a solver step");
+  endPhase(ClothPhase::Finish);
 }
 
 // Contacts moved vertices after the limit: limit again, with the vertices in

@@ -16,6 +16,7 @@
 //   sim.setBody(restPositions, triangles);            // optional
 //   for each frame: sim.updateBody(posed); sim.step(1 / 24.f); use sim.positions();
 
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -43,6 +44,23 @@ class ClothDiverged : public Error {
   using Error::Error;
 };
 
+// The parts of a step(), for its time profile (ClothStats::phaseSeconds).
+enum class ClothPhase : int {
+  BodyPose,        // the body's new pose and the step's first contacts (substepsForBodySpeed)
+  Approach,        // body parts about to reach the cloth, the body moved, pins, resting contacts
+  Integrate,       // the integrator (the implicit solve), resting friction
+  Collide,         // colliders and the body, both passes
+  StretchLimit,    // the elongation limit after integrating (or sewing)
+  SelfCollision,   // cloth-cloth proximity
+  BodyFeatures,    // body vertices under cloth triangles
+  LimitAfterContacts,  // the elongation limit keeping contacts out
+  Finish,          // pins placed, NaN check, stats
+  Count
+};
+constexpr int kClothPhaseCount = int(ClothPhase::Count);
+// "body_pose", "approach", ... (the stats JSON's keys).
+const char* clothPhaseName(ClothPhase phase);
+
 struct ClothStats {
   float maxStretch = 1.0f;       // largest structural length / rest length now
   float maxStretchEver = 1.0f;   // ... over all steps so far
@@ -54,6 +72,7 @@ struct ClothStats {
   int stretchPasses = 0;         // elongation-limit passes in the last step()
   long long bodyQueries = 0;     // nearest-point body queries of cloth vertices in the last step()
   long long bodySearches = 0;    // ... of them, those that searched the body (the others: a vertex's last query sufficed)
+  double phaseSeconds[kClothPhaseCount] = {};  // wall time of each phase in the last step()
   long long steps = 0;
   double simulatedTime = 0.0;
 };
@@ -132,6 +151,8 @@ class ClothSimulator {
     glm::vec3 offset{0.0f};
   };
   void substep(float h, float bodyFraction, bool firstOfStep);
+  // Adds the time since the last phase ended to `phase` in the stats.
+  void endPhase(ClothPhase phase);
   void preparePins(float h);
   void placePins();
   void findRestingContacts();
@@ -193,6 +214,7 @@ class ClothSimulator {
   float sewingStretchRelief_ = 1.0f;
   float activeMaxStretch() const { return sewing_.empty() ? settings_.maxStretch : settings_.maxStretch * sewingStretchRelief_; }
   ClothStats stats_;
+  std::chrono::steady_clock::time_point phaseStart_;
   mutable int penetrating_ = -1;  // penetratingVertices() since the last change; -1: not counted
   bool limitHeld_ = true;
   int passBudget_ = 100;   // elongation-limit passes per call in this try  // the elongation limit held in every substep of this try
