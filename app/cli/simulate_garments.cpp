@@ -19,6 +19,12 @@ namespace {
 
 constexpr float kDressingMoveSeconds = 1.5f;
 
+float median(std::vector<float> values) {
+  if (values.empty()) return 0.0f;
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+
 }  // namespace
 
 void ClothNow::add(const cloth::ClothSimulator& sim, size_t vertexCount) {
@@ -52,6 +58,7 @@ SimulatedGarments::SimulatedGarments(const nlohmann::json& section, const cloth:
   substeps_.assign(sims_.size(), 0);
   stretchPasses_.assign(sims_.size(), 0);
   solverIterations_.assign(sims_.size(), 0);
+  residuals_.assign(sims_.size(), {});
 }
 
 SimulatedGarments::~SimulatedGarments() = default;
@@ -95,6 +102,7 @@ void SimulatedGarments::step(float dt, const std::vector<float>* posedBody) {
     substeps_[i] += sims_[i]->stats().substeps;
     stretchPasses_[i] += sims_[i]->stats().stretchPasses;
     solverIterations_[i] += sims_[i]->stats().solverIterations;
+    residuals_[i].push_back(sims_[i]->stats().solverResidual);
     for (int k = 0; k < cloth::kClothPhaseCount; ++k) phaseSeconds_[k] += sims_[i]->stats().phaseSeconds[k];
   }
 }
@@ -141,6 +149,8 @@ nlohmann::json SimulatedGarments::stats() const {
                    {"substeps_per_frame", frames_ ? double(substeps_[i]) / frames_ : 0.0},
                    {"stretch_passes_per_frame", frames_ ? double(stretchPasses_[i]) / frames_ : 0.0},
                    {"cg_iterations_per_frame", frames_ ? double(solverIterations_[i]) / frames_ : 0.0},
+                   {"cg_residual_median", median(residuals_[i])},
+                   {"cg_residual_max", residuals_[i].empty() ? 0.0f : *std::max_element(residuals_[i].begin(), residuals_[i].end())},
                    {"seam_gap", sim.seamGap()},
                    {"max_stretch", st.maxStretch},
                    {"penetrating_vertices", sim.simulator().penetratingVertices()},

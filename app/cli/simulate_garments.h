@@ -70,6 +70,7 @@ class SimulatedGarments {
   int maxInsideInnerTotal_ = 0;
   std::vector<int> sewingSteps_;  // per garment: steps until the weld (in dress())
   std::vector<long long> substeps_, stretchPasses_, solverIterations_;  // per garment, summed over step()
+  std::vector<std::vector<float>> residuals_;  // per garment: each step()'s solver residual
   double phaseSeconds_[cloth::kClothPhaseCount] = {};  // all garments, summed over step()
   int frames_ = 0;
 };

@@ -252,6 +252,7 @@ void ClothSimulator::step(float dt) {
   for (;;) {
     const float h = dt / float(substeps);
     stats_.solverIterations = stats_.selfContacts = stats_.stretchPasses = stats_.bodyFeatureContacts = 0;
+    stats_.solverResidual = 0.0f;
     limitHeld_ = true;
     // The last try may spend 20 times the passes on the limit.
     passBudget_ = settings_.stretchIterations * (substeps * 2 > settings_.maxRefinement * baseSubsteps ? 20 : 1);
@@ -279,7 +280,9 @@ void ClothSimulator::substep(float h, float bodyFraction, bool firstOfStep) {
   stepStart_ = state_.x;
   touched_.assign(state_.size(), 0);
   endPhase(ClothPhase::Approach);
-  stats_.solverIterations += integrator_->step(state_, h, *forces_).solverIterations;
+  const IntegratorReport solved = integrator_->step(state_, h, *forces_);
+  stats_.solverIterations += solved.solverIterations;
+  stats_.solverResidual = std::max(stats_.solverResidual, solved.solverResidual);
   applyRestingFriction(h);
   endPhase(ClothPhase::Integrate);
   const auto& springs = forces_->springs().springs();

@@ -67,6 +67,7 @@ struct ClothStats {
   glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
   int substeps = 0;              // solver steps in the last step()
   int solverIterations = 0;      // CG iterations in the last step() (implicit)
+  float solverResidual = 0.0f;   // the largest relative residual a solve of the last step() ended with (implicit)
   int selfContacts = 0;          // cloth-cloth pairs closer than the thickness in the last step()
   int bodyFeatureContacts = 0;   // body vertices under (or through) cloth triangles in the last step()
   int stretchPasses = 0;         // elongation-limit passes in the last step()

@@ -19,7 +19,7 @@ std::vector<Box> triangleBoxes(const std::vector<glm::vec3>& p, const std::vecto
   return boxes;
 }
 
-void AabbTree::build(const std::vector<Box>& boxes) {
+float AabbTree::build(const std::vector<Box>& boxes) {
   const uint32_t count = uint32_t(boxes.size());
   order_.resize(count);
   for (uint32_t t = 0; t < count; ++t) order_[t] = t;
@@ -33,6 +33,13 @@ void AabbTree::build(const std::vector<Box>& boxes) {
   grandNodes_.clear();
   if (count > 0 && nodes_[0].left >= 0) buildGrandNode(0);
   gatherLeafBoxes(boxes);
+  return size();
+}
+
+float AabbTree::size() const {
+  float sum = 0.0f;
+  for (const Node& n : nodes_) sum += n.extent;
+  return sum;
 }
 
 int32_t AabbTree::buildGrandNode(int32_t node) {
@@ -107,8 +114,9 @@ int32_t AabbTree::buildNode(uint32_t first, uint32_t count, const std::vector<Bo
   return index;
 }
 
-void AabbTree::refit(const std::vector<Box>& boxes) {
+float AabbTree::refit(const std::vector<Box>& boxes) {
   // Children always follow their parent, so a reverse sweep is bottom-up.
+  float sum = 0.0f;
   for (size_t i = nodes_.size(); i-- > 0;) {
     Node& n = nodes_[i];
     Box box;
@@ -119,8 +127,10 @@ void AabbTree::refit(const std::vector<Box>& boxes) {
       box.extend(nodes_[n.right].box);
     }
     n.setBox(box);
+    sum += n.extent;
   }
   gatherLeafBoxes(boxes);
+  return sum;
 }
 
 std::vector<AabbTree::PairJob> AabbTree::pairJobs(size_t minJobs,

@@ -31,9 +31,11 @@ struct Box {
 
 class AabbTree {
  public:
-  void build(const std::vector<Box>& boxes);
+  // Both return the tree's size: the sum of its nodes' half-perimeters (how
+  // loose it has grown since it was built).
+  float build(const std::vector<Box>& boxes);
   // New boxes for the same primitives.
-  void refit(const std::vector<Box>& boxes);
+  float refit(const std::vector<Box>& boxes);
   // Calls visit(primitive) for every primitive whose box overlaps `box`.
   template <class Visit>
   void query(const Box& box, Visit&& visit) const;
@@ -120,6 +122,7 @@ class AabbTree {
   const Box& leafBox(uint32_t k) const { return leafBoxes_[k]; }
 
   bool empty() const { return nodes_.empty(); }
+  float size() const;  // see build()
 
  private:
   struct Node {

@@ -695,28 +695,24 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
     if (!checkSwept) boxes.swap(sweptBoxes), edgeBoxes.swap(sweptEdgeBoxes);
   }
   // The mesh keeps its topology: the trees are refitted to the new boxes and
-  // rebuilt now and then, as the cloth's shape drifts from the one they were
-  // built for (the candidates depend on the tree only through its flat
-  // patches, whose pairs left out are neighbours in the cloth's plane).
-  if (stepsSinceBuild_ >= kRebuildEvery || tree_.empty()) {
-    // The two trees at once (each built alone: the same trees).
+  // rebuilt when they have grown loose, as the cloth's shape drifts from the
+  // one they were built for (the candidates depend on the tree only through
+  // its flat patches, whose pairs left out are neighbours in the cloth's plane).
+  // The two trees at once.
+  bool rebuild = tree_.empty() || edgeTree_.empty();
+  if (!rebuild) {
+    float sizes[2];
     ThreadPool::shared().parallelBlocks(2, [&](size_t which) {
-      if (which == 0)
-        edgeTree_.build(edgeBoxes);
-      else
-        tree_.build(boxes);
+      sizes[which] = which == 0 ? edgeTree_.refit(edgeBoxes) : tree_.refit(boxes);
+    });
+    rebuild = sizes[0] > kRebuildGrowth * builtSizes_[0] || sizes[1] > kRebuildGrowth * builtSizes_[1];
+  }
+  if (rebuild) {
+    ThreadPool::shared().parallelBlocks(2, [&](size_t which) {
+      builtSizes_[which] = which == 0 ? edgeTree_.build(edgeBoxes) : tree_.build(boxes);
     });
     findConnectedPatches();
-    stepsSinceBuild_ = 0;
-  } else {
-    ThreadPool::shared().parallelBlocks(2, [&](size_t which) {
-      if (which == 0)
-        edgeTree_.refit(edgeBoxes);
-      else
-        tree_.refit(boxes);
-    });
   }
-  ++stepsSinceBuild_;
   // The swept boxes checked on each pair in the trees' order (read in sequence).
   if (checkSwept) {
     sweptBoxes = placeOrdered(tree_, sweptBoxes);
