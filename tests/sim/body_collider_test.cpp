@@ -260,38 +260,6 @@ TEST(BodyCollider, NearestTriangleOnTheWalkingMannequinIsTheBruteForceNearest) {
   EXPECT_GT(found, 300);
 }
 
-// fasterWithin() against brute force on the walking mannequin at the start
-// of a frame (a swinging foot at several m/s, a slow torso): whenever a
-// triangle with a vertex faster than the speed is within the radius it says
-// so, and it says no often (else it would prove nothing).
-TEST(BodyCollider, FasterWithinSeesEveryFastTriangleWithinTheRadius) {
-  BodyCollider body = walkingBodyFrameFrom(0.3f);
-  ASSERT_GT(body.maxSpeed(), 1.0f);
-  const std::vector<glm::vec3>& x = body.positions();
-  const std::vector<uint32_t>& triangles = body.triangles();
-  std::vector<float> triangleSpeed(triangles.size() / 3, 0.0f);
-  for (size_t t = 0; t < triangleSpeed.size(); ++t)
-    for (int corner = 0; corner < 3; ++corner)
-      triangleSpeed[t] = std::max(triangleSpeed[t], glm::length(body.velocities()[triangles[3 * t + corner]]));
-  int no = 0, yes = 0;
-  for (const glm::vec3& p : probePoints(body, 23, 400, 0.1f))
-    for (float radius : {0.02f, 0.08f})
-      for (float speed : {0.2f, 0.45f, 1.0f, 3.0f}) {
-        bool fastNear = false;
-        for (size_t t = 0; t < triangleSpeed.size() && !fastNear; ++t) {
-          if (!(triangleSpeed[t] > speed)) continue;
-          fastNear = distanceToTriangle(p, x, triangles, t) < radius;
-        }
-        const bool said = body.fasterWithin(p, radius, speed);
-        if (fastNear) {
-          ASSERT_TRUE(said) << "point " << p.x << " " << p.y << " " << p.z << " radius " << radius << " speed " << speed;
-        }
-        (said ? yes : no)++;
-      }
-  EXPECT_GT(no, 1000);
-  EXPECT_GT(yes, 200);
-}
-
 // Slivers and degenerate triangles (the skinned body's can be squeezed
 // flat): a point's nearest triangle is still the brute-force one.
 TEST(BodyCollider, NearestTriangleAmongSliversIsTheBruteForceNearest) {

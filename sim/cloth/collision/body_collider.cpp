@@ -61,7 +61,6 @@ void BodyCollider::setMesh(const std::vector<float>& positions, const std::vecto
   searchRadius_ = searchRadius;
   tree_.build(triangleBoxes(current_, triangles_, kBoxSlack));
   updateSlotCorners();
-  updateSlotSpeeds();
   ++pose_;
   ++move_;
   sweptTree_ = tree_;
@@ -77,42 +76,6 @@ void BodyCollider::setTarget(const std::vector<float>& positions, float frameTim
     speed2 = std::max(speed2, glm::dot(velocity_[i], velocity_[i]));
   }
   maxSpeed_ = std::sqrt(speed2);
-  updateSlotSpeeds();
-}
-
-void BodyCollider::updateSlotSpeeds() {
-  // Squared speeds (the comparisons need no roots). The triangle slots are
-  // independent, so they are filled in parallel; only the node slots need
-  // the bottom-up order (a serial sweep over all slots cost ~0.5 ms a frame
-  // on the 10k T-shirt's body, as much as fasterWithin() saves).
-  std::vector<float> speed2(velocity_.size());
-  for (size_t v = 0; v < speed2.size(); ++v) speed2[v] = glm::dot(velocity_[v], velocity_[v]);
-  slotSpeeds_.resize(tree_.nodeCount());
-  forRange(slotSpeeds_.size(), [&](size_t begin, size_t end) {
-    for (size_t node = begin; node < end; ++node)
-      for (int slot = 0; slot < 4; ++slot) {
-        float fastest2 = 0.0f;
-        if (const int32_t t = tree_.primitiveAt(uint32_t(node), slot); t >= 0)
-          for (int corner = 0; corner < 3; ++corner)
-            fastest2 = std::max(fastest2, speed2[triangles_[3 * size_t(t) + corner]]);
-        slotSpeeds_[node].speed2[slot] = fastest2;
-      }
-  });
-  // Children follow their parent: a reverse sweep is bottom-up.
-  for (uint32_t node = uint32_t(slotSpeeds_.size()); node-- > 0;)
-    for (int slot = 0; slot < 4; ++slot)
-      if (const int32_t child = tree_.childNodeAt(node, slot); child >= 0) {
-        const float* s = slotSpeeds_[child].speed2;
-        slotSpeeds_[node].speed2[slot] = std::max(std::max(s[0], s[1]), std::max(s[2], s[3]));
-      }
-}
-
-bool BodyCollider::fasterWithin(const glm::vec3& p, float radius, float speed) const {
-  const float speed2 = speed > 0.0f ? speed * speed : -1.0f;  // below 0: every slot is faster
-  return tree_.anyNear(p, radius * radius, [&](uint32_t node) {
-    const float* s = slotSpeeds_[node].speed2;
-    return int(s[0] > speed2) | int(s[1] > speed2) << 1 | int(s[2] > speed2) << 2 | int(s[3] > speed2) << 3;
-  });
 }
 
 void BodyCollider::moveTo(float fraction) {

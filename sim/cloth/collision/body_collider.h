@@ -91,9 +91,6 @@ class BodyCollider {
   bool firstHitAlong(const glm::vec3& from, const glm::vec3& to, BodyContact& contact, BodyQuery& last) const;
   // Fastest vertex speed in the current frame (between the last pose and the target).
   float maxSpeed() const { return maxSpeed_; }
-  // Whether a triangle with a vertex faster than `speed` in the current
-  // frame may be within `radius` of p (its box is: true may be a near miss).
-  bool fasterWithin(const glm::vec3& p, float radius, float speed) const;
 
   bool empty() const { return triangles_.empty(); }
   const std::vector<glm::vec3>& positions() const { return current_; }
@@ -152,13 +149,6 @@ class BodyCollider {
     float corner[3][3][4];
   };
   std::vector<SlotCorners> slotCorners_;
-  // For each node of tree_, the fastest vertex speed in the current frame
-  // under each slot, squared (for fasterWithin()).
-  struct alignas(16) SlotSpeeds {
-    float speed2[4];
-  };
-  std::vector<SlotSpeeds> slotSpeeds_;
-  void updateSlotSpeeds();
   WideTree sweptTree_;  // ... grown over their motion in the last move
   float searchRadius_ = 0.02f;
   uint64_t pose_ = 0;

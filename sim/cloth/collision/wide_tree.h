@@ -52,11 +52,6 @@ class WideTree {
   template <class VisitSlots, class Prefetch>
   void nearestByNode(const glm::vec3& p, float& best2, VisitSlots&& visitSlots, Prefetch&& prefetch,
                      float* passed2) const;
-  // Whether some primitive's box is within sqrt(bound2) of p, looking only
-  // into the slots of each node whose bits keep(node) sets (the others'
-  // subtrees are skipped).
-  template <class Keep>
-  bool anyNear(const glm::vec3& p, float bound2, Keep&& keep) const;
   // Starts loading a node's boxes into the cache.
   void prefetchNode(int32_t node) const {
 #ifdef MQ_WIDE_TREE_SSE
@@ -209,25 +204,6 @@ void WideTree::nearest(const glm::vec3& p, float& best2, Visit&& visit) const {
     }
     for (int j = 0; j < count; ++j) stack[top++] = near[j];
   }
-}
-
-template <class Keep>
-bool WideTree::anyNear(const glm::vec3& p, float bound2, Keep&& keep) const {
-  if (nodes_.empty()) return false;
-  int32_t stack[256];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const int32_t index = stack[--top];
-    const Node& n = nodes_[index];
-    float d2[4];
-    squaredDistances(n, p, d2);
-    const int nearSlots = withinMask(d2, bound2) & keep(uint32_t(index));
-    if (nearSlots & n.primitiveSlots) return true;
-    for (int k = 0; k < 4; ++k)
-      if ((nearSlots & n.nodeSlots) >> k & 1) stack[top++] = n.child[k];
-  }
-  return false;
 }
 
 template <class VisitSlots, class Prefetch>
