@@ -14,6 +14,10 @@
 //                                 pose), 2 mm on, again from there, and from
 //                                 there with the 80 mm approach radius
 //   BM_BodyFirstHit               firstHitAlong over a 1 cm move of each point
+//   BM_BodyMove                   a step's moves of the body itself: setTarget
+//                                 to the next frame and moveTo(1) (the trees
+//                                 refitted, the slot corners gathered), wall
+//                                 time with the shared pool
 //
 //   mannequin-bench --benchmark_filter=Body
 #include <benchmark/benchmark.h>
@@ -113,5 +117,26 @@ void BM_BodyFirstHit(benchmark::State& state) {
   });
 }
 BENCHMARK(BM_BodyFirstHit)->Unit(benchmark::kMillisecond);
+
+void BM_BodyMove(benchmark::State& state) {
+  const mq::Character mannequin = mq::makeDefaultMannequin();
+  const int walk = mannequin.findClip("walk");
+  mq::PosedCharacter posed;
+  std::vector<float> frames[2];
+  for (int k = 0; k < 2; ++k) {
+    posed.evaluate(mannequin, walk, 0.5f + float(k) / 30.0f, nullptr, nullptr);
+    frames[k] = concatenatedPositions(posed.meshes());
+  }
+  BodyCollider body;
+  body.setMesh(frames[0], concatenatedTriangles(mannequin), 0.02f);
+  int next = 1;
+  for (auto _ : state) {
+    body.setTarget(frames[next], 1.0f / 30.0f);
+    body.moveTo(1.0f);
+    next = 1 - next;
+  }
+  benchmark::DoNotOptimize(body.moved());
+}
+BENCHMARK(BM_BodyMove)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
