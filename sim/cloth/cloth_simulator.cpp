@@ -167,23 +167,18 @@ int ClothSimulator::substepsFor(float dt) const {
 int ClothSimulator::substepsForBodySpeed(float dt) {
   if (body_.empty() || !(body_.maxSpeed() > 0.0f)) return 1;
   approachReach_ = std::min(kMaxApproachReach, settings_.collisionThickness + body_.maxSpeed() * dt);
-  findStepStartContacts();
+  // The nearest contacts within the whole reach for every vertex (reused by
+  // the first substep's findApproachingBody()): a vertex's last query bounds
+  // its clearance (BodyQuery), so a far one's search ends at once. (Shorter
+  // reaches away from fast body parts, from a tree of the body's speeds, gave
+  // the same contacts for more work: 0.2 ms a frame on the walking T-shirt,
+  // 0.9 ms on the trousers.)
+  findNearestBody(approachReach_, stepStartContacts_, stepStartFound_);
   float fastest = 0.0f;
   for (size_t i = 0; i < state_.size(); ++i)
     if (stepStartFound_[i] && stepStartContacts_[i].signedDistance >= 0.0f)
       fastest = std::max(fastest, glm::dot(stepStartContacts_[i].velocity, stepStartContacts_[i].normal));
   return std::clamp(int(std::ceil(fastest * dt / kApproachPerSubstep)), 1, kMaxBodySpeedSubsteps);
-}
-
-// The nearest body contacts within approachReach_ at the step's start, for
-// substepsForBodySpeed() and the first substep's findApproachingBody(),
-// within the whole reach for every vertex: a vertex's last query bounds its
-// clearance (BodyQuery), so a far one's search ends at once. (Shorter
-// reaches away from fast body parts, from a tree of the body's speeds, gave
-// the same contacts for more work: 0.2 ms a frame on the walking T-shirt,
-// 0.9 ms on the trousers.)
-void ClothSimulator::findStepStartContacts() {
-  findNearestBody(approachReach_, stepStartContacts_, stepStartFound_);
 }
 
 std::pair<long long, long long> ClothSimulator::bodyQueryCounts() const {

@@ -161,7 +161,6 @@ class ClothSimulator {
   int substepsForBodySpeed(float dt);
   // The nearest body contact of each free vertex within `radius` (found[i] = 0: none).
   void findNearestBody(float radius, std::vector<BodyContact>& contacts, std::vector<uint8_t>& found);
-  void findStepStartContacts();
   // The nearest body contact of vertex i within `radius` (false: none),
   // through its last query (bodyQueries_[i]).
   bool nearestBodyContact(size_t i, float radius, BodyContact& contact);

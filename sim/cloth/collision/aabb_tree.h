@@ -122,9 +122,9 @@ class AabbTree {
   const Box& leafBox(uint32_t k) const { return leafBoxes_[k]; }
 
   bool empty() const { return nodes_.empty(); }
-  float size() const;  // see build()
 
  private:
+  float size() const;  // see build()
   struct Node {
     Box box;
     int32_t left = -1, right = -1;  // children; leaves have left = -1

@@ -698,7 +698,7 @@ void SelfCollision::findCandidates(const ClothState& s, const std::vector<glm::v
   // rebuilt when they have grown loose, as the cloth's shape drifts from the
   // one they were built for (the candidates depend on the tree only through
   // its flat patches, whose pairs left out are neighbours in the cloth's plane).
-  // The two trees at once.
+  // Both trees at once, one per thread.
   bool rebuild = tree_.empty() || edgeTree_.empty();
   if (!rebuild) {
     float sizes[2];

@@ -63,7 +63,6 @@ class WideTree {
 #endif
   }
   // The child node in slot `slot` of node `node`, or -1 (a primitive or empty).
-  int32_t childNodeAt(uint32_t node, int slot) const { return std::max(nodes_[node].child[slot], -1); }
   // The primitive in slot `slot` of node `node`, or -1 (a child node or empty).
   int32_t primitiveAt(uint32_t node, int slot) const {
     const int32_t c = nodes_[node].child[slot];
