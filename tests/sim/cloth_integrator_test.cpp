@@ -7,6 +7,8 @@
 #include <limits>
 
 #include "cloth_test_scenes.h"
+#include "sim/cloth/integrators/implicit_euler.h"
+#include "sim/cloth/parallel.h"
 
 namespace mq::cloth {
 namespace {
@@ -159,6 +161,48 @@ TEST(ClothIntegrators, DeterministicForTheSameInput) {
   }
 }
 
+// The implicit solve of a large cloth runs on the thread pool or on the
+// calling thread alone, whichever was faster lately (PoolChooser): both must
+// give the same motion bit for bit, with either preconditioner, with pins
+// and with resting contacts filtered.
+TEST(ClothIntegrators, ImplicitSolveOnThePoolMatchesItAloneBitForBit) {
+  const int columns = 96;  // 9,216 vertices: over the size the pool is used for
+  ASSERT_GE(size_t(columns * columns), 2 * kParallelGrain);
+  const ClothMesh mesh = test::horizontalSheetMesh(columns, 1.0f, {0, 0.5f, 0});
+  const ClothTopology topology = buildClothTopology(mesh);
+  const Fabric fabric = fabricPreset("cotton");
+  for (CgPreconditioner preconditioner : {CgPreconditioner::BlockJacobi, CgPreconditioner::TwoLevel}) {
+    ClothSettings settings;
+    settings.cgPreconditioner = preconditioner;
+    settings.cgMaxIterations = 30;
+    ClothForces forces(topology, mesh, fabric, settings);
+    auto run = [&](ImplicitEuler::PoolUse use) {
+      ClothState s;
+      for (size_t i = 0; i < mesh.vertexCount(); ++i) {
+        const glm::vec3 x = vec3At(mesh.positions, i);
+        s.x.push_back(x);
+        s.v.push_back(glm::vec3(std::sin(7.0f * x.x), -0.5f, std::cos(5.0f * x.z)));  // a rippling start
+        s.mass.push_back(1e-4f);
+        s.invMass.push_back(i < size_t(columns) ? 0.0f : 1e4f);  // the first row pinned
+      }
+      s.contactNormal.assign(s.size(), glm::vec3(0.0f));
+      s.contactSpeed.assign(s.size(), 0.0f);
+      for (size_t i = s.size() / 2; i < s.size() / 2 + 500; ++i) s.contactNormal[i] = {0.0f, 1.0f, 0.0f};
+      ImplicitEuler solver(settings.cgMaxIterations, 1e-4f, preconditioner == CgPreconditioner::TwoLevel);
+      solver.setPoolUse(use);
+      int iterations = 0;
+      for (int step = 0; step < 3; ++step) iterations += solver.step(s, 1.0f / 30.0f, forces).solverIterations;
+      EXPECT_GT(iterations, 3);
+      return s;
+    };
+    const ClothState pool = run(ImplicitEuler::PoolUse::Always), alone = run(ImplicitEuler::PoolUse::Never);
+    EXPECT_EQ(0, std::memcmp(pool.x.data(), alone.x.data(), pool.x.size() * sizeof(glm::vec3)))
+        << cgPreconditionerName(preconditioner);
+    EXPECT_EQ(0, std::memcmp(pool.v.data(), alone.v.data(), pool.v.size() * sizeof(glm::vec3)))
+        << cgPreconditionerName(preconditioner);
+    EXPECT_NE(pool.x[mesh.vertexCount() - 1], vec3At(mesh.positions, mesh.vertexCount() - 1));  // it moved
+  }
+}
 
 // The two-level preconditioner (block Jacobi plus rigidly moving patches) is
 // a better preconditioner for the same system: on a stiff sheet draped over

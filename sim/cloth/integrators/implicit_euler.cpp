@@ -1,5 +1,6 @@
 #include "sim/cloth/integrators/implicit_euler.h"
 
+#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -59,6 +60,9 @@ void ImplicitEuler::finishVertex(const ClothState& s, float h, size_t i) {
 
 IntegratorReport ImplicitEuler::step(ClothState& s, float h, ClothForces& forces) {
   const size_t n = s.size();
+  const auto start = std::chrono::steady_clock::now();
+  const bool large = n >= 2 * kParallelGrain;
+  const bool onPool = large && (poolUse_ == PoolUse::Chosen ? poolChoice_.nextOnPool() : poolUse_ == PoolUse::Always);
   f_.resize(n);
   b_.resize(n);
   diagonal_.resize(n);
@@ -102,7 +106,12 @@ IntegratorReport ImplicitEuler::step(ClothState& s, float h, ClothForces& forces
       for (size_t i = bb; i < e; ++i) finishVertex(s, h, i);
     });
   }
-  const IntegratorReport report = solve(s, forces, job, prepared);
+  const IntegratorReport report = solve(s, forces, job, prepared, onPool);
+  if (large && poolUse_ == PoolUse::Chosen) {
+    // Per iteration, the preparation counted as one.
+    const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
+    poolChoice_.record(onPool, seconds.count(), double(report.solverIterations + 1));
+  }
   forRange(n, [&](size_t bb, size_t e) {
     for (size_t i = bb; i < e; ++i) {
       s.v[i] += dv_[i];
@@ -135,7 +144,8 @@ constexpr size_t kAssemblyParts = 2;
 // dot, and the coarse level's restriction; only the small coarse solve runs
 // alone. Every vertex's arithmetic and every sum's order are those of one
 // loop per phase, so the result does not depend on the grouping.
-IntegratorReport ImplicitEuler::solve(const ClothState& s, ClothForces& forces, PhasedJob& job, int prepared) {
+IntegratorReport ImplicitEuler::solve(const ClothState& s, ClothForces& forces, PhasedJob& job, int prepared,
+                                      bool onPool) {
   const size_t n = s.size();
   r_.resize(n);
   z_.resize(n);
@@ -143,7 +153,6 @@ IntegratorReport ImplicitEuler::solve(const ClothState& s, ClothForces& forces, 
   c_.resize(n);
   const ReduceBlocks blocks(n);
   constexpr size_t kBlocks = ReduceBlocks::kCount;
-  const bool parallel = n >= 2 * kParallelGrain;
   const size_t patchBlocks = twoLevel_ ? (coarse_.patchCount() + kPatchesPerBlock - 1) / kPatchesPerBlock : 0;
   auto addRestriction = [&](PhasedJob& job, int after) {
     if (!twoLevel_) return;
@@ -188,7 +197,7 @@ IntegratorReport ImplicitEuler::solve(const ClothState& s, ClothForces& forces, 
       updateDots[bk] = dot;
     });
     addRestriction(job, residual);
-    job.run(parallel);
+    job.run(onPool);
   }
   double delta = sumInOrder(updateDots);
   if (twoLevel_) delta += coarse_.solveRestricted(coarseZ_);
@@ -231,7 +240,7 @@ IntegratorReport ImplicitEuler::solve(const ClothState& s, ClothForces& forces, 
       updateDots[bk] = cgUpdateRange(step, blocks.begin(bk), blocks.end(bk));
     });
     addRestriction(job, update);
-    job.run(parallel);
+    job.run(onPool);
     if (!(sumInOrder(productDots) > 0.0)) break;
     double deltaNew = sumInOrder(updateDots);
     deltaNew += twoLevel_ ? coarse_.solveRestricted(coarseZ_) : 0.0;

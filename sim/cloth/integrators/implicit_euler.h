@@ -11,12 +11,14 @@
 // whose normal velocity is set to zero through the start value z), the
 // preconditioner is the inverse of A's 3x3 diagonal blocks, optionally plus a
 // coarse level (coarse_correction.h). Each CG iteration is three fused vertex
-// loops (product and dot, update and dot, direction), in parallel on large
-// cloths as phases of one pool job, and with the coarse level one small
+// loops (product and dot, update and dot, direction), on large cloths as
+// phases of one pool job (or on the caller alone, whichever PoolChooser found
+// faster lately: the same results), and with the coarse level one small
 // sequential solve.
 
 #include <vector>
 
+#include "core/util/pool_chooser.h"
 #include "sim/cloth/integrators/cg_update.h"
 #include "sim/cloth/integrators/coarse_correction.h"
 #include "sim/cloth/integrators/integrator.h"
@@ -31,12 +33,17 @@ class ImplicitEuler : public Integrator {
       : maxIterations_(maxIterations), tolerance_(tolerance), twoLevel_(twoLevel) {}
   IntegratorReport step(ClothState& s, float h, ClothForces& forces) override;
   float stableStep(const ClothState& s, const ClothForces& forces) const override;
+  // Where a large cloth's solve runs: as PoolChooser finds faster (the
+  // default), always on the pool, or always on the calling thread alone.
+  enum class PoolUse { Chosen, Always, Never };
+  void setPoolUse(PoolUse use) { poolUse_ = use; }
 
  private:
   void finishVertex(const ClothState& s, float h, size_t i);
   // Runs `job` (the step's preparation, its last phase `prepared`, or empty
   // and -1) with the solve's first phases, then the CG iterations.
-  IntegratorReport solve(const ClothState& s, ClothForces& forces, PhasedJob& job, int prepared);
+  // On the pool when `onPool`.
+  IntegratorReport solve(const ClothState& s, ClothForces& forces, PhasedJob& job, int prepared, bool onPool);
   // y_i = filter(M p + sum of the terms' products)_i for i in [b, e) (after
   // the terms' productPass(p)); returns the sum of p_i . y_i.
   double multiplyFilteredRange(const ClothState& s, const ClothForces& forces, const std::vector<glm::vec3>& p,
@@ -51,6 +58,8 @@ class ImplicitEuler : public Integrator {
   SplitVec3 z_;
   std::vector<glm::mat3> diagonal_, otherDiagonal_;
   LaneBlocks preconditioner_;
+  PoolChooser poolChoice_;
+  PoolUse poolUse_ = PoolUse::Chosen;
 };
 
 }  // namespace mq::cloth
