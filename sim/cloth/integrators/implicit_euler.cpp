@@ -133,9 +133,10 @@ double sumInOrder(const double* partial) {
 // Patches per block of the parallel restriction P^T r.
 constexpr size_t kPatchesPerBlock = 8;
 
-// Parts of the coarse matrix's assembly (one per pool thread): assembled
-// alone it kept one thread busy while the other had only the first product.
-constexpr size_t kAssemblyParts = 2;
+// Parts of the coarse matrix's assembly on the pool (one per pool thread):
+// assembled alone it kept one thread busy while the other had only the first
+// product. Each part reads every spring, so on the caller alone it is one.
+constexpr size_t kPoolAssemblyParts = 2;
 
 }  // namespace
 
@@ -176,9 +177,10 @@ IntegratorReport ImplicitEuler::solve(const ClothState& s, ClothForces& forces, 
     if (twoLevel_) {
       const size_t patches = coarse_.patchCount();
       const int filters = job.add(1, prepared, [&](size_t) { coarse_.prepareAssembly(s); });
-      parts = job.add(kAssemblyParts, filters, [&](size_t part) {
-        coarse_.assemblePatches(s, otherDiagonal_, forces.springs(), part * patches / kAssemblyParts,
-                                (part + 1) * patches / kAssemblyParts);
+      const size_t partCount = onPool ? kPoolAssemblyParts : 1;
+      parts = job.add(partCount, filters, [&, partCount](size_t part) {
+        coarse_.assemblePatches(s, otherDiagonal_, forces.springs(), part * patches / partCount,
+                                (part + 1) * patches / partCount);
       });
     }
     const int product = job.add(kBlocks, prepared, [&](size_t b) {
