@@ -62,7 +62,6 @@ class WideTree {
     (void)node;
 #endif
   }
-  // The child node in slot `slot` of node `node`, or -1 (a primitive or empty).
   // The primitive in slot `slot` of node `node`, or -1 (a child node or empty).
   int32_t primitiveAt(uint32_t node, int slot) const {
     const int32_t c = nodes_[node].child[slot];

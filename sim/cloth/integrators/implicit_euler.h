@@ -41,8 +41,8 @@ class ImplicitEuler : public Integrator {
  private:
   void finishVertex(const ClothState& s, float h, size_t i);
   // Runs `job` (the step's preparation, its last phase `prepared`, or empty
-  // and -1) with the solve's first phases, then the CG iterations.
-  // On the pool when `onPool`.
+  // and -1) with the solve's first phases, then the CG iterations, on the
+  // pool when `onPool`, else on the caller alone.
   IntegratorReport solve(const ClothState& s, ClothForces& forces, PhasedJob& job, int prepared, bool onPool);
   // y_i = filter(M p + sum of the terms' products)_i for i in [b, e) (after
   // the terms' productPass(p)); returns the sum of p_i . y_i.
