@@ -106,7 +106,7 @@ IntegratorReport ImplicitEuler::step(ClothState& s, float h, ClothForces& forces
       for (size_t i = bb; i < e; ++i) finishVertex(s, h, i);
     });
   }
-  const IntegratorReport report = solve(s, forces, job, prepared, onPool);
+  const IntegratorReport report = solve(s, forces, job, prepared, large && poolUse_ != PoolUse::Never, onPool);
   if (large && poolUse_ == PoolUse::Chosen) {
     // Per iteration, the preparation counted as one.
     const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
@@ -146,7 +146,7 @@ constexpr size_t kPoolAssemblyParts = 2;
 // alone. Every vertex's arithmetic and every sum's order are those of one
 // loop per phase, so the result does not depend on the grouping.
 IntegratorReport ImplicitEuler::solve(const ClothState& s, ClothForces& forces, PhasedJob& job, int prepared,
-                                      bool onPool) {
+                                      bool prepareOnPool, bool onPool) {
   const size_t n = s.size();
   r_.resize(n);
   z_.resize(n);
@@ -177,7 +177,7 @@ IntegratorReport ImplicitEuler::solve(const ClothState& s, ClothForces& forces, 
     if (twoLevel_) {
       const size_t patches = coarse_.patchCount();
       const int filters = job.add(1, prepared, [&](size_t) { coarse_.prepareAssembly(s); });
-      const size_t partCount = onPool ? kPoolAssemblyParts : 1;
+      const size_t partCount = prepareOnPool ? kPoolAssemblyParts : 1;
       parts = job.add(partCount, filters, [&, partCount](size_t part) {
         coarse_.assemblePatches(s, otherDiagonal_, forces.springs(), part * patches / partCount,
                                 (part + 1) * patches / partCount);
@@ -199,7 +199,7 @@ IntegratorReport ImplicitEuler::solve(const ClothState& s, ClothForces& forces, 
       updateDots[bk] = dot;
     });
     addRestriction(job, residual);
-    job.run(onPool);
+    job.run(prepareOnPool);
   }
   double delta = sumInOrder(updateDots);
   if (twoLevel_) delta += coarse_.solveRestricted(coarseZ_);

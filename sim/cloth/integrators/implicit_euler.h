@@ -33,17 +33,21 @@ class ImplicitEuler : public Integrator {
       : maxIterations_(maxIterations), tolerance_(tolerance), twoLevel_(twoLevel) {}
   IntegratorReport step(ClothState& s, float h, ClothForces& forces) override;
   float stableStep(const ClothState& s, const ClothForces& forces) const override;
-  // Where a large cloth's solve runs: as PoolChooser finds faster (the
-  // default), always on the pool, or always on the calling thread alone.
+  // Where a large cloth's CG iterations run: as PoolChooser finds faster
+  // (the default), always on the pool, or always on the calling thread
+  // alone (Never: its preparation too; otherwise that is on the pool).
   enum class PoolUse { Chosen, Always, Never };
   void setPoolUse(PoolUse use) { poolUse_ = use; }
 
  private:
   void finishVertex(const ClothState& s, float h, size_t i);
   // Runs `job` (the step's preparation, its last phase `prepared`, or empty
-  // and -1) with the solve's first phases, then the CG iterations, on the
-  // pool when `onPool`, else on the caller alone.
-  IntegratorReport solve(const ClothState& s, ClothForces& forces, PhasedJob& job, int prepared, bool onPool);
+  // and -1) with the solve's first phases on the pool when `prepareOnPool`,
+  // then the CG iterations on the pool when `onPool`; else on the caller
+  // alone. The preparation is a few phases of much work each: it pays on
+  // the pool even where the iterations' many short phases do not.
+  IntegratorReport solve(const ClothState& s, ClothForces& forces, PhasedJob& job, int prepared, bool prepareOnPool,
+                         bool onPool);
   // y_i = filter(M p + sum of the terms' products)_i for i in [b, e) (after
   // the terms' productPass(p)); returns the sum of p_i . y_i.
   double multiplyFilteredRange(const ClothState& s, const ClothForces& forces, const std::vector<glm::vec3>& p,
