@@ -2,8 +2,8 @@
 // stand in for, which define its candidates: the edge-edge distance test
 // (the search drops the pairs it rejects), also where the float arithmetic
 // is delicate (parallel and point segments, reach at the distance), its
-// cheaper screen (never dropping a pair the scalar test keeps), the normal
-// cones' merges (flat patches) and the vertex-triangle screen, bit for bit.
+// cheaper screen (never dropping a pair the scalar test keeps), the
+// flat patches' alignment bound and the vertex-triangle screen, bit for bit.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -193,41 +193,27 @@ TEST(AabbTree, LeafQueriesFromSharedEntriesFindTheLeavesOfQueriesFromTheRoot) {
   EXPECT_GT(leaves, 500u);
 }
 
-// Cones around random axes, many near the flat limit (45 degrees), some
-// wide, some opposite to each other.
-NormalCone randomCone(std::mt19937& rng, const glm::vec3& near) {
-  std::uniform_real_distribution<float> unit(-1.0f, 1.0f), angle(0.6f, 0.8f);
-  NormalCone c;
-  if (rng() % 10 == 0) return c;  // wide
-  const glm::vec3 axis = rng() % 10 == 0 ? -near : near + 0.4f * glm::vec3(unit(rng), unit(rng), unit(rng));
-  c.axis = glm::normalize(axis);
-  c.cosine = rng() % 3 == 0 ? 1.0f : angle(rng) + 0.2f * std::abs(unit(rng));
-  c.sine = std::sqrt(std::max(0.0f, 1.0f - c.cosine * c.cosine));
-  return c;
-}
-
-TEST(NormalCones, FourLaneMergesGiveTheScalarCones) {
+// Normals spread around an axis, some near the flat limit (45 degrees), in
+// runs of every length up to 19 (the four-lane part and the rest).
+TEST(FlatPatches, SmallestAlignmentFourAtATimeGivesTheScalarAnswer) {
   std::mt19937 rng(45);
   std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
   int flat = 0, wide = 0;
   for (int round = 0; round < 20000; ++round) {
-    const glm::vec3 near = glm::normalize(glm::vec3(unit(rng), unit(rng), unit(rng)) + glm::vec3(0.0f, 0.01f, 0.0f));
-    NormalCone cones[4], others[4], expected[4];
-    const unsigned lanes = unsigned(rng() % 16);
-    for (int k = 0; k < 4; ++k) {
-      cones[k] = randomCone(rng, near), others[k] = randomCone(rng, near);
-      expected[k] = lanes >> k & 1u ? mergedCones(cones[k], others[k]) : cones[k];
-      (expected[k].cosine >= 0.7071f ? flat : wide) += 1;
+    const glm::vec3 axis = glm::normalize(glm::vec3(unit(rng), unit(rng), unit(rng)) + glm::vec3(0.0f, 0.01f, 0.0f));
+    const size_t count = 1 + rng() % 19;
+    std::vector<float> x(count), y(count), z(count);
+    float expected = 1e30f;
+    for (size_t k = 0; k < count; ++k) {
+      const glm::vec3 n = glm::normalize(axis + (0.6f + 0.4f * unit(rng)) * glm::vec3(unit(rng), unit(rng), unit(rng)));
+      x[k] = n.x, y[k] = n.y, z[k] = n.z;
+      expected = std::min(expected, axis.x * n.x + axis.y * n.y + axis.z * n.z);
     }
-    mergeFourCones(cones, others, lanes);
-    for (int k = 0; k < 4; ++k) {
-      ASSERT_EQ(cones[k].axis, expected[k].axis) << "round " << round << " lane " << k;
-      ASSERT_EQ(cones[k].cosine, expected[k].cosine) << "round " << round << " lane " << k;
-      ASSERT_EQ(cones[k].sine, expected[k].sine) << "round " << round << " lane " << k;
-    }
+    ASSERT_EQ(smallestAlignment(x.data(), y.data(), z.data(), count, axis), expected) << "round " << round;
+    (expected >= 0.7071f ? flat : wide) += 1;
   }
-  EXPECT_GT(flat, 10000);
-  EXPECT_GT(wide, 10000);
+  EXPECT_GT(flat, 2000);
+  EXPECT_GT(wide, 2000);
 }
 
 // Cloth-like triangles (1.5 cm) with random moves, some of them collapsed to

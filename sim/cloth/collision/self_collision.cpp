@@ -32,83 +32,32 @@ constexpr float kFlatCosine = 0.7071f;  // cos 45 degrees: a patch's normals wit
 
 }  // namespace
 
-NormalCone mergedCones(const NormalCone& a, const NormalCone& b) {
-  // Cones only matter while they are flat, and a merged cone is no narrower
-  // than either: the wide ones are not merged.
-  if (a.cosine < kFlatCosine || b.cosine < kFlatCosine) return {};
-  const glm::vec3 sum = a.axis + b.axis;
-  const float length = glm::length(sum);
-  if (length < 1e-6f) return {};
-  const glm::vec3 axis = sum / length;
-  // The angle from axis to the far side of c: angle(axis, c.axis) + c's half-angle.
-  auto reach = [&](const NormalCone& c) {
-    const float cd = std::min(1.0f, glm::dot(axis, c.axis)), sd = std::sqrt(std::max(0.0f, 1.0f - cd * cd));
-    return NormalCone{axis, cd * c.cosine - sd * c.sine, sd * c.cosine + cd * c.sine};
-  };
-  const NormalCone ra = reach(a), rb = reach(b);
-  const NormalCone& wider = ra.cosine < rb.cosine ? ra : rb;
-  return wider.cosine < 0.0f ? NormalCone{} : wider;
-}
-
-void mergeFourCones(NormalCone (&cones)[4], const NormalCone (&others)[4], unsigned lanes) {
+float smallestAlignment(const float* x, const float* y, const float* z, size_t count, const glm::vec3& axis) {
+  float smallest = 1e30f;
+  size_t k = 0;
 #ifdef __SSE2__
-  // mergedCones() lane by lane, its branches as selects.
-  struct Lanes {
-    __m128 x, y, z, cosine, sine;
-  };
-  auto load = [](const NormalCone (&c)[4]) {
-    auto column = [&](auto field) { return _mm_setr_ps(field(c[0]), field(c[1]), field(c[2]), field(c[3])); };
-    return Lanes{column([](const NormalCone& n) { return n.axis.x; }), column([](const NormalCone& n) { return n.axis.y; }),
-                 column([](const NormalCone& n) { return n.axis.z; }), column([](const NormalCone& n) { return n.cosine; }),
-                 column([](const NormalCone& n) { return n.sine; })};
-  };
-  auto select = [](__m128 when, __m128 yes, __m128 no) { return _mm_or_ps(_mm_and_ps(when, yes), _mm_andnot_ps(when, no)); };
-  const Lanes a = load(cones), b = load(others);
-  const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
-  const __m128 flat = _mm_and_ps(_mm_cmpnlt_ps(a.cosine, _mm_set1_ps(kFlatCosine)),
-                                 _mm_cmpnlt_ps(b.cosine, _mm_set1_ps(kFlatCosine)));
-  const __m128 sx = _mm_add_ps(a.x, b.x), sy = _mm_add_ps(a.y, b.y), sz = _mm_add_ps(a.z, b.z);
-  const __m128 length = _mm_sqrt_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(sx, sx), _mm_mul_ps(sy, sy)), _mm_mul_ps(sz, sz)));
-  const __m128 ax = _mm_div_ps(sx, length), ay = _mm_div_ps(sy, length), az = _mm_div_ps(sz, length);
-  auto reach = [&](const Lanes& c, __m128& cosine, __m128& sine) {
-    const __m128 dot = _mm_add_ps(_mm_add_ps(_mm_mul_ps(ax, c.x), _mm_mul_ps(ay, c.y)), _mm_mul_ps(az, c.z));
-    const __m128 cd = _mm_min_ps(dot, one), sd = _mm_sqrt_ps(_mm_max_ps(_mm_sub_ps(one, _mm_mul_ps(cd, cd)), zero));
-    cosine = _mm_sub_ps(_mm_mul_ps(cd, c.cosine), _mm_mul_ps(sd, c.sine));
-    sine = _mm_add_ps(_mm_mul_ps(sd, c.cosine), _mm_mul_ps(cd, c.sine));
-  };
-  __m128 ca, sa, cb, sb;
-  reach(a, ca, sa);
-  reach(b, cb, sb);
-  const __m128 aWider = _mm_cmplt_ps(ca, cb);
-  const __m128 cosine = select(aWider, ca, cb), sine = select(aWider, sa, sb);
-  const __m128 kept = _mm_and_ps(_mm_and_ps(flat, _mm_cmpnlt_ps(length, _mm_set1_ps(1e-6f))), _mm_cmpnlt_ps(cosine, zero));
-  alignas(16) float x[4], y[4], z[4], c[4], sn[4];
-  _mm_store_ps(x, _mm_and_ps(kept, ax)), _mm_store_ps(y, _mm_and_ps(kept, ay)), _mm_store_ps(z, _mm_and_ps(kept, az));
-  _mm_store_ps(c, select(kept, cosine, _mm_set1_ps(-1.0f))), _mm_store_ps(sn, _mm_and_ps(kept, sine));
-  for (int k = 0; k < 4; ++k)
-    if (lanes >> k & 1u) cones[k] = {{x[k], y[k], z[k]}, c[k], sn[k]};
-#else
-  for (int k = 0; k < 4; ++k)
-    if (lanes >> k & 1u) cones[k] = mergedCones(cones[k], others[k]);
+  const __m128 ax = _mm_set1_ps(axis.x), ay = _mm_set1_ps(axis.y), az = _mm_set1_ps(axis.z);
+  __m128 lanes = _mm_set1_ps(smallest);
+  for (; k + 4 <= count; k += 4) {
+    const __m128 dot = _mm_add_ps(_mm_add_ps(_mm_mul_ps(ax, _mm_loadu_ps(x + k)), _mm_mul_ps(ay, _mm_loadu_ps(y + k))),
+                                  _mm_mul_ps(az, _mm_loadu_ps(z + k)));
+    lanes = _mm_min_ps(lanes, dot);
+  }
+  alignas(16) float four[4];
+  _mm_store_ps(four, lanes);
+  smallest = std::min(std::min(four[0], four[1]), std::min(four[2], four[3]));
 #endif
+  for (; k < count; ++k) smallest = std::min(smallest, axis.x * x[k] + axis.y * y[k] + axis.z * z[k]);
+  return smallest;
 }
 
 namespace {
 
-NormalCone merged(const NormalCone& a, const NormalCone& b) { return mergedCones(a, b); }
-
-// The cone of a triangle's normals at the start and the end of the step.
-NormalCone triangleCone(const glm::vec3& a0, const glm::vec3& b0, const glm::vec3& c0, const glm::vec3& a1,
-                        const glm::vec3& b1, const glm::vec3& c1) {
-  const glm::vec3 n0 = glm::cross(b0 - a0, c0 - a0), n1 = glm::cross(b1 - a1, c1 - a1);
-  const float l0 = glm::length(n0), l1 = glm::length(n1);
-  if (l0 < 1e-12f || l1 < 1e-12f) return {};
-  const glm::vec3 u0 = n0 / l0, sum = u0 + n1 / l1;
-  const float length = glm::length(sum);
-  if (length < 1e-6f) return {};
-  const glm::vec3 axis = sum / length;
-  const float cosine = std::min(1.0f, glm::dot(axis, u0));
-  return {axis, cosine, std::sqrt(std::max(0.0f, 1.0f - cosine * cosine))};
+// A triangle's unit normal; zero when it has collapsed (no patch holding it is flat).
+glm::vec3 unitNormal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+  const glm::vec3 n = glm::cross(b - a, c - a);
+  const float l = glm::length(n);
+  return l > 1e-12f ? n / l : glm::vec3(0.0f);
 }
 
 // Runs body(begin, end) over [0, count) in chunks of `chunk`, in parallel.
@@ -146,47 +95,36 @@ std::vector<uint8_t> connectedNodes(const AabbTree& tree, size_t vertexCount, Ve
   return connected;
 }
 
-// Per leaf of `tree`: its primitives' normal cone (cone(p)), four leaves at
-// a time (each merged in the order of its primitives), in parallel.
-template <class Cone>
-void findLeafCones(const AabbTree& tree, Cone&& cone, std::vector<NormalCone>& cones) {
+// Per node of `tree`: connected, and the normals of its places (`normals`:
+// perPlace of them at each place) all within kFlatCosine of their mean
+// (their sum, kept per node in `sums`). Bottom-up; the normals of a node are
+// only compared with their mean when its children's are with theirs
+// (`aligned`, scratch): a part spread wider than 45 degrees around its own
+// mean is rarely within 45 degrees of a larger part's.
+void findFlatNodes(const AabbTree& tree, const std::vector<uint8_t>& connected, const PlaceNormals& normals,
+                   std::vector<glm::vec3>& sums, std::vector<uint8_t>& aligned, std::vector<uint8_t>& flat) {
   const size_t nodes = tree.nodeCount();
-  cones.resize(nodes);
-  inChunks(nodes, 256, [&](size_t i0, size_t i1) {
-    AabbTree::NodeInfo leaves[4];
-    size_t at[4], count = 0;
-    auto mergeLeaves = [&] {
-      NormalCone merging[4], next[4];
-      for (size_t k = 0; k < count; ++k) merging[k] = cone(tree.primitive(leaves[k].first));
-      for (uint32_t j = 1; j < 4; ++j) {
-        unsigned lanes = 0;
-        for (size_t k = 0; k < count; ++k)
-          if (j < leaves[k].count) next[k] = cone(tree.primitive(leaves[k].first + j)), lanes |= 1u << k;
-        if (lanes != 0) mergeFourCones(merging, next, lanes);
-      }
-      for (size_t k = 0; k < count; ++k) cones[at[k]] = merging[k];
-      count = 0;
-    };
-    for (size_t i = i0; i < i1; ++i) {
-      const AabbTree::NodeInfo node = tree.nodeInfo(i);
-      if (node.left >= 0) continue;
-      leaves[count] = node, at[count++] = i;
-      if (count == 4) mergeLeaves();
-    }
-    if (count > 0) mergeLeaves();
-  });
-}
-
-// Per node of `tree`: connected and its primitives' normal cones within
-// kFlatCosine of one axis, bottom-up from the leaves' cones.
-void findFlatNodes(const AabbTree& tree, const std::vector<uint8_t>& connected, std::vector<NormalCone>& cones,
-                   std::vector<uint8_t>& flat) {
-  const size_t nodes = tree.nodeCount();
+  const uint32_t per = normals.perPlace;
+  sums.resize(nodes);
+  aligned.assign(nodes, 0);
   flat.assign(nodes, 0);
   for (size_t i = nodes; i-- > 0;) {
     const AabbTree::NodeInfo node = tree.nodeInfo(i);
-    if (node.left >= 0) cones[i] = merged(cones[node.left], cones[node.right]);
-    flat[i] = connected[i] && cones[i].cosine >= kFlatCosine;
+    const size_t first = size_t(node.first) * per, count = size_t(node.count) * per;
+    bool candidate = true;
+    if (node.left >= 0) {
+      sums[i] = sums[node.left] + sums[node.right];
+      candidate = aligned[node.left] && aligned[node.right];
+    } else {
+      glm::vec3 sum(0.0f);
+      for (size_t k = first; k < first + count; ++k) sum += glm::vec3(normals.x[k], normals.y[k], normals.z[k]);
+      sums[i] = sum;
+    }
+    const float length = glm::length(sums[i]);
+    if (!candidate || !(length > 1e-6f)) continue;
+    aligned[i] = smallestAlignment(&normals.x[first], &normals.y[first], &normals.z[first], count,
+                                   sums[i] / length) >= kFlatCosine;
+    flat[i] = aligned[i] && connected[i];
   }
 }
 
@@ -561,41 +499,48 @@ void SelfCollision::findVertexGroups() {
   for (; next < vertexOrder_.size(); ++next) vertexGroups_.push_back({next, next + 1, 0, 0});
 }
 
-// Which nodes of the trees are connected patches whose triangles' normals
-// stay within a narrow cone over the step.
+// Which nodes of the trees are connected patches whose triangles
+// keep their normals within 45 degrees of their mean over the step.
 void SelfCollision::findFlatPatches(const ClothState& s, const std::vector<glm::vec3>& x0) {
   const size_t triangleCount = triangles_.size() / 3;
-  triangleCones_.resize(triangleCount);
+  triangleNormals_.resize(2 * triangleCount);
   inChunks(triangleCount, 1024, [&](size_t t0, size_t t1) {
     for (size_t t = t0; t < t1; ++t) {
       const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
-      triangleCones_[t] = triangleCone(x0[a], x0[b], x0[c], s.x[a], s.x[b], s.x[c]);
+      triangleNormals_[2 * t] = unitNormal(x0[a], x0[b], x0[c]);
+      triangleNormals_[2 * t + 1] = unitNormal(s.x[a], s.x[b], s.x[c]);
     }
   });
-  // Each edge's cone (its triangles' cones merged), four edges at a time.
-  edgeCones_.resize(edges_.size());
-  inChunks(edges_.size(), 1024, [&](size_t e0, size_t e1) {
-    for (size_t e = e0; e < e1; e += 4) {
-      NormalCone cones[4], others[4];
-      unsigned lanes = 0;
-      for (size_t k = 0; k < 4 && e + k < e1; ++k) {
-        const auto [t0, t1] = edgeTriangles_[e + k];
-        if (t0 < kNoTriangle - 1) cones[k] = triangleCones_[t0];
-        if (t0 < kNoTriangle - 1 && t1 != kNoTriangle) others[k] = triangleCones_[t1], lanes |= 1u << k;
+  // By place: a triangle's two normals; an edge's triangles' four (a
+  // boundary edge's one triangle twice; a non-manifold edge's zero).
+  triangleNormalsByPlace_.resize(triangleCount, 2);
+  inChunks(triangleCount, 4096, [&](size_t k0, size_t k1) {
+    for (size_t k = k0; k < k1; ++k) {
+      const uint32_t t = tree_.primitive(uint32_t(k));
+      for (uint32_t j = 0; j < 2; ++j) triangleNormalsByPlace_.set(2 * k + j, triangleNormals_[2 * t + j]);
+    }
+  });
+  edgeNormalsByPlace_.resize(edges_.size(), 4);
+  inChunks(edges_.size(), 4096, [&](size_t k0, size_t k1) {
+    for (size_t k = k0; k < k1; ++k) {
+      const auto [t0, t1] = edgeTriangles_[edgeTree_.primitive(uint32_t(k))];
+      const bool manifold = t0 < kNoTriangle - 1;
+      const uint32_t other = t1 == kNoTriangle ? t0 : t1;
+      for (uint32_t j = 0; j < 2; ++j) {
+        edgeNormalsByPlace_.set(4 * k + j, manifold ? triangleNormals_[2 * t0 + j] : glm::vec3(0.0f));
+        edgeNormalsByPlace_.set(4 * k + 2 + j, manifold ? triangleNormals_[2 * other + j] : glm::vec3(0.0f));
       }
-      if (lanes != 0) mergeFourCones(cones, others, lanes);
-      std::copy_n(cones, std::min<size_t>(4, e1 - e), edgeCones_.begin() + e);
     }
   });
-  findLeafCones(edgeTree_, [&](uint32_t e) { return edgeCones_[e]; }, edgeNodeCones_);
-  findLeafCones(tree_, [&](uint32_t t) { return triangleCones_[t]; }, nodeCones_);
   // The serial bottom-up and top-down sweeps of the two trees at once.
   ThreadPool::shared().parallelBlocks(2, [&](size_t which) {
     if (which == 0) {
-      findFlatNodes(edgeTree_, connectedEdgePatch_, edgeNodeCones_, flatEdgePatch_);
+      findFlatNodes(edgeTree_, connectedEdgePatch_, edgeNormalsByPlace_, edgeNodeNormalSums_, alignedEdgeNodes_,
+                    flatEdgePatch_);
       findTopFlatPlaces(edgeTree_, flatEdgePatch_, topFlatEdgeNode_, topFlatEdgePlace_);
     } else {
-      findFlatNodes(tree_, connectedTrianglePatch_, nodeCones_, flatTrianglePatch_);
+      findFlatNodes(tree_, connectedTrianglePatch_, triangleNormalsByPlace_, nodeNormalSums_, alignedNodes_,
+                    flatTrianglePatch_);
       findTopFlatPlaces(tree_, flatTrianglePatch_, topFlatNode_, topFlatPlace_);
     }
   });

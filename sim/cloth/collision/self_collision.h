@@ -22,7 +22,7 @@
 // Pairs within a flat patch are not looked for (after Volino and
 // Magnenat-Thalmann's curvature test): a node of the edge or triangle tree
 // whose elements are connected and whose triangles' normals, at the start and
-// the end of the step, lie within 45 degrees of one axis is a surface that
+// the end of the step, lie within 45 degrees of their mean is a surface that
 // cannot fold onto itself, so its elements keep their mesh distances from each
 // other. Edge pairs are skipped within such edge tree nodes, vertex-triangle
 // pairs when the triangle and one of the vertex's triangles are in such a
@@ -39,19 +39,20 @@
 
 namespace mq::cloth {
 
-// Unit normals within a cone: its axis and the cosine and sine of its
-// half-angle. Cones wider than a flat patch's (45 degrees) are all "wide"
-// (cosine -1): only narrow ones matter, and sums of two half-angles up to 90
-// degrees stay below 180 (the sum formulas hold).
-struct NormalCone {
-  glm::vec3 axis{0.0f};
-  float cosine = -1.0f, sine = 0.0f;
+// The smallest of dot(axis, n) over the normals n given as columns (four at a
+// time with SSE: the same products and sums, so the same result).
+float smallestAlignment(const float* x, const float* y, const float* z, size_t count, const glm::vec3& axis);
+
+// Unit normals as columns: perPlace of them for each place of a tree.
+struct PlaceNormals {
+  std::vector<float> x, y, z;
+  uint32_t perPlace = 1;
+  void resize(size_t places, uint32_t per) {
+    perPlace = per;
+    for (std::vector<float>* c : {&x, &y, &z}) c->resize(places * per);
+  }
+  void set(size_t k, const glm::vec3& n) { x[k] = n.x, y[k] = n.y, z[k] = n.z; }
 };
-// A cone that holds the normals of both (wide when either is).
-NormalCone mergedCones(const NormalCone& a, const NormalCone& b);
-// cones[k] = mergedCones(cones[k], others[k]) for the lanes k whose bit is
-// set, four at once (SSE: the same float operations, so the same cones).
-void mergeFourCones(NormalCone (&cones)[4], const NormalCone (&others)[4], unsigned lanes);
 
 // Where a part of the cloth is at the start of a step and how its vertices
 // move in the step: the boxes of their start positions and of their moves,
@@ -145,7 +146,10 @@ class SelfCollision {
   // flat patch, -1 if none. Two places are in one flat patch when they have
   // the same such node (a vertex's place: that of its triangle).
   std::vector<int32_t> topFlatNode_, topFlatEdgeNode_, topFlatPlace_, topFlatEdgePlace_;
-  std::vector<NormalCone> triangleCones_, edgeCones_, nodeCones_, edgeNodeCones_;
+  std::vector<glm::vec3> triangleNormals_;  // per triangle: its unit normals at the start and the end of the step
+  PlaceNormals triangleNormalsByPlace_, edgeNormalsByPlace_;
+  std::vector<glm::vec3> nodeNormalSums_, edgeNodeNormalSums_;  // per node of the trees: its normals' sum
+  std::vector<uint8_t> alignedNodes_, alignedEdgeNodes_;          // findFlatNodes()'s scratch
   // Per triangle and edge (in their trees' order), and per node of the trees.
   std::vector<NodeMotion> triangleMotions_, edgeMotions_, nodeMotions_, edgeNodeMotions_;
   // Per place of the edge tree, as columns (see EdgeColumns::resize).
