@@ -499,8 +499,8 @@ void SelfCollision::findVertexGroups() {
   for (; next < vertexOrder_.size(); ++next) vertexGroups_.push_back({next, next + 1, 0, 0});
 }
 
-// Which nodes of the trees are connected patches whose triangles
-// keep their normals within 45 degrees of their mean over the step.
+// Which nodes of the trees are connected patches whose triangles keep their
+// normals within 45 degrees of their mean over the step.
 void SelfCollision::findFlatPatches(const ClothState& s, const std::vector<glm::vec3>& x0) {
   const size_t triangleCount = triangles_.size() / 3;
   triangleNormals_.resize(2 * triangleCount);
