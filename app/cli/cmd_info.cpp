@@ -23,7 +23,13 @@ nlohmann::json describe(const Character& c) {
                            {"skinned", !m.skin.empty()},
                            {"morph_targets", m.morphTargets.size()}});
   j["bones"] = nlohmann::json::array();
-  for (const Bone& b : c.skeleton.bones()) j["bones"].push_back({{"name", b.name}, {"parent", b.parent}});
+  const std::vector<glm::mat4> rest = c.skeleton.worldTransforms(c.skeleton.restPose());
+  for (int b = 0; b < c.skeleton.boneCount(); ++b) {
+    const Bone& bone = c.skeleton.bone(b);
+    const glm::vec3 head(rest[b][3]);
+    j["bones"].push_back({{"name", bone.name}, {"parent", bone.parent}, {"head", {head.x, head.y, head.z}}});
+  }
+  j["skinning"] = skinningMethodName(c.skinning);
   j["vertices"] = c.vertexCount();
   j["triangles"] = c.triangleCount();
   j["max_influences"] = c.maxInfluences();

@@ -3,10 +3,13 @@
 // world space.
 #include <iostream>
 
+#include <nlohmann/json.hpp>
+
 #include "app/cli/command.h"
 #include "core/character/posed_character.h"
 #include "core/io/mesh_export.h"
 #include "core/scene/open_scene.h"
+#include "core/util/atomic_file.h"
 #include "core/util/error.h"
 #include "core/util/thread_pool.h"
 
@@ -26,15 +29,27 @@ int chooseClip(const Args& args, LoadedScene& scene) {
   return clip;
 }
 
+// {"bones": [{"name", "head": [x, y, z]}]}: each bone's world-space origin.
+void writeJoints(const Skeleton& skeleton, const std::vector<glm::mat4>& worldFromBone, const std::string& path) {
+  nlohmann::json bones = nlohmann::json::array();
+  for (int b = 0; b < skeleton.boneCount(); ++b) {
+    const glm::vec3 head(worldFromBone[b][3]);
+    bones.push_back({{"name", skeleton.bone(b).name}, {"head", {head.x, head.y, head.z}}});
+  }
+  const std::string text = nlohmann::json{{"bones", bones}}.dump(2) + "\n";
+  writeFileAtomically(path, [&](std::ostream& out) { out << text; });
+}
+
 int runPose(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--time", "--clip", "--motion", "--map", "--out"});
+  args.allowOnly({"--time", "--clip", "--motion", "--map", "--out", "--skinning", "--joints-out"});
   if (args.positional().size() != 1) throw Error("pose needs exactly one FILE");
   const std::string out = args.option("--out");
   if (out.empty()) throw Error("pose needs --out OUT.obj, .ply, .gltf or .glb");
   if (!isMeshExportPath(out)) throw Error("--out must end in .obj, .ply, .gltf or .glb: " + out);
 
   LoadedScene scene = openScene(args.positional()[0]);
+  applySkinningOption(args, scene);
   if (scene.character.meshes.empty())
     throw Error("'" + scene.character.name + "' has no meshes to write (a BVH holds a skeleton and motion only: "
                 "apply it to a character with pose FILE --motion BVH)");
@@ -43,14 +58,16 @@ int runPose(const std::vector<std::string>& argv) {
   PosedCharacter posed;
   posed.evaluate(scene.character, clip, time, &scene.edits, &ThreadPool::shared());
   exportPosedCharacter(scene.character, posed, out);
+  if (args.has("--joints-out")) writeJoints(scene.character.skeleton, posed.worldFromBone(), args.option("--joints-out"));
   std::cout << "wrote " << out << ": " << scene.character.vertexCount() << " vertices, "
             << scene.character.triangleCount() << " triangles, clip "
             << (clip >= 0 ? "'" + scene.character.clips[clip].name + "'" : std::string("none (rest pose)"))
-            << " at t = " << time << " s\n";
+            << " at t = " << time << " s, " << skinningMethodName(scene.character.skinning) << " skinning\n";
   return 0;
 }
 
-static Registration reg({"pose", "FILE --time T [--clip NAME|INDEX] [--motion BVH [--map MAP]] --out OUT.obj|.ply|.gltf|.glb",
+static Registration reg({"pose", "FILE --time T [--clip NAME|INDEX] [--motion BVH [--map MAP]] --out OUT.obj|.ply|.gltf|.glb\n"
+                         "         [--skinning lbs|dqs|cones] [--joints-out JOINTS.json]",
                          "write the posed mesh at time T in world space (OBJ, PLY, glTF or GLB)", runPose});
 
 }  // namespace

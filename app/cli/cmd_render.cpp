@@ -55,14 +55,15 @@ void placeCamera(render::SceneView& view, const ViewSettings& settings, const Im
 
 int runRender(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--out", "--time", "--clip", "--size", "--skeleton", "--look", "--hair", "--hair-shadow"});
+  args.allowOnly({"--out", "--time", "--clip", "--size", "--skeleton", "--look", "--hair", "--hair-shadow", "--skinning"});
   if (args.positional().size() != 1) throw Error("expects one FILE (or 'default'); see mannequin-cli --help");
   const std::string file = args.positional()[0];
   const std::string out = args.option("--out");
   if (out.empty()) throw Error("--out OUT.png is required");
   const ImageSize size = parseSize(args.option("--size", "960x720"));
 
-  const LoadedScene scene = openScene(file);
+  LoadedScene scene = openScene(file);
+  applySkinningOption(args, scene);
   if (scene.character.skeleton.boneCount() == 0 && scene.character.meshes.empty())
     throw FileError(file, "has no character to render");
   const int clip = chooseClip(args, scene, file);
@@ -95,7 +96,7 @@ int runRender(const std::vector<std::string>& argv) {
 
 Registration reg({"render", "FILE --out OUT.png [--time T] [--clip NAME|INDEX|rest] [--size WxH] [--skeleton]\n"
                   "         [--look mannequin|skin|plain] [--hair auto|simulate|rigid|off]\n"
-                  "         [--hair-shadow count|maps]",
+                  "         [--hair-shadow count|maps] [--skinning lbs|dqs|cones]",
                   "renders an image offscreen (starts a private Xvfb when there is no X display)", runRender});
 
 }  // namespace

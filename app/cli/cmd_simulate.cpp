@@ -129,7 +129,7 @@ json phaseProfile(const RunResult& r, const SceneCloth& cloth, int frames) {
 
 int runSimulate(const std::vector<std::string>& argv) {
   const cli::Args args(argv);
-  args.allowOnly({"--frames", "--fps", "--stats-json", "--export-dir", "--layers"});
+  args.allowOnly({"--frames", "--fps", "--stats-json", "--export-dir", "--layers", "--skinning"});
   const std::string layers = args.option("--layers", "on");
   if (layers != "on" && layers != "off") throw Error("--layers expects on or off");
   if (args.positional().size() != 1) throw Error("simulate needs exactly one SCENE argument");
@@ -143,6 +143,7 @@ int runSimulate(const std::vector<std::string>& argv) {
   } catch (const json::exception& e) {
     throw FileError(path, std::string("not a valid scene document: ") + e.what());
   }
+  applySkinningOption(args, scene);
   const json& garmentsSection = scene.document.garments;
   const bool hasGarments = garmentsSection.is_array() && !garmentsSection.empty();
   if (scene.document.cloth.is_null() && !hasGarments && !scene.document.hair.is_null())
@@ -216,7 +217,8 @@ int runSimulate(const std::vector<std::string>& argv) {
   return 0;
 }
 
-const cli::Registration reg({"simulate", "SCENE --frames N [--fps F] [--stats-json OUT] [--export-dir DIR] [--layers on|off]",
+const cli::Registration reg({"simulate", "SCENE --frames N [--fps F] [--stats-json OUT] [--export-dir DIR] [--layers on|off]\n"
+                             "         [--skinning lbs|dqs|cones]",
                              "run the scene's cloth (sheet and garments) and hair headless; stats as JSON, frames as OBJ/PLY",
                              runSimulate});
 

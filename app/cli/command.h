@@ -6,6 +6,10 @@
 #include <string>
 #include <vector>
 
+namespace mq {
+struct LoadedScene;
+}
+
 namespace mq::cli {
 
 struct Command {
@@ -38,5 +42,9 @@ class Args {
   std::vector<std::string> positional_;
   std::vector<std::pair<std::string, std::string>> options_;  // "--x" -> value ("" for flags)
 };
+
+// --skinning lbs|dqs|cones: overrides the method the scene (or file) chose.
+// Throws mq::Error naming the choices for an unknown method.
+void applySkinningOption(const Args& args, LoadedScene& scene);
 
 }  // namespace mq::cli

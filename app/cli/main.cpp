@@ -4,6 +4,8 @@
 #include <iostream>
 
 #include "app/cli/command.h"
+#include "core/scene/open_scene.h"
+#include "core/skinning/section_cones.h"
 #include "core/util/error.h"
 
 namespace mq::cli {
@@ -16,7 +18,8 @@ std::vector<Command>& commands() {
 Args::Args(const std::vector<std::string>& args) {
   // Flags that take no value; everything else starting with -- takes one.
   static const std::vector<std::string> flags = {"--json", "--help", "--skeleton", "--no-hair",
-                                                 "--no-cloth", "--self-collisions"};
+                                                 "--no-cloth", "--self-collisions", "--no-poses", "--no-clips",
+                                                 "--no-intersections"};
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a.rfind("--", 0) == 0 && a.size() > 2) {
@@ -58,6 +61,16 @@ double Args::number(const std::string& name, double fallback) const {
 void Args::allowOnly(const std::vector<std::string>& known) const {
   for (const auto& [k, v] : options_)
     if (std::find(known.begin(), known.end(), k) == known.end()) throw Error("unknown option " + k);
+}
+
+void applySkinningOption(const Args& args, LoadedScene& scene) {
+  if (!args.has("--skinning")) return;
+  const std::string name = args.option("--skinning");
+  const auto method = parseSkinningMethod(name);
+  if (!method) throw Error("--skinning: unknown method '" + name + "' (expected " + skinningMethodChoices() + ")");
+  scene.character.skinning = *method;
+  scene.document.skinning = *method;
+  if (*method == SkinningMethod::Cones) bindSectionCones(scene.character);
 }
 
 }  // namespace mq::cli

@@ -8,6 +8,7 @@
 #include "core/animation/clip.h"
 #include "core/mesh/mesh.h"
 #include "core/skeleton/skeleton.h"
+#include "core/skinning/skinning_method.h"
 
 namespace mq {
 
@@ -17,6 +18,8 @@ struct Character {
   Skeleton skeleton;
   std::vector<Mesh> meshes;
   std::vector<Clip> clips;
+  // How skinned meshes follow the skeleton (PosedCharacter::evaluate).
+  SkinningMethod skinning = SkinningMethod::Lbs;
 
   size_t vertexCount() const;
   size_t triangleCount() const;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/skinning/section_cones.h"
 #include "core/skinning/skin_deformer.h"
 #include "core/util/thread_pool.h"
 
@@ -61,6 +62,29 @@ void transformRigid(const glm::mat4& m, const float* positions, const float* nor
 
 }  // namespace
 
+void PosedCharacter::skinMesh(SkinningMethod method, const Mesh& mesh, const float* positions, const float* normals,
+                              float* outPositions, float* outNormals, ThreadPool* pool) {
+  const size_t n = mesh.vertexCount();
+  if (method == SkinningMethod::Lbs) {
+    buildSkinPalette(mesh.skin, worldFromBone_, palette_);
+    skinVertices(mesh.skin, palette_, positions, normals, n, outPositions, outNormals, pool);
+    return;
+  }
+  buildDualQuaternionPalette(mesh.skin, worldFromBone_, dualPalette_);
+  skinVerticesDualQuaternion(mesh.skin, dualPalette_, positions, normals, n, outPositions, outNormals, pool);
+}
+
+const SectionCones& PosedCharacter::conesOf(size_t meshIndex, const Mesh& mesh, const Skeleton& skeleton) {
+  if (mesh.sectionCones) return *mesh.sectionCones;
+  ownCones_.resize(std::max(ownCones_.size(), meshIndex + 1));
+  ownConesKey_.resize(ownCones_.size(), nullptr);
+  if (!ownCones_[meshIndex] || ownConesKey_[meshIndex] != mesh.positions.data()) {
+    ownCones_[meshIndex] = bindSectionCones(mesh, skeleton);
+    ownConesKey_[meshIndex] = mesh.positions.data();
+  }
+  return *ownCones_[meshIndex];
+}
+
 void PosedCharacter::evaluate(const Character& character, const Pose& pose,
                               const std::vector<std::vector<float>>& morphWeights, ThreadPool* pool) {
   character.skeleton.worldTransforms(pose, worldFromBone_);
@@ -82,8 +106,10 @@ void PosedCharacter::evaluate(const Character& character, const Pose& pose,
     }
     float* outNormals = normals ? out.normals.data() : nullptr;
     if (!mesh.skin.empty()) {
-      buildSkinPalette(mesh.skin, worldFromBone_, palette_);
-      skinVertices(mesh.skin, palette_, positions, normals, n, out.positions.data(), outNormals, pool);
+      skinMesh(character.skinning, mesh, positions, normals, out.positions.data(), outNormals, pool);
+      if (character.skinning == SkinningMethod::Cones)
+        correctWithSectionCones(mesh, conesOf(i, mesh, character.skeleton), worldFromBone_, out.positions.data(),
+                                outNormals, pool);
     } else {
       const glm::mat4 worldFromMesh =
           (mesh.attachBone >= 0 ? worldFromBone_[mesh.attachBone] : glm::mat4(1.0f)) * mesh.boneFromMesh;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/character/character.h"
+#include "core/skinning/dual_quaternion_skinning.h"
 
 namespace mq {
 
@@ -35,9 +36,17 @@ class PosedCharacter {
   const std::vector<glm::mat4>& worldFromBone() const { return worldFromBone_; }
 
  private:
+  void skinMesh(SkinningMethod method, const Mesh& mesh, const float* positions, const float* normals,
+                float* outPositions, float* outNormals, ThreadPool* pool);
+  // The mesh's section cones, bound here once when the character has none.
+  const SectionCones& conesOf(size_t meshIndex, const Mesh& mesh, const Skeleton& skeleton);
+
   std::vector<PosedMesh> meshes_;
   std::vector<glm::mat4> worldFromBone_;
   std::vector<float> palette_;
+  DualQuaternionPalette dualPalette_;
+  std::vector<std::shared_ptr<const SectionCones>> ownCones_;  // per mesh, for characters bound without cones
+  std::vector<const float*> ownConesKey_;                      // the rest positions they were bound on
   std::vector<float> morphedPositions_, morphedNormals_;
 };
 

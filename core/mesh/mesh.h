@@ -4,12 +4,15 @@
 // shape in the mesh's own space.
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 namespace mq {
+
+struct SectionCones;
 
 struct MorphTarget {
   std::string name;
@@ -46,6 +49,8 @@ struct Mesh {
   std::vector<MorphTarget> morphTargets;
   std::vector<float> morphWeights;  // default weight per target
   SkinBinding skin;
+  // Bind-time data of the cone-corrected skinning (built on demand).
+  std::shared_ptr<const SectionCones> sectionCones;
   // Unskinned meshes: world = worldFromBone[attachBone] * boneFromMesh, or
   // boneFromMesh alone when attachBone is -1.
   int attachBone = -1;

@@ -3,6 +3,7 @@
 #include "core/character/default_mannequin.h"
 #include "core/io/bvh_import.h"
 #include "core/io/character_import.h"
+#include "core/skinning/section_cones.h"
 #include "core/util/error.h"
 
 namespace mq {
@@ -50,6 +51,8 @@ LoadedScene resolveSceneDocument(const SceneDocument& document, const std::strin
     scene.clipIndex = 0;
   }
   scene.edits = poseEditsFromNames(document.poseRotations, scene.character.skeleton);
+  scene.character.skinning = document.skinning;
+  if (scene.character.skinning == SkinningMethod::Cones) bindSectionCones(scene.character);
   return scene;
 }
 

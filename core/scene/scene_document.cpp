@@ -88,6 +88,14 @@ SceneDocument fromJson(const json& root) {
       doc.view.cameraFocus = readVec3(v["camera"].value("focus", json()), "view.camera.focus");
     }
   }
+  if (root.contains("skinning")) {
+    const json& k = root["skinning"];
+    if (!k.is_object()) throw Error("\"skinning\" must be an object");
+    const std::string method = readString(k, "method", "lbs");
+    const auto parsed = parseSkinningMethod(method);
+    if (!parsed) throw Error("skinning.method: unknown method '" + method + "' (expected " + skinningMethodChoices() + ")");
+    doc.skinning = *parsed;
+  }
   for (auto [key, section] : {std::pair{"hair", &doc.hair}, {"garments", &doc.garments}, {"cloth", &doc.cloth},
                               {"colliders", &doc.colliders}})
     if (root.contains(key)) *section = root[key];
@@ -137,6 +145,7 @@ json toJson(const SceneDocument& doc) {
   root["view"] = {{"skeleton", doc.view.showSkeleton}};
   if (doc.view.hasCamera)
     root["view"]["camera"] = {{"position", array3(doc.view.cameraPosition)}, {"focus", array3(doc.view.cameraFocus)}};
+  root["skinning"] = {{"method", skinningMethodName(doc.skinning)}};
   if (!doc.hair.is_null()) root["hair"] = doc.hair;
   if (!doc.garments.is_null()) root["garments"] = doc.garments;
   if (!doc.cloth.is_null()) root["cloth"] = doc.cloth;

@@ -11,6 +11,7 @@
 //     "animation": {"clip": "walk", "time": 0.5},
 //     "pose": {"upperarm_l": [x, y, z, w], ...},   local rotation edits
 //     "view": {"skeleton": false, "camera": {"position": [..], "focus": [..]}},
+//     "skinning": {"method": "lbs" | "dqs" | "cones"},   (absent: lbs)
 //     "hair": {...}, "garments": [...], "cloth": {...}, "colliders": [...] }
 
 #include <map>
@@ -41,6 +42,7 @@ struct SceneDocument {
   float time = 0.0f;
   std::map<std::string, glm::quat> poseRotations;  // bone name -> local rotation edit
   ViewSettings view;
+  SkinningMethod skinning = SkinningMethod::Lbs;
   // Sections owned by other modules (null when absent).
   nlohmann::json hair;
   nlohmann::json garments;

@@ -1,11 +1,13 @@
 // BM_SkinDeform/<vertices>: linear blend skinning of positions and normals,
 // 4 influences per vertex, 64 bones, on the shared thread pool.
+// BM_SkinDQS/<vertices>: dual quaternion skinning of the same workload.
 #include <benchmark/benchmark.h>
 
 #include <random>
 
 #include <glm/gtc/quaternion.hpp>
 
+#include "core/skinning/dual_quaternion_skinning.h"
 #include "core/skinning/skin_deformer.h"
 #include "core/util/thread_pool.h"
 
@@ -14,6 +16,7 @@ namespace {
 struct SkinWorkload {
   mq::SkinBinding skin;
   std::vector<float> positions, normals, outPositions, outNormals, palette;
+  mq::DualQuaternionPalette dualPalette;
 };
 
 SkinWorkload makeWorkload(size_t vertices, int bones) {
@@ -49,6 +52,7 @@ SkinWorkload makeWorkload(size_t vertices, int bones) {
     worldFromBone[b][3] = glm::vec4(unit(rng), unit(rng), unit(rng), 1.0f);
   }
   mq::buildSkinPalette(w.skin, worldFromBone, w.palette);
+  mq::buildDualQuaternionPalette(w.skin, worldFromBone, w.dualPalette);
   w.outPositions.resize(w.positions.size());
   w.outNormals.resize(w.normals.size());
   return w;
@@ -68,5 +72,20 @@ void BM_SkinDeform(benchmark::State& state) {
   state.counters["threads"] = pool.threadCount();
 }
 BENCHMARK(BM_SkinDeform)->Arg(10000)->Arg(100000)->Arg(1000000)->UseRealTime()->Unit(benchmark::kMillisecond);
+
+void BM_SkinDQS(benchmark::State& state) {
+  const size_t vertices = static_cast<size_t>(state.range(0));
+  SkinWorkload w = makeWorkload(vertices, 64);
+  mq::ThreadPool& pool = mq::ThreadPool::shared();
+  for (auto _ : state) {
+    mq::skinVerticesDualQuaternion(w.skin, w.dualPalette, w.positions.data(), w.normals.data(), vertices,
+                                   w.outPositions.data(), w.outNormals.data(), &pool);
+    benchmark::DoNotOptimize(w.outPositions.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations()) * static_cast<int64_t>(vertices));
+  state.counters["threads"] = pool.threadCount();
+}
+BENCHMARK(BM_SkinDQS)->Arg(10000)->Arg(100000)->Arg(1000000)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <QLocale>
 #include <QUndoStack>
 
+#include "core/skinning/section_cones.h"
 #include "core/util/thread_pool.h"
 
 namespace mq::ui {
@@ -87,6 +88,16 @@ void EditorDocument::setBoneRotation(int bone, std::optional<glm::quat> rotation
 
 void EditorDocument::setPoseEdits(const PoseEdits& edits) {
   edits_ = edits;
+  evaluatePose();
+  emit poseChanged();
+  emit documentChanged();
+}
+
+void EditorDocument::setSkinning(SkinningMethod method) {
+  if (method == character_.skinning) return;
+  character_.skinning = method;
+  scene_.skinning = method;
+  if (method == SkinningMethod::Cones) bindSectionCones(character_);
   evaluatePose();
   emit poseChanged();
   emit documentChanged();

@@ -73,6 +73,11 @@ class EditorDocument : public QObject {
   // Adds a clip (e.g. an imported BVH motion) and makes it current.
   void addClip(Clip clip);
 
+  // How the skin follows the bones (saved in the document's "skinning").
+  SkinningMethod skinning() const { return character_.skinning; }
+  // Binds the section cones on first use of that method.
+  void setSkinning(SkinningMethod method);
+
   // Selection
   int selectedBone() const { return selectedBone_; }
   int selectedMesh() const { return selectedMesh_; }

@@ -37,4 +37,12 @@ SetPoseEditsCommand::SetPoseEditsCommand(EditorDocument* document, PoseEdits aft
 void SetPoseEditsCommand::undo() { document_->setPoseEdits(before_); }
 void SetPoseEditsCommand::redo() { document_->setPoseEdits(after_); }
 
+SetSkinningCommand::SetSkinningCommand(EditorDocument* document, SkinningMethod after)
+    : document_(document), before_(document->skinning()), after_(after) {
+  setText(QObject::tr("Skinning: %1").arg(skinningMethodName(after)));
+}
+
+void SetSkinningCommand::undo() { document_->setSkinning(before_); }
+void SetSkinningCommand::redo() { document_->setSkinning(after_); }
+
 }  // namespace mq::ui

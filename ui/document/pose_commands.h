@@ -50,4 +50,17 @@ class SetPoseEditsCommand : public QUndoCommand {
   PoseEdits after_;
 };
 
+// Switches the skinning method (LBS, dual quaternions, section cones).
+class SetSkinningCommand : public QUndoCommand {
+ public:
+  SetSkinningCommand(EditorDocument* document, SkinningMethod after);
+  void undo() override;
+  void redo() override;
+
+ private:
+  EditorDocument* document_;
+  SkinningMethod before_;
+  SkinningMethod after_;
+};
+
 }  // namespace mq::ui

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include <QDoubleSpinBox>
+#include <QComboBox>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -40,7 +41,7 @@ PropertiesPanel::PropertiesPanel(EditorDocument* document, QWidget* parent)
   connect(document_, &EditorDocument::characterReplaced, this, &PropertiesPanel::showSelection);
   connect(document_, &EditorDocument::poseChanged, this, [this] {
     if (pages_->currentIndex() == BonePage) showBoneAngles();
-    else if (pages_->currentIndex() == CharacterPage) characterEdits_->setText(QString::number(document_->poseEdits().rotations.size()));
+    else if (pages_->currentIndex() == CharacterPage) showCharacter();
   });
   connect(document_, &EditorDocument::clipsChanged, this, [this] {
     if (pages_->currentIndex() == CharacterPage) showCharacter();
@@ -70,6 +71,18 @@ QWidget* PropertiesPanel::makeCharacterPage() {
   form->addRow(tr("Bones"), characterBones_);
   form->addRow(tr("Clips"), characterClips_);
   form->addRow(tr("Posed bones"), characterEdits_);
+  skinning_ = new QComboBox;
+  skinning_->addItem(tr("Linear blend (LBS)"), int(SkinningMethod::Lbs));
+  skinning_->addItem(tr("Dual quaternion (DQS)"), int(SkinningMethod::Dqs));
+  skinning_->addItem(tr("Section cones"), int(SkinningMethod::Cones));
+  skinning_->setToolTip(tr("How the skin follows the bones. Linear blend thins bent joints and collapses twists; "
+                           "dual quaternions keep the joint's section; section cones also keep the bend's volume "
+                           "and push folds out of the neighbouring limb."));
+  connect(skinning_, &QComboBox::activated, this, [this](int index) {
+    const auto method = SkinningMethod(skinning_->itemData(index).toInt());
+    if (method != document_->skinning()) document_->undoStack()->push(new SetSkinningCommand(document_, method));
+  });
+  form->addRow(tr("Skinning"), skinning_);
   layout->addWidget(box);
   auto* hint = new QLabel(tr("Click a bone in the viewport or the scene tree to pose it; "
                              "drag a ring of the gizmo or type angles."));
@@ -96,6 +109,7 @@ void PropertiesPanel::showCharacter() {
   characterClips_->setText(QString::number(clips.size()));
   characterClips_->setToolTip(clips.join("\n"));
   characterEdits_->setText(QString::number(document_->poseEdits().rotations.size()));
+  skinning_->setCurrentIndex(skinning_->findData(int(document_->skinning())));
 }
 
 QWidget* PropertiesPanel::makeBonePage() {

@@ -1,13 +1,15 @@
 #pragma once
 // Properties of the selection: for a bone, its name and the pose edit as
 // Euler angles in degrees (X, then Y, then Z) with a reset button; for a mesh,
-// its vertex and triangle counts and skinning. Typed angles become undo
-// commands on the document.
+// its vertex and triangle counts and skinning. The character page chooses the
+// skinning method. Typed angles and the method become undo commands on the
+// document.
 
 #include <array>
 
 #include <QWidget>
 
+class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QPushButton;
@@ -25,6 +27,7 @@ class PropertiesPanel : public QWidget {
 
   QDoubleSpinBox* angleBox(int axis) const { return angles_[axis]; }
   QPushButton* resetButton() const { return resetBone_; }
+  QComboBox* skinningBox() const { return skinning_; }
 
  private:
   QWidget* makeCharacterPage();
@@ -51,6 +54,7 @@ class PropertiesPanel : public QWidget {
   QLabel* characterBones_ = nullptr;
   QLabel* characterClips_ = nullptr;
   QLabel* characterEdits_ = nullptr;
+  QComboBox* skinning_ = nullptr;
   std::array<QDoubleSpinBox*, 3> angles_{};
   QPushButton* resetBone_ = nullptr;
   QPushButton* resetAll_ = nullptr;

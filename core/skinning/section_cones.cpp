@@ -1,0 +1,372 @@
+#include "core/skinning/section_cones.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <map>
+
+#include "core/character/character.h"
+#include "core/mesh/plane_section.h"
+#include "core/skeleton/skeleton.h"
+#include "core/util/thread_pool.h"
+
+namespace mq {
+
+namespace {
+#include <cstdlib>
+double knob(const char* name, double fallback) { const char* v = std::getenv(name); return v ? std::atof(v) : fallback; }
+
+constexpr size_t kMinChunk = 2048;
+// A vertex is in a blend zone when its second weight exceeds this.
+constexpr float kBlendWeight = 0.02f;
+// A vertex checks a neighbour's cone only if it starts this far outside it.
+constexpr double kRestClearance = 1.05;
+
+glm::dvec2 lerp2(const glm::dvec2& a, const glm::dvec2& b, double t) { return a + t * (b - a); }
+
+double baseParameter(double s) {
+  return std::clamp((s - SectionCone::kBaseNear) / (SectionCone::kBaseFar - SectionCone::kBaseNear), 0.0, 1.0);
+}
+
+}  // namespace
+
+SectionCone::Point SectionCone::locate(const glm::dvec3& p) const {
+  Point out;
+  const glm::dvec3 d = p - head;
+  out.s = glm::dot(d, axis) / length;
+  const double t = baseParameter(out.s);
+  const glm::dvec2 across(glm::dot(d, side), glm::dot(d, front));
+  const glm::dvec2 fromMinimum = across - lerp2(minimum[0].center, minimum[1].center, t);
+  const double r = glm::length(fromMinimum);
+  out.radial = fromMinimum.x * side + fromMinimum.y * front;
+  if (r <= 0.0) return out;
+  const glm::dvec2 dir = fromMinimum / r;
+  out.rho = r / ((1.0 - t) * minimum[0].radius(dir) + t * minimum[1].radius(dir));
+  const glm::dvec2 fromEnclosing = across - lerp2(enclosing[0].center, enclosing[1].center, t);
+  const double re = glm::length(fromEnclosing);
+  out.rhoEnclosing =
+      re > 0.0 ? re / ((1.0 - t) * enclosing[0].radius(fromEnclosing / re) + t * enclosing[1].radius(fromEnclosing / re))
+               : 0.0;
+  return out;
+}
+
+namespace {
+
+// The mesh with bit-equal positions merged, so its sections close.
+struct WeldedSkin {
+  std::vector<float> positions;
+  std::vector<uint32_t> triangles;
+};
+
+WeldedSkin weld(const Mesh& mesh) {
+  WeldedSkin w;
+  std::map<std::array<uint32_t, 3>, uint32_t> index;
+  std::vector<uint32_t> of(mesh.vertexCount());
+  for (size_t v = 0; v < mesh.vertexCount(); ++v) {
+    std::array<uint32_t, 3> bits;
+    std::memcpy(bits.data(), &mesh.positions[3 * v], sizeof bits);
+    auto [it, inserted] = index.try_emplace(bits, uint32_t(w.positions.size() / 3));
+    if (inserted) w.positions.insert(w.positions.end(), &mesh.positions[3 * v], &mesh.positions[3 * v] + 3);
+    of[v] = it->second;
+  }
+  for (size_t t = 0; t + 2 < mesh.triangles.size(); t += 3) {
+    const uint32_t a = of[mesh.triangles[t]], b = of[mesh.triangles[t + 1]], c = of[mesh.triangles[t + 2]];
+    if (a != b && b != c && a != c) w.triangles.insert(w.triangles.end(), {a, b, c});
+  }
+  return w;
+}
+
+int dominantSlot(const SkinBinding& skin, size_t v) {
+  const int k = skin.influencesPerVertex;
+  int best = 0;
+  for (int i = 1; i < k; ++i)
+    if (skin.weights[v * k + i] > skin.weights[v * k + best]) best = i;
+  return best;
+}
+
+// Skin joint per bone (-1 when the bone is not a joint of this skin).
+std::vector<int> jointOfBone(const SkinBinding& skin, int bones) {
+  std::vector<int> out(bones, -1);
+  for (size_t j = 0; j < skin.jointBones.size(); ++j)
+    if (skin.jointBones[j] >= 0 && skin.jointBones[j] < bones) out[skin.jointBones[j]] = int(j);
+  return out;
+}
+
+// The nearest skin-joint ancestor of a bone, or -1.
+int parentJoint(const Skeleton& skeleton, const std::vector<int>& jointOf, int bone) {
+  for (int b = skeleton.bone(bone).parent; b >= 0; b = skeleton.bone(b).parent)
+    if (jointOf[b] >= 0) return jointOf[b];
+  return -1;
+}
+
+// Fits one base: the section loop around the axis at s, in the cone's chart.
+bool fitBase(const WeldedSkin& skin, SectionCone& cone, double s, Ellipse2& minimum, Ellipse2& enclosing) {
+  const PlaneChart chart(cone.head + s * cone.length * cone.axis, cone.axis);
+  const std::vector<Polygon2> loops = sectionLoops(skin.positions, skin.triangles, chart);
+  const Polygon2* loop = loopAround(loops, glm::dvec2(0.0));
+  if (!loop) return false;
+  std::vector<glm::dvec2> points;
+  points.reserve(loop->size());
+  for (const glm::dvec2& q : *loop) {
+    const glm::dvec3 offset = q.x * chart.u + q.y * chart.v;
+    points.emplace_back(glm::dot(offset, cone.side), glm::dot(offset, cone.front));
+  }
+  minimum = momentEllipse(points);
+  enclosing = enclosingEllipse(points);
+  return minimum.valid() && enclosing.valid();
+}
+
+SectionCone fitCone(const Mesh& mesh, const WeldedSkin& welded, const Skeleton& skeleton,
+                    const std::vector<int>& jointOf, int joint) {
+  const SkinBinding& skin = mesh.skin;
+  SectionCone cone;
+  const glm::dmat4 meshFromBone = glm::inverse(glm::dmat4(skin.inverseBind[joint]));
+  cone.head = glm::dvec3(meshFromBone[3]);
+  const glm::dvec3 boneY = glm::normalize(glm::dvec3(meshFromBone[1]));
+  // The tail: the child joint the bone points at best, else (a leaf) the
+  // farthest of the bone's own vertices along its +Y.
+  glm::dvec3 tail = cone.head;
+  double best = 0.0;
+  const int bone = skin.jointBones[joint];
+  for (int child : skeleton.children(bone)) {
+    if (jointOf[child] < 0) continue;
+    const glm::dvec3 head(glm::inverse(glm::dmat4(skin.inverseBind[jointOf[child]]))[3]);
+    const glm::dvec3 d = head - cone.head;
+    const double len = glm::length(d);
+    if (len <= 0.0) continue;
+    const double alignment = glm::dot(d / len, boneY);
+    if (alignment > best) best = alignment, tail = head;
+  }
+  if (best <= 0.0) {
+    double reach = 0.0;
+    for (size_t v = 0; v < mesh.vertexCount(); ++v)
+      if (skin.joints[v * skin.influencesPerVertex + dominantSlot(skin, v)] == joint)
+        reach = std::max(reach, glm::dot(glm::dvec3(mesh.position(v)) - cone.head, boneY));
+    tail = cone.head + reach * boneY;
+  }
+  cone.length = glm::length(tail - cone.head);
+  if (cone.length <= 1e-6) return cone;
+  cone.axis = (tail - cone.head) / cone.length;
+  glm::dvec3 x = glm::dvec3(meshFromBone[0]);
+  x -= glm::dot(x, cone.axis) * cone.axis;
+  if (glm::length(x) < 1e-6) x = std::abs(cone.axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0),
+                               x -= glm::dot(x, cone.axis) * cone.axis;
+  cone.side = glm::normalize(x);
+  cone.front = glm::cross(cone.side, cone.axis);
+  cone.valid = fitBase(welded, cone, SectionCone::kBaseNear, cone.minimum[0], cone.enclosing[0]) &&
+               fitBase(welded, cone, SectionCone::kBaseFar, cone.minimum[1], cone.enclosing[1]);
+  static const double ratio = knob("MQ_RATIO", 0.6);
+  const double widest = std::max(cone.enclosing[0].a, cone.enclosing[1].a);
+  if (widest > ratio * cone.length) cone.valid = false;
+  return cone;
+}
+
+// Joints within two steps of `joint` in the hierarchy (parent, grandparent,
+// children, grandchildren, siblings through the parent), not itself.
+std::vector<int> neighbourJoints(int joint, const std::vector<int>& parentOf) {
+  std::vector<int> out;
+  auto add = [&](int j) {
+    if (j >= 0 && j != joint && std::find(out.begin(), out.end(), j) == out.end()) out.push_back(j);
+  };
+  static const int hops = int(knob("MQ_HOPS", 2));
+  const int parent = parentOf[joint];
+  add(parent);
+  if (parent >= 0 && hops >= 2) add(parentOf[parent]);
+  for (int j = 0; j < int(parentOf.size()); ++j) {
+    if (parentOf[j] == joint) {
+      add(j);
+      if (hops >= 2)
+        for (int g = 0; g < int(parentOf.size()); ++g)
+          if (parentOf[g] == j) add(g);
+    }
+    if (parent >= 0 && parentOf[j] == parent && hops >= 3) add(j);
+  }
+  return out;
+}
+
+void buildAdjacency(const Mesh& mesh, SectionCones& out) {
+  const size_t n = mesh.vertexCount();
+  out.triangleStart.assign(n + 1, 0);
+  for (uint32_t index : mesh.triangles) ++out.triangleStart[index + 1];
+  for (size_t v = 0; v < n; ++v) out.triangleStart[v + 1] += out.triangleStart[v];
+  out.triangleList.resize(mesh.triangles.size());
+  std::vector<uint32_t> fill(out.triangleStart.begin(), out.triangleStart.end() - 1);
+  for (size_t i = 0; i < mesh.triangles.size(); ++i) out.triangleList[fill[mesh.triangles[i]]++] = uint32_t(i / 3);
+}
+
+}  // namespace
+
+std::shared_ptr<const SectionCones> bindSectionCones(const Mesh& mesh, const Skeleton& skeleton) {
+  auto out = std::make_shared<SectionCones>();
+  const SkinBinding& skin = mesh.skin;
+  if (skin.empty()) return out;
+  const WeldedSkin welded = weld(mesh);
+  const std::vector<int> jointOf = jointOfBone(skin, skeleton.boneCount());
+  const int joints = int(skin.jointBones.size());
+  std::vector<int> parentOf(joints, -1);
+  for (int j = 0; j < joints; ++j) {
+    const int bone = skin.jointBones[j];
+    if (bone >= 0 && bone < skeleton.boneCount()) parentOf[j] = parentJoint(skeleton, jointOf, bone);
+  }
+  out->cones.resize(joints);
+  for (int j = 0; j < joints; ++j)
+    if (skin.jointBones[j] >= 0 && skin.jointBones[j] < skeleton.boneCount())
+      out->cones[j] = fitCone(mesh, welded, skeleton, jointOf, j);
+
+  const int k = skin.influencesPerVertex;
+  const size_t n = mesh.vertexCount();
+  out->restRho.assign(n * k, -1.0f);
+  out->contacts.assign(n * SectionCones::kContacts, -1);
+  std::vector<std::vector<int>> neighbours(joints);
+  for (int j = 0; j < joints; ++j) neighbours[j] = neighbourJoints(j, parentOf);
+  for (size_t v = 0; v < n; ++v) {
+    const glm::dvec3 p(mesh.position(v));
+    float second = 0.0f;
+    const int dominant = dominantSlot(skin, v);
+    for (int i = 0; i < k; ++i) {
+      const float w = skin.weights[v * k + i];
+      if (i != dominant) second = std::max(second, w);
+      const SectionCone& cone = out->cones[skin.joints[v * k + i]];
+      if (w > 0.0f && cone.valid) out->restRho[v * k + i] = float(cone.locate(p).rho);
+    }
+    // Neighbour cones this vertex starts clear of, nearest first.
+    std::vector<std::pair<double, int>> clear;
+    for (int c : neighbours[skin.joints[v * k + dominant]]) {
+      const SectionCone& cone = out->cones[c];
+      if (!cone.valid) continue;
+      bool influenced = false;
+      for (int i = 0; i < k; ++i) influenced |= skin.joints[v * k + i] == c && skin.weights[v * k + i] > 0.25f;
+      if (influenced) continue;
+      const SectionCone::Point at = cone.locate(p);
+      const bool within = at.s >= 0.0 && at.s <= 1.0;
+      if (!within || at.rhoEnclosing >= kRestClearance) clear.emplace_back(within ? at.rhoEnclosing : 1e9, c);
+    }
+    std::sort(clear.begin(), clear.end());
+    for (size_t c = 0; c < clear.size() && c < size_t(SectionCones::kContacts); ++c)
+      out->contacts[v * SectionCones::kContacts + c] = int16_t(clear[c].second);
+    if (second > kBlendWeight || out->contacts[v * SectionCones::kContacts] >= 0) out->visited.push_back(uint32_t(v));
+  }
+  buildAdjacency(mesh, *out);
+  return out;
+}
+
+void bindSectionCones(Character& character) {
+  for (Mesh& mesh : character.meshes)
+    if (!mesh.skin.empty() && !mesh.sectionCones) mesh.sectionCones = bindSectionCones(mesh, character.skeleton);
+}
+
+namespace {
+
+struct JointFrames {
+  std::vector<glm::dmat4> worldFromMesh, meshFromWorld;
+};
+
+JointFrames framesOf(const SkinBinding& skin, const std::vector<glm::mat4>& worldFromBone) {
+  JointFrames f;
+  f.worldFromMesh.resize(skin.jointBones.size());
+  f.meshFromWorld.resize(skin.jointBones.size());
+  for (size_t j = 0; j < skin.jointBones.size(); ++j) {
+    const int bone = skin.jointBones[j];
+    const glm::mat4 world =
+        bone >= 0 && bone < int(worldFromBone.size()) ? worldFromBone[bone] : glm::mat4(1.0f);
+    f.worldFromMesh[j] = glm::dmat4(world) * glm::dmat4(skin.inverseBind[j]);
+    f.meshFromWorld[j] = glm::inverse(f.worldFromMesh[j]);
+  }
+  return f;
+}
+
+glm::dvec3 transformPoint(const glm::dmat4& m, const glm::dvec3& p) { return glm::dvec3(m * glm::dvec4(p, 1.0)); }
+glm::dvec3 transformVector(const glm::dmat4& m, const glm::dvec3& v) { return glm::dmat3(m) * v; }
+
+// Keeps each influencing cone's section between tau and kappa of its rest
+// size, weighted by the vertex's weights.
+glm::dvec3 sectionCorrection(const Mesh& mesh, const SectionCones& cones, const JointFrames& frames, size_t v,
+                             const glm::dvec3& p) {
+  const SkinBinding& skin = mesh.skin;
+  const int k = skin.influencesPerVertex;
+  glm::dvec3 shift(0.0);
+  for (int i = 0; i < k; ++i) {
+    const float rho0 = cones.restRho[v * k + i];
+    if (rho0 <= 0.0f) continue;
+    const int joint = skin.joints[v * k + i];
+    const SectionCone& cone = cones.cones[joint];
+    const SectionCone::Point at = cone.locate(transformPoint(frames.meshFromWorld[joint], p));
+    static const int dominantOnly = int(knob("MQ_DOMINANT", 0));
+    static const double secLo = knob("MQ_SEC_LO", 0.0), secOn = knob("MQ_SEC", 1.0);
+    if (secOn == 0.0) continue;
+    if (dominantOnly && skin.weights[v * k + i] < 0.5f) continue;
+    if (at.s < secLo || at.s > 1.0 || at.rho <= 0.0) continue;
+    const double target = std::clamp(at.rho, double(SectionCones::kMinimumSection) * rho0,
+                                     double(SectionCones::kBulgeLimit) * rho0);
+    if (target == at.rho) continue;
+    const glm::dvec3 radialShift = (target / at.rho - 1.0) * at.radial;
+    shift += double(skin.weights[v * k + i]) * transformVector(frames.worldFromMesh[joint], radialShift);
+  }
+  return shift;
+}
+
+// Pushes the vertex out of the neighbour cones it entered.
+glm::dvec3 contactCorrection(const SectionCones& cones, const JointFrames& frames, size_t v, glm::dvec3 p) {
+  const glm::dvec3 start = p;
+  for (int c = 0; c < SectionCones::kContacts; ++c) {
+    const int joint = cones.contacts[v * SectionCones::kContacts + c];
+    if (joint < 0) break;
+    const SectionCone& cone = cones.cones[joint];
+    const SectionCone::Point at = cone.locate(transformPoint(frames.meshFromWorld[joint], p));
+    static const double conLo = knob("MQ_CON_LO", 0.0), conOn = knob("MQ_CON", 1.0);
+    if (conOn == 0.0) continue;
+    if (at.s < conLo || at.s > 1.0 || at.rhoEnclosing >= 1.0 || at.rhoEnclosing <= 0.0) continue;
+    p += transformVector(frames.worldFromMesh[joint], (1.0 / at.rhoEnclosing - 1.0) * at.radial);
+  }
+  return p - start;
+}
+
+void recomputeNormal(const Mesh& mesh, const SectionCones& cones, const float* positions, size_t v, float* normals) {
+  glm::dvec3 sum(0.0);
+  for (uint32_t i = cones.triangleStart[v]; i < cones.triangleStart[v + 1]; ++i) {
+    const uint32_t t = cones.triangleList[i];
+    const uint32_t* tri = &mesh.triangles[3 * size_t(t)];
+    auto at = [&](uint32_t q) { return glm::dvec3(positions[3 * q], positions[3 * q + 1], positions[3 * q + 2]); };
+    sum += glm::cross(at(tri[1]) - at(tri[0]), at(tri[2]) - at(tri[0]));
+  }
+  const double len = glm::length(sum);
+  if (len <= 0.0) return;
+  for (int d = 0; d < 3; ++d) normals[3 * v + d] = float(sum[d] / len);
+}
+
+}  // namespace
+
+void correctWithSectionCones(const Mesh& mesh, const SectionCones& cones, const std::vector<glm::mat4>& worldFromBone,
+                             float* positions, float* normals, ThreadPool* pool) {
+  const JointFrames frames = framesOf(mesh.skin, worldFromBone);
+  std::vector<uint8_t> moved(cones.visited.size(), 0);
+  auto correct = [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) {
+      const size_t v = cones.visited[i];
+      glm::dvec3 p(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]);
+      const glm::dvec3 shift = sectionCorrection(mesh, cones, frames, v, p);
+      p += shift;
+      const glm::dvec3 push = contactCorrection(cones, frames, v, p);
+      p += push;
+      if (shift == glm::dvec3(0.0) && push == glm::dvec3(0.0)) continue;
+      moved[i] = 1;
+      for (int d = 0; d < 3; ++d) positions[3 * v + d] = float(p[d]);
+    }
+  };
+  if (pool)
+    pool->parallelFor(0, cones.visited.size(), kMinChunk, correct);
+  else
+    correct(0, cones.visited.size());
+  if (!normals) return;
+  auto renormal = [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i)
+      if (moved[i]) recomputeNormal(mesh, cones, positions, cones.visited[i], normals);
+  };
+  if (pool)
+    pool->parallelFor(0, cones.visited.size(), kMinChunk, renormal);
+  else
+    renormal(0, cones.visited.size());
+}
+
+}  // namespace mq
