@@ -6,6 +6,8 @@
 #include <cstring>
 #include <map>
 
+#include <glm/gtc/quaternion.hpp>
+
 #include "core/character/character.h"
 #include "core/mesh/plane_section.h"
 #include "core/skeleton/skeleton.h"
@@ -14,14 +16,15 @@
 namespace mq {
 
 namespace {
-#include <cstdlib>
-double knob(const char* name, double fallback) { const char* v = std::getenv(name); return v ? std::atof(v) : fallback; }
-
 constexpr size_t kMinChunk = 2048;
-// A vertex is in a blend zone when its second weight exceeds this.
-constexpr float kBlendWeight = 0.02f;
-// A vertex checks a neighbour's cone only if it starts this far outside it.
-constexpr double kRestClearance = 1.05;
+// A cone wider than this fraction of its bone is not a limb (the pelvis,
+// the chest, a clavicle cut across the torso): it gets no crease.
+constexpr double kLimbWidth = 0.6;
+// A vertex keeps to a joint's plane within this many limb radii of it.
+constexpr double kCreaseReach = 3.0;
+// The gap left between the two sides of a crease, per metre of the child
+// bone (so touching skins do not lie in one plane).
+constexpr double kCreaseGap = 0.005;
 
 glm::dvec2 lerp2(const glm::dvec2& a, const glm::dvec2& b, double t) { return a + t * (b - a); }
 
@@ -156,33 +159,8 @@ SectionCone fitCone(const Mesh& mesh, const WeldedSkin& welded, const Skeleton& 
   cone.front = glm::cross(cone.side, cone.axis);
   cone.valid = fitBase(welded, cone, SectionCone::kBaseNear, cone.minimum[0], cone.enclosing[0]) &&
                fitBase(welded, cone, SectionCone::kBaseFar, cone.minimum[1], cone.enclosing[1]);
-  static const double ratio = knob("MQ_RATIO", 0.6);
-  const double widest = std::max(cone.enclosing[0].a, cone.enclosing[1].a);
-  if (widest > ratio * cone.length) cone.valid = false;
+  if (std::max(cone.enclosing[0].a, cone.enclosing[1].a) > kLimbWidth * cone.length) cone.valid = false;
   return cone;
-}
-
-// Joints within two steps of `joint` in the hierarchy (parent, grandparent,
-// children, grandchildren, siblings through the parent), not itself.
-std::vector<int> neighbourJoints(int joint, const std::vector<int>& parentOf) {
-  std::vector<int> out;
-  auto add = [&](int j) {
-    if (j >= 0 && j != joint && std::find(out.begin(), out.end(), j) == out.end()) out.push_back(j);
-  };
-  static const int hops = int(knob("MQ_HOPS", 2));
-  const int parent = parentOf[joint];
-  add(parent);
-  if (parent >= 0 && hops >= 2) add(parentOf[parent]);
-  for (int j = 0; j < int(parentOf.size()); ++j) {
-    if (parentOf[j] == joint) {
-      add(j);
-      if (hops >= 2)
-        for (int g = 0; g < int(parentOf.size()); ++g)
-          if (parentOf[g] == j) add(g);
-    }
-    if (parent >= 0 && parentOf[j] == parent && hops >= 3) add(j);
-  }
-  return out;
 }
 
 void buildAdjacency(const Mesh& mesh, SectionCones& out) {
@@ -214,38 +192,43 @@ std::shared_ptr<const SectionCones> bindSectionCones(const Mesh& mesh, const Ske
     if (skin.jointBones[j] >= 0 && skin.jointBones[j] < skeleton.boneCount())
       out->cones[j] = fitCone(mesh, welded, skeleton, jointOf, j);
 
-  const int k = skin.influencesPerVertex;
   const size_t n = mesh.vertexCount();
-  out->restRho.assign(n * k, -1.0f);
-  out->contacts.assign(n * SectionCones::kContacts, -1);
-  std::vector<std::vector<int>> neighbours(joints);
-  for (int j = 0; j < joints; ++j) neighbours[j] = neighbourJoints(j, parentOf);
+  out->creaseJoint.assign(n, -1);
+  out->creaseBound.assign(n, 0.0f);
+  out->creaseSide.assign(n, 0);
+  out->parentJoint.assign(parentOf.begin(), parentOf.end());
+  std::vector<std::vector<int>> childrenOf(joints);
+  for (int j = 0; j < joints; ++j)
+    if (parentOf[j] >= 0) childrenOf[parentOf[j]].push_back(j);
   for (size_t v = 0; v < n; ++v) {
+    // The nearest joint between the dominant bone and its parent or one of
+    // its children, when the vertex lies within its reach and both bones are
+    // limbs. (Creases at the shoulder and hip, where the parent is the
+    // torso, lowered the DQS bulge there but added folds on the walk: worst
+    // frame 69 -> 87 pairs.)
     const glm::dvec3 p(mesh.position(v));
-    float second = 0.0f;
-    const int dominant = dominantSlot(skin, v);
-    for (int i = 0; i < k; ++i) {
-      const float w = skin.weights[v * k + i];
-      if (i != dominant) second = std::max(second, w);
-      const SectionCone& cone = out->cones[skin.joints[v * k + i]];
-      if (w > 0.0f && cone.valid) out->restRho[v * k + i] = float(cone.locate(p).rho);
-    }
-    // Neighbour cones this vertex starts clear of, nearest first.
-    std::vector<std::pair<double, int>> clear;
-    for (int c : neighbours[skin.joints[v * k + dominant]]) {
-      const SectionCone& cone = out->cones[c];
-      if (!cone.valid) continue;
-      bool influenced = false;
-      for (int i = 0; i < k; ++i) influenced |= skin.joints[v * k + i] == c && skin.weights[v * k + i] > 0.25f;
-      if (influenced) continue;
-      const SectionCone::Point at = cone.locate(p);
-      const bool within = at.s >= 0.0 && at.s <= 1.0;
-      if (!within || at.rhoEnclosing >= kRestClearance) clear.emplace_back(within ? at.rhoEnclosing : 1e9, c);
-    }
-    std::sort(clear.begin(), clear.end());
-    for (size_t c = 0; c < clear.size() && c < size_t(SectionCones::kContacts); ++c)
-      out->contacts[v * SectionCones::kContacts + c] = int16_t(clear[c].second);
-    if (second > kBlendWeight || out->contacts[v * SectionCones::kContacts] >= 0) out->visited.push_back(uint32_t(v));
+    const int dominant = skin.joints[v * skin.influencesPerVertex + dominantSlot(skin, v)];
+    int nearest = -1;
+    double nearestDistance = 0.0;
+    auto consider = [&](int child) {
+      const SectionCone& cone = out->cones[child];
+      if (parentOf[child] < 0 || !cone.valid || !out->cones[parentOf[child]].valid) return;
+      const double reach = kCreaseReach * std::max(cone.enclosing[0].a, cone.enclosing[1].a);
+      const double distance = glm::length(p - cone.head);
+      if (distance < reach && (nearest < 0 || distance < nearestDistance)) nearest = child, nearestDistance = distance;
+    };
+    consider(dominant);
+    for (int child : childrenOf[dominant]) consider(child);
+    if (nearest < 0) continue;
+    // The rest side, and how near the plane the vertex may come: the gap,
+    // or its rest distance when it starts closer (so the rest pose holds).
+    const SectionCone& cone = out->cones[nearest];
+    const double restHeight = glm::dot(p - cone.head, cone.axis);
+    const double gap = kCreaseGap * cone.length;
+    out->creaseJoint[v] = int16_t(nearest);
+    out->creaseSide[v] = restHeight < 0.0 ? -1 : 1;
+    out->creaseBound[v] = float(restHeight < 0.0 ? std::max(restHeight, -gap) : std::min(restHeight, gap));
+    out->visited.push_back(uint32_t(v));
   }
   buildAdjacency(mesh, *out);
   return out;
@@ -258,8 +241,12 @@ void bindSectionCones(Character& character) {
 
 namespace {
 
+glm::dvec3 transformPoint(const glm::dmat4& m, const glm::dvec3& p) { return glm::dvec3(m * glm::dvec4(p, 1.0)); }
+glm::dvec3 transformVector(const glm::dmat4& m, const glm::dvec3& v) { return glm::dmat3(m) * v; }
+
 struct JointFrames {
   std::vector<glm::dmat4> worldFromMesh, meshFromWorld;
+  std::vector<glm::dvec3> creasePoint, creaseNormal;  // per child joint: its posed joint plane
 };
 
 JointFrames framesOf(const SkinBinding& skin, const std::vector<glm::mat4>& worldFromBone) {
@@ -276,50 +263,33 @@ JointFrames framesOf(const SkinBinding& skin, const std::vector<glm::mat4>& worl
   return f;
 }
 
-glm::dvec3 transformPoint(const glm::dmat4& m, const glm::dvec3& p) { return glm::dvec3(m * glm::dvec4(p, 1.0)); }
-glm::dvec3 transformVector(const glm::dmat4& m, const glm::dvec3& v) { return glm::dmat3(m) * v; }
-
-// Keeps each influencing cone's section between tau and kappa of its rest
-// size, weighted by the vertex's weights.
-glm::dvec3 sectionCorrection(const Mesh& mesh, const SectionCones& cones, const JointFrames& frames, size_t v,
-                             const glm::dvec3& p) {
-  const SkinBinding& skin = mesh.skin;
-  const int k = skin.influencesPerVertex;
-  glm::dvec3 shift(0.0);
-  for (int i = 0; i < k; ++i) {
-    const float rho0 = cones.restRho[v * k + i];
-    if (rho0 <= 0.0f) continue;
-    const int joint = skin.joints[v * k + i];
-    const SectionCone& cone = cones.cones[joint];
-    const SectionCone::Point at = cone.locate(transformPoint(frames.meshFromWorld[joint], p));
-    static const int dominantOnly = int(knob("MQ_DOMINANT", 0));
-    static const double secLo = knob("MQ_SEC_LO", 0.0), secOn = knob("MQ_SEC", 1.0);
-    if (secOn == 0.0) continue;
-    if (dominantOnly && skin.weights[v * k + i] < 0.5f) continue;
-    if (at.s < secLo || at.s > 1.0 || at.rho <= 0.0) continue;
-    const double target = std::clamp(at.rho, double(SectionCones::kMinimumSection) * rho0,
-                                     double(SectionCones::kBulgeLimit) * rho0);
-    if (target == at.rho) continue;
-    const glm::dvec3 radialShift = (target / at.rho - 1.0) * at.radial;
-    shift += double(skin.weights[v * k + i]) * transformVector(frames.worldFromMesh[joint], radialShift);
+// The joint plane of each child joint: through its posed head, normal to its
+// rest axis turned half way between the parent's and its own rotation.
+void creasePlanes(const SectionCones& cones, JointFrames& f) {
+  const size_t joints = cones.cones.size();
+  f.creasePoint.assign(joints, glm::dvec3(0.0));
+  f.creaseNormal.assign(joints, glm::dvec3(0.0));
+  for (size_t j = 0; j < joints; ++j) {
+    const int parent = cones.parentJoint[j];
+    if (parent < 0 || !cones.cones[j].valid) continue;
+    const glm::dquat qa = glm::normalize(glm::quat_cast(glm::dmat3(f.worldFromMesh[parent])));
+    const glm::dquat qb = glm::normalize(glm::quat_cast(glm::dmat3(f.worldFromMesh[j])));
+    const glm::dquat half = glm::slerp(qa, glm::dot(qa, qb) < 0.0 ? -qb : qb, 0.5);
+    f.creasePoint[j] = transformPoint(f.worldFromMesh[j], cones.cones[j].head);
+    f.creaseNormal[j] = glm::normalize(half * cones.cones[j].axis);
   }
-  return shift;
 }
 
-// Pushes the vertex out of the neighbour cones it entered.
-glm::dvec3 contactCorrection(const SectionCones& cones, const JointFrames& frames, size_t v, glm::dvec3 p) {
-  const glm::dvec3 start = p;
-  for (int c = 0; c < SectionCones::kContacts; ++c) {
-    const int joint = cones.contacts[v * SectionCones::kContacts + c];
-    if (joint < 0) break;
-    const SectionCone& cone = cones.cones[joint];
-    const SectionCone::Point at = cone.locate(transformPoint(frames.meshFromWorld[joint], p));
-    static const double conLo = knob("MQ_CON_LO", 0.0), conOn = knob("MQ_CON", 1.0);
-    if (conOn == 0.0) continue;
-    if (at.s < conLo || at.s > 1.0 || at.rhoEnclosing >= 1.0 || at.rhoEnclosing <= 0.0) continue;
-    p += transformVector(frames.worldFromMesh[joint], (1.0 / at.rhoEnclosing - 1.0) * at.radial);
-  }
-  return p - start;
+
+// Keeps the vertex on its side of its joint's plane (a crease where the two
+// limbs meet instead of skin crossing skin).
+glm::dvec3 creaseCorrection(const SectionCones& cones, const JointFrames& frames, size_t v, const glm::dvec3& p) {
+  const int joint = cones.creaseJoint[v];
+  if (joint < 0 || frames.creaseNormal[joint] == glm::dvec3(0.0)) return glm::dvec3(0.0);
+  const double h = glm::dot(p - frames.creasePoint[joint], frames.creaseNormal[joint]);
+  const double bound = cones.creaseBound[v];
+  if (cones.creaseSide[v] < 0 ? h <= bound : h >= bound) return glm::dvec3(0.0);
+  return (bound - h) * frames.creaseNormal[joint];
 }
 
 void recomputeNormal(const Mesh& mesh, const SectionCones& cones, const float* positions, size_t v, float* normals) {
@@ -339,17 +309,17 @@ void recomputeNormal(const Mesh& mesh, const SectionCones& cones, const float* p
 
 void correctWithSectionCones(const Mesh& mesh, const SectionCones& cones, const std::vector<glm::mat4>& worldFromBone,
                              float* positions, float* normals, ThreadPool* pool) {
-  const JointFrames frames = framesOf(mesh.skin, worldFromBone);
+  JointFrames frames = framesOf(mesh.skin, worldFromBone);
+  creasePlanes(cones, frames);
+
   std::vector<uint8_t> moved(cones.visited.size(), 0);
   auto correct = [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
       const size_t v = cones.visited[i];
       glm::dvec3 p(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]);
-      const glm::dvec3 shift = sectionCorrection(mesh, cones, frames, v, p);
-      p += shift;
-      const glm::dvec3 push = contactCorrection(cones, frames, v, p);
+      const glm::dvec3 push = creaseCorrection(cones, frames, v, p);
+      if (push == glm::dvec3(0.0)) continue;
       p += push;
-      if (shift == glm::dvec3(0.0) && push == glm::dvec3(0.0)) continue;
       moved[i] = 1;
       for (int d = 0; d < 3; ++d) positions[3 * v + d] = float(p[d]);
     }
