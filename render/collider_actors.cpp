@@ -97,11 +97,11 @@ vtkSmartPointer<vtkPolyData> planeSurface(glm::dvec3 point, glm::dvec3 normal, d
 
 }  // namespace
 
-vtkSmartPointer<vtkPolyData> colliderSurface(const cloth::PrimitiveCollider& c, double planeSize) {
+vtkSmartPointer<vtkPolyData> colliderSurface(const SolidPrimitive& c, double planeSize) {
   switch (c.shape) {
-    case cloth::PrimitiveCollider::Shape::Sphere: return capsuleSurface(c.a, c.a, c.radius);
-    case cloth::PrimitiveCollider::Shape::Capsule: return capsuleSurface(c.a, c.b, c.radius);
-    case cloth::PrimitiveCollider::Shape::Plane: return planeSurface(c.a, c.b, planeSize);
+    case SolidPrimitive::Shape::Sphere: return capsuleSurface(c.a, c.a, c.radius);
+    case SolidPrimitive::Shape::Capsule: return capsuleSurface(c.a, c.b, c.radius);
+    case SolidPrimitive::Shape::Plane: return planeSurface(c.a, c.b, planeSize);
   }
   return vtkSmartPointer<vtkPolyData>::New();
 }
@@ -112,7 +112,7 @@ ColliderActors::~ColliderActors() {
   for (auto& actor : actors_) view_->removeProp(actor);
 }
 
-void ColliderActors::set(const std::vector<cloth::PrimitiveCollider>& colliders, int selected) {
+void ColliderActors::set(const std::vector<SolidPrimitive>& colliders, int selected) {
   for (auto& actor : actors_) view_->removeProp(actor);
   actors_.clear();
   for (size_t i = 0; i < colliders.size(); ++i) {

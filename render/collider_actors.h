@@ -9,7 +9,7 @@
 
 #include <vtkSmartPointer.h>
 
-#include "sim/cloth/collision/primitive_collider.h"
+#include "core/geometry/solid_primitive.h"
 
 class vtkActor;
 class vtkPolyData;
@@ -20,7 +20,7 @@ class SceneView;
 
 // The surface of a collider as triangles (a plane: a square of `planeSize`
 // metres around its point). For drawing and for tests of the drawing.
-vtkSmartPointer<vtkPolyData> colliderSurface(const cloth::PrimitiveCollider& collider, double planeSize = 2.0);
+vtkSmartPointer<vtkPolyData> colliderSurface(const SolidPrimitive& collider, double planeSize = 2.0);
 
 class ColliderActors {
  public:
@@ -30,7 +30,7 @@ class ColliderActors {
   ColliderActors& operator=(const ColliderActors&) = delete;
 
   // selected: index into colliders, -1 for none.
-  void set(const std::vector<cloth::PrimitiveCollider>& colliders, int selected);
+  void set(const std::vector<SolidPrimitive>& colliders, int selected);
   void setVisible(bool visible);
   size_t count() const { return actors_.size(); }
   vtkActor* actor(size_t i) const { return actors_[i]; }

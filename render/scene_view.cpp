@@ -23,7 +23,9 @@
 
 #include "core/character/character.h"
 #include "core/character/posed_character.h"
+#include "render/cloth_shading.h"
 #include "render/ground.h"
+#include "render/hair_actor.h"
 #include "render/skeleton_overlay.h"
 #include "render/studio.h"
 #include "render/surface_shading.h"
@@ -300,6 +302,10 @@ int SceneView::pickBone(int x, int y) {
   }
   return -1;
 }
+
+void SceneView::add(ClothActor& cloth) { addProp(cloth.actor()); }
+
+void SceneView::add(HairActor& hair) { addProp(hair.actor()); }
 
 void SceneView::addProp(vtkProp* prop) { impl_->renderer->AddViewProp(prop); }
 

@@ -26,6 +26,9 @@ class PosedCharacter;
 
 namespace mq::render {
 
+class ClothActor;
+class HairActor;
+
 class SceneView {
  public:
   SceneView();
@@ -74,6 +77,10 @@ class SceneView {
   // click within a few pixels; -1 if none. Needs the renderer in a window.
   int pickBone(int x, int y);
 
+  // Adds a garment or a groom; the caller keeps the actor alive while shown.
+  // These keep VTK out of callers that only compose a scene (mannequin-cli).
+  void add(ClothActor& cloth);
+  void add(HairActor& hair);
   // Hooks for other modules (hair, cloth) to add their own actors.
   void addProp(vtkProp* prop);
   void removeProp(vtkProp* prop);

@@ -6,7 +6,6 @@
 #include "core/garment/garment_json.h"
 #include "core/util/error.h"
 #include "core/util/thread_pool.h"
-#include <vtkActor.h>
 
 #include "render/cloth_shading.h"
 #include "render/scene_view.h"
@@ -97,7 +96,7 @@ RenderedGarments addSceneGarments(render::SceneView& view, const LoadedScene& sc
     auto actor = std::make_unique<render::ClothActor>();
     actor->setMesh(simulation.positions(), simulation.triangles(), mesh.restUvs);
     actor->setShading(render::clothShadingForFabric(garments[g].fabric));
-    view.addProp(actor->actor());
+    view.add(*actor);
     rendered.actors.push_back(std::move(actor));
     rendered.summary += (rendered.summary.empty() ? "" : ", ") + garments[g].name + " (" +
                         std::to_string(simulation.vertexCount()) + " vertices, " + std::to_string(steps[g]) +

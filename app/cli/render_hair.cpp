@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include <vtkActor.h>
-
 #include "app/cli/scene_hair.h"
 #include "core/util/error.h"
 #include "render/hair_actor.h"
@@ -63,7 +61,7 @@ std::unique_ptr<render::HairActor> addSceneHair(render::SceneView& view, const L
   const bool simulate = mode == HairRenderMode::Simulate;
   actor->updatePositions(simulate ? simulateTo(hair, hasClip ? scene.character.clips[clip].startTime() : time, time)
                                   : hair.rigidStrands(time));
-  view.addProp(actor->actor());
+  view.add(*actor);
   summary = "hair " + hair.style().name + ", " + std::to_string(hair.groom().strands().strandCount()) + " strands, " +
             (simulate ? "simulated to the time" : "carried by the head");
   return actor;

@@ -27,6 +27,7 @@
 #include <vtkCamera.h>
 
 #include "render/collider_actors.h"
+#include "render/gizmos/move_gizmo.h"
 #include "render/scene_view.h"
 #include "ui/document/editor_document.h"
 #include "ui/garment/collider_drag_tool.h"
@@ -34,7 +35,6 @@
 #include "ui/garment/garment_tool.h"
 #include "ui/main_window.h"
 #include "ui/panels/timeline_panel.h"
-#include "ui/viewport/move_gizmo.h"
 #include "ui/viewport/viewport_geometry.h"
 #include "test_window.h"
 

@@ -15,8 +15,8 @@
 
 #include <glm/glm.hpp>
 
+#include "render/gizmos/move_gizmo.h"
 #include "sim/cloth/collision/primitive_collider.h"
-#include "ui/viewport/move_gizmo.h"
 
 class QMouseEvent;
 

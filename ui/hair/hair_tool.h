@@ -22,7 +22,7 @@
 #include "core/hair/hairstyle.h"
 #include "core/hair/scalp.h"
 #include "sim/hair/hair_bake.h"
-#include "ui/hair/hair_handles.h"
+#include "render/hair_handles.h"
 
 class QDockWidget;
 class QMouseEvent;

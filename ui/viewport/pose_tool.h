@@ -12,7 +12,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-#include "ui/viewport/rotation_gizmo.h"
+#include "render/gizmos/rotation_gizmo.h"
 
 class QMouseEvent;
 

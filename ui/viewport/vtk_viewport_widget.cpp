@@ -15,7 +15,7 @@
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
 
-#include "ui/viewport/dcc_camera_style.h"
+#include "render/gizmos/dcc_camera_style.h"
 
 namespace mq::ui {
 

@@ -1,29 +1,12 @@
 #pragma once
-// Analytic colliders: sphere, capsule (segment + radius) and plane (half
-// space below it is solid). signedDistance() is negative inside.
+// The cloth's analytic colliders are the plain solids of core (sphere,
+// capsule, plane); the cloth code keeps its own name for them.
 
-#include <string>
-
-#include <glm/glm.hpp>
+#include "core/geometry/solid_primitive.h"
 
 namespace mq::cloth {
 
-struct PrimitiveCollider {
-  enum class Shape { Sphere, Capsule, Plane };
-  Shape shape = Shape::Sphere;
-  glm::vec3 a{0.0f};  // sphere centre, capsule end, or a point on the plane
-  glm::vec3 b{0.0f};  // capsule other end, or the plane's normal
-  float radius = 0.0f;
-  float friction = -1.0f;  // < 0: use the cloth's friction
-
-  static PrimitiveCollider sphere(glm::vec3 centre, float radius);
-  static PrimitiveCollider capsule(glm::vec3 end0, glm::vec3 end1, float radius);
-  static PrimitiveCollider plane(glm::vec3 point, glm::vec3 normal);
-
-  // Signed distance of p to the surface and the outward normal there.
-  float signedDistance(const glm::vec3& p, glm::vec3& normal) const;
-};
-
-const char* shapeName(PrimitiveCollider::Shape shape);
+using PrimitiveCollider = SolidPrimitive;
+using mq::shapeName;
 
 }  // namespace mq::cloth

@@ -1,4 +1,4 @@
-#include "ui/viewport/move_gizmo.h"
+#include "render/gizmos/move_gizmo.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtx/quaternion.hpp>

@@ -1,4 +1,4 @@
-#include "ui/viewport/rotation_gizmo.h"
+#include "render/gizmos/rotation_gizmo.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtx/quaternion.hpp>

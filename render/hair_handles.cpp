@@ -1,4 +1,4 @@
-#include "ui/hair/hair_handles.h"
+#include "render/hair_handles.h"
 
 #include <vtkActor.h>
 #include <vtkCubeSource.h>

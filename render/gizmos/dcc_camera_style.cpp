@@ -1,4 +1,4 @@
-#include "ui/viewport/dcc_camera_style.h"
+#include "render/gizmos/dcc_camera_style.h"
 
 #include <vtkCallbackCommand.h>
 #include <vtkObjectFactory.h>

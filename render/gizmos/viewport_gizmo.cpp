@@ -1,4 +1,4 @@
-#include "ui/viewport/viewport_gizmo.h"
+#include "render/gizmos/viewport_gizmo.h"
 
 #include <cmath>
 

@@ -10,7 +10,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-#include "ui/viewport/viewport_gizmo.h"
+#include "render/gizmos/viewport_gizmo.h"
 
 namespace mq::ui {
 

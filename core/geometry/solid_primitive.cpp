@@ -1,8 +1,8 @@
-#include "sim/cloth/collision/primitive_collider.h"
+#include "core/geometry/solid_primitive.h"
 
 #include <algorithm>
 
-namespace mq::cloth {
+namespace mq {
 
 namespace {
 
@@ -15,19 +15,19 @@ float distanceToPoint(const glm::vec3& p, const glm::vec3& centre, float radius,
 
 }  // namespace
 
-PrimitiveCollider PrimitiveCollider::sphere(glm::vec3 centre, float radius) {
+SolidPrimitive SolidPrimitive::sphere(glm::vec3 centre, float radius) {
   return {Shape::Sphere, centre, centre, radius};
 }
 
-PrimitiveCollider PrimitiveCollider::capsule(glm::vec3 end0, glm::vec3 end1, float radius) {
+SolidPrimitive SolidPrimitive::capsule(glm::vec3 end0, glm::vec3 end1, float radius) {
   return {Shape::Capsule, end0, end1, radius};
 }
 
-PrimitiveCollider PrimitiveCollider::plane(glm::vec3 point, glm::vec3 normal) {
+SolidPrimitive SolidPrimitive::plane(glm::vec3 point, glm::vec3 normal) {
   return {Shape::Plane, point, glm::normalize(normal), 0.0f};
 }
 
-float PrimitiveCollider::signedDistance(const glm::vec3& p, glm::vec3& normal) const {
+float SolidPrimitive::signedDistance(const glm::vec3& p, glm::vec3& normal) const {
   switch (shape) {
     case Shape::Sphere: return distanceToPoint(p, a, radius, normal);
     case Shape::Capsule: {
@@ -43,13 +43,13 @@ float PrimitiveCollider::signedDistance(const glm::vec3& p, glm::vec3& normal) c
   return 1e30f;
 }
 
-const char* shapeName(PrimitiveCollider::Shape shape) {
+const char* shapeName(SolidPrimitive::Shape shape) {
   switch (shape) {
-    case PrimitiveCollider::Shape::Sphere: return "sphere";
-    case PrimitiveCollider::Shape::Capsule: return "capsule";
-    case PrimitiveCollider::Shape::Plane: return "plane";
+    case SolidPrimitive::Shape::Sphere: return "sphere";
+    case SolidPrimitive::Shape::Capsule: return "capsule";
+    case SolidPrimitive::Shape::Plane: return "plane";
   }
   return "?";
 }
 
-}  // namespace mq::cloth
+}  // namespace mq
