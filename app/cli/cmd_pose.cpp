@@ -23,6 +23,7 @@ int chooseClip(const Args& args, LoadedScene& scene) {
   if (args.has("--motion")) clip = addMotion(scene.character, args.option("--motion"), args.option("--map"));
   else if (args.has("--map")) throw Error("--map needs --motion");
   if (args.has("--clip")) {
+    if (args.option("--clip") == "rest") return -1;  // the rest pose plus the document's pose edits
     clip = scene.character.findClip(args.option("--clip"));
     if (clip < 0) throw Error("'" + scene.character.name + "' has no clip '" + args.option("--clip") + "'");
   }
@@ -66,7 +67,7 @@ int runPose(const std::vector<std::string>& argv) {
   return 0;
 }
 
-static Registration reg({"pose", "FILE --time T [--clip NAME|INDEX] [--motion BVH [--map MAP]] --out OUT.obj|.ply|.gltf|.glb\n"
+static Registration reg({"pose", "FILE --time T [--clip NAME|INDEX|rest] [--motion BVH [--map MAP]] --out OUT.obj|.ply|.gltf|.glb\n"
                          "         [--skinning lbs|dqs|cones] [--joints-out JOINTS.json]",
                          "write the posed mesh at time T in world space (OBJ, PLY, glTF or GLB)", runPose});
 

@@ -1,5 +1,6 @@
 #include "core/skinning/dual_quaternion_skinning.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/LU>
@@ -51,41 +52,37 @@ inline void cross(const float* a, const float* b, float* out) {
   out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-// v rotated by the unit quaternion (r, rw): v + 2 r x (r x v + rw v).
-inline void rotate(const float* r, float rw, const float* v, float* out) {
-  float t[3], c[3];
-  cross(r, v, t);
-  for (int d = 0; d < 3; ++d) t[d] += rw * v[d];
-  cross(r, t, c);
-  for (int d = 0; d < 3; ++d) out[d] = v[d] + 2.0f * c[d];
-}
 
-void skinRange(size_t begin, size_t end, const SkinBinding& skin, const DualQuaternionPalette& palette,
-               const float* positions, const float* normals, float* outPositions, float* outNormals) {
-  const int k = skin.influencesPerVertex;
-  const float* dqs = palette.dualQuaternions.data();
-  const float* stretches = palette.stretches.data();
+// K influences and the stretch known at compile time let the compiler unroll
+// the blend; K = 0 reads the count at run time.
+template <int K, bool Stretched>
+void skinRange(size_t begin, size_t end, int k, const uint16_t* jointsOf, const float* weightsOf,
+               const float* dqs, const float* stretches, const float* positions, const float* normals,
+               float* outPositions, float* outNormals) {
+  const int influences = K > 0 ? K : k;
   for (size_t v = begin; v < end; ++v) {
-    const uint16_t* joints = &skin.joints[v * k];
-    const float* weights = &skin.weights[v * k];
+    const uint16_t* joints = jointsOf + v * influences;
+    const float* weights = weightsOf + v * influences;
+    // The heaviest influence sets the hemisphere the others are brought to.
     int reference = 0;
-    for (int i = 1; i < k; ++i)
-      if (weights[i] > weights[reference]) reference = i;
+    float heaviest = weights[0];
+    for (int i = 1; i < influences; ++i) {
+      reference = weights[i] > heaviest ? i : reference;
+      heaviest = std::max(heaviest, weights[i]);
+    }
     const float* ref = dqs + 8 * size_t(joints[reference]);
     float b[8] = {0, 0, 0, 0, 0, 0, 0, 0};
     float s[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-    for (int i = 0; i < k; ++i) {
-      const float w = weights[i];
-      if (w == 0.0f) continue;
+    for (int i = 0; i < influences; ++i) {
       const float* q = dqs + 8 * size_t(joints[i]);
       const float dot = q[0] * ref[0] + q[1] * ref[1] + q[2] * ref[2] + q[3] * ref[3];
-      const float sw = dot < 0.0f ? -w : w;  // antipodal q_i: same rotation, other hemisphere
+      const float sw = std::copysign(weights[i], dot);  // antipodal q_i: same rotation, other hemisphere
       for (int c = 0; c < 8; ++c) b[c] += sw * q[c];
-      if (palette.stretched)
-        for (int c = 0; c < 9; ++c) s[c] += w * stretches[9 * size_t(joints[i]) + c];
+      if (Stretched)
+        for (int c = 0; c < 9; ++c) s[c] += weights[i] * stretches[9 * size_t(joints[i]) + c];
     }
-    const float len = std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2] + b[3] * b[3]);
-    const float inv = len > 0.0f ? 1.0f / len : 0.0f;
+    const float len2 = b[0] * b[0] + b[1] * b[1] + b[2] * b[2] + b[3] * b[3];
+    const float inv = len2 > 0.0f ? 1.0f / std::sqrt(len2) : 0.0f;
     for (float& c : b) c *= inv;
     const float* r = b;
     const float rw = b[3];
@@ -97,18 +94,25 @@ void skinRange(size_t begin, size_t end, const SkinBinding& skin, const DualQuat
     float t[3];
     for (int c = 0; c < 3; ++c) t[c] = 2.0f * (rw * d[c] - dw * r[c] + rxd[c]);
 
+    // The rotation as a matrix, applied to the position and the normal.
+    const float x2 = r[0] + r[0], y2 = r[1] + r[1], z2 = r[2] + r[2];
+    const float xx = r[0] * x2, yy = r[1] * y2, zz = r[2] * z2;
+    const float xy = r[0] * y2, xz = r[0] * z2, yz = r[1] * z2;
+    const float wx = rw * x2, wy = rw * y2, wz = rw * z2;
+    const float m[9] = {1.0f - (yy + zz), xy - wz, xz + wy,
+                        xy + wz, 1.0f - (xx + zz), yz - wx,
+                        xz - wy, yz + wx, 1.0f - (xx + yy)};
     float p[3] = {positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]};
-    if (palette.stretched) {
+    if (Stretched) {
       const float q[3] = {p[0], p[1], p[2]};
       for (int row = 0; row < 3; ++row) p[row] = s[3 * row] * q[0] + s[3 * row + 1] * q[1] + s[3 * row + 2] * q[2];
     }
-    float out[3];
-    rotate(r, rw, p, out);
-    for (int c = 0; c < 3; ++c) outPositions[3 * v + c] = out[c] + t[c];
+    for (int row = 0; row < 3; ++row)
+      outPositions[3 * v + row] = m[3 * row] * p[0] + m[3 * row + 1] * p[1] + m[3 * row + 2] * p[2] + t[row];
     if (!normals) continue;
     float n[3] = {normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]};
-    if (palette.stretched) {
-      // (S)^-T n up to scale: the cofactor matrix of the symmetric S times n.
+    if (Stretched) {
+      // S^-T n up to scale: the cofactor matrix of the symmetric S times n.
       const float q[3] = {n[0], n[1], n[2]};
       const float c00 = s[4] * s[8] - s[5] * s[7], c01 = s[5] * s[6] - s[3] * s[8], c02 = s[3] * s[7] - s[4] * s[6];
       const float c10 = s[2] * s[7] - s[1] * s[8], c11 = s[0] * s[8] - s[2] * s[6], c12 = s[1] * s[6] - s[0] * s[7];
@@ -117,10 +121,26 @@ void skinRange(size_t begin, size_t end, const SkinBinding& skin, const DualQuat
       n[1] = c10 * q[0] + c11 * q[1] + c12 * q[2];
       n[2] = c20 * q[0] + c21 * q[1] + c22 * q[2];
     }
-    rotate(r, rw, n, out);
-    const float len2 = out[0] * out[0] + out[1] * out[1] + out[2] * out[2];
-    const float ninv = len2 > 0.0f ? 1.0f / std::sqrt(len2) : 0.0f;
+    float out[3];
+    for (int row = 0; row < 3; ++row) out[row] = m[3 * row] * n[0] + m[3 * row + 1] * n[1] + m[3 * row + 2] * n[2];
+    const float nlen2 = out[0] * out[0] + out[1] * out[1] + out[2] * out[2];
+    const float ninv = nlen2 > 0.0f ? 1.0f / std::sqrt(nlen2) : 0.0f;
     for (int c = 0; c < 3; ++c) outNormals[3 * v + c] = out[c] * ninv;
+  }
+}
+
+template <bool Stretched>
+void skinRangeFor(int k, size_t b, size_t e, const SkinBinding& skin, const DualQuaternionPalette& palette,
+                  const float* positions, const float* normals, float* outPositions, float* outNormals) {
+  const uint16_t* joints = skin.joints.data();
+  const float* weights = skin.weights.data();
+  const float* dqs = palette.dualQuaternions.data();
+  const float* stretches = palette.stretches.data();
+  switch (k) {
+    case 1: skinRange<1, Stretched>(b, e, k, joints, weights, dqs, stretches, positions, normals, outPositions, outNormals); break;
+    case 2: skinRange<2, Stretched>(b, e, k, joints, weights, dqs, stretches, positions, normals, outPositions, outNormals); break;
+    case 4: skinRange<4, Stretched>(b, e, k, joints, weights, dqs, stretches, positions, normals, outPositions, outNormals); break;
+    default: skinRange<0, Stretched>(b, e, k, joints, weights, dqs, stretches, positions, normals, outPositions, outNormals); break;
   }
 }
 
@@ -159,8 +179,12 @@ void buildDualQuaternionPalette(const SkinBinding& skin, const std::vector<glm::
 void skinVerticesDualQuaternion(const SkinBinding& skin, const DualQuaternionPalette& palette,
                                 const float* positions, const float* normals, size_t count, float* outPositions,
                                 float* outNormals, ThreadPool* pool) {
+  const int k = skin.influencesPerVertex;
   auto body = [&](size_t b, size_t e) {
-    skinRange(b, e, skin, palette, positions, normals, outPositions, outNormals);
+    if (palette.stretched)
+      skinRangeFor<true>(k, b, e, skin, palette, positions, normals, outPositions, outNormals);
+    else
+      skinRangeFor<false>(k, b, e, skin, palette, positions, normals, outPositions, outNormals);
   };
   if (pool)
     pool->parallelFor(0, count, kMinChunk, body);

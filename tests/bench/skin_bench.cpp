@@ -1,13 +1,20 @@
 // BM_SkinDeform/<vertices>: linear blend skinning of positions and normals,
 // 4 influences per vertex, 64 bones, on the shared thread pool.
 // BM_SkinDQS/<vertices>: dual quaternion skinning of the same workload.
+// BM_SkinMannequin/<method>: the default mannequin (30k vertices) posed at
+// its walk's frame 0.25 s with LBS (0), DQS (1) or cones (2): palette, skin,
+// and for cones the joint creases and the moved vertices' normals.
+// BM_BindSectionCones: fitting the mannequin's cones and creases.
 #include <benchmark/benchmark.h>
 
 #include <random>
 
 #include <glm/gtc/quaternion.hpp>
 
+#include "core/character/default_mannequin.h"
+#include "core/character/posed_character.h"
 #include "core/skinning/dual_quaternion_skinning.h"
+#include "core/skinning/section_cones.h"
 #include "core/skinning/skin_deformer.h"
 #include "core/util/thread_pool.h"
 
@@ -87,5 +94,32 @@ void BM_SkinDQS(benchmark::State& state) {
   state.counters["threads"] = pool.threadCount();
 }
 BENCHMARK(BM_SkinDQS)->Arg(10000)->Arg(100000)->Arg(1000000)->UseRealTime()->Unit(benchmark::kMillisecond);
+
+void BM_SkinMannequin(benchmark::State& state) {
+  static const mq::Character mannequin = mq::makeDefaultMannequin();
+  mq::Character character = mannequin;
+  character.skinning = mq::SkinningMethod(state.range(0));
+  if (character.skinning == mq::SkinningMethod::Cones) mq::bindSectionCones(character);
+  const int walk = character.findClip("walk");
+  const mq::Pose pose = mq::samplePose(character, walk, 0.25f);
+  mq::PosedCharacter posed;
+  mq::ThreadPool& pool = mq::ThreadPool::shared();
+  for (auto _ : state) {
+    posed.evaluate(character, pose, {}, &pool);
+    benchmark::DoNotOptimize(posed.meshes()[0].positions.data());
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations()) * static_cast<int64_t>(character.vertexCount()));
+  state.SetLabel(mq::skinningMethodName(character.skinning));
+}
+void BM_BindSectionCones(benchmark::State& state) {
+  static const mq::Character mannequin = mq::makeDefaultMannequin();
+  for (auto _ : state) {
+    auto cones = mq::bindSectionCones(mannequin.meshes[0], mannequin.skeleton);
+    benchmark::DoNotOptimize(cones.get());
+  }
+}
+BENCHMARK(BM_BindSectionCones)->UseRealTime()->Unit(benchmark::kMillisecond)->Iterations(3);
+
+BENCHMARK(BM_SkinMannequin)->Arg(0)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 }  // namespace

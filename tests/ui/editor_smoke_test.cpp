@@ -7,6 +7,7 @@
 #include <cstdlib>
 
 #include <QApplication>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QFile>
@@ -15,7 +16,6 @@
 #include <QWheelEvent>
 #include <QSignalSpy>
 #include <QSlider>
-#include <QComboBox>
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
 #include <QTest>
@@ -388,6 +388,43 @@ class EditorSmokeTest : public QObject {
     QVERIFY2(window_->openFileNow(path, &error), qPrintable(error));
     QVERIFY(doc()->boneRotation(forearm).has_value());
     QVERIFY(std::abs(std::abs(glm::dot(*doc()->boneRotation(forearm), edit)) - 1.0f) < 1e-5f);
+  }
+
+  void skinningChoiceIsUndoableAndSaved() {
+    // Bend the left elbow 120 degrees (local +X flexes it), then switch the
+    // skinning on the character page as a user would.
+    const int forearm = bone("forearm_l");
+    doc()->undoStack()->push(new SetBoneRotationCommand(doc(), forearm, quatFromEulerDegrees({120, 0, 0})));
+    doc()->selectBone(-1);
+    QComboBox* box = window_->properties()->skinningBox();
+    QCOMPARE(doc()->skinning(), SkinningMethod::Lbs);
+    const std::vector<float> lbs = allPositions(*doc());
+    const int commands = doc()->undoStack()->index();
+    const int cones = box->findData(int(SkinningMethod::Cones));
+    box->setCurrentIndex(cones);
+    emit box->activated(cones);
+    QCOMPARE(doc()->skinning(), SkinningMethod::Cones);
+    QCOMPARE(doc()->undoStack()->index(), commands + 1);
+    const std::vector<float> corrected = allPositions(*doc());
+    QVERIFY2(maxDifference(lbs, corrected) > 0.01f, "switching from LBS to cones at a 120-degree elbow moved nothing");
+
+    doc()->undoStack()->undo();
+    QCOMPARE(doc()->skinning(), SkinningMethod::Lbs);
+    QCOMPARE(allPositions(*doc()), lbs);
+    QCOMPARE(box->currentData().toInt(), int(SkinningMethod::Lbs));
+    doc()->undoStack()->redo();
+    QCOMPARE(allPositions(*doc()), corrected);
+
+    QTemporaryDir dir;
+    const QString path = dir.filePath("skin.mqscene");
+    QString error;
+    QVERIFY2(window_->saveDocument(path, &error), qPrintable(error));
+    QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));
+    QCOMPARE(doc()->skinning(), SkinningMethod::Lbs);
+    QVERIFY2(window_->openFileNow(path, &error), qPrintable(error));
+    QCOMPARE(doc()->skinning(), SkinningMethod::Cones);
+    QCOMPARE(allPositions(*doc()), corrected);
+    QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));
   }
 
   void exportWritesTheMesh() {

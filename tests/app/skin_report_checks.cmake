@@ -1,0 +1,83 @@
+# skin-report on the default mannequin and CesiumMan: the skinning methods
+# against the research brief's targets (the ones they meet today).
+#   -DCLI=<mannequin-cli> -DCESIUM=<CesiumMan.gltf> -DWORK=<dir>
+file(MAKE_DIRECTORY "${WORK}")
+
+function(report file method out)
+  execute_process(COMMAND "${CLI}" skin-report "${file}" --skinning ${method} --json ${ARGN}
+    RESULT_VARIABLE code OUTPUT_VARIABLE json ERROR_VARIABLE err TIMEOUT 600)
+  if(NOT code EQUAL 0)
+    message(FATAL_ERROR "skin-report ${file} --skinning ${method} failed (${code}): ${err}")
+  endif()
+  set(${out} "${json}" PARENT_SCOPE)
+endfunction()
+
+# pose_value(<json> <pose name> <field> <out>)
+function(pose_value json pose field out)
+  string(JSON count LENGTH "${json}" poses)
+  math(EXPR last "${count} - 1")
+  foreach(i RANGE ${last})
+    string(JSON name GET "${json}" poses ${i} pose)
+    if(name STREQUAL pose)
+      string(JSON value GET "${json}" poses ${i} ${field})
+      set(${out} "${value}" PARENT_SCOPE)
+      return()
+    endif()
+  endforeach()
+  message(FATAL_ERROR "no pose '${pose}' in the report")
+endfunction()
+
+function(expect_compare json label pose field op bound)
+  pose_value("${json}" "${pose}" ${field} value)
+  message("${label} ${pose} ${field} = ${value} (expected ${op} ${bound})")
+  if(op STREQUAL ">=")
+    if(value LESS bound)
+      message(FATAL_ERROR "${label}: ${pose} ${field} ${value} is below ${bound}")
+    endif()
+  elseif(value GREATER bound)
+    message(FATAL_ERROR "${label}: ${pose} ${field} ${value} is above ${bound}")
+  endif()
+endfunction()
+
+report(default lbs lbs --no-clips)
+report(default dqs dqs --no-clips)
+report(default cones cones --no-clips)
+
+# LBS collapses (the baseline the others are measured against).
+expect_compare("${lbs}" lbs "elbow 120" thickness "<=" 0.6)
+expect_compare("${lbs}" lbs "wrist twist 180" twist_section "<=" 0.1)
+foreach(method dqs cones)
+  set(json "${${method}}")
+  string(JSON rest GET "${json}" rest_error)
+  if(rest GREATER 1e-5)
+    message(FATAL_ERROR "${method}: the rest pose is ${rest} of the bounding box off the rest mesh")
+  endif()
+  foreach(pose "elbow 90" "elbow 120" "elbow 150" "knee 90" "knee 120" "knee 150")
+    expect_compare("${json}" ${method} "${pose}" thickness ">=" 0.95)
+  endforeach()
+  foreach(pose "wrist twist 180" "forearm twist 180")
+    expect_compare("${json}" ${method} "${pose}" twist_section ">=" 0.9)
+  endforeach()
+endforeach()
+
+# The creases: the knee and elbow folds no longer cross as DQS's do.
+expect_compare("${cones}" cones "knee 120" intersections "<=" 10)
+pose_value("${dqs}" "elbow 150" intersections dqs_elbow)
+expect_compare("${cones}" cones "elbow 150" intersections "<=" ${dqs_elbow})
+expect_compare("${cones}" cones "elbow 120" local_volume ">=" 0.95)
+
+# The walk with creases is no worse than with dual quaternions.
+report(default dqs dqs_walk --no-poses)
+report(default cones cones_walk --no-poses)
+string(JSON dqs_worst GET "${dqs_walk}" clips 0 worst_intersections)
+string(JSON cones_worst GET "${cones_walk}" clips 0 worst_intersections)
+message("walk worst frame: dqs ${dqs_worst}, cones ${cones_worst}")
+if(cones_worst GREATER dqs_worst)
+  message(FATAL_ERROR "cones cross more than dqs on the walk: ${cones_worst} > ${dqs_worst}")
+endif()
+
+# An imported humanoid (other bone names, its own weights).
+report("${CESIUM}" cones cesium --no-clips)
+expect_compare("${cesium}" CesiumMan "elbow 120" thickness ">=" 0.95)
+expect_compare("${cesium}" CesiumMan "forearm twist 180" twist_section ">=" 0.9)
+expect_compare("${cesium}" CesiumMan "knee 120" intersections "<=" 27)
