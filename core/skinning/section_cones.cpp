@@ -159,7 +159,7 @@ SectionCone fitCone(const Mesh& mesh, const WeldedSkin& welded, const Skeleton& 
   cone.front = glm::cross(cone.side, cone.axis);
   cone.valid = fitBase(welded, cone, SectionCone::kBaseNear, cone.minimum[0], cone.enclosing[0]) &&
                fitBase(welded, cone, SectionCone::kBaseFar, cone.minimum[1], cone.enclosing[1]);
-  if (std::max(cone.enclosing[0].a, cone.enclosing[1].a) > kLimbWidth * cone.length) cone.valid = false;
+  cone.limb = cone.valid && std::max(cone.enclosing[0].a, cone.enclosing[1].a) <= kLimbWidth * cone.length;
   return cone;
 }
 
@@ -175,11 +175,22 @@ void buildAdjacency(const Mesh& mesh, SectionCones& out) {
 
 }  // namespace
 
+std::vector<SectionCone> fitSectionCones(const Mesh& mesh, const Skeleton& skeleton) {
+  const SkinBinding& skin = mesh.skin;
+  std::vector<SectionCone> cones(skin.jointBones.size());
+  if (skin.empty()) return cones;
+  const WeldedSkin welded = weld(mesh);
+  const std::vector<int> jointOf = jointOfBone(skin, skeleton.boneCount());
+  for (size_t j = 0; j < cones.size(); ++j)
+    if (skin.jointBones[j] >= 0 && skin.jointBones[j] < skeleton.boneCount())
+      cones[j] = fitCone(mesh, welded, skeleton, jointOf, int(j));
+  return cones;
+}
+
 std::shared_ptr<const SectionCones> bindSectionCones(const Mesh& mesh, const Skeleton& skeleton) {
   auto out = std::make_shared<SectionCones>();
   const SkinBinding& skin = mesh.skin;
   if (skin.empty()) return out;
-  const WeldedSkin welded = weld(mesh);
   const std::vector<int> jointOf = jointOfBone(skin, skeleton.boneCount());
   const int joints = int(skin.jointBones.size());
   std::vector<int> parentOf(joints, -1);
@@ -187,10 +198,7 @@ std::shared_ptr<const SectionCones> bindSectionCones(const Mesh& mesh, const Ske
     const int bone = skin.jointBones[j];
     if (bone >= 0 && bone < skeleton.boneCount()) parentOf[j] = parentJoint(skeleton, jointOf, bone);
   }
-  out->cones.resize(joints);
-  for (int j = 0; j < joints; ++j)
-    if (skin.jointBones[j] >= 0 && skin.jointBones[j] < skeleton.boneCount())
-      out->cones[j] = fitCone(mesh, welded, skeleton, jointOf, j);
+  out->cones = fitSectionCones(mesh, skeleton);
 
   const size_t n = mesh.vertexCount();
   out->creaseJoint.assign(n, -1);
@@ -212,7 +220,7 @@ std::shared_ptr<const SectionCones> bindSectionCones(const Mesh& mesh, const Ske
     double nearestDistance = 0.0;
     auto consider = [&](int child) {
       const SectionCone& cone = out->cones[child];
-      if (parentOf[child] < 0 || !cone.valid || !out->cones[parentOf[child]].valid) return;
+      if (parentOf[child] < 0 || !cone.limb || !out->cones[parentOf[child]].limb) return;
       const double reach = kCreaseReach * std::max(cone.enclosing[0].a, cone.enclosing[1].a);
       const double distance = glm::length(p - cone.head);
       if (distance < reach && (nearest < 0 || distance < nearestDistance)) nearest = child, nearestDistance = distance;
@@ -271,7 +279,7 @@ void creasePlanes(const SectionCones& cones, JointFrames& f) {
   f.creaseNormal.assign(joints, glm::dvec3(0.0));
   for (size_t j = 0; j < joints; ++j) {
     const int parent = cones.parentJoint[j];
-    if (parent < 0 || !cones.cones[j].valid) continue;
+    if (parent < 0 || !cones.cones[j].limb) continue;
     const glm::dquat qa = glm::normalize(glm::quat_cast(glm::dmat3(f.worldFromMesh[parent])));
     const glm::dquat qb = glm::normalize(glm::quat_cast(glm::dmat3(f.worldFromMesh[j])));
     const glm::dquat half = glm::slerp(qa, glm::dot(qa, qb) < 0.0 ? -qb : qb, 0.5);

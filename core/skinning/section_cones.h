@@ -40,7 +40,8 @@ struct Character;
 struct SectionCone {
   static constexpr float kBaseNear = 0.15f, kBaseFar = 0.85f;  // base positions along the bone
 
-  bool valid = false;
+  bool valid = false;  // fitted: a section loop surrounds the axis at both bases
+  bool limb = false;   // fitted and no wider than kLimbWidth of its bone (not the torso)
   // The cone's frame in the mesh's bind space: head, unit axis towards the
   // tail, and two unit directions across it (the ellipses' chart).
   glm::dvec3 head{0.0}, axis{0.0, 1.0, 0.0}, side{1.0, 0.0, 0.0}, front{0.0, 0.0, 1.0};
@@ -71,9 +72,11 @@ struct SectionCones {
   std::vector<uint32_t> triangleStart, triangleList;
 };
 
-// Fits the cones of every skin joint to the mesh's rest skin and records each
-// vertex's rest coordinates. `skeleton` gives the bone hierarchy.
+// Fits the cone of every skin joint to the mesh's rest skin and records each
+// vertex's crease. `skeleton` gives the bone hierarchy.
 std::shared_ptr<const SectionCones> bindSectionCones(const Mesh& mesh, const Skeleton& skeleton);
+// The cones alone, one per skin joint (the torso's too, marked not limb).
+std::vector<SectionCone> fitSectionCones(const Mesh& mesh, const Skeleton& skeleton);
 
 // Binds the cones of every skinned mesh of the character that has none yet.
 void bindSectionCones(Character& character);
