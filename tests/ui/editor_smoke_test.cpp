@@ -11,9 +11,11 @@
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QLabel>
 #include <QMimeData>
 #include <QMouseEvent>
 #include <QWheelEvent>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QSurfaceFormat>
@@ -73,6 +75,15 @@ class EditorSmokeTest : public QObject {
   glm::vec3 jointOf(int b) { return glm::vec3(doc()->posed().worldFromBone()[b][3]); }
 
   void renderNow() { mq::ui::renderNow(window_); }
+
+  // Clicks Count on the character page and waits for the number (-1 when
+  // none came within 20 s).
+  long countCrossings() {
+    QLabel* label = window_->properties()->crossingsLabel();
+    window_->properties()->countCrossingsButton()->click();
+    if (!QTest::qWaitFor([&] { return label->text().contains("pair"); }, 20000)) return -1;
+    return label->text().section(' ', 0, 0).toLong();
+  }
 
  private slots:
   void initTestCase() {
@@ -414,6 +425,15 @@ class EditorSmokeTest : public QObject {
     QCOMPARE(box->currentData().toInt(), int(SkinningMethod::Lbs));
     doc()->undoStack()->redo();
     QCOMPARE(allPositions(*doc()), corrected);
+
+    // The crossings count (on a worker): the creases remove most of the
+    // bent elbow's crossings.
+    const long withCones = countCrossings();
+    doc()->undoStack()->undo();
+    const long withLbs = countCrossings();
+    doc()->undoStack()->redo();
+    QVERIFY2(withCones >= 0 && withLbs >= 0 && withCones < withLbs,
+             qPrintable(QString("crossings: cones %1, lbs %2").arg(withCones).arg(withLbs)));
 
     QTemporaryDir dir;
     const QString path = dir.filePath("skin.mqscene");

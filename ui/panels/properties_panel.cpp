@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include <QDoubleSpinBox>
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -13,8 +13,10 @@
 #include <QStackedWidget>
 #include <QUndoStack>
 #include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
 
 #include "core/math/transform.h"
+#include "core/skinning/skin_metrics.h"
 #include "ui/document/editor_document.h"
 #include "ui/document/pose_commands.h"
 
@@ -40,6 +42,8 @@ PropertiesPanel::PropertiesPanel(EditorDocument* document, QWidget* parent)
   connect(document_, &EditorDocument::selectionChanged, this, &PropertiesPanel::showSelection);
   connect(document_, &EditorDocument::characterReplaced, this, &PropertiesPanel::showSelection);
   connect(document_, &EditorDocument::poseChanged, this, [this] {
+    ++poseGeneration_;
+    crossings_->setText(tr("-"));
     if (pages_->currentIndex() == BonePage) showBoneAngles();
     else if (pages_->currentIndex() == CharacterPage) showCharacter();
   });
@@ -83,6 +87,22 @@ QWidget* PropertiesPanel::makeCharacterPage() {
     if (method != document_->skinning()) document_->undoStack()->push(new SetSkinningCommand(document_, method));
   });
   form->addRow(tr("Skinning"), skinning_);
+  crossings_ = new QLabel(tr("-"));
+  crossings_->setToolTip(tr("Triangle pairs of the skin that cross each other at this pose (exact predicates): "
+                            "what a fold or a limb pressed into the body does to the mesh."));
+  countCrossings_ = new QPushButton(tr("Count"));
+  connect(countCrossings_, &QPushButton::clicked, this, &PropertiesPanel::countCrossings);
+  connect(&crossingsWatcher_, &QFutureWatcher<long>::finished, this, [this] {
+    countCrossings_->setEnabled(true);
+    if (countedGeneration_ != poseGeneration_) return;  // the pose changed meanwhile
+    const long pairs = crossingsWatcher_.result();
+    crossings_->setText(pairs < 0 ? tr("the skin is not a closed surface")
+                                  : tr("%n crossing triangle pair(s)", "", int(pairs)));
+  });
+  auto* crossingsRow = new QHBoxLayout;
+  crossingsRow->addWidget(crossings_, 1);
+  crossingsRow->addWidget(countCrossings_);
+  form->addRow(tr("Skin crossings"), crossingsRow);
   layout->addWidget(box);
   auto* hint = new QLabel(tr("Click a bone in the viewport or the scene tree to pose it; "
                              "drag a ring of the gizmo or type angles."));
@@ -90,6 +110,22 @@ QWidget* PropertiesPanel::makeCharacterPage() {
   hint->setEnabled(false);
   layout->addWidget(hint);
   return page;
+}
+
+void PropertiesPanel::countCrossings() {
+  if (crossingsWatcher_.isRunning()) return;
+  countedGeneration_ = poseGeneration_;
+  countCrossings_->setEnabled(false);
+  crossings_->setText(tr("counting..."));
+  crossingsWatcher_.setFuture(
+      QtConcurrent::run([character = document_->character(), posed = document_->posed().meshes()]() -> long {
+        try {
+          const MetricBody body(character);
+          return long(intersectingPairs(body.weld(posed), body.triangles()));
+        } catch (const std::exception&) {
+          return -1;  // not a 2-manifold: the pairs are not defined
+        }
+      }));
 }
 
 void PropertiesPanel::showCharacter() {

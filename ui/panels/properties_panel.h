@@ -3,10 +3,12 @@
 // Euler angles in degrees (X, then Y, then Z) with a reset button; for a mesh,
 // its vertex and triangle counts and skinning. The character page chooses the
 // skinning method. Typed angles and the method become undo commands on the
-// document.
+// document. The character page also counts the skin's crossing triangle pairs
+// at the current pose (on a worker thread).
 
 #include <array>
 
+#include <QFutureWatcher>
 #include <QWidget>
 
 class QComboBox;
@@ -28,6 +30,8 @@ class PropertiesPanel : public QWidget {
   QDoubleSpinBox* angleBox(int axis) const { return angles_[axis]; }
   QPushButton* resetButton() const { return resetBone_; }
   QComboBox* skinningBox() const { return skinning_; }
+  QPushButton* countCrossingsButton() const { return countCrossings_; }
+  QLabel* crossingsLabel() const { return crossings_; }
 
  private:
   QWidget* makeCharacterPage();
@@ -39,6 +43,8 @@ class PropertiesPanel : public QWidget {
   void applyTypedAngles();
   void resetBone();
   void resetAllBones();
+  // Counts the skin's crossing triangle pairs at the current pose on a worker.
+  void countCrossings();
 
   EditorDocument* document_;
   QStackedWidget* pages_;
@@ -55,6 +61,11 @@ class PropertiesPanel : public QWidget {
   QLabel* characterClips_ = nullptr;
   QLabel* characterEdits_ = nullptr;
   QComboBox* skinning_ = nullptr;
+  QLabel* crossings_ = nullptr;
+  QPushButton* countCrossings_ = nullptr;
+  QFutureWatcher<long> crossingsWatcher_;
+  int poseGeneration_ = 0;      // bumped by every pose change
+  int countedGeneration_ = -1;  // the pose the running count is for
   std::array<QDoubleSpinBox*, 3> angles_{};
   QPushButton* resetBone_ = nullptr;
   QPushButton* resetAll_ = nullptr;
