@@ -44,6 +44,12 @@ void applyMorphTargets(const Mesh& mesh, const std::vector<float>& weights, std:
     if (target.normalDeltas.size() == normals.size())
       for (size_t i = 0; i < normals.size(); ++i) normals[i] += w * target.normalDeltas[i];
   }
+  // Dual quaternion skinning rotates normals without rescaling them.
+  for (size_t i = 0; i + 2 < normals.size(); i += 3) {
+    const float len = std::sqrt(normals[i] * normals[i] + normals[i + 1] * normals[i + 1] + normals[i + 2] * normals[i + 2]);
+    if (len > 0.0f)
+      for (int d = 0; d < 3; ++d) normals[i + d] /= len;
+  }
 }
 
 void transformRigid(const glm::mat4& m, const float* positions, const float* normals, size_t count,

@@ -123,6 +123,11 @@ void skinRange(size_t begin, size_t end, int k, const uint16_t* jointsOf, const 
     }
     float out[3];
     for (int row = 0; row < 3; ++row) out[row] = m[3 * row] * n[0] + m[3 * row + 1] * n[1] + m[3 * row + 2] * n[2];
+    if (!Stretched) {
+      // A rotation keeps the unit normal unit.
+      for (int c = 0; c < 3; ++c) outNormals[3 * v + c] = out[c];
+      continue;
+    }
     const float nlen2 = out[0] * out[0] + out[1] * out[1] + out[2] * out[2];
     const float ninv = nlen2 > 0.0f ? 1.0f / std::sqrt(nlen2) : 0.0f;
     for (int c = 0; c < 3; ++c) outNormals[3 * v + c] = out[c] * ninv;
