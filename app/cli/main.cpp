@@ -78,7 +78,8 @@ void applySkinningOption(const Args& args, LoadedScene& scene) {
 namespace {
 
 void printUsage(std::ostream& out) {
-  out << "usage: mannequin-cli <command> [arguments]\n\n"
+  out << "usage: mannequin-cli <command> [arguments]   (mannequin-cli <command> --help: its options;\n"
+         "       mannequin-cli --version)\n\n"
          "FILE is a character file (glTF, GLB, FBX, DAE, BVH), a scene document, or the word\n"
          "'default' for the built-in mannequin.\n\ncommands:\n";
   auto all = mq::cli::commands();
@@ -94,8 +95,18 @@ int main(int argc, char** argv) {
     printUsage(std::cout);
     return args.empty() ? 2 : 0;
   }
+  if (args[0] == "--version" || args[0] == "version") {
+    std::cout << "mannequin-cli " << MANNEQUIN_VERSION
+              << "\nLicence: GPL-3.0-or-later (it links CGAL's GPL packages); see LICENSE.\n";
+    return 0;
+  }
   for (const auto& c : mq::cli::commands()) {
     if (c.name != args[0]) continue;
+    if (std::find(args.begin() + 1, args.end(), "--help") != args.end() ||
+        std::find(args.begin() + 1, args.end(), "-h") != args.end()) {
+      std::cout << "usage: mannequin-cli " << c.name << " " << c.usage << "\n\n" << c.summary << "\n";
+      return 0;
+    }
     try {
       return c.run(std::vector<std::string>(args.begin() + 1, args.end()));
     } catch (const mq::Error& e) {

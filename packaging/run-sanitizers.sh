@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# Builds core, sim and their unit tests with AddressSanitizer,
+# UndefinedBehaviorSanitizer and LeakSanitizer (no GUI: Debian's Qt and VTK
+# are not built for ASan) into build-asan/ and runs them. Any report fails.
+#   ./packaging/run-sanitizers.sh [ctest arguments, e.g. -R Skin]
+set -euo pipefail
+top="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${MANNEQUIN_ASAN_BUILD_DIR:-$top/build-asan}"
+"$top/packaging/install-deps.sh"
+flags="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g"
+cmake -S "$top" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DMANNEQUIN_WITH_GUI=OFF \
+  -DMANNEQUIN_WITH_BENCH=OFF "-DCMAKE_CXX_FLAGS=$flags" "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined" >/dev/null
+cmake --build "$build" -j "${MANNEQUIN_JOBS:-$(nproc)}" --target mannequin_unit_tests
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+cd "$build"
+ctest -L unit --output-on-failure -j "${MANNEQUIN_TEST_JOBS:-2}" "$@"
