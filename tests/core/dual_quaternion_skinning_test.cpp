@@ -115,12 +115,7 @@ TEST(DualQuaternionSkinning, ThreadedEqualsSingleThreaded) {
   const Character c = dqsTube(401, 64);
   PoseEdits edits;
   edits.rotations[1] = glm::angleAxis(glm::radians(45.0f), glm::vec3(0, 0, 1));
-  ThreadPool pool(2);
-  PosedCharacter single, threaded;
-  single.evaluate(c, -1, 0.0f, &edits, nullptr);
-  threaded.evaluate(c, -1, 0.0f, &edits, &pool);
-  EXPECT_EQ(single.meshes()[0].positions, threaded.meshes()[0].positions);
-  EXPECT_EQ(single.meshes()[0].normals, threaded.meshes()[0].normals);
+  expectThreadedEqualsSingleThreaded(c, edits);
 }
 
 }  // namespace

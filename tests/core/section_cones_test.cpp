@@ -104,14 +104,8 @@ TEST(SectionCones, BendKeepsTheSectionAndTheVolume) {
   const auto& rest = cones.meshes[0].positions;
   const auto& tris = cones.meshes[0].triangles;
   for (float degrees : {90.0f, 120.0f}) {
-    const double a = glm::radians(double(degrees));
-    BendFrame bend;
-    bend.jointRest = bend.jointPosed = {0, 1, 0};
-    bend.parentRest = bend.parentPosed = bend.childRest = {0, 1, 0};
-    bend.childPosed = {-std::sin(a), std::cos(a), 0};
-    bend.inward = {-1, 0, 0};
     const std::vector<float> corrected = pose(cones, degrees, {0, 0, 1});
-    const OuterSection s = outerSection(rest, corrected, tris, bend);
+    const OuterSection s = outerSection(rest, corrected, tris, tubeBend(degrees));
     EXPECT_GT(s.thickness, 0.95) << degrees;
     // The brief's band for the local volume (the fold pushed out of the
     // parent's cone adds back what interpenetration took).
@@ -148,14 +142,9 @@ TEST(SectionCones, SharpBendMakesACreaseInsteadOfCrossing) {
 TEST(SectionCones, ThreadedEqualsSingleThreaded) {
   Character c = tubeCharacter(201, 64, false);  // enough vertices for the pool to split
   c.skinning = SkinningMethod::Cones;
-  ThreadPool pool(2);
   PoseEdits edits;
   edits.rotations[1] = glm::angleAxis(glm::radians(130.0f), glm::vec3(0, 0, 1));
-  PosedCharacter single, threaded;
-  single.evaluate(c, -1, 0.0f, &edits, nullptr);
-  threaded.evaluate(c, -1, 0.0f, &edits, &pool);
-  EXPECT_EQ(single.meshes()[0].positions, threaded.meshes()[0].positions);
-  EXPECT_EQ(single.meshes()[0].normals, threaded.meshes()[0].normals);
+  expectThreadedEqualsSingleThreaded(c, edits);
 }
 
 }  // namespace

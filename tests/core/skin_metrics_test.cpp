@@ -64,14 +64,8 @@ Bend bendTube(SkinningMethod method, float degrees) {
   edits.rotations[1] = glm::angleAxis(glm::radians(degrees), glm::vec3(0, 0, 1));
   PosedCharacter posed;
   posed.evaluate(c, -1, 0.0f, &edits, nullptr);
-  const double a = glm::radians(double(degrees));
-  BendFrame bend;
-  bend.jointRest = bend.jointPosed = {0, 1, 0};
-  bend.parentRest = bend.parentPosed = bend.childRest = {0, 1, 0};
-  bend.childPosed = {-std::sin(a), std::cos(a), 0};
-  bend.inward = {-1, 0, 0};
   const auto& tris = c.meshes[0].triangles;
-  const OuterSection s = outerSection(c.meshes[0].positions, posed.meshes()[0].positions, tris, bend);
+  const OuterSection s = outerSection(c.meshes[0].positions, posed.meshes()[0].positions, tris, tubeBend(degrees));
   const double v = localVolumeRatio(c.meshes[0].positions, posed.meshes()[0].positions, tris, {0, 1, 0},
                                     {0, 1, 0}, 0.3);
   return {s.thickness, s.halfArea, v};

@@ -1,11 +1,16 @@
 #pragma once
 // Small characters with closed-form skinning behaviour, shared by the
-// skinning tests: a two-bone chain along +Y and a tube skinned to it.
+// skinning tests: a two-bone chain along +Y, a tube skinned to it, its bend,
+// and the threading check.
 
 #include <algorithm>
 #include <cmath>
 
-#include "core/character/character.h"
+#include <gtest/gtest.h>
+
+#include "core/character/posed_character.h"
+#include "core/skinning/skin_metrics.h"
+#include "core/util/thread_pool.h"
 
 namespace mq {
 
@@ -55,6 +60,28 @@ inline Character tubeCharacter(int rings, int around, bool rigid) {
   if (rigid) m.skin.makeRigid();
   c.meshes.push_back(m);
   return c;
+}
+
+// The tube's bend by `degrees` about +Z at its joint (0, 1, 0), its inner
+// side towards -X.
+inline BendFrame tubeBend(float degrees) {
+  const double a = glm::radians(double(degrees));
+  BendFrame bend;
+  bend.jointRest = bend.jointPosed = {0, 1, 0};
+  bend.parentRest = bend.parentPosed = bend.childRest = {0, 1, 0};
+  bend.childPosed = {-std::sin(a), std::cos(a), 0};
+  bend.inward = {-1, 0, 0};
+  return bend;
+}
+
+// Posing on two threads gives the single-threaded result bit for bit.
+inline void expectThreadedEqualsSingleThreaded(const Character& c, const PoseEdits& edits) {
+  ThreadPool pool(2);
+  PosedCharacter single, threaded;
+  single.evaluate(c, -1, 0.0f, &edits, nullptr);
+  threaded.evaluate(c, -1, 0.0f, &edits, &pool);
+  EXPECT_EQ(single.meshes()[0].positions, threaded.meshes()[0].positions);
+  EXPECT_EQ(single.meshes()[0].normals, threaded.meshes()[0].normals);
 }
 
 }  // namespace mq
