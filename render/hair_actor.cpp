@@ -406,6 +406,7 @@ class HairMapper : public vtkOpenGLPolyDataMapper {
   std::vector<vtkSmartPointer<vtkOpenGLPolyDataMapper>> chunkMappers;
   size_t chunkCount = 0;
   size_t nextChunk = 0;       // the first chunk not drawn in this frame yet
+  size_t framesDrawn = 0;
   double frameBudgetMs = 0.0;  // 0: every chunk in every frame
 
   // A frame draws chunks from the first until the budget is spent (the
@@ -414,6 +415,7 @@ class HairMapper : public vtkOpenGLPolyDataMapper {
   // ones.
   void RenderPiece(vtkRenderer* renderer, vtkActor* actor) override {
     if (beforeRender) beforeRender(renderer);
+    ++framesDrawn;
     if (renderer->GetErase()) nextChunk = 0;
     const auto start = std::chrono::steady_clock::now();
     while (nextChunk < chunkCount) {
@@ -564,6 +566,8 @@ void HairActor::setReshadeRequest(std::function<void()> request) { impl_->reques
 bool HairActor::hasMoreToDraw() const {
   return impl_->actor->GetVisibility() && impl_->mapper->nextChunk < impl_->mapper->chunkCount;
 }
+
+size_t HairActor::framesDrawn() const { return impl_->mapper->framesDrawn; }
 
 void HairActor::setFrameBudget(double milliseconds) { impl_->mapper->frameBudgetMs = milliseconds; }
 

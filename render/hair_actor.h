@@ -126,6 +126,9 @@ class HairActor {
   // The last frame left chunks to draw: render frames that do not erase,
   // with the other props hidden, until it is false.
   bool hasMoreToDraw() const;
+  // Frames that drew the hair so far: one that did not (the hair out of
+  // view, culled) must not be continued.
+  size_t framesDrawn() const;
   void setColors(const glm::vec3& root, const glm::vec3& tip);
   void setShading(const HairShading& shading);
   const HairShading& shading() const;

@@ -7,8 +7,9 @@
 // machine can take longer than that to draw the mannequin alone (measured:
 // 350-530 ms stalls in a 1280 x 800 window with two builds running), which
 // no hair code can help; where the bare scene draws fluidly the limit is the
-// issue's 100 ms. Each orbit runs twice and counts the better run, since a
-// spike from other processes on the machine can fall in either. Each step
+// issue's 100 ms. The orbits run twice, bare and with hair in turns, and
+// the better run of each counts, since a spike from other processes on the
+// machine can fall in either. Each step
 // also checks that the hair really changed, so a test that does no work
 // cannot pass.
 // Needs X: run under xvfb-run; `mannequin_gui_tests hair-stall`.
@@ -136,6 +137,20 @@ class HairStallTest : public QObject {
 
   double stallLimitMs() const { return bareOrbitMs_ + kHairStallMs; }
 
+  // The worst stall of the orbit from the saved camera with the hair
+  // removed (then put back).
+  double bareOrbit() {
+    tool_->removeHair();
+    restoreCamera();
+    QTest::qWait(200);
+    const Orbit bare = orbit();
+    [&] { QVERIFY2(bare.cameraMoved > 0.05, "the drag did not orbit the camera"); }();
+    restoreCamera();
+    undoStack()->undo();
+    waitUntilHairShown();
+    return bare.worstStallMs;
+  }
+
   struct Orbit {
     double worstStallMs = 0.0;
     size_t frames = 0;  // drawn during the drag
@@ -194,20 +209,7 @@ class HairStallTest : public QObject {
     waitUntilHairShown();
     // The baseline: the same scene and view with the hair removed.
     saveCamera();
-    tool_->removeHair();
-    QTest::qWait(200);
-    bareOrbitMs_ = INFINITY;
-    for (int run = 0; run < 2; ++run) {
-      restoreCamera();
-      QTest::qWait(200);
-      const Orbit bare = orbit();
-      QVERIFY2(bare.cameraMoved > 0.05, "the drag did not orbit the camera");
-      bareOrbitMs_ = std::min(bareOrbitMs_, bare.worstStallMs);
-    }
-    restoreCamera();
-    undoStack()->undo();
-    QVERIFY(tool_->hasHair());
-    waitUntilHairShown();
+    bareOrbitMs_ = bareOrbit();
     QVERIFY(tool_->strandCount() >= 20000);  // a heavy groom, or the test proves little
   }
 
@@ -265,8 +267,12 @@ class HairStallTest : public QObject {
     typeValue(panel()->densityBox(), 150.0);
     waitUntilHairShown();
     QVERIFY(tool_->strandCount() >= 20000);
+    // Bare and with hair in turns, so both see the machine as busy.
     double worst = INFINITY;
+    bareOrbitMs_ = INFINITY;
     for (int run = 0; run < 2; ++run) {
+      bareOrbitMs_ = std::min(bareOrbitMs_, bareOrbit());
+      QVERIFY(tool_->hasHair());
       restoreCamera();
       waitUntilHairShown();
       const Orbit withHair = orbit();
@@ -282,7 +288,7 @@ class HairStallTest : public QObject {
 };
 
 int runHairStallTest(int argc, char** argv) {
-  mq::ui::exitAfter(280, "gui_hair_stall");  // never hang
+  mq::ui::exitAfter(400, "gui_hair_stall");  // never hang
   HairStallTest test;
   return QTest::qExec(&test, argc, argv);
 }

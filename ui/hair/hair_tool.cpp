@@ -71,7 +71,9 @@ HairTool::HairTool(MainWindow* window) : QObject(window), window_(window) {
   window->sceneView()->addProp(actor_->actor());
   actor_->setFrameBudget(kHairFrameBudgetMs);
   connect(window->viewport(), &VtkViewportWidget::frameRendered, this, [this] {
-    if (actor_->hasMoreToDraw()) window_->viewport()->requestContinuation(actor_->actor());
+    lastFrameDrewHair_ = actor_->framesDrawn() != hairFramesSeen_;
+    hairFramesSeen_ = actor_->framesDrawn();
+    if (hairDrawingPending()) window_->viewport()->requestContinuation(actor_->actor());
   });
   handles_ = std::make_unique<HairHandles>(window->sceneView()->renderer());
   panel_ = new HairPanel(this);
@@ -99,7 +101,7 @@ void HairTool::finishBackgroundWork() { worker_->finish(); }
 
 void HairTool::onBusyChanged(bool busy) { busyLabel_->setVisible(busy); }
 
-bool HairTool::hairDrawingPending() const { return actor_->hasMoreToDraw(); }
+bool HairTool::hairDrawingPending() const { return lastFrameDrewHair_ && actor_->hasMoreToDraw(); }
 
 void HairTool::setDrawingInParts(bool on) {
   actor_->setFrameBudget(on ? kHairFrameBudgetMs : 0.0);

@@ -71,7 +71,8 @@ class HairTool : public QObject {
   void finishBackgroundWork();
   // The viewport draws the hair in parts, a few tens of milliseconds a
   // frame, the rest in the frames after (render::HairActor); pending: parts
-  // are left to draw. Off: every frame draws all of it (screenshots).
+  // are left to draw (none when the last frame did not draw the hair: out
+  // of view). Off: every frame draws all of it (screenshots).
   static constexpr double kHairFrameBudgetMs = 20.0;
   bool hairDrawingPending() const;
   void setDrawingInParts(bool on);
@@ -181,6 +182,8 @@ class HairTool : public QObject {
   HairWorker* worker_ = nullptr;
   QLabel* busyLabel_ = nullptr;
   bool announceScalp_ = false;  // the next regrown hair is on a new scalp: say so
+  size_t hairFramesSeen_ = 0;   // the actor's framesDrawn() at the last frame
+  bool lastFrameDrewHair_ = false;
   std::optional<HairStyle> style_;
   ScalpRegion scalp_;
   size_t requestedStrands_ = 20000;
