@@ -8,6 +8,7 @@
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
 #include <QSurfaceFormat>
+#include <QTimer>
 #include <QWheelEvent>
 
 #include <vtkCallbackCommand.h>
@@ -106,8 +107,13 @@ void VtkViewportWidget::requestRender() {
 }
 
 void VtkViewportWidget::requestContinuation(vtkProp* prop) {
-  if (!fullFramePending_) continuation_ = prop;
-  update();
+  if (fullFramePending_) return;  // a full frame is on its way
+  continuation_ = prop;
+  // Through the timer queue rather than a posted paint, which Qt would
+  // serve before the input and timers waiting since the last frame.
+  QTimer::singleShot(0, this, [this] {
+    if (continuation_) update();
+  });
 }
 
 void VtkViewportWidget::connectWindowCallbacks() {

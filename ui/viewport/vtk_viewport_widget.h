@@ -38,9 +38,9 @@ class VtkViewportWidget : public QOpenGLWidget {
   // Schedules a repaint; the only way the scene should be redrawn.
   void requestRender();
   // Schedules a paint that draws `prop` alone over the last frame (nothing
-  // erased, the other props of the scene's layer hidden), unless a full
-  // frame is asked for first: for a prop that draws itself in parts over
-  // several frames (the hair, see render::HairActor).
+  // erased, the other props of the scene's layer hidden), after the events
+  // waiting, unless a full frame is asked for first: for a prop that draws
+  // itself in parts over several frames (the hair, see render::HairActor).
   void requestContinuation(vtkProp* prop);
   // The last rendered image (renders first if needed).
   QImage grabImage();
