@@ -1,9 +1,11 @@
 #include "render/hair_actor.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <optional>
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
@@ -19,6 +21,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkProperty.h>
+#include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkShader.h>
 #include <vtkShaderProperty.h>
@@ -169,17 +172,263 @@ LightFrame lightFrame(const glm::vec3& towardLight) {
 
 }  // namespace
 
-// ---- The mapper: per frame, lights into uniforms and shadows refreshed ----
+// ---- Geometry: built on any thread, shown on the GUI thread ----
+
+namespace {
+
+// One drawable part of the hair; the poly data is assembled from the arrays.
+struct StrandArrays {
+  vtkSmartPointer<vtkPoints> points;
+  vtkSmartPointer<vtkCellArray> lines;
+  vtkSmartPointer<vtkFloatArray> tangents, volumeNormals, params;
+  vtkSmartPointer<vtkPolyData> polyData;
+};
+
+}  // namespace
+
+// The strands in interleaved chunks: chunk c holds strands c, c + C, c + 2C,
+// ... of C chunks, so the first chunks drawn are an even sample of the hair.
+struct HairGeometry {
+  std::shared_ptr<const Strands> strands;
+  std::vector<StrandArrays> chunks;
+  // What the shadow term was computed for (no light: lit everywhere), and
+  // whether the strands moved since.
+  std::optional<glm::vec3> shadowLight;
+  HairShading shadowShading;
+  bool shadowStale = false;
+};
+
+namespace {
+
+// The render window asks for more frames a second than this only during an
+// interaction (VTK's interactor sets 15 then, 0.0001 when still).
+constexpr double kInteractiveUpdateRate = 1.0;
+
+glm::vec3 load(const std::vector<float>& a, size_t i) { return {a[3 * i], a[3 * i + 1], a[3 * i + 2]}; }
+
+// A stable per-strand random number in [0, 1).
+float strandRandom(size_t s) {
+  uint32_t x = uint32_t(s) * 747796405u + 2891336453u;
+  x = ((x >> ((x >> 28u) + 4u)) ^ x) * 277803737u;
+  return float((x >> 22u) ^ x) / 4294967296.0f;
+}
+
+bool sameShadowSettings(const HairShading& a, const HairShading& b) {
+  return a.selfShadowing == b.selfShadowing && a.shadowMethod == b.shadowMethod &&
+         a.opacityMapCount == b.opacityMapCount && a.shadowPerStrand == b.shadowPerStrand &&
+         a.shadowCellSize == b.shadowCellSize && a.minShadow == b.minShadow;
+}
+
+// The geometry's shadow term is the one `shading` and a key light from
+// `towardLight` ask for (within 3 degrees).
+bool shadowCurrent(const HairGeometry& geometry, const HairShading& shading, const glm::vec3& towardLight) {
+  if (!shading.selfShadowing) return !geometry.shadowLight;
+  return geometry.shadowLight && !geometry.shadowStale && sameShadowSettings(geometry.shadowShading, shading) &&
+         glm::dot(*geometry.shadowLight, towardLight) >= 0.9986f;
+}
+
+size_t chunkCountFor(size_t strands) {
+  return std::max<size_t>(1, (strands + HairActor::kStrandsPerChunk - 1) / HairActor::kStrandsPerChunk);
+}
+
+// Strands first, first + stride, ... below `strands`.
+size_t takenCount(size_t strands, size_t first, size_t stride) {
+  return strands > first ? (strands - first + stride - 1) / stride : 0;
+}
+
+vtkSmartPointer<vtkFloatArray> newPointArray(const char* name, size_t points) {
+  auto array = vtkSmartPointer<vtkFloatArray>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(3);
+  array->SetNumberOfTuples(vtkIdType(points));
+  return array;
+}
+
+// Polylines of n consecutively numbered points each.
+vtkSmartPointer<vtkCellArray> consecutiveLines(size_t strands, int n) {
+  auto lines = vtkSmartPointer<vtkCellArray>::New();
+  if (n < 2 || strands == 0) return lines;
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  offsets->SetNumberOfValues(vtkIdType(strands + 1));
+  connectivity->SetNumberOfValues(vtkIdType(strands * n));
+  vtkIdType* o = offsets->GetPointer(0);
+  for (size_t s = 0; s <= strands; ++s) o[s] = vtkIdType(s * n);
+  vtkIdType* c = connectivity->GetPointer(0);
+  for (size_t k = 0; k < strands * size_t(n); ++k) c[k] = vtkIdType(k);
+  lines->SetData(offsets, connectivity);
+  return lines;
+}
+
+glm::vec3 centroidOf(const Strands& strands) {
+  const size_t count = strands.points.size() / 3;
+  glm::dvec3 sum(0.0);
+  for (size_t k = 0; k < count; ++k) sum += glm::dvec3(load(strands.points, k));
+  return count ? glm::vec3(sum / double(count)) : glm::vec3(0.0f);
+}
+
+// Parameters of strands first, first + stride, ...: x 0 at the root .. 1 at
+// the tip, y the shadow term (1 without `shadow`), z the strand's random.
+vtkSmartPointer<vtkFloatArray> strandParams(const Strands& strands, size_t first, size_t stride,
+                                            const std::vector<float>& shadow) {
+  const int n = std::max(strands.pointsPerStrand, 0);
+  const size_t taken = takenCount(strands.strandCount(), first, stride);
+  auto params = newPointArray("hairParams", taken * n);
+  float* q = params->GetPointer(0);
+  for (size_t j = 0; j < taken; ++j) {
+    const size_t s = first + j * stride;
+    const float random = strandRandom(s);
+    for (int i = 0; i < n; ++i) {
+      const size_t k = j * n + i;
+      q[3 * k] = n > 1 ? float(i) / float(n - 1) : 0.0f;
+      q[3 * k + 1] = shadow.empty() ? 1.0f : shadow[s * n + i];
+      q[3 * k + 2] = random;
+    }
+  }
+  return params;
+}
+
+void assemble(StrandArrays& arrays) {
+  arrays.polyData = vtkSmartPointer<vtkPolyData>::New();
+  arrays.polyData->SetPoints(arrays.points);
+  arrays.polyData->SetLines(arrays.lines);
+  arrays.polyData->GetPointData()->AddArray(arrays.tangents);
+  arrays.polyData->GetPointData()->SetNormals(arrays.volumeNormals);
+  arrays.polyData->GetPointData()->AddArray(arrays.params);
+}
+
+// Points, tangents (central differences) and volume normals (away from
+// `centroid`: which side of the hair volume a point is on) of strands first,
+// first + stride, ...; `lines` when the layout is known already.
+StrandArrays strandArrays(const Strands& strands, size_t first, size_t stride, const glm::vec3& centroid,
+                          vtkSmartPointer<vtkFloatArray> params, vtkSmartPointer<vtkCellArray> lines = nullptr) {
+  const int n = std::max(strands.pointsPerStrand, 0);
+  const size_t taken = takenCount(strands.strandCount(), first, stride);
+  const size_t count = taken * size_t(n);
+  StrandArrays arrays;
+  arrays.points = vtkSmartPointer<vtkPoints>::New();
+  arrays.points->SetDataTypeToFloat();
+  arrays.points->SetNumberOfPoints(vtkIdType(count));
+  arrays.tangents = newPointArray("hairTangent", count);
+  arrays.volumeNormals = newPointArray("hairVolumeNormal", count);  // set as the point normals
+  arrays.params = std::move(params);
+  arrays.lines = lines ? lines : consecutiveLines(taken, n);
+  float* p = static_cast<vtkFloatArray*>(arrays.points->GetData())->GetPointer(0);
+  float* t = arrays.tangents->GetPointer(0);
+  float* v = arrays.volumeNormals->GetPointer(0);
+  for (size_t j = 0; j < taken; ++j) {
+    const size_t base = (first + j * stride) * n;  // the strand's first point in `strands`
+    for (int i = 0; i < n; ++i) {
+      const size_t k = j * n + i;
+      const glm::vec3 point = load(strands.points, base + i);
+      const glm::vec3 ahead = load(strands.points, base + std::min(i + 1, n - 1));
+      const glm::vec3 behind = load(strands.points, base + std::max(i - 1, 0));
+      glm::vec3 tangent = ahead - behind;
+      const float len = glm::length(tangent);
+      tangent = len > 1e-12f ? tangent / len : glm::vec3(0.0f, -1.0f, 0.0f);
+      glm::vec3 outward = point - centroid;
+      const float outLen = glm::length(outward);
+      outward = outLen > 1e-12f ? outward / outLen : glm::vec3(0.0f);
+      for (int c = 0; c < 3; ++c) {
+        p[3 * k + c] = point[c];
+        t[3 * k + c] = tangent[c];
+        v[3 * k + c] = outward[c];
+      }
+    }
+  }
+  assemble(arrays);
+  return arrays;
+}
+
+// The chunks of `strands` (`layout`'s lines and parameters when given: the
+// same strands moved).
+std::vector<StrandArrays> strandChunks(const Strands& strands, const std::vector<float>& shadow,
+                                       const std::vector<StrandArrays>* layout = nullptr) {
+  const size_t chunkCount = chunkCountFor(strands.strandCount());
+  const glm::vec3 centroid = centroidOf(strands);
+  std::vector<StrandArrays> chunks(chunkCount);
+  ThreadPool::shared().parallelFor(0, chunkCount, 1, [&](size_t begin, size_t end) {
+    for (size_t c = begin; c < end; ++c)
+      chunks[c] = layout ? strandArrays(strands, c, chunkCount, centroid, (*layout)[c].params, (*layout)[c].lines)
+                         : strandArrays(strands, c, chunkCount, centroid, strandParams(strands, c, chunkCount, shadow));
+  });
+  return chunks;
+}
+
+}  // namespace
+
+std::shared_ptr<const HairGeometry> HairActor::prepareGeometry(std::shared_ptr<const Strands> strands,
+                                                               const HairShading& shading,
+                                                               const std::optional<glm::vec3>& towardLight) {
+  auto geometry = std::make_shared<HairGeometry>();
+  geometry->shadowShading = shading;
+  std::vector<float> shadow;
+  if (shading.selfShadowing && towardLight) {
+    shadow = computeSelfShadow(*strands, *towardLight, shading);
+    geometry->shadowLight = *towardLight;
+  }
+  geometry->chunks = strandChunks(*strands, shadow);
+  geometry->strands = std::move(strands);
+  return geometry;
+}
+
+std::shared_ptr<const HairGeometry> HairActor::reshade(const std::shared_ptr<const HairGeometry>& geometry,
+                                                       const HairShading& shading, const glm::vec3& towardLight) {
+  auto reshaded = std::make_shared<HairGeometry>(*geometry);
+  reshaded->shadowShading = shading;
+  reshaded->shadowLight.reset();
+  reshaded->shadowStale = false;
+  std::vector<float> shadow;
+  if (shading.selfShadowing) {
+    shadow = computeSelfShadow(*geometry->strands, towardLight, shading);
+    reshaded->shadowLight = towardLight;
+  }
+  const size_t chunkCount = reshaded->chunks.size();
+  for (size_t c = 0; c < chunkCount; ++c) {
+    StrandArrays& chunk = reshaded->chunks[c];
+    chunk.params = strandParams(*geometry->strands, c, chunkCount, shadow);
+    assemble(chunk);  // the other arrays shared
+  }
+  return reshaded;
+}
+
+size_t HairActor::strandCount(const HairGeometry& geometry) { return geometry.strands->strandCount(); }
+
+// ---- The mapper: per frame, lights into uniforms, the shadow checked, the
+// chunks drawn ----
 
 class HairMapper : public vtkOpenGLPolyDataMapper {
  public:
   static HairMapper* New();
   vtkTypeMacro(HairMapper, vtkOpenGLPolyDataMapper);
-  std::function<void(vtkRenderer*, vtkActor*)> beforeRender;
+  std::function<void(vtkRenderer*)> beforeRender;
+  // One per chunk of the geometry shown (the extra ones, left from a larger
+  // geometry, have an empty input).
+  std::vector<vtkSmartPointer<vtkOpenGLPolyDataMapper>> chunkMappers;
+  size_t chunkCount = 0;
+  size_t nextChunk = 0;       // the first chunk not drawn in this frame yet
+  size_t framesDrawn = 0;
+  double frameBudgetMs = 0.0;  // 0: every chunk in every frame
 
+  // A frame draws chunks from the first until the budget is spent (the
+  // first chunk's wait includes what the frame drew before it); a frame
+  // that does not erase (a continuation, see the header) draws the next
+  // ones.
   void RenderPiece(vtkRenderer* renderer, vtkActor* actor) override {
-    if (beforeRender) beforeRender(renderer, actor);
-    vtkOpenGLPolyDataMapper::RenderPiece(renderer, actor);
+    if (beforeRender) beforeRender(renderer);
+    ++framesDrawn;
+    if (renderer->GetErase()) nextChunk = 0;
+    const auto start = std::chrono::steady_clock::now();
+    while (nextChunk < chunkCount) {
+      chunkMappers[nextChunk++]->RenderPiece(renderer, actor);
+      if (frameBudgetMs <= 0.0) continue;
+      renderer->GetRenderWindow()->WaitForCompletion();  // the drawing is done on the CPU: time it
+      if (std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() >= frameBudgetMs)
+        break;
+    }
+  }
+  void ReleaseGraphicsResources(vtkWindow* window) override {
+    for (auto& m : chunkMappers) m->ReleaseGraphicsResources(window);
+    vtkOpenGLPolyDataMapper::ReleaseGraphicsResources(window);
   }
 };
 vtkStandardNewMacro(HairMapper);
@@ -188,53 +437,64 @@ vtkStandardNewMacro(HairMapper);
 
 struct HairActor::Impl {
   HairShading shading;
-  Strands strands;
-  vtkNew<vtkPolyData> polyData;
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkFloatArray> tangents, volumeNormals, params;
+  std::shared_ptr<const HairGeometry> geometry;
+  vtkNew<vtkPolyData> empty;
   vtkNew<HairMapper> mapper;
   vtkNew<vtkActor> actor;
-  glm::vec3 shadowLight{0.0f};  // direction the shadow term was computed for
-  bool shadowDirty = true;
+  std::optional<glm::vec3> keyLight;
+  std::function<void()> requestReshade;
 
   Impl();
   void installShaders();
   void updateUniforms();
-  void updateGeometry();
-  void updateShadow(const glm::vec3& towardLight);
+  void show(std::shared_ptr<const HairGeometry> shown);
+  void beforeRender(vtkRenderer* renderer);
 };
 
 HairActor::Impl::Impl() {
-  tangents->SetName("hairTangent");
-  tangents->SetNumberOfComponents(3);
-  volumeNormals->SetName("hairVolumeNormal");  // set as the point normals
-  volumeNormals->SetNumberOfComponents(3);
-  params->SetName("hairParams");
-  params->SetNumberOfComponents(3);
-  points->SetDataTypeToFloat();
-  polyData->SetPoints(points);
-  polyData->GetPointData()->AddArray(tangents);
-  polyData->GetPointData()->SetNormals(volumeNormals);
-  polyData->GetPointData()->AddArray(params);
-  mapper->SetInputData(polyData);
-  mapper->ScalarVisibilityOff();
-  mapper->MapDataArrayToVertexAttribute("hairTangentMC", "hairTangent", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
-  mapper->MapDataArrayToVertexAttribute("hairParamsMC", "hairParams", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
-  mapper->beforeRender = [this](vtkRenderer* renderer, vtkActor*) {
-    const LightSet lights = gatherLights(renderer);
-    vtkUniforms* uniforms = actor->GetShaderProperty()->GetFragmentCustomUniforms();
-    uniforms->SetUniformi("hairLightCount", lights.count);
-    uniforms->SetUniform3fv("hairLightDirVC", kMaxLights, lights.directionVC);
-    uniforms->SetUniform3fv("hairLightColor", kMaxLights, lights.color);
-    if (shading.selfShadowing && (shadowDirty || glm::dot(shadowLight, lights.keyTowardLightWorld) < 0.9986f))
-      updateShadow(lights.keyTowardLightWorld);  // refreshed when the key light turned by > 3 degrees
-  };
+  mapper->SetInputData(empty);  // bounds: the first chunk's, an even sample of the hair
+  mapper->beforeRender = [this](vtkRenderer* renderer) { beforeRender(renderer); };
   actor->SetMapper(mapper);
   actor->GetProperty()->SetLineWidth(1.0f);  // wider lines go through a geometry shader that drops our varyings
   actor->GetProperty()->LightingOn();
   actor->PickableOff();
   installShaders();
   updateUniforms();
+}
+
+void HairActor::Impl::beforeRender(vtkRenderer* renderer) {
+  const LightSet lights = gatherLights(renderer);
+  vtkUniforms* uniforms = actor->GetShaderProperty()->GetFragmentCustomUniforms();
+  uniforms->SetUniformi("hairLightCount", lights.count);
+  uniforms->SetUniform3fv("hairLightDirVC", kMaxLights, lights.directionVC);
+  uniforms->SetUniform3fv("hairLightColor", kMaxLights, lights.color);
+  keyLight = lights.keyTowardLightWorld;
+  // While the camera moves the shadow keeps its light: recomputing it for
+  // every frame of an orbit (the key light turns with the camera) is what
+  // made orbiting lag.
+  const bool moving = renderer->GetRenderWindow()->GetDesiredUpdateRate() > kInteractiveUpdateRate;
+  if (moving || !geometry || shadowCurrent(*geometry, shading, *keyLight)) return;
+  if (requestReshade)
+    requestReshade();
+  else
+    show(HairActor::reshade(geometry, shading, *keyLight));
+}
+
+void HairActor::Impl::show(std::shared_ptr<const HairGeometry> shown) {
+  geometry = std::move(shown);
+  const size_t count = geometry ? geometry->chunks.size() : 0;
+  while (mapper->chunkMappers.size() < count) {
+    auto m = vtkSmartPointer<vtkOpenGLPolyDataMapper>::New();
+    m->ScalarVisibilityOff();
+    m->MapDataArrayToVertexAttribute("hairTangentMC", "hairTangent", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+    m->MapDataArrayToVertexAttribute("hairParamsMC", "hairParams", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+    mapper->chunkMappers.push_back(m);
+  }
+  for (size_t c = 0; c < mapper->chunkMappers.size(); ++c)
+    mapper->chunkMappers[c]->SetInputData(c < count ? geometry->chunks[c].polyData.Get() : empty.Get());
+  mapper->chunkCount = count;
+  mapper->nextChunk = 0;
+  mapper->SetInputData(count ? geometry->chunks[0].polyData.Get() : empty.Get());
 }
 
 void HairActor::Impl::installShaders() {
@@ -269,107 +529,47 @@ void HairActor::Impl::updateUniforms() {
   u->SetUniform3fv("hairLightColor", kMaxLights, zeros);
 }
 
-namespace {
-glm::vec3 load(const std::vector<float>& a, size_t i) { return {a[3 * i], a[3 * i + 1], a[3 * i + 2]}; }
-
-// A stable per-strand random number in [0, 1).
-float strandRandom(size_t s) {
-  uint32_t x = uint32_t(s) * 747796405u + 2891336453u;
-  x = ((x >> ((x >> 28u) + 4u)) ^ x) * 277803737u;
-  return float((x >> 22u) ^ x) / 4294967296.0f;
-}
-}  // namespace
-
-// Points, tangents (central differences) and the volume normal (away from
-// the centroid of all the hair: which side of the hair volume a point is on).
-void HairActor::Impl::updateGeometry() {
-  const int n = strands.pointsPerStrand;
-  const size_t count = strands.strandCount() * size_t(std::max(n, 0));
-  points->SetNumberOfPoints(vtkIdType(count));
-  tangents->SetNumberOfTuples(vtkIdType(count));
-  volumeNormals->SetNumberOfTuples(vtkIdType(count));
-  params->SetNumberOfTuples(vtkIdType(count));
-  if (count == 0) {
-    polyData->Modified();
-    return;
-  }
-  glm::dvec3 sum(0.0);
-  for (size_t k = 0; k < count; ++k) sum += glm::dvec3(load(strands.points, k));
-  const glm::vec3 centroid = glm::vec3(sum / double(count));
-  float* p = static_cast<vtkFloatArray*>(points->GetData())->GetPointer(0);
-  std::copy(strands.points.begin(), strands.points.begin() + 3 * count, p);
-  float* t = tangents->GetPointer(0);
-  float* v = volumeNormals->GetPointer(0);
-  float* q = params->GetPointer(0);
-  ThreadPool::shared().parallelFor(0, strands.strandCount(), 256, [&](size_t begin, size_t end) {
-    for (size_t s = begin; s < end; ++s) {
-      const size_t base = s * n;
-      const float random = strandRandom(s);
-      for (int i = 0; i < n; ++i) {
-        const size_t k = base + i;
-        const glm::vec3 ahead = load(strands.points, base + std::min(i + 1, n - 1));
-        const glm::vec3 behind = load(strands.points, base + std::max(i - 1, 0));
-        glm::vec3 tangent = ahead - behind;
-        const float len = glm::length(tangent);
-        tangent = len > 1e-12f ? tangent / len : glm::vec3(0.0f, -1.0f, 0.0f);
-        glm::vec3 outward = load(strands.points, k) - centroid;
-        const float outLen = glm::length(outward);
-        outward = outLen > 1e-12f ? outward / outLen : glm::vec3(0.0f);
-        for (int c = 0; c < 3; ++c) {
-          t[3 * k + c] = tangent[c];
-          v[3 * k + c] = outward[c];
-        }
-        q[3 * k] = n > 1 ? float(i) / float(n - 1) : 0.0f;
-        if (shadowDirty || !shading.selfShadowing) q[3 * k + 1] = 1.0f;
-        q[3 * k + 2] = random;
-      }
-    }
-  });
-  points->Modified();
-  tangents->Modified();
-  volumeNormals->Modified();
-  params->Modified();
-  polyData->Modified();
-}
-
-void HairActor::Impl::updateShadow(const glm::vec3& towardLight) {
-  const std::vector<float> shadow = computeSelfShadow(strands, towardLight, shading);
-  float* q = params->GetPointer(0);
-  for (size_t k = 0; k < shadow.size() && vtkIdType(k) < params->GetNumberOfTuples(); ++k) q[3 * k + 1] = shadow[k];
-  params->Modified();
-  polyData->Modified();
-  shadowLight = towardLight;
-  shadowDirty = false;
-}
-
 HairActor::HairActor() : impl_(std::make_unique<Impl>()) {}
 HairActor::~HairActor() = default;
 
 vtkActor* HairActor::actor() { return impl_->actor; }
 
 void HairActor::setStrands(const Strands& strands) {
-  impl_->strands = strands;
-  const int n = strands.pointsPerStrand;
-  vtkNew<vtkCellArray> lines;
-  if (n >= 2) {
-    vtkNew<vtkIdTypeArray> offsets, connectivity;
-    offsets->SetNumberOfValues(vtkIdType(strands.strandCount() + 1));
-    connectivity->SetNumberOfValues(vtkIdType(strands.strandCount() * n));
-    for (size_t s = 0; s <= strands.strandCount(); ++s) offsets->SetValue(vtkIdType(s), vtkIdType(s * n));
-    for (size_t k = 0; k < strands.strandCount() * n; ++k) connectivity->SetValue(vtkIdType(k), vtkIdType(k));
-    lines->SetData(offsets, connectivity);
-  }
-  impl_->polyData->SetLines(lines);
-  impl_->shadowDirty = true;
-  impl_->updateGeometry();
+  impl_->show(prepareGeometry(std::make_shared<const Strands>(strands), impl_->shading, impl_->keyLight));
 }
 
+// The shadow stays until the next still frame recomputes it (no flicker to
+// lit and back while the strands move).
 void HairActor::updatePositions(const std::vector<float>& points) {
-  if (points.size() != impl_->strands.points.size()) return;
-  impl_->strands.points = points;
-  impl_->shadowDirty = true;
-  impl_->updateGeometry();
+  const std::shared_ptr<const HairGeometry>& old = impl_->geometry;
+  if (!old || points.size() != old->strands->points.size()) return;
+  auto strands = std::make_shared<Strands>();
+  strands->pointsPerStrand = old->strands->pointsPerStrand;
+  strands->points = points;
+  auto moved = std::make_shared<HairGeometry>(*old);
+  moved->shadowStale = true;
+  moved->chunks = strandChunks(*strands, {}, &old->chunks);
+  moved->strands = std::move(strands);
+  impl_->show(std::move(moved));
 }
+
+void HairActor::showGeometry(std::shared_ptr<const HairGeometry> geometry) { impl_->show(std::move(geometry)); }
+
+std::shared_ptr<const HairGeometry> HairActor::geometry() const { return impl_->geometry; }
+
+std::optional<glm::vec3> HairActor::keyLight() const { return impl_->keyLight; }
+
+glm::vec3 HairActor::keyLightOf(vtkRenderer* renderer) { return gatherLights(renderer).keyTowardLightWorld; }
+
+void HairActor::setReshadeRequest(std::function<void()> request) { impl_->requestReshade = std::move(request); }
+
+bool HairActor::hasMoreToDraw() const {
+  return impl_->actor->GetVisibility() && impl_->mapper->nextChunk < impl_->mapper->chunkCount;
+}
+
+size_t HairActor::framesDrawn() const { return impl_->mapper->framesDrawn; }
+
+void HairActor::setFrameBudget(double milliseconds) { impl_->mapper->frameBudgetMs = milliseconds; }
 
 void HairActor::setColors(const glm::vec3& root, const glm::vec3& tip) {
   impl_->shading.rootColor = root;
@@ -378,19 +578,10 @@ void HairActor::setColors(const glm::vec3& root, const glm::vec3& tip) {
   impl_->actor->Modified();
 }
 
+// A change of the shadow settings is seen by the next frame (shadowCurrent).
 void HairActor::setShading(const HairShading& shading) {
-  const bool shadowChanged = shading.selfShadowing != impl_->shading.selfShadowing ||
-                             shading.shadowMethod != impl_->shading.shadowMethod ||
-                             shading.opacityMapCount != impl_->shading.opacityMapCount ||
-                             shading.shadowPerStrand != impl_->shading.shadowPerStrand ||
-                             shading.shadowCellSize != impl_->shading.shadowCellSize ||
-                             shading.minShadow != impl_->shading.minShadow;
   impl_->shading = shading;
   impl_->updateUniforms();
-  if (shadowChanged) {
-    impl_->shadowDirty = true;
-    impl_->updateGeometry();
-  }
   impl_->actor->Modified();
 }
 

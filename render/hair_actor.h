@@ -16,8 +16,22 @@
 //    in front of it, interpolated between the two maps around a vertex).
 // Tangents and the shadow term are custom vertex attributes; the scene's
 // lights (camera, head or scene lights) are read every frame.
+//
+// The arrays it draws (HairGeometry) are built by static functions that touch
+// no VTK object already shown, so an editor can build them on a worker thread
+// and hand them over with showGeometry(), a pointer swap. The strands are
+// drawn in interleaved chunks (each an even sample of the hair): with a frame
+// budget, a frame draws chunks until the budget is spent and frames that do
+// not erase (the renderer's Erase off, the other props hidden) draw the
+// rest over it, so no frame holds the GUI up for long and the finished image
+// is the one a single frame draws (screen-door transparency needs no order).
+// While the camera moves (the render window's desired update rate above the
+// still rate, as VTK's interactor sets it) the shadow keeps its light.
 
+#include <cstddef>
+#include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -25,6 +39,7 @@
 #include "core/hair/strands.h"
 
 class vtkActor;
+class vtkRenderer;
 
 namespace mq::render {
 
@@ -56,8 +71,16 @@ struct HairShading {
   int opacityMapCount = 32;          // OpacityMaps: slices from the hair's front to its back
 };
 
+// The arrays for one set of strands (points, lines, tangents, volume normals,
+// root-to-tip/shadow/random parameters, and the subset drawn while the
+// camera moves). Immutable once built; shared between threads.
+struct HairGeometry;
+
 class HairActor {
  public:
+  // Strands in a chunk: 10-20 ms of software GL on a busy machine.
+  static constexpr size_t kStrandsPerChunk = 200;
+
   HairActor();
   ~HairActor();
   HairActor(const HairActor&) = delete;
@@ -66,11 +89,46 @@ class HairActor {
   // The prop to add to a SceneView (addProp) or any vtkRenderer.
   vtkActor* actor();
 
-  // Rebuilds the polylines for `strands` (topology and points).
+  // Rebuilds the polylines for `strands` (topology and points) on the
+  // calling thread.
   void setStrands(const Strands& strands);
   // New positions for the same strands (laid out like Strands::points);
   // tangents and shadows follow. Ignored when the size does not match.
   void updatePositions(const std::vector<float>& points);
+
+  // ---- Building off the GUI thread ----
+  // The arrays for `strands`, self-shadowed for a key light from
+  // `towardLight` (world) when given, else lit until reshaded. Thread-safe.
+  static std::shared_ptr<const HairGeometry> prepareGeometry(std::shared_ptr<const Strands> strands,
+                                                             const HairShading& shading,
+                                                             const std::optional<glm::vec3>& towardLight);
+  // `geometry` with its shadow term recomputed for `towardLight` and
+  // `shading` (the other arrays shared). Thread-safe.
+  static std::shared_ptr<const HairGeometry> reshade(const std::shared_ptr<const HairGeometry>& geometry,
+                                                     const HairShading& shading, const glm::vec3& towardLight);
+  // Draws `geometry` from the next frame on (GUI thread; a pointer swap).
+  void showGeometry(std::shared_ptr<const HairGeometry> geometry);
+  std::shared_ptr<const HairGeometry> geometry() const;
+  static size_t strandCount(const HairGeometry& geometry);
+  // The key light's direction (world) in the last frame drawn (none before).
+  std::optional<glm::vec3> keyLight() const;
+  // The direction (world) toward the light the hair is shadowed from, with
+  // `renderer`'s lights and camera as they are now.
+  static glm::vec3 keyLightOf(vtkRenderer* renderer);
+  // Called during a frame whose shadow is stale (the key light turned by
+  // more than 3 degrees, the shadow settings or the strands changed) while
+  // the camera is still: the owner reshades off the GUI thread and calls
+  // showGeometry(). Without it the actor reshades during the frame.
+  void setReshadeRequest(std::function<void()> request);
+  // Frames stop adding chunks once the hair took this long (0, the
+  // default: every frame draws all of it, as offscreen images need).
+  void setFrameBudget(double milliseconds);
+  // The last frame left chunks to draw: render frames that do not erase,
+  // with the other props hidden, until it is false.
+  bool hasMoreToDraw() const;
+  // Frames that drew the hair so far: one that did not (the hair out of
+  // view, culled) must not be continued.
+  size_t framesDrawn() const;
   void setColors(const glm::vec3& root, const glm::vec3& tip);
   void setShading(const HairShading& shading);
   const HairShading& shading() const;

@@ -20,6 +20,7 @@
 #include "ui/document/document_loader.h"
 #include "ui/document/editor_document.h"
 #include "ui/garment/garment_tool.h"
+#include "ui/hair/hair_tool.h"
 #include "ui/main_window.h"
 #include "ui/theme.h"
 #include "ui/viewport/vtk_viewport_widget.h"
@@ -154,6 +155,11 @@ int main(int argc, char** argv) {
           if (!savePath.isEmpty() && !window.saveDocument(savePath, &error))
             std::fprintf(stderr, "mannequin: %s\n", qPrintable(error));
           if (!takeScreenshot) return;
+          // The hair grows on a worker: the picture shows it grown.
+          if (auto* hairTool = window.findChild<mq::ui::HairTool*>()) {
+            hairTool->finishBackgroundWork();
+            hairTool->setDrawingInParts(false);
+          }
           QTimer::singleShot(400, &window, [&window, screenshotPath, ok] { saveScreenshotAndQuit(window, screenshotPath, ok); });
         },
         Qt::SingleShotConnection);

@@ -459,7 +459,8 @@ class EditorSmokeTest : public QObject {
 
 };
 
-int runHairToolTest(int argc, char** argv);  // hair_tool_test.cpp
+int runHairToolTest(int argc, char** argv);   // hair_tool_test.cpp
+int runHairStallTest(int argc, char** argv);  // hair_stall_test.cpp
 
 int main(int argc, char** argv) {
   // The viewport bridge needs its GL format before QApplication exists.
@@ -469,6 +470,8 @@ int main(int argc, char** argv) {
   QApplication::setApplicationName("gui_smoke");
   // `mannequin_gui_tests hair [qtest options]`: the hair tool's test.
   if (argc > 1 && std::string(argv[1]) == "hair") return runHairToolTest(argc - 1, argv + 1);
+  // `mannequin_gui_tests hair-stall`: the event loop's worst stall during hair edits and an orbit.
+  if (argc > 1 && std::string(argv[1]) == "hair-stall") return runHairStallTest(argc - 1, argv + 1);
   mq::ui::exitAfter(120, "gui_smoke");  // never hang
   EditorSmokeTest test;
   return QTest::qExec(&test, argc, argv);

@@ -17,8 +17,10 @@
 #include <QLabel>
 #include <QMouseEvent>
 #include <QListWidget>
+#include <QLocale>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QStandardItemModel>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -94,6 +96,9 @@ class HairToolTest : public QObject {
   QPoint toWidget(const glm::vec3& world) { return mq::ui::toWidget(window_, world); }
 
   void renderNow() { mq::ui::renderNow(window_); }
+  // Edits regrow the hair on a worker thread: the groom read next must be
+  // the edited one.
+  void waitForHair() { tool_->finishBackgroundWork(); }
 
 
   // State after each step, compared by undo/redo and the reopen.
@@ -109,6 +114,7 @@ class HairToolTest : public QObject {
     tool_ = window_->findChild<HairTool*>();
     QVERIFY(tool_ != nullptr);
     QVERIFY(dir_.isValid());
+    tool_->setDisplayStrandLimit(HairTool::kDefaultDisplayStrandLimit);  // a setting kept between runs
   }
 
   void cleanupTestCase() {
@@ -119,6 +125,7 @@ class HairToolTest : public QObject {
   void openingAHairSceneGrooms() {
     QString error;
     QVERIFY2(window_->openFileNow(MANNEQUIN_SOURCE_DIR "/resources/scenes/hair_bob.json", &error), qPrintable(error));
+    waitForHair();
     QVERIFY2(tool_->hasHair(), qPrintable(tool_->lastError()));
     QCOMPARE(QString::fromStdString(tool_->style().name), QString("bob"));
     QVERIFY(tool_->strandCount() > 1000);
@@ -137,6 +144,7 @@ class HairToolTest : public QObject {
     const int commands = doc()->undoStack()->index();
     QSignalSpy regrown(tool_, &HairTool::hairRegrown);
     QTest::mouseClick(panel()->addSourceButton(), Qt::LeftButton);
+    waitForHair();
     QCOMPARE(tool_->style().primitives.sources.size(), sources + 1);
     QCOMPARE(panel()->primitiveList()->count(), rows + 1);
     QCOMPARE(doc()->undoStack()->index(), commands + 1);
@@ -156,6 +164,7 @@ class HairToolTest : public QObject {
     QVERIFY(std::abs(strength->value() - tool_->style().primitives.sources[index].strength) < 1e-3);
     const int commands = doc()->undoStack()->index();
     strength->setValue(2.5);  // as if typed + Enter
+    waitForHair();
     QCOMPARE(tool_->style().primitives.sources[index].strength, 2.5f);
     QCOMPARE(doc()->undoStack()->index(), commands + 1);
     strengthened_ = guidePoints(*tool_);
@@ -166,6 +175,7 @@ class HairToolTest : public QObject {
     const int index = tool_->selectedPrimitive().index;
     const int commands = doc()->undoStack()->index();
     panel()->positionBox(0)->setValue(0.08);  // to the character's left of the face
+    waitForHair();
     QCOMPARE(tool_->style().primitives.sources[index].position.x, 0.08f);
     QCOMPARE(doc()->undoStack()->index(), commands + 1);
     moved_ = guidePoints(*tool_);
@@ -177,25 +187,34 @@ class HairToolTest : public QObject {
   void undoAndRedoGiveTheStrandsBack() {
     QUndoStack* undo = doc()->undoStack();
     undo->undo();  // position
+    waitForHair();
     QCOMPARE(guidePoints(*tool_), strengthened_);
     undo->undo();  // strength
+    waitForHair();
     QCOMPARE(guidePoints(*tool_), added_);
     QVERIFY(std::abs(panel()->strengthBox()->value() - 0.3) < 1e-3);  // the panel follows
     undo->undo();  // the source
+    waitForHair();
     QCOMPARE(guidePoints(*tool_), opened_);
     QCOMPARE(styleText(*tool_), openedStyle_);
     undo->redo();
     undo->redo();
     undo->redo();
+    waitForHair();
     QCOMPARE(guidePoints(*tool_), moved_);
     QCOMPARE(styleText(*tool_), movedStyle_);
   }
 
   void opacityShadowMapsCheckboxSwitchesTheShadowing() {
     QVERIFY(!tool_->opacityShadowMaps());
+    // A frame with a stale shadow asks the worker for the new one.
+    renderNow();
+    waitForHair();
     const QImage counted = window_->viewport()->grabFramebuffer();
     panel()->shadowMapsBox()->setChecked(true);
     QVERIFY(tool_->opacityShadowMaps());
+    renderNow();
+    waitForHair();
     const QImage mapped = window_->viewport()->grabFramebuffer();
     int differing = 0;
     for (int y = 0; y < counted.height(); ++y)
@@ -223,6 +242,7 @@ class HairToolTest : public QObject {
     for (int step = 1; step <= 4; ++step)
       sendMouse(viewport, QEvent::MouseMove, at + QPoint(0, -8 * step), Qt::NoButton, Qt::LeftButton);
     sendMouse(viewport, QEvent::MouseButtonRelease, at + QPoint(0, -32), Qt::LeftButton, Qt::NoButton);
+    waitForHair();
     QCOMPARE(doc()->undoStack()->index(), commands + 1);  // one step for the drag
     const glm::vec3 after = tool_->style().primitives.sources[source.index].position;
     QVERIFY2(after.y > before.y + 0.01f, "dragging the handle up did not raise the source");
@@ -230,8 +250,10 @@ class HairToolTest : public QObject {
     QVERIFY2(maxDifference(moved_, dragged) > 1e-3f, "the guides did not follow the dragged source");
     QCOMPARE(tool_->groom()->countPointsInside(), size_t(0));
     doc()->undoStack()->undo();
+    waitForHair();
     QCOMPARE(guidePoints(*tool_), moved_);
     doc()->undoStack()->redo();
+    waitForHair();
     QCOMPARE(guidePoints(*tool_), dragged);
     moved_ = dragged;
     movedStyle_ = styleText(*tool_);
@@ -246,6 +268,7 @@ class HairToolTest : public QObject {
     QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));
     QVERIFY(!tool_->hasHair());
     QVERIFY2(window_->openFileNow(path, &error), qPrintable(error));
+    waitForHair();
     QVERIFY2(tool_->hasHair(), qPrintable(tool_->lastError()));
     QCOMPARE(styleText(*tool_), movedStyle_);
     QCOMPARE(guidePoints(*tool_), moved_);  // deterministic groom from the saved style
@@ -267,11 +290,13 @@ class HairToolTest : public QObject {
     HairStyle sparse = tool_->style();
     sparse.density = 20.0f;
     tool_->editStyle(sparse, "Hair density");
+    waitForHair();
     taggedRoots_ = rootPoints(*tool_);
     QVERIFY(taggedRoots_.size() / 3 < 30000);
     const int commands = doc()->undoStack()->index();
 
     mode->setCurrentIndex(HairPanel::ScalpBoneCone);
+    waitForHair();
     QCOMPARE(tool_->scalp().kind, ScalpRegion::Kind::BoneCone);
     QCOMPARE(doc()->undoStack()->index(), commands + 1);
     QCOMPARE(panel()->scalpBoneCombo()->currentText(), QString::fromStdString(tool_->scalp().bone));
@@ -284,6 +309,7 @@ class HairToolTest : public QObject {
 
     const float wideAngle = tool_->scalp().angleDegrees;
     panel()->scalpAngleBox()->setValue(wideAngle / 2);  // as if typed + Enter
+    waitForHair();
     QCOMPARE(tool_->scalp().angleDegrees, wideAngle / 2);
     QCOMPARE(doc()->undoStack()->index(), commands + 2);
     narrowConeRoots_ = rootPoints(*tool_);
@@ -299,13 +325,16 @@ class HairToolTest : public QObject {
   void undoGivesThePreviousScalpBack() {
     QUndoStack* undo = doc()->undoStack();
     undo->undo();  // angle
+    waitForHair();
     QCOMPARE(rootPoints(*tool_), wideConeRoots_);
     undo->undo();  // tagged -> cone
+    waitForHair();
     QCOMPARE(tool_->scalp().kind, ScalpRegion::Kind::Tagged);
     QCOMPARE(panel()->scalpModeCombo()->currentIndex(), int(HairPanel::ScalpTagged));
     QCOMPARE(rootPoints(*tool_), taggedRoots_);
     undo->redo();
     undo->redo();
+    waitForHair();
     QCOMPARE(rootPoints(*tool_), narrowConeRoots_);
     QCOMPARE(panel()->scalpModeCombo()->currentIndex(), int(HairPanel::ScalpBoneCone));
   }
@@ -339,6 +368,7 @@ class HairToolTest : public QObject {
     QVERIFY2(window_->saveDocument(path, &error), qPrintable(error));
     QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));
     QVERIFY2(window_->openFileNow(path, &error), qPrintable(error));
+    waitForHair();
     QVERIFY2(tool_->hasHair(), qPrintable(tool_->lastError()));
     QCOMPARE(tool_->scalp().kind, ScalpRegion::Kind::BoneCone);
     QCOMPARE(tool_->scalp().bone, saved.bone);
@@ -356,6 +386,7 @@ class HairToolTest : public QObject {
     tool_->dock()->show();
     tool_->dock()->raise();
     QTest::mouseClick(panel()->addVortexButton(), Qt::LeftButton);
+    waitForHair();
     QApplication::processEvents();
     renderNow();
     const PrimitiveRef vortex{PrimitiveRef::Vortex, int(tool_->style().primitives.vortices.size()) - 1};
@@ -373,6 +404,7 @@ class HairToolTest : public QObject {
     for (int step = 1; step <= 4; ++step)
       sendMouse(viewport, QEvent::MouseMove, at + QPoint(10 * step, 0), Qt::NoButton, Qt::LeftButton);
     sendMouse(viewport, QEvent::MouseButtonRelease, at + QPoint(40, 0), Qt::LeftButton, Qt::NoButton);
+    waitForHair();
     QCOMPARE(doc()->undoStack()->index(), commands + 1);  // one step for the drag
     const Vortex after = tool_->style().primitives.vortices[vortex.index];
     QCOMPARE(after.position, before.position);  // the tip turns the axis, it does not move the vortex
@@ -385,8 +417,53 @@ class HairToolTest : public QObject {
     const std::vector<float> guidesAfter = guidePoints(*tool_);
     QVERIFY2(maxDifference(guidesBefore, guidesAfter) > 1e-3f, "the guides did not follow the turned axis");
     doc()->undoStack()->undo();
+    waitForHair();
     QCOMPARE(tool_->style().primitives.vortices[vortex.index].axis, before.axis);
     QCOMPARE(guidePoints(*tool_), guidesBefore);
+  }
+
+  // Each typed value is an undo step of its own, even two in a row on the
+  // same field; arrow clicks in a row on one field merge into one step.
+  void eachTypedValueIsOneUndoStep() {
+    QDoubleSpinBox* density = panel()->densityBox();
+    QUndoStack* undo = doc()->undoStack();
+    const float before = tool_->style().density;
+    const int commands = undo->index();
+    typeValue(density, before + 10.0);
+    typeValue(density, before + 20.0);
+    QCOMPARE(tool_->style().density, before + 20.0f);
+    QCOMPARE(undo->index(), commands + 2);
+    undo->undo();
+    QCOMPARE(tool_->style().density, before + 10.0f);
+    QTest::keyClick(density, Qt::Key_Up);
+    QTest::keyClick(density, Qt::Key_Up);
+    QCOMPARE(tool_->style().density, before + 10.0f + 2.0f * float(density->singleStep()));
+    QCOMPARE(undo->index(), commands + 2);  // the two clicks: one step
+    undo->undo();
+    undo->undo();
+    waitForHair();
+    QCOMPARE(tool_->style().density, before);
+    QCOMPARE(undo->index(), commands);
+  }
+
+  // The viewport's strand cap is a setting in the dock, which says how many
+  // of the document's strands it shows.
+  void theDisplayLimitCapsTheViewportAndSaysSo() {
+    const QLocale locale;
+    const size_t wanted = tool_->documentStrandCount();
+    QVERIFY(wanted > 2000);
+    QSpinBox* limit = panel()->displayLimitBox();
+    const int commands = doc()->undoStack()->index();
+    limit->setValue(2000);
+    waitForHair();
+    QCOMPARE(tool_->displayStrandLimit(), size_t(2000));
+    QVERIFY2(tool_->strandCount() <= 2000 && tool_->strandCount() > 1500, qPrintable(QString::number(tool_->strandCount())));
+    QCOMPARE(panel()->displayCountLabel()->text(),
+             QString("Displaying %1 of %2 strands").arg(locale.toString(2000), locale.toString(qulonglong(wanted))));
+    QCOMPARE(doc()->undoStack()->index(), commands);  // an editor setting, not a document edit
+    limit->setValue(int(HairTool::kDefaultDisplayStrandLimit));
+    waitForHair();
+    QCOMPARE(tool_->strandCount(), std::min(wanted, HairTool::kDefaultDisplayStrandLimit));
   }
 };
 

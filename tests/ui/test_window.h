@@ -10,6 +10,7 @@
 #include <thread>
 
 #include <QApplication>
+#include <QDoubleSpinBox>
 #include <QMouseEvent>
 #include <QTest>
 #include <glm/glm.hpp>
@@ -54,6 +55,13 @@ inline void sendMouse(QWidget* w, QEvent::Type type, QPoint pos, Qt::MouseButton
                       Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
   QMouseEvent event(type, QPointF(pos), w->mapToGlobal(QPointF(pos)), button, buttons, modifiers);
   QApplication::sendEvent(w, &event);
+}
+
+// Types `value` into a spin box and presses Enter, as a user does.
+inline void typeValue(QDoubleSpinBox* box, double value) {
+  box->selectAll();
+  QTest::keyClicks(box, QString::number(value));
+  QTest::keyClick(box, Qt::Key_Return);
 }
 
 // Widget coordinates of a world point in the viewport.

@@ -9,8 +9,10 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
+#include <QLocale>
 #include <QPushButton>
 #include <QSignalBlocker>
+#include <QSpinBox>
 #include <QStandardItemModel>
 #include <QVBoxLayout>
 
@@ -164,7 +166,21 @@ HairPanel::HairPanel(HairTool* tool, QWidget* parent) : QWidget(parent), tool_(t
   colors->addWidget(rootColor_);
   colors->addWidget(tipColor_);
   strandForm->addRow(tr("Colour root / tip"), colors);
+  displayLimit_ = new QSpinBox;
+  displayLimit_->setRange(1000, int(HairGroom::kMaxStrands));
+  displayLimit_->setSingleStep(5000);
+  displayLimit_->setGroupSeparatorShown(true);
+  displayLimit_->setKeyboardTracking(false);
+  displayLimit_->setToolTip(tr("The viewport grows at most this many strands (an editor setting, not saved in the "
+                               "document; the document keeps its density). Software OpenGL draws about 40,000 "
+                               "fluidly."));
+  displayCount_ = new QLabel;
+  strandForm->addRow(tr("Display at most"), displayLimit_);
+  strandForm->addRow(displayCount_);
   layout->addWidget(strands);
+  connect(displayLimit_, &QSpinBox::valueChanged, this, [this](int limit) {
+    if (!refreshing_) tool_->setDisplayStrandLimit(size_t(limit));
+  });
   connect(density_, &QDoubleSpinBox::valueChanged, this,
           [this](double v) { editField(tr("Hair density"), kDensity, [&](HairStyle& s) { s.density = float(v); }); });
   connect(length_, &QDoubleSpinBox::valueChanged, this,
@@ -206,6 +222,8 @@ HairPanel::HairPanel(HairTool* tool, QWidget* parent) : QWidget(parent), tool_(t
   layout->addStretch(1);
 
   connect(tool_, &HairTool::styleChanged, this, &HairPanel::refresh);
+  // Not a full refresh: the hair arrives while the user may be typing.
+  connect(tool_, &HairTool::hairRegrown, this, &HairPanel::refreshStrandCounts);
   connect(tool_, &HairTool::selectionChanged, this, &HairPanel::refresh);
   connect(tool_, &HairTool::scalpChanged, this, &HairPanel::refreshScalp);
   refresh();
@@ -342,13 +360,17 @@ void HairPanel::refreshScalp() {
   for (QWidget* w : std::initializer_list<QWidget*>{scalpBone_, scalpAxisPreset_, scalpAxis_[0], scalpAxis_[1],
                                                     scalpAxis_[2], scalpAngle_})
     w->setEnabled(hair && cone);
-  if (!hair)
+  refreshScalpStatus();
+  refreshing_ = wasRefreshing;
+}
+
+void HairPanel::refreshScalpStatus() {
+  if (!tool_->hasHair())
     scalpStatus_->setText(tr("Pick a hairstyle first."));
   else if (!tool_->lastError().isEmpty())
     scalpStatus_->setText(tool_->lastError());
   else
     scalpStatus_->setText(tr("%1 roots on %2 cm²").arg(tool_->strandCount()).arg(tool_->scalpArea() * 1e4f, 0, 'f', 0));
-  refreshing_ = wasRefreshing;
 }
 
 QDoubleSpinBox* HairPanel::addSpin(double min, double max, double step, int decimals) {
@@ -357,6 +379,9 @@ QDoubleSpinBox* HairPanel::addSpin(double min, double max, double step, int deci
   spin->setSingleStep(step);
   spin->setDecimals(decimals);
   spin->setKeyboardTracking(false);
+  // A typed value (Enter or leaving the field) ends the undo step: the next
+  // one is a step of its own, while arrow clicks in a row merge.
+  connect(spin, &QDoubleSpinBox::editingFinished, this, [this] { lastFieldKey_ = 0; });
   return spin;
 }
 
@@ -459,13 +484,32 @@ void HairPanel::refresh() {
     }
     paintSwatch(rootColor_, s.rootColor);
     paintSwatch(tipColor_, s.tipColor);
-    status_->setText(tr("%1 strands, %2 flow primitives").arg(tool_->strandCount()).arg(list_->count()));
-  } else {
-    status_->setText(tool_->lastError().isEmpty() ? tr("No hair: pick a hairstyle.") : tool_->lastError());
   }
+  {
+    QSignalBlocker block(displayLimit_);
+    displayLimit_->setValue(int(tool_->displayStrandLimit()));
+  }
+  refreshStrandCounts();
   refreshPrimitiveFields();
   refreshScalp();
   refreshing_ = false;
+}
+
+// The counts of the hair on screen (it follows the edits once regrown).
+void HairPanel::refreshStrandCounts() {
+  if (tool_->hasHair()) {
+    status_->setText(tr("%1 strands, %2 flow primitives").arg(tool_->strandCount()).arg(list_->count()));
+    const size_t wanted = tool_->documentStrandCount();
+    const size_t shown = std::min(wanted, tool_->displayStrandLimit());
+    const QLocale locale;
+    displayCount_->setText(shown < wanted ? tr("Displaying %1 of %2 strands")
+                                                .arg(locale.toString(qulonglong(shown)), locale.toString(qulonglong(wanted)))
+                                          : tr("Displaying all %1 strands").arg(locale.toString(qulonglong(wanted))));
+  } else {
+    status_->setText(tool_->lastError().isEmpty() ? tr("No hair: pick a hairstyle.") : tool_->lastError());
+    displayCount_->clear();
+  }
+  refreshScalpStatus();
 }
 
 void HairPanel::refreshPrimitiveFields() {

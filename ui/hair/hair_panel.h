@@ -19,6 +19,7 @@ class QDoubleSpinBox;
 class QLabel;
 class QListWidget;
 class QPushButton;
+class QSpinBox;
 
 namespace mq::ui {
 
@@ -36,8 +37,11 @@ class HairPanel : public QWidget {
   QPushButton* addSourceButton() const { return addSource_; }
   QPushButton* addVortexButton() const { return addVortex_; }
   QDoubleSpinBox* strengthBox() const { return strength_; }
+  QDoubleSpinBox* densityBox() const { return density_; }
   QDoubleSpinBox* positionBox(int axis) const { return position_[axis]; }
   QCheckBox* shadowMapsBox() const { return shadowMaps_; }
+  QSpinBox* displayLimitBox() const { return displayLimit_; }
+  QLabel* displayCountLabel() const { return displayCount_; }
   // Scalp group: mode (ScalpMode order), bone, axis preset, axis, angle.
   enum ScalpMode { ScalpTagged, ScalpBoneCone, ScalpAutomatic };
   QComboBox* scalpModeCombo() const { return scalpMode_; }
@@ -49,8 +53,10 @@ class HairPanel : public QWidget {
 
  private:
   void refresh();
+  void refreshStrandCounts();
   void refreshPrimitiveFields();
   void refreshScalp();
+  void refreshScalpStatus();
   QWidget* makeScalpGroup();
   void chooseScalpMode(int mode);
   // Applies `change` to a copy of the scalp region and pushes it (merging
@@ -75,6 +81,8 @@ class HairPanel : public QWidget {
   QDoubleSpinBox* position_[3];
   QDoubleSpinBox *density_, *length_, *clumping_, *frizz_;
   QPushButton *rootColor_, *tipColor_;
+  QSpinBox* displayLimit_;
+  QLabel* displayCount_;
   QCheckBox *handles_, *simulate_, *shadowMaps_;
   QPushButton* bake_;
   QComboBox *scalpMode_, *scalpBone_, *scalpAxisPreset_;

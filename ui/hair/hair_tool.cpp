@@ -6,8 +6,10 @@
 
 #include <QCoreApplication>
 #include <QDockWidget>
+#include <QLabel>
 #include <QMouseEvent>
 #include <QProgressDialog>
+#include <QSettings>
 #include <QStatusBar>
 #include <QUndoStack>
 
@@ -31,20 +33,7 @@ namespace mq::ui {
 
 namespace {
 
-// The viewport grooms at most this many strands (the document may ask for
-// up to 150,000; software GL draws fewer interactively).
-constexpr size_t kViewportMaxStrands = 40000;
-
-bool rootsDiffer(const HairStyle& a, const HairStyle& b) {
-  return a.density != b.density || a.maxStrands != b.maxStrands || a.guideCount != b.guideCount ||
-         a.seed != b.seed || a.pointsPerStrand != b.pointsPerStrand;
-}
-
-bool onlyColorsDiffer(HairStyle a, const HairStyle& b) {
-  a.rootColor = b.rootColor;
-  a.tipColor = b.tipColor;
-  return toJson(a) == toJson(b);
-}
+const char* const kDisplayStrandLimitKey = "hair/displayStrandLimit";
 
 glm::quat rotationOf(const glm::mat4& m) {
   return glm::normalize(glm::quat_cast(glm::mat3(glm::normalize(glm::vec3(m[0])), glm::normalize(glm::vec3(m[1])),
@@ -54,9 +43,38 @@ glm::quat rotationOf(const glm::mat4& m) {
 }  // namespace
 
 HairTool::HairTool(MainWindow* window) : QObject(window), window_(window) {
+  displayStrandLimit_ = std::clamp<size_t>(
+      QSettings().value(kDisplayStrandLimitKey, qulonglong(kDefaultDisplayStrandLimit)).toULongLong(), 1,
+      HairGroom::kMaxStrands);
+  worker_ = new HairWorker(this);
+  worker_->onRegrown = [this](const HairWorker::Regrown& result) { onRegrown(result); };
+  worker_->onReshaded = [this](const std::shared_ptr<const render::HairGeometry>& source,
+                               const std::shared_ptr<const render::HairGeometry>& reshaded) {
+    if (actor_->geometry() != source) return;  // new strands came meanwhile
+    actor_->showGeometry(reshaded);
+    window_->viewport()->requestRender();
+  };
+  worker_->onBusyChanged = [this](bool busy) { onBusyChanged(busy); };
+  busyLabel_ = new QLabel(tr("Updating hair…"));
+  busyLabel_->setObjectName("HairBusyLabel");
+  busyLabel_->hide();
+  window->statusBar()->addPermanentWidget(busyLabel_);
   actor_ = std::make_unique<render::HairActor>();
   actor_->setVisible(false);
+  // Called during a frame: the frame keeps the shadow it has, the worker
+  // computes the new one (one at a time; the frame after asks again if the
+  // light moved on meanwhile).
+  actor_->setReshadeRequest([this] {
+    if (!worker_->busy() && actor_->geometry() && actor_->keyLight())
+      worker_->reshade(actor_->geometry(), actor_->shading(), *actor_->keyLight());
+  });
   window->sceneView()->addProp(actor_->actor());
+  actor_->setFrameBudget(kHairFrameBudgetMs);
+  connect(window->viewport(), &VtkViewportWidget::frameRendered, this, [this] {
+    lastFrameDrewHair_ = actor_->framesDrawn() != hairFramesSeen_;
+    hairFramesSeen_ = actor_->framesDrawn();
+    if (hairDrawingPending()) window_->viewport()->requestContinuation(actor_->actor());
+  });
   handles_ = std::make_unique<HairHandles>(window->sceneView()->renderer());
   panel_ = new HairPanel(this);
   dock_ = new QDockWidget(tr("Hair"), window);
@@ -69,14 +87,34 @@ HairTool::HairTool(MainWindow* window) : QObject(window), window_(window) {
   onCharacterReplaced();
 }
 
-HairTool::~HairTool() = default;
+// The callbacks reach into this tool: drop what is still under way.
+HairTool::~HairTool() {
+  worker_->cancel();
+  worker_->finish();
+}
 
 size_t HairTool::strandCount() const { return groom_ ? groom_->strands().strandCount() : 0; }
+
+bool HairTool::backgroundWorkPending() const { return worker_->busy(); }
+
+void HairTool::finishBackgroundWork() { worker_->finish(); }
+
+void HairTool::onBusyChanged(bool busy) { busyLabel_->setVisible(busy); }
+
+bool HairTool::hairDrawingPending() const { return lastFrameDrewHair_ && actor_->hasMoreToDraw(); }
+
+void HairTool::setDrawingInParts(bool on) {
+  actor_->setFrameBudget(on ? kHairFrameBudgetMs : 0.0);
+  window_->viewport()->requestRender();
+}
 
 // ---- Document ----
 
 void HairTool::onCharacterReplaced() {
+  worker_->cancel();
+  actor_->setVisible(false);  // the old character's hair
   groom_.reset();
+  grownStyle_.reset();
   style_.reset();
   selected_ = {};
   invalidateDynamics();
@@ -149,6 +187,7 @@ void HairTool::removeHair() {
 }
 
 bool HairTool::makeGroom() {
+  grownStyle_.reset();
   try {
     groom_ = makeCharacterGroom(window_->document()->character(), scalp_);
     return true;
@@ -160,21 +199,18 @@ bool HairTool::makeGroom() {
 }
 
 void HairTool::applyStyle(const std::optional<HairStyle>& style, bool live) {
-  const std::optional<HairStyle> before = style_;
   style_ = style;
   invalidateDynamics();
   if (!style_) {
+    worker_->cancel();
     actor_->setVisible(false);
     handles_->update(HairStyle{}, glm::mat4(1.0f), {});
     selected_ = {};
   } else if (groom_ || makeGroom()) {
-    if (before && groom_->strands().strandCount() > 0)
-      regrow(*before, *style_, live);
-    else
-      groom_->grow(*style_, viewportStrandCount(*style_));
     const auto all = primitivesOf(*style_);
     if (std::find(all.begin(), all.end(), selected_) == all.end()) selected_ = {};
-    showStrands(live);
+    actor_->setColors(style_->rootColor, style_->tipColor);  // shader uniforms: at once
+    requestRegrow(live);
     updateHandles();
   }
   storeSection();
@@ -182,22 +218,77 @@ void HairTool::applyStyle(const std::optional<HairStyle>& style, bool live) {
   emit styleChanged();
 }
 
+size_t HairTool::documentStrandCount() const {
+  if (!style_ || !groom_) return 0;
+  const size_t wanted = requestedStrands_ ? requestedStrands_
+                                          : rootCountForDensity(groom_->scalp(), style_->density,
+                                                                size_t(std::max(0, style_->maxStrands)));
+  return std::min(wanted, HairGroom::kMaxStrands);
+}
+
 // The document's count, else the style's density on this scalp (so a
-// smaller scalp grows fewer strands), at most kViewportMaxStrands.
+// smaller scalp grows fewer strands), at most the display limit.
 size_t HairTool::viewportStrandCount(const HairStyle& style) const {
   const size_t wanted = requestedStrands_ ? requestedStrands_
                                           : rootCountForDensity(groom_->scalp(), style.density,
                                                                 size_t(std::max(0, style.maxStrands)));
-  return std::clamp<size_t>(wanted, 1, kViewportMaxStrands);
+  return std::clamp<size_t>(wanted, 1, displayStrandLimit_);
 }
 
-void HairTool::regrow(const HairStyle& before, const HairStyle& after, bool live) {
-  if (rootsDiffer(before, after)) {
-    groom_->grow(after, viewportStrandCount(after));
-  } else if (!onlyColorsDiffer(before, after) || !live) {
-    groom_->regrowGuides(after);
-    if (!live) groom_->growChildren(after);
+void HairTool::setDisplayStrandLimit(size_t limit) {
+  limit = std::clamp<size_t>(limit, 1, HairGroom::kMaxStrands);
+  if (limit == displayStrandLimit_) return;
+  displayStrandLimit_ = limit;
+  QSettings().setValue(kDisplayStrandLimitKey, qulonglong(limit));
+  if (style_ && groom_) requestRegrow(false);
+  emit styleChanged();
+}
+
+glm::mat4 HairTool::posedFromRest() {
+  EditorDocument* document = window_->document();
+  if (!rig_) rig_ = std::make_unique<HairRig>(HairRig::fromProxy(document->character(), groom_->proxy()));
+  return rig_->posedFromRest(document->posed().worldFromBone());
+}
+
+void HairTool::requestRegrow(bool live) {
+  const size_t strands = viewportStrandCount(*style_);
+  // A colour alone changes shader uniforms: nothing to grow or upload.
+  if (!live && !guidesOnly_ && !worker_->busy() &&
+      regrowthNeeded(grownStyle_, grownStrands_, childrenCurrent_, *style_, strands) == Regrowth::Nothing) {
+    grownStyle_ = *style_;
+    return;
   }
+  HairWorker::RegrowRequest request;
+  request.groom = groom_;
+  request.grownStyle = grownStyle_;
+  request.grownStrands = grownStrands_;
+  request.childrenCurrent = childrenCurrent_;
+  request.style = *style_;
+  request.strands = strands;
+  request.live = live;
+  request.posedFromRest = posedFromRest();
+  request.shading = actor_->shading();
+  request.keyLight = render::HairActor::keyLightOf(window_->sceneView()->renderer());
+  worker_->regrow(std::move(request));
+}
+
+// The worker's hair for the newest edit: shown with a pointer swap.
+void HairTool::onRegrown(const HairWorker::Regrown& result) {
+  groom_ = result.groom;
+  grownStyle_ = result.style;
+  grownStrands_ = result.strands;
+  childrenCurrent_ = result.childrenCurrent;
+  guidesOnly_ = result.guidesOnly;
+  actor_->showGeometry(result.geometry);
+  actor_->setVisible(true);
+  // The pose, a bake or the simulation moved on while the worker grew.
+  if (!guidesOnly_ && (bake_ || simulating_ || posedFromRest() != result.posedFromRest)) showPosedStrands();
+  if (announceScalp_) {
+    announceScalp_ = false;
+    window_->statusBar()->showMessage(
+        tr("Scalp: %1 roots on %2 cm²").arg(strandCount()).arg(scalpArea() * 1e4f, 0, 'f', 0), 10000);
+  }
+  window_->viewport()->requestRender();
   emit hairRegrown();
 }
 
@@ -219,15 +310,14 @@ bool HairTool::editScalp(const ScalpRegion& after, const QString& text, int merg
 
 void HairTool::applyScalp(const ScalpRegion& region) {
   scalp_ = region;
+  worker_->cancel();
   groom_.reset();
+  grownStyle_.reset();
   invalidateDynamics();
   if (style_ && makeGroom()) {
-    groom_->grow(*style_, viewportStrandCount(*style_));
-    showStrands(false);
+    announceScalp_ = true;
+    requestRegrow(false);
     updateHandles();
-    window_->statusBar()->showMessage(
-        tr("Scalp: %1 roots on %2 cm²").arg(strandCount()).arg(scalpArea() * 1e4f, 0, 'f', 0), 10000);
-    emit hairRegrown();
   }
   storeSection();
   window_->viewport()->requestRender();
@@ -279,6 +369,7 @@ void HairTool::setHandlesVisible(bool visible) {
   window_->viewport()->requestRender();
 }
 
+// The next frame finds its shadow stale and asks the worker for the new one.
 void HairTool::setOpacityShadowMaps(bool on) {
   render::HairShading shading = actor_->shading();
   shading.shadowMethod = on ? render::HairShadowMethod::OpacityMaps : render::HairShadowMethod::PointCount;
@@ -304,22 +395,12 @@ glm::mat4 HairTool::worldFromHead() const {
 
 // ---- Display ----
 
-void HairTool::showStrands(bool guidesOnly) {
-  guidesOnly_ = guidesOnly;
-  const Strands& all = groom_->strands();
-  actor_->setStrands(guidesOnly ? leadingStrands(all, groom_->guideCount()) : all);
-  actor_->setColors(style_->rootColor, style_->tipColor);
-  actor_->setVisible(true);
-  showPosedStrands();
-}
-
 // The strands where the character's head is now: baked, simulated, or
-// carried rigidly by the head.
+// carried rigidly by the head (on the GUI thread: the timeline's path).
 void HairTool::showPosedStrands() {
   if (!style_ || !groom_) return;
   EditorDocument* document = window_->document();
-  if (!rig_) rig_ = std::make_unique<HairRig>(HairRig::fromProxy(document->character(), groom_->proxy()));
-  const glm::mat4 posedFromRest = rig_->posedFromRest(document->posed().worldFromBone());
+  const glm::mat4 posedFromRest = this->posedFromRest();
   const Strands& all = groom_->strands();
   const size_t guideFloats = 3 * groom_->guideCount() * size_t(all.pointsPerStrand);
   std::vector<float> points;
@@ -366,6 +447,7 @@ void HairTool::ensureDynamics() {
 }
 
 void HairTool::setSimulating(bool on) {
+  finishBackgroundWork();  // the dynamics start from the current groom
   simulating_ = on && hasHair() && groom_;
   if (simulating_) {
     bake_.reset();
@@ -400,6 +482,7 @@ void HairTool::onPoseChanged() {
 }
 
 bool HairTool::bake() {
+  finishBackgroundWork();  // the bake simulates the current groom
   if (!style_ || !groom_) return false;
   EditorDocument* document = window_->document();
   ensureDynamics();

@@ -5,6 +5,12 @@
 // edits the style through undo commands (HairStyleCommand). Dragging a
 // handle (a sphere moves a primitive, a vortex's tip cube turns its axis)
 // regrows the guides live; the children regrow when it is released.
+// Regrowth, the self-shadow and the arrays the viewport draws are made on a
+// worker thread (HairWorker): an edit returns at once, the last finished hair
+// stays on screen and the status bar says "Updating hair..." until the
+// newest is ready. The viewport shows at most displayStrandLimit() strands
+// (an editor setting shown in the dock) and draws them in parts over
+// several frames, so a frame never takes long.
 // Simulate steps the guide dynamics as the timeline moves; Bake simulates the
 // whole clip with a progress dialog and plays it back.
 //
@@ -23,8 +29,10 @@
 #include "core/hair/scalp.h"
 #include "sim/hair/hair_bake.h"
 #include "render/hair_handles.h"
+#include "ui/hair/hair_worker.h"
 
 class QDockWidget;
+class QLabel;
 class QMouseEvent;
 
 namespace mq {
@@ -50,10 +58,33 @@ class HairTool : public QObject {
   bool hasHair() const { return style_.has_value(); }
   // The style being edited (valid when hasHair()).
   const HairStyle& style() const { return *style_; }
+  // Strands in the groom on screen (the last finished one).
   size_t strandCount() const;
-  // The current groom (null without hair), for tests and exporters.
+  // The groom on screen (null without hair), for tests and exporters.
   const HairGroom* groom() const { return groom_.get(); }
   QString lastError() const { return lastError_; }
+
+  // Hair work under way off the GUI thread (regrowing or reshading).
+  bool backgroundWorkPending() const;
+  // Waits for it and shows the result: the groom is then the current
+  // style's (scripts, screenshots, the bake and tests need that).
+  void finishBackgroundWork();
+  // The viewport draws the hair in parts, a few tens of milliseconds a
+  // frame, the rest in the frames after (render::HairActor); pending: parts
+  // are left to draw (none when the last frame did not draw the hair: out
+  // of view). Off: every frame draws all of it (screenshots).
+  static constexpr double kHairFrameBudgetMs = 20.0;
+  bool hairDrawingPending() const;
+  void setDrawingInParts(bool on);
+
+  // The viewport grows at most this many strands (an editor setting, kept
+  // in QSettings; software GL draws about 40,000 interactively).
+  static constexpr size_t kDefaultDisplayStrandLimit = 40000;
+  size_t displayStrandLimit() const { return displayStrandLimit_; }
+  void setDisplayStrandLimit(size_t limit);
+  // The strands the document asks for (its count, else the style's density
+  // on this scalp); the viewport shows min(this, displayStrandLimit()).
+  size_t documentStrandCount() const;
 
   // Edits through the undo stack. mergeKey: steps with the same non-zero key
   // merge into one command (a drag, a spin box); live: guides only.
@@ -121,8 +152,11 @@ class HairTool : public QObject {
   void storeSection();
   bool makeGroom();
   size_t viewportStrandCount(const HairStyle& style) const;
-  void regrow(const HairStyle& before, const HairStyle& after, bool live);
-  void showStrands(bool guidesOnly);
+  // Asks the worker for the current style's hair (live: guides only).
+  void requestRegrow(bool live);
+  void onRegrown(const HairWorker::Regrown& result);
+  void onBusyChanged(bool busy);
+  glm::mat4 posedFromRest();
   void showPosedStrands();
   void ensureDynamics();
   void updateHandles();
@@ -139,10 +173,21 @@ class HairTool : public QObject {
   QDockWidget* dock_ = nullptr;
   std::unique_ptr<render::HairActor> actor_;
   std::unique_ptr<HairHandles> handles_;
-  std::unique_ptr<HairGroom> groom_;
+  // The groom on screen and what it was grown with (shared with the worker,
+  // which grows a copy: never modified once shown).
+  std::shared_ptr<const HairGroom> groom_;
+  std::optional<HairStyle> grownStyle_;
+  size_t grownStrands_ = 0;
+  bool childrenCurrent_ = false;  // false after a drag step regrew the guides alone
+  HairWorker* worker_ = nullptr;
+  QLabel* busyLabel_ = nullptr;
+  bool announceScalp_ = false;  // the next regrown hair is on a new scalp: say so
+  size_t hairFramesSeen_ = 0;   // the actor's framesDrawn() at the last frame
+  bool lastFrameDrewHair_ = false;
   std::optional<HairStyle> style_;
   ScalpRegion scalp_;
   size_t requestedStrands_ = 20000;
+  size_t displayStrandLimit_ = kDefaultDisplayStrandLimit;
   PrimitiveRef selected_;
   QString lastError_;
   bool loading_ = false;  // a section being loaded: not written back

@@ -1,10 +1,14 @@
 #include "ui/viewport/vtk_viewport_widget.h"
 
+#include <utility>
+#include <vector>
+
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
 #include <QSurfaceFormat>
+#include <QTimer>
 #include <QWheelEvent>
 
 #include <vtkCallbackCommand.h>
@@ -12,6 +16,8 @@
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkGenericRenderWindowInteractor.h>
 #include <vtkOpenGLState.h>
+#include <vtkProp.h>
+#include <vtkPropCollection.h>
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
 
@@ -95,6 +101,21 @@ void VtkViewportWidget::removeRenderer(vtkRenderer* renderer) {
 
 QImage VtkViewportWidget::grabImage() { return grabFramebuffer(); }
 
+void VtkViewportWidget::requestRender() {
+  fullFramePending_ = true;
+  update();
+}
+
+void VtkViewportWidget::requestContinuation(vtkProp* prop) {
+  if (fullFramePending_) return;  // a full frame is on its way
+  continuation_ = prop;
+  // Through the timer queue rather than a posted paint, which Qt would
+  // serve before the input and timers waiting since the last frame.
+  QTimer::singleShot(0, this, [this] {
+    if (continuation_) update();
+  });
+}
+
 void VtkViewportWidget::connectWindowCallbacks() {
   vtkNew<vtkCallbackCommand> callback;
   callback->SetClientData(this);
@@ -142,6 +163,7 @@ void VtkViewportWidget::initializeGL() {
 }
 
 void VtkViewportWidget::resizeGL(int w, int h) {
+  fullFramePending_ = true;
   const qreal ratio = devicePixelRatioF();
   const int pw = int(w * ratio), ph = int(h * ratio);
   renderWindow_->SetSize(pw, ph);
@@ -156,7 +178,12 @@ void VtkViewportWidget::paintGL() {
   state->Push();
   // Qt leaves GL_LESS; VTK expects GL_LEQUAL.
   state->vtkglDepthFunc(GL_LEQUAL);
-  renderWindow_->Render();
+  if (continuation_ && !fullFramePending_)
+    renderContinuation(continuation_);
+  else
+    renderWindow_->Render();
+  fullFramePending_ = false;
+  continuation_ = nullptr;
 
   const qreal ratio = devicePixelRatioF();
   const int pw = int(width() * ratio), ph = int(height() * ratio);
@@ -168,6 +195,32 @@ void VtkViewportWidget::paintGL() {
   clearAlpha();
   state->Pop();
   emit frameRendered();
+}
+
+// VTK renders into its own framebuffer, which keeps the last frame's colour
+// and depth: with the renderers' erase off and every other prop of the scene
+// layer hidden, `prop` draws over that frame, behind what is in front of it.
+// Overlay layers (gizmos) draw again on top as in a full frame.
+void VtkViewportWidget::renderContinuation(vtkProp* prop) {
+  std::vector<std::pair<vtkRenderer*, bool>> erase;
+  std::vector<std::pair<vtkProp*, vtkTypeBool>> visibility;
+  vtkRendererCollection* renderers = renderWindow_->GetRenderers();
+  renderers->InitTraversal();
+  while (vtkRenderer* renderer = renderers->GetNextItem()) {
+    if (renderer->GetLayer() > 0) continue;
+    erase.emplace_back(renderer, renderer->GetErase());
+    renderer->EraseOff();
+    vtkPropCollection* props = renderer->GetViewProps();
+    props->InitTraversal();
+    while (vtkProp* other = props->GetNextProp()) {
+      if (other == prop) continue;
+      visibility.emplace_back(other, other->GetVisibility());
+      other->VisibilityOff();
+    }
+  }
+  renderWindow_->Render();
+  for (auto [other, visible] : visibility) other->SetVisibility(visible);
+  for (auto [renderer, wasErasing] : erase) renderer->SetErase(wasErasing);
 }
 
 void VtkViewportWidget::clearAlpha() {

@@ -14,6 +14,7 @@ class vtkGenericOpenGLRenderWindow;
 class vtkGenericRenderWindowInteractor;
 class vtkInteractorObserver;
 class vtkObject;
+class vtkProp;
 class vtkRenderer;
 
 namespace mq::ui {
@@ -35,7 +36,12 @@ class VtkViewportWidget : public QOpenGLWidget {
   void addRenderer(vtkRenderer* renderer);
   void removeRenderer(vtkRenderer* renderer);
   // Schedules a repaint; the only way the scene should be redrawn.
-  void requestRender() { update(); }
+  void requestRender();
+  // Schedules a paint that draws `prop` alone over the last frame (nothing
+  // erased, the other props of the scene's layer hidden), after the events
+  // waiting, unless a full frame is asked for first: for a prop that draws
+  // itself in parts over several frames (the hair, see render::HairActor).
+  void requestContinuation(vtkProp* prop);
   // The last rendered image (renders first if needed).
   QImage grabImage();
 
@@ -62,6 +68,7 @@ class VtkViewportWidget : public QOpenGLWidget {
   void connectWindowCallbacks();
   void onWindowEvent(vtkObject* caller, unsigned long eventId, void* callData);
   void clearAlpha();
+  void renderContinuation(vtkProp* prop);
   // Sends modifiers and the position (device pixels, y up) to the interactor.
   void setEventInformation(const QPointF& position, Qt::KeyboardModifiers modifiers, int repeat = 0);
 
@@ -69,6 +76,8 @@ class VtkViewportWidget : public QOpenGLWidget {
   vtkSmartPointer<vtkGenericRenderWindowInteractor> interactor_;
   vtkSmartPointer<vtkInteractorObserver> cameraStyle_;
   bool glInitialized_ = false;
+  bool fullFramePending_ = true;  // VTK's framebuffer does not hold the current scene
+  vtkProp* continuation_ = nullptr;
 };
 
 }  // namespace mq::ui
