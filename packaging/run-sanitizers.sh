@@ -12,6 +12,7 @@ cmake -S "$top" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DMANNEQUIN_WITH
   -DMANNEQUIN_WITH_BENCH=OFF "-DCMAKE_CXX_FLAGS=$flags" "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined" >/dev/null
 cmake --build "$build" -j "${MANNEQUIN_JOBS:-$(nproc)}" --target mannequin_unit_tests
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
+export LSAN_OPTIONS="suppressions=$top/packaging/lsan.supp"
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 cd "$build"
 ctest -L unit --output-on-failure -j "${MANNEQUIN_TEST_JOBS:-2}" "$@"

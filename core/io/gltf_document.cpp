@@ -234,11 +234,14 @@ Document::RawAccessor Document::describe(int accessor) const {
   const std::vector<uint8_t>& buffer = buffers_[bufferIndex];
   const size_t viewOffset = view.value("byteOffset", size_t(0));
   const size_t viewLength = view.at("byteLength").get<size_t>();
-  if (viewOffset + viewLength > buffer.size()) fail("bufferView " + std::to_string(viewIndex) + " runs past its buffer");
+  // Compared without sums that a hostile file could wrap around.
+  if (viewOffset > buffer.size() || viewLength > buffer.size() - viewOffset)
+    fail("bufferView " + std::to_string(viewIndex) + " runs past its buffer");
   raw.stride = view.value("byteStride", size_t(0));
   if (raw.stride == 0) raw.stride = elementSize;
   const size_t offset = a.value("byteOffset", size_t(0));
-  if (raw.count > 0 && offset + raw.stride * (raw.count - 1) + elementSize > viewLength)
+  if (raw.count > 0 && (offset > viewLength || elementSize > viewLength - offset ||
+                        raw.count - 1 > (viewLength - offset - elementSize) / raw.stride))
     fail("accessor " + std::to_string(accessor) + " runs past its bufferView");
   raw.data = buffer.data() + viewOffset + offset;
   return raw;
@@ -267,12 +270,17 @@ std::vector<double> Document::readDoubles(int accessor, int* components) const {
         const nlohmann::json& view = element("bufferViews", ref.at("bufferView").get<int>());
         const int b = view.at("buffer").get<int>();
         if (b < 0 || b >= static_cast<int>(buffers_.size())) fail("sparse accessor refers to a missing buffer");
-        const size_t start = view.value("byteOffset", size_t(0)) + ref.value("byteOffset", size_t(0));
-        if (start + bytes > buffers_[b].size()) fail("sparse accessor runs past its buffer");
+        const size_t size = buffers_[b].size();
+        const size_t viewStart = view.value("byteOffset", size_t(0)), refStart = ref.value("byteOffset", size_t(0));
+        if (viewStart > size || refStart > size - viewStart || bytes > size - viewStart - refStart)
+          fail("sparse accessor runs past its buffer");
+        const size_t start = viewStart + refStart;
         return buffers_[b].data() + start;
       };
+      if (n > raw.count) fail("sparse accessor has more values than its accessor");
       const int indexType = idx.at("componentType").get<int>();
       const int indexSize = sizeOfComponent(indexType);
+      if (indexSize == 0) fail("sparse accessor has an unknown index type");
       const uint8_t* indices = viewData(idx, n * indexSize);
       const uint8_t* values = viewData(val, n * raw.components * componentSize);
       for (size_t k = 0; k < n; ++k) {
