@@ -82,7 +82,8 @@ IntegratorReport ImplicitEuler::step(ClothState& s, float h, ClothForces& forces
     // fused into two phases (springs, then vertices) of the solve's first job.
     external.setStep(h);
     const size_t springCount = springs.springs().size();
-    const int springPhase = job.add((springCount + kParallelBlock - 1) / kParallelBlock, -1, [&](size_t b) {
+    // By value: the job runs in solve(), after this block's locals are gone.
+    const int springPhase = job.add((springCount + kParallelBlock - 1) / kParallelBlock, -1, [&, springCount](size_t b) {
       springs.prepareStepSprings(s, h, b * kParallelBlock, std::min(springCount, (b + 1) * kParallelBlock));
     });
     prepared = job.add((n + kParallelBlock - 1) / kParallelBlock, springPhase, [&](size_t b) {
@@ -178,7 +179,7 @@ IntegratorReport ImplicitEuler::solve(const ClothState& s, ClothForces& forces, 
       const size_t patches = coarse_.patchCount();
       const int filters = job.add(1, prepared, [&](size_t) { coarse_.prepareAssembly(s); });
       const size_t partCount = prepareOnPool ? kPoolAssemblyParts : 1;
-      parts = job.add(partCount, filters, [&, partCount](size_t part) {
+      parts = job.add(partCount, filters, [&, partCount, patches](size_t part) {
         coarse_.assemblePatches(s, otherDiagonal_, forces.springs(), part * patches / partCount,
                                 (part + 1) * patches / partCount);
       });
