@@ -1,15 +1,13 @@
 #include "core/skinning/section_cones.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <cstring>
-#include <map>
 
 #include <glm/gtc/quaternion.hpp>
 
 #include "core/character/character.h"
 #include "core/mesh/plane_section.h"
+#include "core/mesh/position_weld.h"
 #include "core/skeleton/skeleton.h"
 #include "core/util/thread_pool.h"
 
@@ -63,21 +61,8 @@ struct WeldedSkin {
 };
 
 WeldedSkin weld(const Mesh& mesh) {
-  WeldedSkin w;
-  std::map<std::array<uint32_t, 3>, uint32_t> index;
-  std::vector<uint32_t> of(mesh.vertexCount());
-  for (size_t v = 0; v < mesh.vertexCount(); ++v) {
-    std::array<uint32_t, 3> bits;
-    std::memcpy(bits.data(), &mesh.positions[3 * v], sizeof bits);
-    auto [it, inserted] = index.try_emplace(bits, uint32_t(w.positions.size() / 3));
-    if (inserted) w.positions.insert(w.positions.end(), &mesh.positions[3 * v], &mesh.positions[3 * v] + 3);
-    of[v] = it->second;
-  }
-  for (size_t t = 0; t + 2 < mesh.triangles.size(); t += 3) {
-    const uint32_t a = of[mesh.triangles[t]], b = of[mesh.triangles[t + 1]], c = of[mesh.triangles[t + 2]];
-    if (a != b && b != c && a != c) w.triangles.insert(w.triangles.end(), {a, b, c});
-  }
-  return w;
+  PositionWeld weld = weldByPosition(mesh.positions, mesh.triangles);
+  return {weld.gather(mesh.positions), std::move(weld.triangles)};
 }
 
 int dominantSlot(const SkinBinding& skin, size_t v) {

@@ -1,44 +1,27 @@
 #include "core/skinning/skin_metrics.h"
 
-#include <array>
 #include <cmath>
-#include <cstring>
-#include <map>
 
 #include "core/mesh/mesh_checks.h"
 #include "core/mesh/plane_section.h"
 
 namespace mq {
 
-MetricBody::MetricBody(const Character& character) {
-  std::map<std::array<uint32_t, 3>, uint32_t> byPosition;
-  std::vector<std::vector<uint32_t>> weldedOf(character.meshes.size());
-  for (uint32_t m = 0; m < character.meshes.size(); ++m) {
-    const Mesh& mesh = character.meshes[m];
-    weldedOf[m].resize(mesh.vertexCount());
-    for (uint32_t v = 0; v < mesh.vertexCount(); ++v) {
-      std::array<uint32_t, 3> bits;
-      std::memcpy(bits.data(), &mesh.positions[3 * size_t(v)], sizeof bits);
-      auto [it, inserted] = byPosition.try_emplace(bits, uint32_t(representative_.size()));
-      if (inserted) representative_.emplace_back(m, v);
-      weldedOf[m][v] = it->second;
-    }
-    for (size_t t = 0; t + 2 < mesh.triangles.size(); t += 3) {
-      const uint32_t a = weldedOf[m][mesh.triangles[t]], b = weldedOf[m][mesh.triangles[t + 1]],
-                     c = weldedOf[m][mesh.triangles[t + 2]];
-      if (a == b || b == c || a == c) continue;  // collapsed by the weld
-      triangles_.insert(triangles_.end(), {a, b, c});
-    }
-  }
+namespace {
+
+std::vector<float> concatenatedRestPositions(const Character& character) {
+  std::vector<float> out;
+  for (const Mesh& m : character.meshes) out.insert(out.end(), m.positions.begin(), m.positions.end());
+  return out;
 }
 
+}  // namespace
+
+MetricBody::MetricBody(const Character& character)
+    : weld_(weldByPosition(concatenatedRestPositions(character), concatenatedTriangles(character))) {}
+
 std::vector<float> MetricBody::weld(const std::vector<PosedMesh>& posed) const {
-  std::vector<float> out(3 * representative_.size());
-  for (size_t i = 0; i < representative_.size(); ++i) {
-    const auto [m, v] = representative_[i];
-    for (int d = 0; d < 3; ++d) out[3 * i + d] = posed[m].positions[3 * size_t(v) + d];
-  }
-  return out;
+  return weld_.gather(concatenatedPositions(posed));
 }
 
 namespace {

@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "core/character/posed_character.h"
+#include "core/mesh/position_weld.h"
 
 namespace mq {
 
@@ -20,12 +21,11 @@ class MetricBody {
 
   // The posed meshes' positions on the welded vertices.
   std::vector<float> weld(const std::vector<PosedMesh>& posed) const;
-  const std::vector<uint32_t>& triangles() const { return triangles_; }
-  size_t vertexCount() const { return representative_.size(); }
+  const std::vector<uint32_t>& triangles() const { return weld_.triangles; }
+  size_t vertexCount() const { return weld_.vertexCount(); }
 
  private:
-  std::vector<std::pair<uint32_t, uint32_t>> representative_;  // welded vertex -> (mesh, vertex)
-  std::vector<uint32_t> triangles_;
+  PositionWeld weld_;  // over the meshes' vertices one after the other
 };
 
 // A hinge bend: the joint j (the child bone's head), the parent's and the

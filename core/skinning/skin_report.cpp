@@ -5,6 +5,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
+#include "core/mesh/mesh_checks.h"
 #include "core/skeleton/humanoid_roles.h"
 #include "core/skinning/skin_metrics.h"
 #include "core/util/error.h"
@@ -27,6 +28,12 @@ constexpr double kReferenceHeight = 1.75;
 
 glm::dvec3 headOf(const std::vector<glm::mat4>& world, int bone) { return glm::dvec3(world[bone][3]); }
 
+// Where the character faces: the roles' facing when the feet give one, +Z
+// (the glTF convention) otherwise.
+glm::vec3 frontOf(const HumanoidBones& roles) {
+  return glm::length(roles.facing) > 0.5f ? roles.facing : glm::vec3(0, 0, 1);
+}
+
 glm::dvec3 direction(const std::vector<glm::mat4>& world, int from, int to) {
   return glm::normalize(headOf(world, to) - headOf(world, from));
 }
@@ -38,7 +45,7 @@ class Measurer {
     posed_.evaluate(character, character.skeleton.restPose(), {}, pool);
     rest_ = body_.weld(posed_.meshes());
     restWorld_ = posed_.worldFromBone();
-    restVolume_ = signedVolumeOf(rest_);
+    restVolume_ = signedVolume(rest_, body_.triangles());
   }
 
   const MetricBody& body() const { return body_; }
@@ -58,22 +65,10 @@ class Measurer {
     return options_.intersections ? long(intersectingPairs(positions, body_.triangles())) : -1;
   }
   double volumeRatio(const std::vector<float>& positions) const {
-    return restVolume_ != 0.0 ? signedVolumeOf(positions) / restVolume_ : 1.0;
+    return restVolume_ != 0.0 ? signedVolume(positions, body_.triangles()) / restVolume_ : 1.0;
   }
 
  private:
-  double signedVolumeOf(const std::vector<float>& p) const {
-    double v = 0.0;
-    const auto& t = body_.triangles();
-    for (size_t i = 0; i + 2 < t.size(); i += 3) {
-      const glm::dvec3 a(p[3 * t[i]], p[3 * t[i] + 1], p[3 * t[i] + 2]);
-      const glm::dvec3 b(p[3 * t[i + 1]], p[3 * t[i + 1] + 1], p[3 * t[i + 1] + 2]);
-      const glm::dvec3 c(p[3 * t[i + 2]], p[3 * t[i + 2] + 1], p[3 * t[i + 2] + 2]);
-      v += glm::dot(a, glm::cross(b, c)) / 6.0;
-    }
-    return v;
-  }
-
   const Character& character_;
   const SkinReportOptions& options_;
   ThreadPool* pool_;
@@ -114,7 +109,7 @@ struct Hinge {
 
 void measureHingePoses(Measurer& m, const Character& character, const HumanoidBones& roles, double scale,
                        std::vector<PoseMeasure>& out) {
-  const glm::vec3 front = glm::length(roles.facing) > 0.5f ? roles.facing : glm::vec3(0, 0, 1);
+  const glm::vec3 front = frontOf(roles);
   const std::vector<Hinge> hinges = {
       {"elbow", roles.upperArm[0], roles.forearm[0], roles.hand[0], 1.0, 0.08, {90, 120, 150}, true},
       {"knee", roles.thigh[0], roles.shin[0], roles.foot[0], -1.0, 0.10, {90, 120, 150}, true},
@@ -184,7 +179,7 @@ void measureTwists(Measurer& m, const Character& character, const HumanoidBones&
 
 void measureShoulder(Measurer& m, const Character& character, const HumanoidBones& roles, double scale,
                      std::vector<PoseMeasure>& out) {
-  const glm::vec3 front = glm::length(roles.facing) > 0.5f ? roles.facing : glm::vec3(0, 0, 1);
+  const glm::vec3 front = frontOf(roles);
   const auto& restWorld = m.restWorld();
   for (float angle : {60.0f, 95.0f, 120.0f}) {
     PoseMeasure pm;
