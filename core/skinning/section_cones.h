@@ -41,7 +41,7 @@ struct SectionCone {
   static constexpr float kBaseNear = 0.15f, kBaseFar = 0.85f;  // base positions along the bone
 
   bool valid = false;  // fitted: a section loop surrounds the axis at both bases
-  bool limb = false;   // fitted and no wider than kLimbWidth of its bone (not the torso)
+  bool limb = false;   // fitted and no wider than 0.6 of its bone (not the torso): gets creases
   // The cone's frame in the mesh's bind space: head, unit axis towards the
   // tail, and two unit directions across it (the ellipses' chart).
   glm::dvec3 head{0.0}, axis{0.0, 1.0, 0.0}, side{1.0, 0.0, 0.0}, front{0.0, 0.0, 1.0};
@@ -54,7 +54,7 @@ struct SectionCone {
     double rho = 0.0;          // |radial| / the minimum ellipse's radius that way
     double rhoEnclosing = 0.0; // |radial| / the enclosing ellipse's radius that way
   };
-  // A bind-space point in cone coordinates.
+  // A bind-space point in cone coordinates (for inspecting a fit).
   Point locate(const glm::dvec3& p) const;
 };
 
