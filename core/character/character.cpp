@@ -1,5 +1,7 @@
 #include "core/character/character.h"
 
+#include "core/mesh/tangents.h"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -33,6 +35,38 @@ int Character::findClip(const std::string& nameOrIndex) const {
   return -1;
 }
 
+namespace {
+
+// Texture coordinates, tangents and material ranges of one mesh.
+void validateSurface(const Mesh& m, size_t materialCount, const std::string& where) {
+  const size_t n = m.vertexCount();
+  if (!m.uvs.empty() && m.uvs.size() != 2 * n) throw std::runtime_error(where + "texture coordinate count differs from vertex count");
+  if (!m.uvs1.empty() && m.uvs1.size() != 2 * n) throw std::runtime_error(where + "second texture coordinate count differs from vertex count");
+  if (!m.tangents.empty() && m.tangents.size() != 4 * n) throw std::runtime_error(where + "tangent count differs from vertex count");
+  for (const Submesh& r : m.drawRanges()) {
+    if (r.material < -1 || r.material >= static_cast<int>(materialCount))
+      throw std::runtime_error(where + "material index " + std::to_string(r.material) + " out of range");
+    if (static_cast<size_t>(r.firstTriangle) + r.triangleCount > m.triangleCount())
+      throw std::runtime_error(where + "a material's triangle range runs past the last triangle");
+  }
+}
+
+}  // namespace
+
+void Character::addMissingTangents() {
+  for (Mesh& mesh : meshes) {
+    if (!mesh.tangents.empty()) continue;
+    for (const Submesh& range : mesh.drawRanges()) {
+      if (range.material < 0 || range.material >= static_cast<int>(materials.size())) continue;
+      const TextureRef& normalMap = materials[range.material].normalTexture;
+      const std::vector<float>& uvs = normalMap.texCoord == 1 ? mesh.uvs1 : mesh.uvs;
+      if (!normalMap.present() || uvs.size() != 2 * mesh.vertexCount()) continue;
+      computeVertexTangents(mesh.positions, mesh.normals, uvs, mesh.triangles, mesh.tangents);
+      break;
+    }
+  }
+}
+
 void Character::validate() const {
   const int bones = skeleton.boneCount();
   for (const Mesh& m : meshes) {
@@ -46,6 +80,7 @@ void Character::validate() const {
       if (!std::isfinite(p)) throw std::runtime_error(where + "non-finite vertex position");
     for (const MorphTarget& t : m.morphTargets)
       if (t.positionDeltas.size() != 3 * n) throw std::runtime_error(where + "morph target size differs from vertex count");
+    validateSurface(m, materials.size(), where);
     const SkinBinding& s = m.skin;
     if (s.empty()) continue;
     const size_t k = s.influencesPerVertex;
@@ -58,6 +93,10 @@ void Character::validate() const {
     for (uint16_t j : s.joints)
       if (j >= s.jointBones.size()) throw std::runtime_error(where + "vertex joint index out of range");
   }
+  for (const Material& material : materials)
+    for (const TextureRef* t : material.textures())
+      if (t->image >= static_cast<int>(images.size()))
+        throw std::runtime_error("material '" + material.name + "': texture refers to a missing image");
   for (const Clip& c : clips) {
     try {
       c.validate();

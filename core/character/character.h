@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/animation/clip.h"
+#include "core/material/material.h"
 #include "core/mesh/mesh.h"
 #include "core/skeleton/skeleton.h"
 #include "core/skinning/skinning_method.h"
@@ -18,6 +19,12 @@ struct Character {
   Skeleton skeleton;
   std::vector<Mesh> meshes;
   std::vector<Clip> clips;
+  // Materials the meshes refer to, and the images their textures sample.
+  std::vector<Material> materials;
+  std::vector<ImageSource> images;
+  // Problems the loader worked around (a missing texture image), each naming
+  // the file; the caller shows them.
+  std::vector<std::string> loadWarnings;
   // How skinned meshes follow the skeleton (PosedCharacter::evaluate).
   SkinningMethod skinning = SkinningMethod::Lbs;
 
@@ -26,6 +33,9 @@ struct Character {
   int maxInfluences() const;
   // Finds a clip by name, or by index when `nameOrIndex` is a number; -1 if absent.
   int findClip(const std::string& nameOrIndex) const;
+  // Normal maps need tangents: a mesh drawn with one and without tangents
+  // gets them from the uv set the map samples.
+  void addMissingTangents();
   // Checks indices, sizes and finiteness; throws std::runtime_error saying what is wrong.
   void validate() const;
 };

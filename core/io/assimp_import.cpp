@@ -1,6 +1,7 @@
 #include "core/io/assimp_import.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -229,7 +230,14 @@ Mesh convertMesh(const aiMesh* am, const NodeTable& t, int node, bool bindFromNo
     mesh.uvs.resize(2 * n);
     for (size_t v = 0; v < n; ++v) {
       mesh.uvs[2 * v] = am->mTextureCoords[0][v].x;
-      mesh.uvs[2 * v + 1] = am->mTextureCoords[0][v].y;
+      mesh.uvs[2 * v + 1] = 1.0f - am->mTextureCoords[0][v].y;  // Assimp's origin is bottom left
+    }
+  }
+  if (am->HasTextureCoords(1)) {
+    mesh.uvs1.resize(2 * n);
+    for (size_t v = 0; v < n; ++v) {
+      mesh.uvs1[2 * v] = am->mTextureCoords[1][v].x;
+      mesh.uvs1[2 * v + 1] = 1.0f - am->mTextureCoords[1][v].y;
     }
   }
   if (am->HasBones()) {
@@ -330,6 +338,107 @@ RawClip convertColladaClip(const ColladaClip& clip, const NodeTable& t, const st
   return raw;
 }
 
+// --- materials ----------------------------------------------------------
+
+TextureWrap wrapOf(aiTextureMapMode mode) {
+  switch (mode) {
+    case aiTextureMapMode_Clamp: return TextureWrap::ClampToEdge;
+    case aiTextureMapMode_Mirror: return TextureWrap::MirroredRepeat;
+    default: return TextureWrap::Repeat;
+  }
+}
+
+// An image by its Assimp texture path: "*N" is the scene's embedded texture N;
+// anything else a file beside the model (tried as written, then by its bare
+// name, since exporters write absolute or Windows paths).
+int imageFor(const aiScene* scene, const std::string& texturePath, const std::string& modelPath,
+             std::map<std::string, int>& imageOfPath, Character& character) {
+  if (auto found = imageOfPath.find(texturePath); found != imageOfPath.end()) return found->second;
+  ImageSource image;
+  image.name = texturePath;
+  if (const aiTexture* embedded = scene->GetEmbeddedTexture(texturePath.c_str())) {
+    if (embedded->mHeight != 0) {
+      character.loadWarnings.push_back(modelPath + ": embedded texture '" + texturePath +
+                                       "' is stored as raw texels, which are not read; its material uses its colours");
+      return imageOfPath[texturePath] = -1;
+    }
+    const auto* bytes = reinterpret_cast<const uint8_t*>(embedded->pcData);
+    image.encoded.assign(bytes, bytes + embedded->mWidth);
+  } else {
+    std::string portable = texturePath;
+    std::replace(portable.begin(), portable.end(), '\\', '/');
+    const std::filesystem::path folder = std::filesystem::path(modelPath).parent_path();
+    std::filesystem::path file = folder / portable;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec)) file = folder / std::filesystem::path(portable).filename();
+    image.path = file.string();
+    if (!std::filesystem::is_regular_file(file, ec))
+      character.loadWarnings.push_back(modelPath + ": texture image '" + texturePath +
+                                       "' not found; its material falls back to its colours");
+  }
+  character.images.push_back(std::move(image));
+  return imageOfPath[texturePath] = static_cast<int>(character.images.size()) - 1;
+}
+
+TextureRef textureOf(const aiScene* scene, const aiMaterial* m, std::initializer_list<aiTextureType> types,
+                     const std::string& modelPath, std::map<std::string, int>& imageOfPath, Character& character) {
+  TextureRef ref;
+  for (aiTextureType type : types) {
+    if (m->GetTextureCount(type) == 0) continue;
+    aiString texturePath;
+    unsigned uvIndex = 0;
+    aiTextureMapMode modes[2] = {aiTextureMapMode_Wrap, aiTextureMapMode_Wrap};
+    if (m->GetTexture(type, 0, &texturePath, nullptr, &uvIndex, nullptr, nullptr, modes) != AI_SUCCESS) continue;
+    ref.image = imageFor(scene, texturePath.C_Str(), modelPath, imageOfPath, character);
+    ref.texCoord = uvIndex <= 1 ? static_cast<int>(uvIndex) : 0;
+    ref.sampler.wrapS = wrapOf(modes[0]);
+    ref.sampler.wrapT = wrapOf(modes[1]);
+    if (ref.present()) return ref;
+  }
+  return ref;
+}
+
+// FBX and Collada materials are Phong-style: a diffuse colour and map, a
+// specular map, a shininess; mapped onto metallic-roughness.
+Material convertMaterial(const aiScene* scene, const aiMaterial* m, int index, const std::string& modelPath,
+                         std::map<std::string, int>& imageOfPath, Character& character) {
+  Material material;
+  aiString name;
+  material.name = m->Get(AI_MATKEY_NAME, name) == AI_SUCCESS && name.length > 0 ? name.C_Str()
+                                                                              : "material" + std::to_string(index);
+  aiColor4D diffuse(0.8f, 0.8f, 0.8f, 1.0f);
+  m->Get(AI_MATKEY_COLOR_DIFFUSE, diffuse);
+  float opacity = 1.0f;
+  m->Get(AI_MATKEY_OPACITY, opacity);
+  // Authoring tools show these colours as picked on screen, so sRGB.
+  material.baseColorFactor = {srgbToLinear(diffuse.r), srgbToLinear(diffuse.g), srgbToLinear(diffuse.b),
+                              std::clamp(opacity, 0.0f, 1.0f)};
+  if (material.baseColorFactor.w < 1.0f) material.alphaMode = AlphaMode::Blend;
+  material.metallicFactor = 0.0f;
+  float shininess = 0.0f;
+  // Blinn-Phong exponent to roughness: alpha^2 = 2 / (n + 2), roughness = sqrt(alpha).
+  material.roughnessFactor = m->Get(AI_MATKEY_SHININESS, shininess) == AI_SUCCESS && shininess > 0.0f
+                                 ? std::sqrt(std::sqrt(2.0f / (shininess + 2.0f)))
+                                 : 0.8f;
+  int twoSided = 0;
+  if (m->Get(AI_MATKEY_TWOSIDED, twoSided) == AI_SUCCESS) material.doubleSided = twoSided != 0;
+  material.baseColorTexture =
+      textureOf(scene, m, {aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE}, modelPath, imageOfPath, character);
+  material.normalTexture =
+      textureOf(scene, m, {aiTextureType_NORMAL_CAMERA, aiTextureType_NORMALS}, modelPath, imageOfPath, character);
+  material.specularTexture = textureOf(scene, m, {aiTextureType_SPECULAR}, modelPath, imageOfPath, character);
+  material.emissiveTexture = textureOf(scene, m, {aiTextureType_EMISSIVE}, modelPath, imageOfPath, character);
+  if (material.emissiveTexture.present()) material.emissiveFactor = glm::vec3(1.0f);
+  return material;
+}
+
+void convertMaterials(const aiScene* scene, const std::string& modelPath, Character& character) {
+  std::map<std::string, int> imageOfPath;
+  for (unsigned i = 0; i < scene->mNumMaterials; ++i)
+    character.materials.push_back(
+        convertMaterial(scene, scene->mMaterials[i], static_cast<int>(i), modelPath, imageOfPath, character));
+}
+
 Clip resolveClip(const RawClip& raw, const NodeTable& t) {
   Clip clip;
   clip.name = raw.name;
@@ -361,14 +470,18 @@ Character importWithAssimp(const std::string& path) {
       clips.push_back(convertAnimation(scene->mAnimations[a], table, static_cast<int>(a), path));
   character.skeleton = buildSkeleton(scene, clips, collada.jointNodes, table, path);
 
+  convertMaterials(scene, path, character);
   const bool bindFromNodes = fileExtension(path) == "fbx";
   for (size_t n = 0; n < table.nodes.size(); ++n) {
     const aiNode* node = table.nodes[n];
     for (unsigned m = 0; m < node->mNumMeshes; ++m) {
       if (node->mMeshes[m] >= scene->mNumMeshes) throw FileError(path, "node refers to a missing mesh");
-      character.meshes.push_back(convertMesh(scene->mMeshes[node->mMeshes[m]], table, static_cast<int>(n), bindFromNodes));
+      const aiMesh* am = scene->mMeshes[node->mMeshes[m]];
+      character.meshes.push_back(convertMesh(am, table, static_cast<int>(n), bindFromNodes));
+      if (am->mMaterialIndex < character.materials.size()) character.meshes.back().material = static_cast<int>(am->mMaterialIndex);
     }
   }
+  character.addMissingTangents();
   for (const RawClip& raw : clips) character.clips.push_back(resolveClip(raw, table));
   try {
     character.validate();

@@ -173,16 +173,35 @@ void Document::parseGlb(const std::vector<uint8_t>& bytes) {
   if (!haveJson) fail("GLB has no JSON chunk");
 }
 
-std::vector<uint8_t> Document::loadUri(const std::string& uri) const {
+std::vector<uint8_t> Document::dataUriBytes(const std::string& uri) const {
   std::vector<uint8_t> out;
-  if (uri.rfind("data:", 0) == 0) {
-    const size_t comma = uri.find(',');
-    if (comma == std::string::npos || uri.rfind(";base64", comma) == std::string::npos)
-      fail("data URI is not base64");
-    if (!decodeBase64(uri, comma + 1, out)) fail("data URI holds invalid base64");
-    return out;
-  }
-  const std::filesystem::path file = std::filesystem::path(path_).parent_path() / percentDecode(uri);
+  const size_t comma = uri.find(',');
+  if (comma == std::string::npos || uri.rfind(";base64", comma) == std::string::npos)
+    fail("data URI is not base64");
+  if (!decodeBase64(uri, comma + 1, out)) fail("data URI holds invalid base64");
+  return out;
+}
+
+std::string Document::resolveUri(const std::string& uri) const {
+  return (std::filesystem::path(path_).parent_path() / percentDecode(uri)).string();
+}
+
+std::vector<uint8_t> Document::bufferViewBytes(int viewIndex) const {
+  const nlohmann::json& view = element("bufferViews", viewIndex);
+  const int bufferIndex = view.at("buffer").get<int>();
+  if (bufferIndex < 0 || bufferIndex >= static_cast<int>(buffers_.size()))
+    fail("bufferView " + std::to_string(viewIndex) + " refers to a missing buffer");
+  const std::vector<uint8_t>& buffer = buffers_[bufferIndex];
+  const size_t offset = view.value("byteOffset", size_t(0));
+  const size_t length = view.at("byteLength").get<size_t>();
+  if (offset > buffer.size() || length > buffer.size() - offset)
+    fail("bufferView " + std::to_string(viewIndex) + " runs past its buffer");
+  return {buffer.begin() + static_cast<std::ptrdiff_t>(offset), buffer.begin() + static_cast<std::ptrdiff_t>(offset + length)};
+}
+
+std::vector<uint8_t> Document::loadUri(const std::string& uri) const {
+  if (uri.rfind("data:", 0) == 0) return dataUriBytes(uri);
+  const std::filesystem::path file = resolveUri(uri);
   try {
     return readFileBytes(file.string());
   } catch (const FileError& e) {

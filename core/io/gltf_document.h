@@ -29,6 +29,12 @@ class Document {
   // Integer accessor elements (indices, joint indices) widened to 32 bits.
   std::vector<uint32_t> readUints(int accessor, int* components = nullptr) const;
   size_t accessorCount(int accessor) const;
+  // The bytes of a bufferView (an image embedded in a GLB).
+  std::vector<uint8_t> bufferViewBytes(int view) const;
+  // The bytes of a data: URI; throws FileError when it is not base64.
+  std::vector<uint8_t> dataUriBytes(const std::string& uri) const;
+  // A relative URI resolved beside the file (percent-decoded).
+  std::string resolveUri(const std::string& uri) const;
 
   // The array element json()[array][index], or a FileError if absent.
   const nlohmann::json& element(const char* array, int index) const;

@@ -9,6 +9,8 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/io/gltf_document.h"
+#include "core/io/gltf_materials.h"
+#include "core/mesh/tangents.h"
 #include "core/util/error.h"
 
 namespace mq {
@@ -223,7 +225,26 @@ void appendMorphTargets(const Document& doc, const json& prim, size_t vertexCoun
   }
 }
 
-void appendPrimitive(const Document& doc, const json& prim, int influences, size_t jointCount, bool withUvs, Mesh& mesh) {
+// Which optional vertex attributes any primitive of a mesh has: the mesh gets
+// the array when one does (zeros, or computed, for the others).
+struct OptionalAttributes {
+  bool uvs0 = false;
+  bool uvs1 = false;
+  bool tangents = false;
+};
+
+// An optional per-vertex attribute of `n` elements of `width` floats, or
+// `fallback` (already sized) when the primitive lacks it.
+void appendAttribute(const Document& doc, const json& attributes, const char* name, size_t n, int width,
+                     std::vector<float> fallback, std::vector<float>& out) {
+  std::vector<float> values = std::move(fallback);
+  if (const int a = attributeAccessor(attributes, name); a >= 0) values = doc.readFloats(a);
+  if (values.size() != static_cast<size_t>(width) * n) doc.fail(std::string(name) + " count differs from POSITION count");
+  out.insert(out.end(), values.begin(), values.end());
+}
+
+void appendPrimitive(const Document& doc, const json& prim, int influences, size_t jointCount,
+                     const OptionalAttributes& optional, Mesh& mesh) {
   const json& attributes = prim.at("attributes");
   const int positionAccessor = attributeAccessor(attributes, "POSITION");
   if (positionAccessor < 0) doc.fail("a primitive of mesh '" + mesh.name + "' has no POSITION");
@@ -241,14 +262,21 @@ void appendPrimitive(const Document& doc, const json& prim, int influences, size
   } else {
     computeVertexNormals(positions, triangles, normals);
   }
+  mesh.submeshes.push_back({static_cast<uint32_t>(mesh.triangleCount()), static_cast<uint32_t>(triangles.size() / 3),
+                            prim.value("material", -1)});
   mesh.positions.insert(mesh.positions.end(), positions.begin(), positions.end());
   mesh.normals.insert(mesh.normals.end(), normals.begin(), normals.end());
   for (uint32_t i : triangles) mesh.triangles.push_back(base + i);
-  if (withUvs) {
-    std::vector<float> uvs(2 * n, 0.0f);
-    if (const int a = attributeAccessor(attributes, "TEXCOORD_0"); a >= 0) uvs = doc.readFloats(a);
-    if (uvs.size() != 2 * n) doc.fail("TEXCOORD_0 count differs from POSITION count");
-    mesh.uvs.insert(mesh.uvs.end(), uvs.begin(), uvs.end());
+  if (optional.uvs0) appendAttribute(doc, attributes, "TEXCOORD_0", n, 2, std::vector<float>(2 * n, 0.0f), mesh.uvs);
+  if (optional.uvs1) appendAttribute(doc, attributes, "TEXCOORD_1", n, 2, std::vector<float>(2 * n, 0.0f), mesh.uvs1);
+  if (optional.tangents) {
+    // A primitive without tangents gets them from its uvs, as the spec asks.
+    std::vector<float> computed(4 * n, 0.0f);
+    if (attributeAccessor(attributes, "TANGENT") < 0 && optional.uvs0) {
+      const std::vector<float> uvs(mesh.uvs.end() - static_cast<std::ptrdiff_t>(2 * n), mesh.uvs.end());
+      computeVertexTangents(positions, normals, uvs, triangles, computed);
+    }
+    appendAttribute(doc, attributes, "TANGENT", n, 4, std::move(computed), mesh.tangents);
   }
   if (influences > 0) appendSkin(doc, attributes, n, influences, jointCount, mesh.skin);
   appendMorphTargets(doc, prim, n, mesh);
@@ -286,10 +314,13 @@ Mesh readNodeMesh(const Document& doc, const NodeGraph& g, int nodeIndex) {
   const bool skinned = node.contains("skin");
   size_t jointCount = 0;
   int influences = 0;
-  bool withUvs = false;
+  OptionalAttributes optional;
   for (const json& p : prims) {
-    influences = std::max(influences, 4 * skinSetCount(p.at("attributes")));
-    withUvs = withUvs || p.at("attributes").contains("TEXCOORD_0");
+    const json& attributes = p.at("attributes");
+    influences = std::max(influences, 4 * skinSetCount(attributes));
+    optional.uvs0 = optional.uvs0 || attributes.contains("TEXCOORD_0");
+    optional.uvs1 = optional.uvs1 || attributes.contains("TEXCOORD_1");
+    optional.tangents = optional.tangents || attributes.contains("TANGENT");
   }
   if (skinned) {
     jointCount = doc.element("skins", node["skin"].get<int>()).at("joints").size();
@@ -304,7 +335,7 @@ Mesh readNodeMesh(const Document& doc, const NodeGraph& g, int nodeIndex) {
     for (size_t t = 0; t < targets.size(); ++t)
       mesh.morphTargets[t].name = t < names.size() && names[t].is_string() ? names[t].get<std::string>() : "target" + std::to_string(t);
   }
-  for (const json& p : prims) appendPrimitive(doc, p, influences, jointCount, withUvs, mesh);
+  for (const json& p : prims) appendPrimitive(doc, p, influences, jointCount, optional, mesh);
   normaliseMorphDeltas(mesh);
 
   const auto weights = node.contains("weights") ? node["weights"] : gm.value("weights", json::array());
@@ -403,6 +434,7 @@ Character buildCharacter(const Document& doc) {
   character.sourcePath = doc.path();
   NodeGraph graph = buildGraph(doc);
   character.skeleton = buildSkeleton(doc, graph);
+  gltf::readMaterials(doc, character);
 
   std::map<int, int> meshOfNode;
   const json& nodes = doc.json().value("nodes", json::array());
@@ -411,6 +443,7 @@ Character buildCharacter(const Document& doc) {
     meshOfNode[n] = static_cast<int>(character.meshes.size());
     character.meshes.push_back(readNodeMesh(doc, graph, n));
   }
+  character.addMissingTangents();
   const json anims = doc.json().value("animations", json::array());
   for (size_t a = 0; a < anims.size(); ++a)
     character.clips.push_back(readAnimation(doc, graph, meshOfNode, anims[a], static_cast<int>(a)));

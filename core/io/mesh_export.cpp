@@ -37,7 +37,10 @@ void writeObj(std::ostream& out, const std::vector<const Mesh*>& meshes, const s
     if (normals)
       for (size_t v = 0; v < n; ++v) writeFloats(out, "vn", &p.normals[3 * v], 3);
     if (uvs)
-      for (size_t v = 0; v < n; ++v) writeFloats(out, "vt", &mesh.uvs[2 * v], 2);
+      for (size_t v = 0; v < n; ++v) {
+        const float objUv[2] = {mesh.uvs[2 * v], 1.0f - mesh.uvs[2 * v + 1]};  // OBJ's origin is bottom left
+        writeFloats(out, "vt", objUv, 2);
+      }
     for (size_t t = 0; t + 2 < mesh.triangles.size(); t += 3) {
       out << "f";
       for (int c = 0; c < 3; ++c) {

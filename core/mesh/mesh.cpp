@@ -56,6 +56,11 @@ void SkinBinding::makeRigid() {
   for (float& w : weights) w = w > 0.0f ? 1.0f : 0.0f;
 }
 
+std::vector<Submesh> Mesh::drawRanges() const {
+  if (!submeshes.empty()) return submeshes;
+  return {Submesh{0, static_cast<uint32_t>(triangleCount()), material}};
+}
+
 void computeVertexNormals(const std::vector<float>& positions, const std::vector<uint32_t>& triangles,
                           std::vector<float>& normals) {
   normals.assign(positions.size(), 0.0f);

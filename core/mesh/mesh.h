@@ -40,11 +40,20 @@ struct SkinBinding {
   void makeRigid();
 };
 
+struct Submesh {
+  uint32_t firstTriangle = 0;
+  uint32_t triangleCount = 0;
+  int material = -1;  // index into Character::materials; -1: none
+};
+
 struct Mesh {
   std::string name;
   std::vector<float> positions;   // 3 per vertex
   std::vector<float> normals;     // 3 per vertex
-  std::vector<float> uvs;         // 2 per vertex, may be empty
+  // Texture coordinates as glTF has them: (0, 0) is the image's top left.
+  std::vector<float> uvs;         // 2 per vertex, may be empty (texture coordinate set 0)
+  std::vector<float> uvs1;        // 2 per vertex, may be empty (set 1)
+  std::vector<float> tangents;    // 4 per vertex (xyz, handedness w), may be empty
   std::vector<uint32_t> triangles;  // 3 per triangle
   std::vector<MorphTarget> morphTargets;
   std::vector<float> morphWeights;  // default weight per target
@@ -58,9 +67,15 @@ struct Mesh {
   // Per-vertex region tags (e.g. the scalp for hair); may be empty.
   std::vector<uint8_t> vertexTags;
   glm::vec3 baseColor{0.8f, 0.8f, 0.8f};
+  // Triangle ranges drawn with one material each (a glTF mesh's primitives);
+  // empty: the whole mesh with `material`.
+  std::vector<Submesh> submeshes;
+  int material = -1;  // index into Character::materials; -1: none (baseColor)
 
   size_t vertexCount() const { return positions.size() / 3; }
   size_t triangleCount() const { return triangles.size() / 3; }
+  // The submeshes, or one covering the whole mesh with `material`.
+  std::vector<Submesh> drawRanges() const;
   glm::vec3 position(size_t v) const { return {positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]}; }
 };
 
