@@ -167,6 +167,10 @@ void Ground::placeShadow(const Aabb& footprint) {
                                              Rgba{8, 8, 10, 0}, 1.4));
 }
 
+void Ground::setHeight(double y) {
+  for (vtkActor* actor : {impl_->grid.Get(), impl_->floor.Get(), impl_->shadow.Get()}) actor->SetPosition(0.0, y, 0.0);
+}
+
 void Ground::setVisible(bool visible) {
   impl_->grid->SetVisibility(visible);
   impl_->floor->SetVisibility(visible);

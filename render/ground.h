@@ -1,5 +1,5 @@
 #pragma once
-// The floor under the character at y = 0: a subtle line grid on a soft disc
+// The floor under the character (at y = 0 unless moved): a subtle line grid on a soft disc
 // that fades into the backdrop, and a blurred contact shadow under the feet
 // so the character reads as standing on the floor.
 
@@ -23,6 +23,8 @@ class Ground {
   // Moves the contact shadow under the posed feet (cheap: once per frame).
   void placeShadow(const Aabb& footprint);
   void setVisible(bool visible);
+  // The floor's height (y): the grid, disc and shadow move together.
+  void setHeight(double y);
 
  private:
   struct Impl;

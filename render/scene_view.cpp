@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
@@ -23,7 +24,10 @@
 
 #include "core/character/character.h"
 #include "core/character/posed_character.h"
+#include "core/mesh/tangents.h"
 #include "render/cloth_shading.h"
+#include "render/material_look.h"
+#include "render/material_textures.h"
 #include "render/ground.h"
 #include "render/hair_actor.h"
 #include "render/skeleton_overlay.h"
@@ -33,64 +37,123 @@
 namespace mq::render {
 namespace {
 
-// One mesh of the character: VTK arrays that updatePose() writes into.
+// One mesh of the character: VTK arrays that updatePose() writes into, shared
+// by its parts (one actor per material range).
 struct MeshActor {
-  vtkSmartPointer<vtkActor> actor;
-  vtkSmartPointer<vtkPolyData> polyData;
+  std::vector<vtkSmartPointer<vtkActor>> parts;
+  std::vector<int> partMaterials;  // index into the character's materials, -1: none
   vtkSmartPointer<vtkFloatArray> positions;
   vtkSmartPointer<vtkFloatArray> normals;
+  vtkSmartPointer<vtkFloatArray> tangents;  // null without a normal map
+  std::vector<float> restNormals, restTangents;  // tangents follow the normals' turn
   std::vector<uint32_t> triangles;  // for normals when the posed mesh has none
+  glm::vec3 baseColor{0.8f};
 };
 
 // The built-in mannequin, and meshes without a colour of their own (the
 // default grey), get the mannequin's wood (in the mesh's colour if it has
 // one); other meshes keep their colour with plain shading.
-SurfaceLook defaultLookFor(const Mesh& mesh, bool builtInMannequin) {
-  const glm::vec3& c = mesh.baseColor;
-  const bool defaultGrey = c == glm::vec3(0.8f);
-  if (!builtInMannequin && !defaultGrey) return SurfaceLook::plain(c);
+SurfaceLook defaultLookFor(const glm::vec3& colour, bool builtInMannequin) {
+  const bool defaultGrey = colour == glm::vec3(0.8f);
+  if (!builtInMannequin && !defaultGrey) return SurfaceLook::plain(colour);
   SurfaceLook look = SurfaceLook::mannequin();
-  if (!defaultGrey) look.albedo = c;
+  if (!defaultGrey) look.albedo = colour;
   return look;
 }
 
-MeshActor makeMeshActor(const Mesh& mesh, const SurfaceLook& look) {
-  MeshActor m;
-  m.triangles = mesh.triangles;
-  m.positions = vtkSmartPointer<vtkFloatArray>::New();
-  m.positions->SetNumberOfComponents(3);
-  m.positions->SetNumberOfTuples(static_cast<vtkIdType>(mesh.vertexCount()));
-  m.normals = vtkSmartPointer<vtkFloatArray>::New();
-  m.normals->SetName("Normals");
-  m.normals->SetNumberOfComponents(3);
-  m.normals->SetNumberOfTuples(static_cast<vtkIdType>(mesh.vertexCount()));
-  vtkNew<vtkPoints> points;
-  points->SetData(m.positions);
+glm::vec3 srgbOf(const glm::vec4& linear) {
+  return {linearToSrgb(linear.x), linearToSrgb(linear.y), linearToSrgb(linear.z)};
+}
 
+vtkSmartPointer<vtkFloatArray> newArray(const char* name, int components, size_t tuples) {
+  auto array = vtkSmartPointer<vtkFloatArray>::New();
+  if (name) array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(tuples));
+  array->FillValue(0.0f);  // read (as bounds) before the first pose fills it
+  return array;
+}
+
+// VTK's texture coordinates: the uv set a material samples, through its
+// texture transform, with v flipped (VTK's images start at the bottom row).
+vtkSmartPointer<vtkFloatArray> textureCoordinates(const Mesh& mesh, const TextureRef& source) {
+  const std::vector<float>& uvs = source.texCoord == 1 && !mesh.uvs1.empty() ? mesh.uvs1 : mesh.uvs;
+  if (uvs.size() != 2 * mesh.vertexCount()) return nullptr;
+  auto tcoords = newArray("TCoords", 2, mesh.vertexCount());
+  float* out = tcoords->GetPointer(0);
+  for (size_t v = 0; v < mesh.vertexCount(); ++v) {
+    const glm::vec2 uv = source.transform.apply({uvs[2 * v], uvs[2 * v + 1]});
+    out[2 * v] = uv.x;
+    out[2 * v + 1] = 1.0f - uv.y;
+  }
+  return tcoords;
+}
+
+vtkSmartPointer<vtkActor> makePart(const Mesh& mesh, const Submesh& range, const Material* material,
+                                   vtkPoints* points, const MeshActor& m, vtkFloatArray* rest) {
   vtkNew<vtkCellArray> cells;
-  for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+  for (uint32_t t = range.firstTriangle; t < range.firstTriangle + range.triangleCount; ++t) {
     const vtkIdType tri[3] = {mesh.triangles[3 * t], mesh.triangles[3 * t + 1], mesh.triangles[3 * t + 2]};
     cells->InsertNextCell(3, tri);
   }
-  m.polyData = vtkSmartPointer<vtkPolyData>::New();
-  m.polyData->SetPoints(points);
-  m.polyData->SetPolys(cells);
-  m.polyData->GetPointData()->SetNormals(m.normals);
-  vtkNew<vtkFloatArray> rest;  // pattern coordinates for the surface shader
-  rest->SetName(kRestPositionArray);
-  rest->SetNumberOfComponents(3);
-  rest->SetNumberOfTuples(static_cast<vtkIdType>(mesh.vertexCount()));
-  if (!mesh.positions.empty())
-    std::memcpy(rest->GetPointer(0), mesh.positions.data(), mesh.positions.size() * sizeof(float));
-  m.polyData->GetPointData()->AddArray(rest);
+  vtkNew<vtkPolyData> polyData;
+  polyData->SetPoints(points);
+  polyData->SetPolys(cells);
+  polyData->GetPointData()->SetNormals(m.normals);
+  polyData->GetPointData()->AddArray(rest);
+  if (material)
+    if (const TextureRef* source = textureCoordinateSource(*material))
+      if (auto tcoords = textureCoordinates(mesh, *source)) polyData->GetPointData()->SetTCoords(tcoords);
+  if (m.tangents) polyData->GetPointData()->SetTangents(m.tangents);
 
   vtkSmartPointer<vtkOpenGLPolyDataMapper> mapper = vtkSmartPointer<vtkOpenGLPolyDataMapper>::Take(newSurfaceMapper());
-  mapper->SetInputData(m.polyData);
+  mapper->SetInputData(polyData);
   mapper->ScalarVisibilityOff();
-  m.actor = vtkSmartPointer<vtkActor>::New();
-  m.actor->SetMapper(mapper);
-  applySurfaceLook(m.actor, look);
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  return actor;
+}
+
+MeshActor makeMeshActor(const Mesh& mesh, const std::vector<Material>& materials) {
+  MeshActor m;
+  const size_t n = mesh.vertexCount();
+  m.triangles = mesh.triangles;
+  m.baseColor = mesh.baseColor;
+  m.positions = newArray(nullptr, 3, n);
+  m.normals = newArray("Normals", 3, n);
+  m.restNormals = mesh.normals;
+  if (mesh.tangents.size() == 4 * n) {
+    m.restTangents = mesh.tangents;
+    m.tangents = newArray("Tangents", 3, n);
+  }
+  vtkNew<vtkPoints> points;
+  points->SetData(m.positions);
+  auto rest = newArray(kRestPositionArray, 3, n);  // pattern coordinates for the surface shader
+  if (!mesh.positions.empty())
+    std::memcpy(rest->GetPointer(0), mesh.positions.data(), mesh.positions.size() * sizeof(float));
+  for (const Submesh& range : mesh.drawRanges()) {
+    const bool known = range.material >= 0 && range.material < static_cast<int>(materials.size());
+    m.parts.push_back(makePart(mesh, range, known ? &materials[range.material] : nullptr, points, m, rest));
+    m.partMaterials.push_back(known ? range.material : -1);
+  }
   return m;
+}
+
+// VTK's 3-component tangents from ours (xyz + handedness: VTK takes the
+// bitangent as cross(normal, tangent), right-handed).
+void copyTangentsInto(vtkFloatArray* target, const std::vector<float>& tangents) {
+  const size_t n = tangents.size() / 4;
+  if (static_cast<size_t>(target->GetNumberOfTuples()) != n) return;
+  float* out = target->GetPointer(0);
+  for (size_t v = 0; v < n; ++v)
+    for (int c = 0; c < 3; ++c) out[3 * v + c] = tangents[4 * v + c];
+  target->Modified();
+}
+
+void markModified(vtkActor* part) {
+  vtkPolyData* polyData = vtkPolyData::SafeDownCast(part->GetMapper()->GetInput());
+  polyData->GetPoints()->Modified();
+  polyData->Modified();
 }
 
 // Copies `source` (3 floats per vertex) into `target` when the sizes agree.
@@ -103,9 +166,9 @@ bool copyInto(vtkFloatArray* target, const std::vector<float>& source) {
 
 // Bounds of the vertices near (or below) the floor y = 0: the planted feet.
 // Invalid when nothing touches the floor (a jump: no contact shadow).
-Aabb footprintOf(const std::vector<MeshActor>& meshes, const Aabb& bounds) {
+Aabb footprintOf(const std::vector<MeshActor>& meshes, const Aabb& bounds, float floorHeight) {
   Aabb feet;
-  const float limit = 0.06f * (bounds.max.y - bounds.min.y);
+  const float limit = floorHeight + 0.06f * (bounds.max.y - bounds.min.y);
   for (const MeshActor& m : meshes) {
     const float* p = m.positions->GetPointer(0);
     for (vtkIdType v = 0; v < m.positions->GetNumberOfTuples(); ++v, p += 3)
@@ -119,12 +182,23 @@ Aabb footprintOf(const std::vector<MeshActor>& meshes, const Aabb& bounds) {
 struct SceneView::Impl {
   vtkNew<vtkRenderer> renderer;
   std::vector<MeshActor> meshes;
+  std::vector<Material> materials;
+  std::vector<ImageSource> images;
+  std::unique_ptr<MaterialTextures> textures;
+  bool builtInMannequin = false;
+  LookMode lookMode = LookMode::Auto;
+  float floorHeight = 0.0f;
   SkeletonOverlay skeleton;
   Ground ground;
   Aabb bounds;
   bool skeletonVisible = false;
 
   // Bounds of the meshes; of the joints for a character that has only a skeleton.
+  void forEachPart(const std::function<void(MeshActor&, size_t)>& visit) {
+    for (MeshActor& mesh : meshes)
+      for (size_t p = 0; p < mesh.parts.size(); ++p) visit(mesh, p);
+  }
+  void applyLooks();
   void updateBounds(const std::vector<glm::mat4>& worldFromBone) {
     bounds = Aabb{};
     for (const MeshActor& m : meshes) {
@@ -135,6 +209,25 @@ struct SceneView::Impl {
       for (const glm::mat4& joint : worldFromBone) bounds.extend(glm::vec3(joint[3]));
   }
 };
+
+bool parseLookMode(const std::string& name, LookMode& mode) {
+  for (LookMode m : {LookMode::Auto, LookMode::Skin, LookMode::Mannequin, LookMode::Plain})
+    if (name == lookModeName(m)) {
+      mode = m;
+      return true;
+    }
+  return false;
+}
+
+const char* lookModeName(LookMode mode) {
+  switch (mode) {
+    case LookMode::Skin: return "skin";
+    case LookMode::Mannequin: return "mannequin";
+    case LookMode::Plain: return "plain";
+    case LookMode::Auto: break;
+  }
+  return "auto";
+}
 
 SceneView::SceneView() : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
@@ -151,30 +244,82 @@ vtkRenderer* SceneView::renderer() { return impl_->renderer; }
 
 void SceneView::setCharacter(const Character& character) {
   Impl& m = *impl_;
-  for (MeshActor& mesh : m.meshes) m.renderer->RemoveActor(mesh.actor);
+  m.forEachPart([&](MeshActor& mesh, size_t p) { m.renderer->RemoveActor(mesh.parts[p]); });
   m.meshes.clear();
-  for (const Mesh& mesh : character.meshes) {
-    m.meshes.push_back(makeMeshActor(mesh, defaultLookFor(mesh, character.sourcePath == "default")));
-    m.renderer->AddActor(m.meshes.back().actor);
-  }
+  m.materials = character.materials;
+  m.images = character.images;
+  m.textures = std::make_unique<MaterialTextures>(m.images);
+  m.builtInMannequin = character.sourcePath == "default";
+  for (const Mesh& mesh : character.meshes) m.meshes.push_back(makeMeshActor(mesh, m.materials));
+  m.forEachPart([&](MeshActor& mesh, size_t p) { m.renderer->AddActor(mesh.parts[p]); });
+  m.applyLooks();
   PosedCharacter rest;
   rest.evaluate(character, -1, 0.0f, nullptr, nullptr);
   m.updateBounds(rest.worldFromBone());  // rest bounds set the size of the bones
   updatePose(rest);
+  // The floor goes under the rest pose's lowest point, wherever the file put its origin.
+  m.floorHeight = m.bounds.valid() ? m.bounds.min.y : 0.0f;
+  m.ground.setHeight(m.floorHeight);
   const float height = m.bounds.valid() ? m.bounds.max.y - m.bounds.min.y : 1.75f;
   m.skeleton.setSkeleton(character.skeleton, std::max(0.008f * std::max(height, m.bounds.diagonal() * 0.5f), 1e-4f));
   m.skeleton.update(rest.worldFromBone());
-  m.ground.fit(m.bounds, footprintOf(m.meshes, m.bounds));
+  m.ground.fit(m.bounds, footprintOf(m.meshes, m.bounds, m.floorHeight));
+}
+
+void SceneView::Impl::applyLooks() {
+  bool physicallyBased = false;
+  forEachPart([&](MeshActor& mesh, size_t p) {
+    vtkActor* actor = mesh.parts[p];
+    const int index = mesh.partMaterials[p];
+    const Material* material = index >= 0 ? &materials[index] : nullptr;
+    const glm::vec3 colour = material ? srgbOf(material->baseColorFactor) : mesh.baseColor;
+    switch (lookMode) {
+      case LookMode::Mannequin: applySurfaceLook(actor, SurfaceLook::mannequin()); return;
+      case LookMode::Plain: applySurfaceLook(actor, SurfaceLook::plain(colour)); return;
+      case LookMode::Skin: applySurfaceLook(actor, SurfaceLook::skin(material ? colour : kDefaultSkinAlbedo)); return;
+      case LookMode::Auto: break;
+    }
+    if (!material) {
+      applySurfaceLook(actor, defaultLookFor(colour, builtInMannequin));
+    } else if (material->skin) {
+      applySurfaceLook(actor, SurfaceLook::skin(colour));
+    } else {
+      applyMaterial(actor, *material, *textures);
+      physicallyBased = true;
+    }
+  });
+  useStudioEnvironment(renderer, physicallyBased);
+}
+
+void SceneView::setLookMode(LookMode mode) {
+  impl_->lookMode = mode;
+  impl_->applyLooks();
+}
+
+LookMode SceneView::lookMode() const { return impl_->lookMode; }
+
+void SceneView::setMaterial(int index, const Material& material) {
+  Impl& m = *impl_;
+  if (index < 0 || index >= static_cast<int>(m.materials.size())) return;
+  m.materials[index] = material;
+  m.applyLooks();
+}
+
+const std::vector<Material>& SceneView::materials() const { return impl_->materials; }
+
+std::vector<std::string> SceneView::warnings() const {
+  return impl_->textures ? impl_->textures->warnings() : std::vector<std::string>{};
 }
 
 void SceneView::setSurfaceLook(const SurfaceLook& look) {
-  for (MeshActor& mesh : impl_->meshes) applySurfaceLook(mesh.actor, look);
+  impl_->forEachPart([&](MeshActor& mesh, size_t p) { applySurfaceLook(mesh.parts[p], look); });
+  useStudioEnvironment(impl_->renderer, false);
 }
 
 void SceneView::updatePose(const PosedCharacter& posed) {
   Impl& m = *impl_;
   const auto& posedMeshes = posed.meshes();
-  std::vector<float> computedNormals;
+  std::vector<float> computedNormals, carriedTangents;
   for (size_t i = 0; i < m.meshes.size() && i < posedMeshes.size(); ++i) {
     MeshActor& mesh = m.meshes[i];
     if (!copyInto(mesh.positions, posedMeshes[i].positions)) continue;
@@ -184,19 +329,29 @@ void SceneView::updatePose(const PosedCharacter& posed) {
     } else {
       copyInto(mesh.normals, posedMeshes[i].normals);
     }
-    mesh.polyData->GetPoints()->Modified();
-    mesh.polyData->Modified();
+    if (mesh.tangents) {
+      const std::vector<float>& posedNormals = posedMeshes[i].normals.empty() ? computedNormals : posedMeshes[i].normals;
+      carryTangents(mesh.restNormals, mesh.restTangents, posedNormals, carriedTangents);
+      copyTangentsInto(mesh.tangents, carriedTangents);
+    }
+    for (vtkActor* part : mesh.parts) markModified(part);
   }
   m.updateBounds(posed.worldFromBone());
   m.skeleton.update(posed.worldFromBone());
-  m.ground.placeShadow(footprintOf(m.meshes, m.bounds));
+  m.ground.placeShadow(footprintOf(m.meshes, m.bounds, m.floorHeight));
 }
 
 Aabb SceneView::characterBounds() const { return impl_->bounds; }
 
+float SceneView::floorHeight() const { return impl_->floorHeight; }
+
 vtkActor* SceneView::meshActor(int index) {
-  if (index < 0 || index >= static_cast<int>(impl_->meshes.size())) return nullptr;
-  return impl_->meshes[index].actor;
+  vtkActor* found = nullptr;
+  int part = 0;
+  impl_->forEachPart([&](MeshActor& mesh, size_t p) {
+    if (part++ == index) found = mesh.parts[p];
+  });
+  return found;
 }
 
 void SceneView::setSkeletonVisible(bool visible) {
@@ -295,7 +450,7 @@ int SceneView::pickBone(int x, int y) {
   vtkNew<vtkCellPicker> picker;
   picker->SetTolerance(0.0005);
   picker->PickFromListOn();
-  for (MeshActor& mesh : m.meshes) picker->AddPickList(mesh.actor);
+  m.forEachPart([&](MeshActor& mesh, size_t p) { picker->AddPickList(mesh.parts[p]); });
   if (picker->Pick(x, y, 0.0, m.renderer) && picker->GetCellId() >= 0) {
     const double* p = picker->GetPickPosition();
     return m.skeleton.nearestBoneTo(glm::vec3(p[0], p[1], p[2]));

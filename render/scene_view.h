@@ -12,6 +12,9 @@
 
 #include <glm/glm.hpp>
 
+#include <string>
+
+#include "core/material/material.h"
 #include "core/mesh/mesh.h"
 #include "render/surface_shading.h"
 
@@ -29,6 +32,16 @@ namespace mq::render {
 class ClothActor;
 class HairActor;
 
+// How the character's surfaces are shaded. Auto: each mesh by its file's
+// material (physically based, textured), skin shading where a material is
+// marked as skin, the mannequin's wood on the built-in mannequin and on
+// meshes without a material. The others force one look on every surface.
+enum class LookMode { Auto, Skin, Mannequin, Plain };
+// "auto", "skin", "mannequin", "plain"; false when `name` is none of them.
+bool parseLookMode(const std::string& name, LookMode& mode);
+const char* lookModeName(LookMode mode);
+inline constexpr glm::vec3 kDefaultSkinAlbedo{0.85f, 0.69f, 0.6f};
+
 class SceneView {
  public:
   SceneView();
@@ -41,14 +54,26 @@ class SceneView {
   // Character
   // Builds one actor per mesh and the skeleton overlay, shown in the rest pose.
   void setCharacter(const Character& character);
-  // Shades every mesh with `look` (setCharacter gives the mannequin look to
-  // meshes without a colour of their own, a plain look to the others).
+  // Builds one actor per mesh and material range; the floor goes under the
+  // rest pose's lowest point. Shaded by the look mode (Auto at first).
+  void setLookMode(LookMode mode);
+  LookMode lookMode() const;
+  // Replaces material `index` (a user's edit) and reshades.
+  void setMaterial(int index, const Material& material);
+  const std::vector<Material>& materials() const;
+  // Texture images that could not be used, each naming the image and why.
+  std::vector<std::string> warnings() const;
+  // Shades every surface with `look`, whatever the look mode.
   void setSurfaceLook(const SurfaceLook& look);
   // Copies the posed positions and normals into the actors' arrays.
   void updatePose(const PosedCharacter& posed);
+  // Height (y) of the floor: the rest pose's lowest point.
+  float floorHeight() const;
   // World-space bounds of the character as last posed (invalid when empty).
   Aabb characterBounds() const;
-  // The actor of mesh `index` (for tools that colour or hide a mesh), or null.
+  // The actor of surface part `index` (meshes in order, one part per material
+  // range; one per mesh for most files), for tools that pick, colour or hide
+  // surfaces; null past the last.
   vtkActor* meshActor(int index);
 
   // Overlays

@@ -1,8 +1,21 @@
 #include "render/studio.h"
 
+#include <glm/glm.hpp>
+
+#include <cmath>
+
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
 #include <vtkLight.h>
 #include <vtkNew.h>
+#include <vtkOpenGLRenderer.h>
+#include <vtkPBRIrradianceTexture.h>
+#include <vtkPBRLUTTexture.h>
+#include <vtkPBRPrefilterTexture.h>
+#include <vtkPointData.h>
 #include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <vtkTexture.h>
 
 namespace mq::render {
 namespace {
@@ -22,7 +35,63 @@ void addCameraLight(vtkRenderer* renderer, double x, double y, double z, double 
   renderer->AddLight(light);
 }
 
+// Linear radiance of the studio in world direction d (y up, the character
+// faces +z): a sky graded from horizon to zenith, a dim floor, and a soft
+// rectangular light high at the front left, like the key light.
+glm::vec3 studioRadiance(const glm::vec3& d) {
+  const glm::vec3 zenith(0.55f, 0.60f, 0.68f), horizon(0.42f, 0.42f, 0.42f), floor(0.10f, 0.09f, 0.085f);
+  glm::vec3 colour = d.y >= 0.0f ? glm::mix(horizon, zenith, std::sqrt(d.y))
+                                 : glm::mix(horizon * 0.5f, floor, std::min(1.0f, -d.y * 4.0f));
+  const glm::vec3 keyDirection = glm::normalize(glm::vec3(-0.6f, 0.6f, 0.55f));
+  const float key = glm::dot(d, keyDirection);
+  colour += glm::vec3(1.6f, 1.5f, 1.35f) * glm::smoothstep(0.88f, 0.95f, key);
+  return colour;
+}
+
+vtkSmartPointer<vtkTexture> makeStudioEnvironment() {
+  constexpr int kWidth = 128, kHeight = 64;
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(kWidth, kHeight, 1);
+  vtkNew<vtkFloatArray> radiance;
+  radiance->SetNumberOfComponents(3);
+  radiance->SetNumberOfTuples(kWidth * kHeight);
+  for (int row = 0; row < kHeight; ++row) {
+    // VTK's equirectangular images: row 0 at the bottom (down), u around +y.
+    const float latitude = (static_cast<float>(row) + 0.5f) / kHeight * static_cast<float>(M_PI) - static_cast<float>(M_PI_2);
+    for (int column = 0; column < kWidth; ++column) {
+      const float longitude = (static_cast<float>(column) + 0.5f) / kWidth * 2.0f * static_cast<float>(M_PI);
+      const glm::vec3 d(std::cos(latitude) * std::sin(longitude), std::sin(latitude),
+                        -std::cos(latitude) * std::cos(longitude));
+      const glm::vec3 c = studioRadiance(d);
+      radiance->SetTuple3(row * kWidth + column, c.x, c.y, c.z);
+    }
+  }
+  image->GetPointData()->SetScalars(radiance);
+  auto texture = vtkSmartPointer<vtkTexture>::New();
+  texture->SetInputData(image);
+  texture->InterpolateOn();
+  texture->MipmapOn();
+  texture->SetColorModeToDirectScalars();
+  return texture;
+}
+
 }  // namespace
+
+void useStudioEnvironment(vtkRenderer* renderer, bool enabled) {
+  if (renderer->GetUseImageBasedLighting() == enabled) return;
+  renderer->SetUseImageBasedLighting(enabled);
+  if (!enabled) return;
+  static vtkSmartPointer<vtkTexture> studio = makeStudioEnvironment();
+  renderer->SetEnvironmentTexture(studio, false);
+  // VTK's defaults (a 1024^2 BRDF table, 512-sample prefiltering) take
+  // seconds in software GL; these are enough for a soft studio.
+  if (auto* gl = vtkOpenGLRenderer::SafeDownCast(renderer)) {
+    gl->GetEnvMapLookupTable()->SetLUTSize(128);
+    gl->GetEnvMapLookupTable()->SetLUTSamples(256);
+    gl->GetEnvMapPrefiltered()->SetPrefilterMaxSamples(64);
+    gl->GetEnvMapPrefiltered()->SetPrefilterLevels(5);
+  }
+}
 
 void addThreePointLights(vtkRenderer* renderer) {
   renderer->AutomaticLightCreationOff();

@@ -10,5 +10,10 @@ namespace mq::render {
 
 void addThreePointLights(vtkRenderer* renderer);
 void setStudioBackground(vtkRenderer* renderer);
+// Image-based lighting for physically based materials: a neutral studio
+// environment (soft sky, a large warm softbox at the key's side, a dark
+// floor) generated here, so no file is needed. Off when `enabled` is false
+// (VTK then skips its precomputation).
+void useStudioEnvironment(vtkRenderer* renderer, bool enabled);
 
 }  // namespace mq::render

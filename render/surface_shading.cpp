@@ -147,6 +147,11 @@ vtkOpenGLPolyDataMapper* newSurfaceMapper() {
 
 void applySurfaceLook(vtkActor* actor, const SurfaceLook& look) {
   vtkProperty* p = actor->GetProperty();
+  p->RemoveAllTextures();  // a file material's, when switching looks
+  p->SetBackfaceCulling(false);
+  p->SetOpacity(1.0);
+  actor->SetForceTranslucent(false);
+  actor->SetForceOpaque(false);
   p->SetInterpolationToPhong();
   p->SetColor(look.albedo.x, look.albedo.y, look.albedo.z);  // for renderers without the shader
   vtkShaderProperty* sp = actor->GetShaderProperty();

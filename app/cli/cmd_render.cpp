@@ -30,11 +30,10 @@ ImageSize parseSize(const std::string& text) {
   return size;
 }
 
-render::SurfaceLook parseLook(const std::string& name) {
-  if (name == "mannequin") return render::SurfaceLook::mannequin();
-  if (name == "skin") return render::SurfaceLook::skin({0.85f, 0.69f, 0.6f});
-  if (name == "plain") return render::SurfaceLook::plain({0.8f, 0.8f, 0.8f});
-  throw Error("--look expects mannequin, skin or plain, got '" + name + "'");
+render::LookMode parseLook(const std::string& name) {
+  render::LookMode mode = render::LookMode::Auto;
+  if (!render::parseLookMode(name, mode)) throw Error("--look expects auto, skin, mannequin or plain, got '" + name + "'");
+  return mode;
 }
 
 int chooseClip(const Args& args, const LoadedScene& scene, const std::string& file) {
@@ -74,7 +73,9 @@ int runRender(const std::vector<std::string>& argv) {
   render::SceneView view;
   view.setCharacter(scene.character);
   view.updatePose(posed);
-  if (args.has("--look")) view.setSurfaceLook(parseLook(args.option("--look")));
+  if (args.has("--look")) view.setLookMode(parseLook(args.option("--look")));
+  for (const std::string& warning : scene.character.loadWarnings) std::cerr << "warning: " << warning << "\n";
+  for (const std::string& warning : view.warnings()) std::cerr << "warning: " << warning << "\n";
   // A motion file alone (no meshes) shows its skeleton.
   view.setSkeletonVisible(args.has("--skeleton") || scene.document.view.showSkeleton ||
                           scene.character.meshes.empty());
@@ -95,7 +96,7 @@ int runRender(const std::vector<std::string>& argv) {
 }
 
 Registration reg({"render", "FILE --out OUT.png [--time T] [--clip NAME|INDEX|rest] [--size WxH] [--skeleton]\n"
-                  "         [--look mannequin|skin|plain] [--hair auto|simulate|rigid|off]\n"
+                  "         [--look auto|skin|mannequin|plain] [--hair auto|simulate|rigid|off]\n"
                   "         [--hair-shadow count|maps] [--skinning lbs|dqs|cones]",
                   "renders an image offscreen (starts a private Xvfb when there is no X display)", runRender});
 
