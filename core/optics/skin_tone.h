@@ -69,10 +69,12 @@ SkinOptics skinFromTone(const SkinTone& tone, const std::string& name = "tone");
 SkinOptics skinPreset(const std::string& name);
 std::vector<std::string> skinPresetNames();
 
-// Blender Principled BSDF settings giving the same look: base and subsurface
-// colour = R_d; radius = diffuse mean free path in mm, to be multiplied by
-// scale (metres per mm) in a scene in metres (Blender 4: Subsurface Scale;
-// Blender 3: the Subsurface factor); IOR = eta.
+// Blender Principled BSDF settings for the same skin: base and subsurface
+// colour = R_d (linear); radius = diffuse mean free path 1/sigma_tr in mm;
+// IOR = eta. In a scene in metres, Blender 4 takes Subsurface Weight 1,
+// Radius in mm and Subsurface Scale 0.001; Blender 3's Subsurface factor both
+// weights and scales the radius, so there Subsurface = 1 and Radius =
+// radius * 0.001 (metres).
 struct BlenderSubsurface {
   Rgb baseColor{}, subsurfaceColor{}, subsurfaceRadius{};
   double subsurfaceScale = 0.001, subsurfaceWeight = 1.0, subsurfaceIor = 1.4;
