@@ -52,6 +52,9 @@ struct SlabResult {
   std::vector<std::int64_t> orders;            // reflected, by number of scattering events
 
   double reflectance() const { return double(reflected) / paths; }
+  // Reflected per photon that entered: what the dipole's R_d predicts,
+  // since it leaves the entry Fresnel factor to the caller.
+  double reflectanceOfEntered() const { return double(reflected) / double(paths - specular); }
   double transmittance() const { return double(transmitted) / paths; }
   double singleScatterFraction() const { return orders.size() > 1 ? double(orders[1]) / paths : 0.0; }
 };

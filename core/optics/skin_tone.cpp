@@ -13,7 +13,7 @@ namespace {
 
 constexpr Rgb kWavelengthNm = {650.0, 550.0, 450.0};
 // Kubelka-Munk S of the epidermis per unit sigma_s', calibrated against mc_slab (header).
-constexpr double kEpidermisScatteringToS = 0.14;
+constexpr double kEpidermisScatteringToS = 0.16;
 
 // Jensen et al. 2001, table of measured coefficients (mm^-1), eta 1.3.
 constexpr Rgb kSkin1SigmaSPrime = {0.74, 0.88, 1.01};
@@ -69,20 +69,31 @@ Rgb SkinOptics::diffuseMeanFreePath() const {
   return out;
 }
 
-SkinOptics skinFromTone(const SkinTone& tone, const std::string& name) {
-  SkinOptics skin{name, {}, {}, tone.eta, false};
+SkinLayers skinLayers(const SkinTone& tone) {
+  SkinLayers layers;
+  layers.epidermisThickness = tone.epidermisThickness;
+  layers.eta = tone.eta;
   for (int c = 0; c < 3; ++c) {
     const double lambda = kWavelengthNm[c];
     const double melaninMix = tone.eumelaninFraction * eumelaninAbsorption(lambda) +
                               (1.0 - tone.eumelaninFraction) * pheomelaninAbsorption(lambda);
-    const double epidermisSigmaA = tone.melanin * melaninMix + (1.0 - tone.melanin) * baselineAbsorption(lambda);
+    layers.epidermisSigmaA[c] = tone.melanin * melaninMix + (1.0 - tone.melanin) * baselineAbsorption(lambda);
+    layers.epidermisSigmaSPrime[c] = epidermisScattering(lambda);
+    layers.dermisSigmaA[c] = tone.hemoglobin * bloodAbsorption(c) + (1.0 - tone.hemoglobin) * baselineAbsorption(lambda);
+    layers.dermisSigmaSPrime[c] = kSkin1SigmaSPrime[c];
+  }
+  return layers;
+}
+
+SkinOptics skinFromTone(const SkinTone& tone, const std::string& name) {
+  const SkinLayers layers = skinLayers(tone);
+  SkinOptics skin{name, {}, {}, tone.eta, false};
+  for (int c = 0; c < 3; ++c) {
     const KubelkaMunkLayer epidermis =
-        kubelkaMunkLayer(2.0 * epidermisSigmaA, kEpidermisScatteringToS * epidermisScattering(lambda), tone.epidermisThickness);
-
-    const double dermisSigmaA = tone.hemoglobin * bloodAbsorption(c) + (1.0 - tone.hemoglobin) * baselineAbsorption(lambda);
-    const Dipole dermis(dermisSigmaA, kSkin1SigmaSPrime[c], tone.eta);
+        kubelkaMunkLayer(2.0 * layers.epidermisSigmaA[c], kEpidermisScatteringToS * layers.epidermisSigmaSPrime[c],
+                         layers.epidermisThickness);
+    const Dipole dermis(layers.dermisSigmaA[c], layers.dermisSigmaSPrime[c], tone.eta);
     const KubelkaMunkLayer dermisHalfSpace{dermis.totalReflectance(), 0.0, dermis.totalReflectance()};
-
     const double reflectance = addLayers(epidermis, dermisHalfSpace).reflectance;
     const ReducedCoefficients effective =
         coefficientsFromReflectance(reflectance, dermis.diffuseMeanFreePath(), tone.eta);

@@ -17,12 +17,13 @@
 //     dermis    sigma_a = C_h blood(lambda) + (1 - C_h) baseline, blood 75 % oxygenated,
 //     dermis    sigma_s' = Jensen's measured skin1 sigma_s' (a measured dermis-dominated value).
 //   The epidermis (0.1 mm) is a Kubelka-Munk layer with K = 2 sigma_a and
-//   S = 0.14 sigma_s'; the dermis is a dipole half-space; the two combine by
+//   S = 0.16 sigma_s'; the dermis is a dipole half-space; the two combine by
 //   the Kubelka-Munk adding rule. K = 2 sigma_a is the usual diffuse
-//   path-length factor; the 0.14 was calibrated against mc_slab (the same two
-//   layers, diffuse incidence, eta 1.4, g 0.79 and 0.81, C_m 0.01-0.43): the
-//   closed form is then within about 10 % (rms of the log) of the random
-//   walk, where 0.75 (diffusion theory's 3/4) is off by a factor 2-3.
+//   path-length factor; the 0.16 was calibrated against mc_slab (the same two
+//   layers, diffuse incidence, eta 1.4, g 0.79 and 0.81, C_m 0.01-0.43,
+//   reflectance per photon entered like the dipole's R_d): the closed form is
+//   then within about 9 % (rms of the log) of the random walk, where 0.75
+//   (diffusion theory's 3/4) is off by a factor 2-3.
 //   That reference also shows the limit of "more melanin, less blue": B/R
 //   falls until C_m is about 0.2, then rises again as the epidermis' own
 //   backscatter, which melanin cannot absorb before it leaves, dominates.
@@ -60,6 +61,14 @@ struct SkinTone {
   double epidermisThickness = 0.1;  // mm
   double eta = 1.4;
 };
+
+// The tone model's two layers, per channel (mm^-1): what skinFromTone
+// combines, and what mc_slab can trace as the reference.
+struct SkinLayers {
+  Rgb epidermisSigmaA{}, epidermisSigmaSPrime{}, dermisSigmaA{}, dermisSigmaSPrime{};
+  double epidermisThickness = 0, eta = 0;
+};
+SkinLayers skinLayers(const SkinTone& tone);
 
 SkinOptics skinFromTone(const SkinTone& tone, const std::string& name = "tone");
 
