@@ -69,10 +69,11 @@ TEST(OpticsGaussianSum, NnlsMeetsTheKktConditions) {
   const Eigen::VectorXd gradient = a.transpose() * (b - a * x);  // minus the objective's gradient / 2
   for (int j = 0; j < x.size(); ++j) {
     EXPECT_GE(x[j], 0.0);
-    if (x[j] > 0.0)
+    if (x[j] > 0.0) {
       EXPECT_NEAR(gradient[j], 0.0, 1e-9);
-    else
+    } else {
       EXPECT_LE(gradient[j], 1e-9);
+    }
   }
 }
 

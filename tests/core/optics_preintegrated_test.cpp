@@ -113,7 +113,9 @@ TEST(OpticsPreintegrated, LutValuesAreBoundedMonotoneAndMatchTheEvaluator) {  //
           const float d = lut.value(c, row, channel);
           ASSERT_GE(d, 0.0f);
           ASSERT_LE(d, 1.0f);
-          if (c > 0) ASSERT_GE(d, lut.value(c - 1, row, channel) - 1e-6f) << preset << " row " << row;
+          if (c > 0) {
+            ASSERT_GE(d, lut.value(c - 1, row, channel) - 1e-6f) << preset << " row " << row;
+          }
         }
     for (int row : {5, 40, 127})
       for (int c : {0, 100, 128, 140, 255})
