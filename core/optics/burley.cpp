@@ -19,6 +19,19 @@ double BurleyProfile::lineSpread(double s) const {
          (std::cyl_bessel_k(0.0, x / shape) + std::cyl_bessel_k(0.0, x / (3.0 * shape)));
 }
 
+double BurleyProfile::sampleRadius(double xi) const {
+  // The CDF is increasing and concave (its density e^{-r/d} + e^{-r/3d} falls),
+  // so Newton's steps from r = 0 stay left of the root and converge to it.
+  double r = 0.0;
+  for (int i = 0; i < 100; ++i) {
+    const double density = (std::exp(-r / shape) + std::exp(-r / (3.0 * shape))) / (4.0 * shape);
+    const double step = (xi - fractionWithin(r)) / density;
+    r += step;
+    if (step < 1e-13 * (r + shape)) break;
+  }
+  return r;
+}
+
 double burleyScaleSearchlightMfp(double albedo) {
   const double offset = std::abs(albedo - 0.8);
   return 1.85 - albedo + 7.0 * offset * offset * offset;

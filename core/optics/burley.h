@@ -22,6 +22,9 @@ struct BurleyProfile {
   double radial(double r) const;             // R(r)
   double fractionWithin(double r) const;     // CDF of the normalised profile
   double lineSpread(double s) const;         // P(s)
+  // The radius at which fractionWithin reaches xi in [0, 1): importance
+  // sampling of the profile over the disc (its angle is uniform).
+  double sampleRadius(double xi) const;
 };
 
 // Scaling factors s(A) of the fit (Christensen and Burley 2015, §5):

@@ -51,6 +51,22 @@ TEST(OpticsBurley, LineSpreadIsTheAbelProjectionOfTheProfile) {
   }
 }
 
+TEST(OpticsBurley, SampledRadiusInvertsTheCdf) {
+  const BurleyProfile p = kProfiles[0];
+  double previous = -1.0;
+  for (double xi = 0.0; xi < 0.9999; xi += 0.001) {
+    const double r = p.sampleRadius(xi);
+    EXPECT_NEAR(p.fractionWithin(r), xi, 1e-10);
+    EXPECT_GT(r, previous);
+    previous = r;
+  }
+  // Mean radius of the normalised profile: d/4 + (3/4)(3d) = 2.5 d.
+  const int n = 100000;
+  double sum = 0.0;
+  for (int i = 0; i < n; ++i) sum += p.sampleRadius((i + 0.5) / n);
+  EXPECT_NEAR(sum / n, 2.5 * p.shape, 1e-3 * p.shape);
+}
+
 TEST(OpticsBurley, ScalingFactorsFollowTheFits) {
   EXPECT_DOUBLE_EQ(burleyScaleSearchlightMfp(0.8), 1.05);
   EXPECT_DOUBLE_EQ(burleyScaleDiffuseMfp(0.8), 1.1);
