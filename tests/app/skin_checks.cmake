@@ -1,0 +1,47 @@
+# `mannequin-cli skin --preset skin1|skin2 --json` reproduces the total
+# diffuse reflectance Jensen et al. 2001 published for their measured skin
+# (0.44, 0.22, 0.13 and 0.63, 0.44, 0.34), within 0.01, and prints every key.
+# -DCLI
+function(skin_json preset out_var)
+  execute_process(COMMAND "${CLI}" skin --preset ${preset} --json RESULT_VARIABLE rc OUTPUT_VARIABLE json ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "skin --preset ${preset} failed (${rc}): ${err}")
+  endif()
+  set(${out_var} "${json}" PARENT_SCOPE)
+endfunction()
+
+# if(LESS/GREATER) compare as floating-point numbers.
+function(expect_between value low high what)
+  if(value LESS low OR value GREATER high)
+    message(FATAL_ERROR "${what}: ${value} is outside [${low}, ${high}]")
+  endif()
+endfunction()
+
+function(check_rd preset)
+  skin_json(${preset} json)
+  set(channel 0)
+  foreach(bounds ${ARGN})
+    string(REPLACE ":" ";" bounds "${bounds}")
+    list(GET bounds 0 low)
+    list(GET bounds 1 high)
+    string(JSON rd GET "${json}" rd ${channel})
+    expect_between(${rd} ${low} ${high} "${preset} rd[${channel}]")
+    math(EXPR channel "${channel} + 1")
+  endforeach()
+  foreach(key sigma_a sigma_s_prime albedo mfp_mm)
+    string(JSON n LENGTH "${json}" ${key})
+    if(NOT n EQUAL 3)
+      message(FATAL_ERROR "${preset}: ${key} has ${n} entries, expected 3")
+    endif()
+  endforeach()
+  string(JSON eta GET "${json}" eta)
+  expect_between(${eta} 1.2999 1.3001 "${preset} eta")
+  string(JSON radius GET "${json}" blender subsurface_radius_mm 0)
+  string(JSON mfp GET "${json}" mfp_mm 0)
+  if(NOT radius STREQUAL mfp)
+    message(FATAL_ERROR "${preset}: Blender radius ${radius} is not the mean free path ${mfp}")
+  endif()
+endfunction()
+
+check_rd(skin1 0.43:0.45 0.21:0.23 0.12:0.14)
+check_rd(skin2 0.62:0.64 0.43:0.45 0.33:0.35)
