@@ -13,6 +13,7 @@
 #include <QStyle>
 #include <QToolBar>
 #include <QUndoStack>
+#include <QActionGroup>
 #include <QUndoView>
 
 #include "render/scene_view.h"
@@ -232,6 +233,20 @@ void MainWindow::createMenus() {
   viewMenu_->addAction(showSkeletonAction_);
   viewMenu_->addAction(showGridAction_);
   viewMenu_->addAction(frameAllAction_);
+  lookMenu_ = viewMenu_->addMenu(tr("Surface &Look"));
+  auto* looks = new QActionGroup(this);
+  for (const auto& [mode, label, tip] :
+       {std::tuple{render::LookMode::Auto, tr("&Auto"), tr("Each surface by its file's material; the mannequin in wood")},
+        std::tuple{render::LookMode::Skin, tr("&Skin"), tr("Every surface shaded as skin")},
+        std::tuple{render::LookMode::Mannequin, tr("&Mannequin"), tr("Every surface in the mannequin's wood")},
+        std::tuple{render::LookMode::Plain, tr("&Plain"), tr("Every surface in its flat colour, no texture")}}) {
+    QAction* action = lookMenu_->addAction(label);
+    action->setCheckable(true);
+    action->setToolTip(tip);
+    action->setData(QString(render::lookModeName(mode)));
+    looks->addAction(action);
+    connect(action, &QAction::triggered, this, [this, mode] { document_->setLook(render::lookModeName(mode)); });
+  }
   viewMenu_->addSeparator();
   panelsMenu_ = viewMenu_->addMenu(tr("&Panels"));
   for (QDockWidget* dock : {treeDock_, historyDock_, propertiesDock_, timelineDock_})
@@ -308,6 +323,11 @@ void MainWindow::connectDocument() {
     const bool visible = document_->viewSettings().showSkeleton;
     showSkeletonAction_->setChecked(visible);
     scene_->setSkeletonVisible(visible);
+    applyLook();
+    viewport_->requestRender();
+  });
+  connect(document_, &EditorDocument::materialChanged, this, [this](int index) {
+    scene_->setMaterial(index, document_->character().materials[index]);
     viewport_->requestRender();
   });
   connect(document_, &EditorDocument::modifiedChanged, this, &MainWindow::updateTitle);
@@ -324,6 +344,7 @@ void MainWindow::connectDocument() {
 
 void MainWindow::onCharacterReplaced() {
   scene_->setCharacter(document_->character());
+  applyLook();
   scene_->updatePose(document_->posed());
   scene_->setSkeletonVisible(document_->viewSettings().showSkeleton);
   scene_->setHighlightedBone(-1);
@@ -331,6 +352,14 @@ void MainWindow::onCharacterReplaced() {
   statsLabel_->setText(document_->summary());
   updateTitle();
   viewport_->requestRender();
+}
+
+void MainWindow::applyLook() {
+  render::LookMode mode = render::LookMode::Auto;
+  render::parseLookMode(document_->viewSettings().look, mode);
+  if (mode != scene_->lookMode()) scene_->setLookMode(mode);
+  for (QAction* action : lookMenu_->actions())
+    action->setChecked(action->data().toString().toStdString() == render::lookModeName(mode));
 }
 
 void MainWindow::onPoseChanged() {

@@ -118,6 +118,8 @@ class MainWindow : public QMainWindow {
   // Document -> scene sync
   void onCharacterReplaced();
   void onPoseChanged();
+  // Shades the scene with the document's surface look and ticks its menu entry.
+  void applyLook();
   void onSelectionChanged();
   void updateTitle();
   void storeCamera();
@@ -153,6 +155,7 @@ class MainWindow : public QMainWindow {
   QAction* playAction_ = nullptr;
   QMenu* recentMenu_ = nullptr;
   QMenu* viewMenu_ = nullptr;
+  QMenu* lookMenu_ = nullptr;  // surface look: auto, skin, mannequin, plain
   QMenu* panelsMenu_ = nullptr;
   QToolBar* toolBar_ = nullptr;
 

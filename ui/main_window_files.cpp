@@ -2,6 +2,8 @@
 // exporting, recent files, progress, drag and drop, closing.
 #include "ui/main_window.h"
 
+#include <iostream>
+
 #include <variant>
 
 #include <QAction>
@@ -193,10 +195,19 @@ void MainWindow::adoptLoaded(LoadedDocument loaded, double seconds) {
   if (loaded.documentPath.isEmpty()) loaded.scene.view.showSkeleton = true;
   const QString name = loaded.displayName;
   document_->replace(std::move(loaded));
-  statusBar()->showMessage(tr("Opened %1: %2 (%3 s)")
+  // Problems worked around while loading (a missing texture): printed in
+  // full, and the first one shown with the open message.
+  std::vector<std::string> warnings = document_->character().loadWarnings;
+  for (const std::string& w : scene_->warnings()) warnings.push_back(w);
+  for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+  const QString more = warnings.empty() ? QString()
+                                        : tr("; warning: %1%2").arg(QString::fromStdString(warnings.front()),
+                                                                    warnings.size() > 1 ? tr(" (and %1 more)").arg(warnings.size() - 1) : QString());
+  statusBar()->showMessage(tr("Opened %1: %2 (%3 s)%4")
                                .arg(name, document_->summary())
-                               .arg(seconds, 0, 'f', 2),
-                           8000);
+                               .arg(seconds, 0, 'f', 2)
+                               .arg(more),
+                           warnings.empty() ? 8000 : 20000);
 }
 
 bool MainWindow::saveDocument(const QString& path, QString* error) {

@@ -11,6 +11,26 @@
 namespace mq::cli {
 namespace {
 
+// A material's factors and the images its textures sample.
+nlohmann::json describe(const Material& m, const Character& c) {
+  nlohmann::json textures = nlohmann::json::object();
+  const std::pair<const char*, const TextureRef*> maps[] = {
+      {"base_color", &m.baseColorTexture}, {"metallic_roughness", &m.metallicRoughnessTexture},
+      {"normal", &m.normalTexture},         {"occlusion", &m.occlusionTexture},
+      {"emissive", &m.emissiveTexture},     {"specular", &m.specularTexture}};
+  for (const auto& [role, ref] : maps)
+    if (ref->present() && ref->image < static_cast<int>(c.images.size())) textures[role] = c.images[ref->image].name;
+  const glm::vec4& base = m.baseColorFactor;
+  return {{"name", m.name},
+          {"base_color", {base.x, base.y, base.z, base.w}},
+          {"metallic", m.metallicFactor},
+          {"roughness", m.roughnessFactor},
+          {"alpha_mode", alphaModeName(m.alphaMode)},
+          {"double_sided", m.doubleSided},
+          {"skin", m.skin},
+          {"textures", textures}};
+}
+
 nlohmann::json describe(const Character& c) {
   nlohmann::json j;
   j["name"] = c.name;
@@ -29,6 +49,8 @@ nlohmann::json describe(const Character& c) {
     const glm::vec3 head(rest[b][3]);
     j["bones"].push_back({{"name", bone.name}, {"parent", bone.parent}, {"head", {head.x, head.y, head.z}}});
   }
+  j["materials"] = nlohmann::json::array();
+  for (const Material& m : c.materials) j["materials"].push_back(describe(m, c));
   j["skinning"] = skinningMethodName(c.skinning);
   j["vertices"] = c.vertexCount();
   j["triangles"] = c.triangleCount();
@@ -55,6 +77,10 @@ void printText(const Character& c, std::ostream& out) {
   out << "  bones: " << c.skeleton.boneCount() << ", max influences per vertex: " << c.maxInfluences() << "\n";
   for (int b = 0; b < c.skeleton.boneCount(); ++b)
     if (c.skeleton.bone(b).parent < 0) printBoneTree(c.skeleton, b, 0, out);
+  out << "  materials: " << c.materials.size() << "\n";
+  for (const Material& m : c.materials)
+    out << "    " << m.name << (m.textured() ? ", textured" : "") << (m.skin ? ", skin" : "")
+        << (m.alphaMode != AlphaMode::Opaque ? std::string(", alpha ") + alphaModeName(m.alphaMode) : "") << "\n";
   out << "  clips: " << c.clips.size() << "\n";
   for (size_t i = 0; i < c.clips.size(); ++i)
     out << "    [" << i << "] " << c.clips[i].name << ": " << c.clips[i].duration() << " s (keys "
@@ -74,7 +100,7 @@ int runInfo(const std::vector<std::string>& argv) {
 }
 
 static Registration reg({"info", "FILE [--json]",
-                         "meshes (vertices, triangles), bones (name, parent), max influences, clips (name, duration)",
+                         "meshes (vertices, triangles), bones (name, parent), max influences, materials, clips (name, duration)",
                          runInfo});
 
 }  // namespace

@@ -73,7 +73,7 @@ int runRender(const std::vector<std::string>& argv) {
   render::SceneView view;
   view.setCharacter(scene.character);
   view.updatePose(posed);
-  if (args.has("--look")) view.setLookMode(parseLook(args.option("--look")));
+  view.setLookMode(parseLook(args.option("--look", scene.document.view.look)));
   for (const std::string& warning : scene.character.loadWarnings) std::cerr << "warning: " << warning << "\n";
   for (const std::string& warning : view.warnings()) std::cerr << "warning: " << warning << "\n";
   // A motion file alone (no meshes) shows its skeleton.

@@ -3,7 +3,7 @@
 // (glTF, GLB, FBX, DAE), a BVH motion (applied to the default mannequin) or a
 // scene document. --screenshot renders the window once the file is open,
 // saves it as a PNG and quits (exit code 1 if the file could not be opened).
-// --select BONE, --clip NAME and --time SECONDS set up the view first;
+// --select NAME (bone, material or mesh), --clip NAME and --time SECONDS set up the view first;
 // --map MAP names the bone-name map of a BVH FILE. --add-garment TYPE,
 // --bake-garments (twice: bake twice), --export-bake DIR, --simulate-garments N, --garment-stretch
 // and --save-as script the garment tool
@@ -53,7 +53,8 @@ int main(int argc, char** argv) {
                                        "or a scene document (.mqscene)");
   const QCommandLineOption screenshot("screenshot", "Save a picture of the window to OUT.png and quit.", "OUT.png");
   const QCommandLineOption size("size", "Window size, WIDTHxHEIGHT (default 1600x1000).", "WxH", "1600x1000");
-  const QCommandLineOption select("select", "Select BONE (shows the rotation gizmo on it).", "BONE");
+  const QCommandLineOption select("select", "Select a bone (shows the rotation gizmo on it), a material or a mesh by NAME.",
+                                  "NAME");
   const QCommandLineOption clip("clip", "Show clip NAME (or index; rest: the rest pose).", "NAME");
   const QCommandLineOption timeOption("time", "Go to SECONDS into the clip.", "SECONDS");
   const QCommandLineOption map("map", "Bone-name map for a BVH FILE (see core/io/bvh_import.h).", "MAP");
@@ -150,7 +151,8 @@ int main(int argc, char** argv) {
           }
           if (stretch) garmentTool->setStretchVisible(true);
           if (setTime) doc->setTime(doc->clipStart() + float(time));
-          if (!selectBone.isEmpty()) doc->selectBone(doc->character().skeleton.findBone(selectBone.toStdString()));
+          if (!selectBone.isEmpty() && !doc->selectByName(selectBone.toStdString()))
+            std::fprintf(stderr, "mannequin: --select: no bone, material or mesh named '%s'\n", qPrintable(selectBone));
           QString error;
           if (!savePath.isEmpty() && !window.saveDocument(savePath, &error))
             std::fprintf(stderr, "mannequin: %s\n", qPrintable(error));

@@ -53,7 +53,24 @@ LoadedScene resolveSceneDocument(const SceneDocument& document, const std::strin
   scene.edits = poseEditsFromNames(document.poseRotations, scene.character.skeleton);
   scene.character.skinning = document.skinning;
   if (scene.character.skinning == SkinningMethod::Cones) bindSectionCones(scene.character);
+  scene.fileMaterials = scene.character.materials;
+  applyMaterialOverrides(document.materials, scene.character);
   return scene;
+}
+
+void applyMaterialOverrides(const std::map<std::string, MaterialOverride>& overrides, Character& character) {
+  for (const auto& [name, changes] : overrides) {
+    bool found = false;
+    for (Material& material : character.materials)
+      if (material.name == name) {
+        changes.applyTo(material);
+        found = true;
+      }
+    if (!found)
+      character.loadWarnings.push_back("the scene changes material '" + name + "', which " +
+                                       (character.name.empty() ? std::string("the character") : character.name) +
+                                       " does not have; the change is kept but unused");
+  }
 }
 
 LoadedScene openScene(const std::string& fileOrDefault) {

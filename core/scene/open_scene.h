@@ -16,7 +16,14 @@ struct LoadedScene {
   Character character;       // empty skeleton and meshes when the scene has none
   int clipIndex = -1;        // current clip, -1 for none
   PoseEdits edits;           // document pose rotations mapped to bone indices
+  // The character file's materials before the document's changes (the
+  // editor diffs against them when it saves).
+  std::vector<Material> fileMaterials;
 };
+
+// Applies a document's material changes to `character` by material name; a
+// name the character lacks becomes a load warning.
+void applyMaterialOverrides(const std::map<std::string, MaterialOverride>& overrides, Character& character);
 
 // Throws FileError naming the file and the problem.
 LoadedScene openScene(const std::string& fileOrDefault);

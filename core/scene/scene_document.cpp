@@ -82,6 +82,9 @@ SceneDocument fromJson(const json& root) {
     const json& v = root["view"];
     if (!v.is_object()) throw Error("\"view\" must be an object");
     doc.view.showSkeleton = v.value("skeleton", false);
+    doc.view.look = readString(v, "look", "auto");
+    if (doc.view.look != "auto" && doc.view.look != "skin" && doc.view.look != "mannequin" && doc.view.look != "plain")
+      throw Error("view.look: unknown look '" + doc.view.look + "' (expected auto, skin, mannequin or plain)");
     if (v.contains("camera")) {
       doc.view.hasCamera = true;
       doc.view.cameraPosition = readVec3(v["camera"].value("position", json()), "view.camera.position");
@@ -95,6 +98,11 @@ SceneDocument fromJson(const json& root) {
     const auto parsed = parseSkinningMethod(method);
     if (!parsed) throw Error("skinning.method: unknown method '" + method + "' (expected " + skinningMethodChoices() + ")");
     doc.skinning = *parsed;
+  }
+  if (root.contains("materials")) {
+    if (!root["materials"].is_object()) throw Error("\"materials\" must map material names to changes");
+    for (const auto& [name, changes] : root["materials"].items())
+      doc.materials[name] = MaterialOverride::fromJson(changes, "materials." + name);
   }
   for (auto [key, section] : {std::pair{"hair", &doc.hair}, {"garments", &doc.garments}, {"cloth", &doc.cloth},
                               {"colliders", &doc.colliders}})
@@ -142,10 +150,14 @@ json toJson(const SceneDocument& doc) {
   json pose = json::object();
   for (const auto& [bone, q] : doc.poseRotations) pose[bone] = json::array({q.x, q.y, q.z, q.w});
   root["pose"] = pose;
-  root["view"] = {{"skeleton", doc.view.showSkeleton}};
+  root["view"] = {{"skeleton", doc.view.showSkeleton}, {"look", doc.view.look}};
   if (doc.view.hasCamera)
     root["view"]["camera"] = {{"position", array3(doc.view.cameraPosition)}, {"focus", array3(doc.view.cameraFocus)}};
   root["skinning"] = {{"method", skinningMethodName(doc.skinning)}};
+  json materials = json::object();
+  for (const auto& [name, changes] : doc.materials)
+    if (!changes.empty()) materials[name] = changes.toJson();
+  if (!materials.empty()) root["materials"] = materials;
   if (!doc.hair.is_null()) root["hair"] = doc.hair;
   if (!doc.garments.is_null()) root["garments"] = doc.garments;
   if (!doc.cloth.is_null()) root["cloth"] = doc.cloth;

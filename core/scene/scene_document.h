@@ -10,8 +10,10 @@
 //     "motion": {"file": "walk.bvh", "map": "names.txt"},        (optional)
 //     "animation": {"clip": "walk", "time": 0.5},
 //     "pose": {"upperarm_l": [x, y, z, w], ...},   local rotation edits
-//     "view": {"skeleton": false, "camera": {"position": [..], "focus": [..]}},
+//     "view": {"skeleton": false, "look": "auto", "camera": {"position": [..], "focus": [..]}},
 //     "skinning": {"method": "lbs" | "dqs" | "cones"},   (absent: lbs)
+//     "materials": {"<name>": {...}},   user changes to the file's materials
+//                                       (core/material/material_override.h)
 //     "hair": {...}, "garments": [...], "cloth": {...}, "colliders": [...] }
 
 #include <map>
@@ -22,11 +24,13 @@
 #include <nlohmann/json.hpp>
 
 #include "core/character/character.h"
+#include "core/material/material_override.h"
 
 namespace mq {
 
 struct ViewSettings {
   bool showSkeleton = false;
+  std::string look = "auto";  // surface look: auto, skin, mannequin or plain
   bool hasCamera = false;
   glm::vec3 cameraPosition{0.0f};
   glm::vec3 cameraFocus{0.0f};
@@ -43,6 +47,7 @@ struct SceneDocument {
   std::map<std::string, glm::quat> poseRotations;  // bone name -> local rotation edit
   ViewSettings view;
   SkinningMethod skinning = SkinningMethod::Lbs;
+  std::map<std::string, MaterialOverride> materials;  // by material name
   // Sections owned by other modules (null when absent).
   nlohmann::json hair;
   nlohmann::json garments;

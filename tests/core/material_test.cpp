@@ -6,7 +6,9 @@
 #include <filesystem>
 
 #include "core/io/character_import.h"
+#include "core/material/material_override.h"
 #include "core/mesh/tangents.h"
+#include "core/scene/open_scene.h"
 #include "core/util/error.h"
 #include "gltf_test_util.h"
 
@@ -255,6 +257,71 @@ TEST(Materials, ColladaAndFbxMaterialsAreRead) {
       EXPECT_GT(m.roughnessFactor, 0.0f);
     }
   }
+}
+
+}  // namespace
+}  // namespace mq
+
+namespace mq {
+namespace {
+
+TEST(MaterialOverrides, KeepOnlyWhatChangedAndRoundTrip) {
+  Material original;
+  original.name = "coat";
+  Material edited = original;
+  EXPECT_TRUE(MaterialOverride::between(original, edited).empty());
+  edited.roughnessFactor = 0.3f;
+  edited.baseColorFactor = {0.2f, 0.4f, 0.6f, 0.5f};
+  edited.alphaMode = AlphaMode::Blend;
+  edited.skin = true;
+  const MaterialOverride changes = MaterialOverride::between(original, edited);
+  EXPECT_FALSE(changes.metallic.has_value());
+  EXPECT_FALSE(changes.doubleSided.has_value());
+  const nlohmann::json j = changes.toJson();
+  EXPECT_EQ(j.size(), 4u);
+  const MaterialOverride back = MaterialOverride::fromJson(j, "materials.coat");
+  Material applied = original;
+  back.applyTo(applied);
+  EXPECT_TRUE(MaterialOverride::between(edited, applied).empty());
+  EXPECT_EQ(applied.alphaMode, AlphaMode::Blend);
+}
+
+TEST(MaterialOverrides, BadValuesNameTheField) {
+  auto problem = [](const nlohmann::json& j) -> std::string {
+    try {
+      MaterialOverride::fromJson(j, "materials.coat");
+    } catch (const Error& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_NE(problem({{"roughness", 2.0}}).find("materials.coat.roughness"), std::string::npos);
+  EXPECT_NE(problem({{"base_color", {1, 0, 0}}}).find("materials.coat.base_color"), std::string::npos);
+  EXPECT_NE(problem({{"alpha_mode", "CLEAR"}}).find("alpha_mode"), std::string::npos);
+  EXPECT_NE(problem({{"shininess", 3}}).find("unknown field 'shininess'"), std::string::npos);
+  EXPECT_NE(problem({{"skin", "yes"}}).find("materials.coat.skin"), std::string::npos);
+  EXPECT_EQ(problem({{"metallic", 1.0}, {"double_sided", true}}), "");
+}
+
+TEST(MaterialOverrides, SceneDocumentAppliesThemByNameAndWarnsOfUnknownNames) {
+  const std::string cesium = kShared + "/assets/characters/CesiumMan/glTF/CesiumMan.gltf";
+  const std::string text = R"({"format": "mannequin-scene", "version": 1, "character": ")" + cesium +
+                           R"(", "view": {"look": "plain"},
+      "materials": {"Cesium_Man-effect": {"roughness": 0.25}, "Cape": {"metallic": 1.0}}})";
+  const SceneDocument doc = parseSceneDocument(text, "scene.mqscene");
+  EXPECT_EQ(doc.view.look, "plain");
+  const LoadedScene scene = resolveSceneDocument(doc, "");
+  ASSERT_EQ(scene.character.materials.size(), 1u);
+  EXPECT_FLOAT_EQ(scene.character.materials[0].roughnessFactor, 0.25f);
+  EXPECT_FLOAT_EQ(scene.fileMaterials[0].roughnessFactor, 1.0f);
+  ASSERT_EQ(scene.character.loadWarnings.size(), 1u);
+  EXPECT_NE(scene.character.loadWarnings[0].find("'Cape'"), std::string::npos);
+  // Saved again, both changes are kept (the unknown one too).
+  const nlohmann::json saved = toJson(doc);
+  EXPECT_EQ(saved["materials"].size(), 2u);
+  EXPECT_EQ(saved["view"]["look"], "plain");
+  EXPECT_THROW(parseSceneDocument(R"({"format": "mannequin-scene", "version": 1, "view": {"look": "shiny"}})", "x"),
+               FileError);
 }
 
 }  // namespace

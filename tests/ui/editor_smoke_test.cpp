@@ -7,6 +7,7 @@
 #include <cstdlib>
 
 #include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
@@ -34,6 +35,7 @@
 #include "ui/document/pose_commands.h"
 #include "ui/main_window.h"
 #include "test_window.h"
+#include "ui/panels/material_page.h"
 #include "ui/panels/properties_panel.h"
 #include "ui/panels/scene_tree_panel.h"
 #include "ui/panels/timeline_panel.h"
@@ -399,6 +401,55 @@ class EditorSmokeTest : public QObject {
     QVERIFY2(window_->openFileNow(path, &error), qPrintable(error));
     QVERIFY(doc()->boneRotation(forearm).has_value());
     QVERIFY(std::abs(std::abs(glm::dot(*doc()->boneRotation(forearm), edit)) - 1.0f) < 1e-5f);
+  }
+
+  void materialEditsAreUndoableAndSavedAsOverrides() {
+    QString error;
+    const QString cesium = QString(MANNEQUIN_SHARED_DIR) + "/assets/characters/CesiumMan/glTF/CesiumMan.gltf";
+    QVERIFY2(window_->openFileNow(cesium, &error), qPrintable(error));
+    QCOMPARE(doc()->character().materials.size(), size_t(1));
+    // The scene tree lists the material; clicking it shows the Material page.
+    const auto items = window_->sceneTree()->tree()->findItems("Cesium_Man-effect", Qt::MatchRecursive);
+    QCOMPARE(items.size(), 1);
+    window_->sceneTree()->tree()->setCurrentItem(items[0]);
+    QCOMPARE(doc()->selectedMaterial(), 0);
+    MaterialPage* page = window_->properties()->materialPage();
+    QVERIFY(page->isVisible());
+    QCOMPARE(page->roughnessBox()->value(), 1.0);
+
+    const int commands = doc()->undoStack()->index();
+    page->roughnessBox()->setValue(0.35);
+    QCOMPARE(doc()->undoStack()->index(), commands + 1);
+    QCOMPARE(doc()->character().materials[0].roughnessFactor, 0.35f);
+    QCOMPARE(window_->sceneView()->materials()[0].roughnessFactor, 0.35f);
+    page->skinBox()->setChecked(true);
+    QCOMPARE(doc()->undoStack()->index(), commands + 2);
+    QVERIFY(doc()->character().materials[0].skin);
+    QVERIFY(page->resetButton()->isEnabled());
+    SceneDocument saved = doc()->sceneDocument();
+    QCOMPARE(saved.materials.size(), size_t(1));
+    QCOMPARE(*saved.materials.at("Cesium_Man-effect").roughness, 0.35f);
+    QVERIFY(saved.materials.at("Cesium_Man-effect").skin.value_or(false));
+    QVERIFY(!saved.materials.at("Cesium_Man-effect").metallic);  // untouched fields stay the file's
+
+    doc()->undoStack()->undo();
+    QVERIFY(!doc()->character().materials[0].skin);
+    QVERIFY(!page->skinBox()->isChecked());
+
+    // Saved and reopened: the file's material with the user's roughness.
+    QTemporaryDir dir;
+    const QString path = dir.filePath("materials.mqscene");
+    QVERIFY2(window_->saveDocument(path, &error), qPrintable(error));
+    QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));
+    QVERIFY2(window_->openFileNow(path, &error), qPrintable(error));
+    QCOMPARE(doc()->character().materials[0].roughnessFactor, 0.35f);
+    QCOMPARE(doc()->fileMaterial(0)->roughnessFactor, 1.0f);
+    // Reset to the file: one undo step, and nothing left to save.
+    doc()->selectMaterial(0);
+    page->resetButton()->click();
+    QCOMPARE(doc()->character().materials[0].roughnessFactor, 1.0f);
+    QVERIFY(doc()->sceneDocument().materials.empty());
+    QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));
   }
 
   void skinningChoiceIsUndoableAndSaved() {

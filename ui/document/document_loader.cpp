@@ -21,6 +21,7 @@ LoadedDocument loadDocument(const QString& fileOrDefault) {
   out.scene = std::move(scene.document);
   out.edits = std::move(scene.edits);
   out.clipIndex = scene.clipIndex;
+  out.fileMaterials = std::move(scene.fileMaterials);
   if (file == "default") {
     out.displayName = "default mannequin";
   } else {

@@ -28,6 +28,9 @@ void EditorDocument::replace(LoadedDocument loaded) {
   time_ = clipIndex_ >= 0 ? std::clamp(scene_.time, clipStart(), clipEnd()) : 0.0f;
   selectedBone_ = -1;
   selectedMesh_ = -1;
+  selectedMaterial_ = -1;
+  fileMaterials_ = std::move(loaded.fileMaterials);
+  if (fileMaterials_.size() != character_.materials.size()) fileMaterials_ = character_.materials;
   unsavedSectionChanges_ = false;
   evaluatePose();
   emit characterReplaced();
@@ -159,18 +162,68 @@ void EditorDocument::addClip(Clip clip) {
 
 void EditorDocument::selectBone(int bone) {
   if (bone >= character_.skeleton.boneCount()) bone = -1;
-  if (bone == selectedBone_ && selectedMesh_ < 0) return;
+  if (bone == selectedBone_ && selectedMesh_ < 0 && selectedMaterial_ < 0) return;
   selectedBone_ = bone;
   selectedMesh_ = -1;
+  selectedMaterial_ = -1;
   emit selectionChanged();
 }
 
 void EditorDocument::selectMesh(int mesh) {
   if (mesh >= static_cast<int>(character_.meshes.size())) mesh = -1;
-  if (mesh == selectedMesh_ && selectedBone_ < 0) return;
+  if (mesh == selectedMesh_ && selectedBone_ < 0 && selectedMaterial_ < 0) return;
   selectedMesh_ = mesh;
   selectedBone_ = -1;
+  selectedMaterial_ = -1;
   emit selectionChanged();
+}
+
+void EditorDocument::selectMaterial(int material) {
+  if (material >= static_cast<int>(character_.materials.size())) material = -1;
+  if (material == selectedMaterial_ && selectedBone_ < 0 && selectedMesh_ < 0) return;
+  selectedMaterial_ = material;
+  selectedBone_ = -1;
+  selectedMesh_ = -1;
+  emit selectionChanged();
+}
+
+bool EditorDocument::selectByName(const std::string& name) {
+  if (const int bone = character_.skeleton.findBone(name); bone >= 0) {
+    selectBone(bone);
+    return true;
+  }
+  for (size_t i = 0; i < character_.materials.size(); ++i)
+    if (character_.materials[i].name == name) {
+      selectMaterial(static_cast<int>(i));
+      return true;
+    }
+  for (size_t i = 0; i < character_.meshes.size(); ++i)
+    if (character_.meshes[i].name == name) {
+      selectMesh(static_cast<int>(i));
+      return true;
+    }
+  return false;
+}
+
+void EditorDocument::setMaterial(int index, const Material& material) {
+  if (index < 0 || index >= static_cast<int>(character_.materials.size())) return;
+  character_.materials[index] = material;
+  const MaterialOverride changes = MaterialOverride::between(fileMaterials_[index], material);
+  if (changes.empty()) scene_.materials.erase(material.name);
+  else scene_.materials[material.name] = changes;
+  emit materialChanged(index);
+  emit documentChanged();
+}
+
+const Material* EditorDocument::fileMaterial(int index) const {
+  return index >= 0 && index < static_cast<int>(fileMaterials_.size()) ? &fileMaterials_[index] : nullptr;
+}
+
+void EditorDocument::setLook(const std::string& look) {
+  if (scene_.view.look == look) return;
+  scene_.view.look = look;
+  notifyChanged();
+  emit viewSettingsChanged();
 }
 
 void EditorDocument::setSkeletonVisible(bool visible) {

@@ -24,6 +24,7 @@ struct LoadedDocument {
   SceneDocument scene;
   PoseEdits edits;       // scene.poseRotations by bone index
   int clipIndex = -1;    // current clip, -1 for the rest pose
+  std::vector<Material> fileMaterials;  // the file's materials before the scene's changes
   QString documentPath;  // the scene file, empty for a character file or "default"
   QString displayName;   // for the title bar
 };
@@ -78,11 +79,23 @@ class EditorDocument : public QObject {
   // Binds the section cones on first use of that method.
   void setSkinning(SkinningMethod method);
 
+  // Materials: the user's changes are saved in the scene document as
+  // overrides of the file's material (the file is never modified).
+  void setMaterial(int index, const Material& material);
+  // The material as the file has it, without the user's changes.
+  const Material* fileMaterial(int index) const;
+  // The surface look (auto, skin, mannequin, plain), saved in the view settings.
+  void setLook(const std::string& look);
+
   // Selection
   int selectedBone() const { return selectedBone_; }
   int selectedMesh() const { return selectedMesh_; }
+  int selectedMaterial() const { return selectedMaterial_; }
   void selectBone(int bone);  // -1 clears
   void selectMesh(int mesh);
+  void selectMaterial(int material);
+  // Selects the bone, else the material, else the mesh of that name; false if none.
+  bool selectByName(const std::string& name);
 
   // View settings stored in the document
   const ViewSettings& viewSettings() const { return scene_.view; }
@@ -105,6 +118,7 @@ class EditorDocument : public QObject {
   void timeAxisChanged();  // clipStart() or clipEnd() changed without a clip change
   void selectionChanged();
   void viewSettingsChanged();
+  void materialChanged(int index);
   // Any change at all (for tools that keep derived data, e.g. hair, cloth).
   void documentChanged();
   void modifiedChanged(bool modified);
@@ -123,6 +137,8 @@ class EditorDocument : public QObject {
   float noClipDuration_ = 0.0f;
   int selectedBone_ = -1;
   int selectedMesh_ = -1;
+  int selectedMaterial_ = -1;
+  std::vector<Material> fileMaterials_;
   bool unsavedSectionChanges_ = false;  // changes outside the undo stack
   QUndoStack* undoStack_ = nullptr;
 };

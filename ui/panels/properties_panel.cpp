@@ -19,11 +19,12 @@
 #include "core/skinning/skin_metrics.h"
 #include "ui/document/editor_document.h"
 #include "ui/document/pose_commands.h"
+#include "ui/panels/material_page.h"
 
 namespace mq::ui {
 namespace {
 
-enum Page { CharacterPage = 0, BonePage, MeshPage };
+enum Page { CharacterPage = 0, BonePage, MeshPage, MaterialPageIndex };
 
 QString count(size_t n) { return QLocale().toString(static_cast<qulonglong>(n)); }
 
@@ -38,6 +39,8 @@ PropertiesPanel::PropertiesPanel(EditorDocument* document, QWidget* parent)
   pages_->addWidget(makeCharacterPage());
   pages_->addWidget(makeBonePage());
   pages_->addWidget(makeMeshPage());
+  materialPage_ = new MaterialPage(document_);
+  pages_->addWidget(materialPage_);
 
   connect(document_, &EditorDocument::selectionChanged, this, &PropertiesPanel::showSelection);
   connect(document_, &EditorDocument::characterReplaced, this, &PropertiesPanel::showSelection);
@@ -238,6 +241,9 @@ void PropertiesPanel::showSelection() {
                                                           .arg(m.skin.maxInfluences()));
     meshMorphs_->setText(QString::number(m.morphTargets.size()));
     pages_->setCurrentIndex(MeshPage);
+  } else if (document_->selectedMaterial() >= 0) {
+    materialPage_->showMaterial(document_->selectedMaterial());
+    pages_->setCurrentIndex(MaterialPageIndex);
   } else {
     showCharacter();
     pages_->setCurrentIndex(CharacterPage);

@@ -1,7 +1,8 @@
 #pragma once
 // Properties of the selection: for a bone, its name and the pose edit as
 // Euler angles in degrees (X, then Y, then Z) with a reset button; for a mesh,
-// its vertex and triangle counts and skinning. The character page chooses the
+// its vertex and triangle counts and skinning; for a material, its page
+// (ui/panels/material_page.h). The character page chooses the
 // skinning method. Typed angles and the method become undo commands on the
 // document. The character page also counts the skin's crossing triangle pairs
 // at the current pose (on a worker thread).
@@ -20,6 +21,7 @@ class QStackedWidget;
 namespace mq::ui {
 
 class EditorDocument;
+class MaterialPage;
 
 class PropertiesPanel : public QWidget {
   Q_OBJECT
@@ -31,6 +33,7 @@ class PropertiesPanel : public QWidget {
   QPushButton* resetButton() const { return resetBone_; }
   QComboBox* skinningBox() const { return skinning_; }
   QPushButton* countCrossingsButton() const { return countCrossings_; }
+  MaterialPage* materialPage() const { return materialPage_; }
   QLabel* crossingsLabel() const { return crossings_; }
 
  private:
@@ -74,6 +77,7 @@ class PropertiesPanel : public QWidget {
   QLabel* meshTriangles_ = nullptr;
   QLabel* meshSkin_ = nullptr;
   QLabel* meshMorphs_ = nullptr;
+  MaterialPage* materialPage_ = nullptr;
   bool syncing_ = false;
 };
 

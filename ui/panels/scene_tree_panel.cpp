@@ -11,7 +11,7 @@ namespace mq::ui {
 namespace {
 
 enum ItemRole { KindRole = Qt::UserRole + 1, IndexRole };
-enum ItemKind { KindNone = 0, KindBone, KindMesh };
+enum ItemKind { KindNone = 0, KindBone, KindMesh, KindMaterial };
 
 }  // namespace
 
@@ -44,6 +44,7 @@ void SceneTreePanel::rebuild() {
   tree_->clear();
   boneItems_.clear();
   meshItems_.clear();
+  materialItems_.clear();
   const Character& character = document_->character();
   const QString name = character.name.empty() ? tr("character") : QString::fromStdString(character.name);
   auto* root = new QTreeWidgetItem(tree_, {name, tr("character")});
@@ -59,6 +60,19 @@ void SceneTreePanel::rebuild() {
     item->setData(0, KindRole, KindMesh);
     item->setData(0, IndexRole, static_cast<int>(i));
     meshItems_.push_back(item);
+  }
+
+  if (!character.materials.empty()) {
+    auto* materials = new QTreeWidgetItem(root, {tr("Materials"), QString::number(character.materials.size())});
+    materials->setIcon(0, style()->standardIcon(QStyle::SP_DirIcon));
+    for (size_t i = 0; i < character.materials.size(); ++i) {
+      const Material& material = character.materials[i];
+      auto* item = new QTreeWidgetItem(materials, {QString::fromStdString(material.name),
+                                                   material.textured() ? tr("textured") : QString()});
+      item->setData(0, KindRole, KindMaterial);
+      item->setData(0, IndexRole, static_cast<int>(i));
+      materialItems_.push_back(item);
+    }
   }
 
   const Skeleton& skeleton = character.skeleton;
@@ -93,6 +107,8 @@ void SceneTreePanel::showSelection() {
   if (document_->selectedBone() >= 0) item = boneItem(document_->selectedBone());
   else if (document_->selectedMesh() >= 0 && document_->selectedMesh() < static_cast<int>(meshItems_.size()))
     item = meshItems_[document_->selectedMesh()];
+  else if (document_->selectedMaterial() >= 0 && document_->selectedMaterial() < static_cast<int>(materialItems_.size()))
+    item = materialItems_[document_->selectedMaterial()];
   tree_->setCurrentItem(item);
   if (item) tree_->scrollToItem(item);
   syncing_ = false;
@@ -104,6 +120,7 @@ void SceneTreePanel::onCurrentItemChanged(QTreeWidgetItem* item) {
   switch (item->data(0, KindRole).toInt()) {
     case KindBone: document_->selectBone(index); break;
     case KindMesh: document_->selectMesh(index); break;
+    case KindMaterial: document_->selectMaterial(index); break;
     default: document_->selectBone(-1); break;
   }
 }

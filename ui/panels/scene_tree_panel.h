@@ -1,6 +1,6 @@
 #pragma once
-// The scene tree: the character, its meshes and its bone hierarchy. Clicking
-// a bone or mesh selects it in the document; the document's selection is
+// The scene tree: the character, its meshes, its materials and its bone
+// hierarchy. Clicking a bone, mesh or material selects it in the document; the document's selection is
 // mirrored back (e.g. after a pick in the viewport).
 
 #include <vector>
@@ -33,6 +33,7 @@ class SceneTreePanel : public QWidget {
   QTreeWidget* tree_;
   std::vector<QTreeWidgetItem*> boneItems_;
   std::vector<QTreeWidgetItem*> meshItems_;
+  std::vector<QTreeWidgetItem*> materialItems_;
   bool syncing_ = false;
 };
 
