@@ -215,6 +215,24 @@ TEST_F(MaterialRenderTest, UnreadableImageIsAWarningAndTheFactorsRemain) {
   EXPECT_GT(centre[1], centre[0] + 40) << "the green factor still shows";
 }
 
+TEST_F(MaterialRenderTest, TruncatedEmbeddedJpegIsAWarningNotACrash) {
+  Character c = importCharacter(kShared + "/assets/characters/CesiumMan/glTF-Binary/CesiumMan.glb");
+  ASSERT_EQ(c.images.size(), 1u);
+  std::vector<uint8_t>& jpeg = c.images[0].encoded;
+  for (size_t keep : {jpeg.size() / 2, size_t(600), size_t(3)}) {
+    Character cut = c;
+    cut.images[0].encoded.resize(keep);
+    show(cut);
+    render::OffscreenRenderer renderer(view, 64, 64);
+    renderer.capture();
+    // A partly decodable JPEG may still show its top rows; a stub must warn.
+    if (keep <= 600) {
+      ASSERT_EQ(view.warnings().size(), 1u) << keep;
+      EXPECT_NE(view.warnings()[0].find("could not be decoded"), std::string::npos) << view.warnings()[0];
+    }
+  }
+}
+
 TEST_F(MaterialRenderTest, FloorSitsUnderTheLowestPointWhateverTheOrigin) {
   Character c = importCharacter(writeQuad("low.gltf", {{"name", "m"}}, {}));
   for (size_t v = 0; v < c.meshes[0].vertexCount(); ++v) c.meshes[0].positions[3 * v + 1] -= 0.9f;  // origin at the top
