@@ -15,7 +15,11 @@ namespace mq::cloth {
 
 namespace {
 
+// Vertices held by a contact (or a closing seam) weigh this much of their
+// free inverse mass in the elongation limit: the limit then moves their
+// neighbours instead.
 constexpr float kContactInvMassScale = 0.05f;
+constexpr int kSelfCollisionPasses = 20;  // per substep, at most
 constexpr float kMaxApproachReach = 0.08f;  // m: how far ahead findApproachingBody() looks at most
 constexpr float kApproachPerSubstep = 0.03f;  // m: see substepsForBodySpeed()
 constexpr int kMaxBodySpeedSubsteps = 4;
@@ -202,30 +206,21 @@ void ClothSimulator::findNearestBody(float radius, std::vector<BodyContact>& con
   });
 }
 
-void ClothSimulator::endPhase(ClothPhase phase) {
-  const auto now = std::chrono::steady_clock::now();
-  stats_.phaseSeconds[int(phase)] += std::chrono::duration<double>(now - phaseStart_).count();
-  phaseStart_ = now;
+PhaseTimer::PhaseTimer(ClothStats& stats, ClothPhase phase)
+    : stats_(stats), phase_(phase), start_(std::chrono::steady_clock::now()) {}
+
+PhaseTimer::~PhaseTimer() {
+  stats_.phaseSeconds[int(phase_)] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
 void ClothSimulator::step(float dt) {
   if (!(dt > 0.0f) || !std::isfinite(dt)) throw Error("cloth step needs a positive time step");
   std::fill(std::begin(stats_.phaseSeconds), std::end(stats_.phaseSeconds), 0.0);
-  phaseStart_ = std::chrono::steady_clock::now();
-  checkFinite("before the step");
-  if (!pendingBody_.empty()) {
-    body_.setTarget(pendingBody_, dt);
-    pendingBody_.clear();
-  } else if (!body_.empty()) {
-    body_.setTarget(body_.flatPositions(), dt);  // the body stands still
-  }
+  const auto [queriesBefore, searchesBefore] = bodyQueryCounts();
+  const int baseSubsteps = startStep(dt);
+  int substeps = baseSubsteps;
   // Adaptive refinement: when the elongation limit could not hold a step
   // (a violent impact), the step is redone with twice the substeps.
-  const auto [queriesBefore, searchesBefore] = bodyQueryCounts();
-  approachReach_ = 0.0f;
-  const int baseSubsteps = std::max(substepsFor(dt), settings_.substeps > 0 ? 1 : substepsForBodySpeed(dt));
-  endPhase(ClothPhase::BodyPose);
-  int substeps = baseSubsteps;
   // The state to redo the step from (not copied when no redo can come).
   const ClothState start = substeps < settings_.maxRefinement * baseSubsteps ? state_ : ClothState{};
   for (;;) {
@@ -241,6 +236,7 @@ void ClothSimulator::step(float dt) {
     state_ = start;
     substeps *= 2;
   }
+  const PhaseTimer timer(stats_, ClothPhase::Finish);
   stats_.substeps = substeps;
   const auto [queriesAfter, searchesAfter] = bodyQueryCounts();
   stats_.bodyQueries = queriesAfter - queriesBefore;
@@ -248,60 +244,95 @@ void ClothSimulator::step(float dt) {
   ++stats_.steps;
   stats_.simulatedTime += dt;
   updateStats();
-  endPhase(ClothPhase::Finish);
 }
 
+int ClothSimulator::startStep(float dt) {
+  const PhaseTimer timer(stats_, ClothPhase::BodyPose);
+  checkFinite("before the step");
+  if (!pendingBody_.empty()) {
+    body_.setTarget(pendingBody_, dt);
+    pendingBody_.clear();
+  } else if (!body_.empty()) {
+    body_.setTarget(body_.flatPositions(), dt);  // the body stands still
+  }
+  approachReach_ = 0.0f;
+  return std::max(substepsFor(dt), settings_.substeps > 0 ? 1 : substepsForBodySpeed(dt));
+}
+
+// One substep, stage by stage; each stage's time goes to its phase.
 void ClothSimulator::substep(float h, float bodyFraction, bool firstOfStep) {
+  approachAndMoveBody(h, bodyFraction, firstOfStep);
+  integrate(h);
+  {
+    const PhaseTimer timer(stats_, ClothPhase::Collide);
+    collideWithColliders(h);
+  }
+  bool held = limitStretch(h);
+  if (selfCollision_) {
+    const PhaseTimer timer(stats_, ClothPhase::SelfCollision);
+    stats_.selfContacts += selfCollision_->resolve(state_, stepStart_, settings_.selfThickness, kSelfCollisionPasses);
+  }
+  {
+    const PhaseTimer timer(stats_, ClothPhase::Collide);
+    collideWithColliders(h);
+    if (innerSurface_) collideWithInnerSurface(bodyFraction);
+  }
+  pushOffBodyVertices();
+  if (settings_.stretchLimit == StretchLimitMode::PositionCorrection &&
+      (!colliders_.empty() || !body_.empty() || innerSurface_)) {
+    const PhaseTimer timer(stats_, ClothPhase::LimitAfterContacts);
+    held = limitStretchAfterContacts(h);
+  }
+  const PhaseTimer timer(stats_, ClothPhase::Finish);
+  limitHeld_ = limitHeld_ && held;
+  placePins();
+  checkFinite("after a solver step");
+}
+
+void ClothSimulator::approachAndMoveBody(float h, float bodyFraction, bool firstOfStep) {
+  const PhaseTimer timer(stats_, ClothPhase::Approach);
   findApproachingBody(h, firstOfStep);
   if (!body_.empty()) body_.moveTo(bodyFraction);
   preparePins(h);
   findRestingContacts();
   stepStart_ = state_.x;
   touched_.assign(state_.size(), 0);
-  endPhase(ClothPhase::Approach);
+}
+
+void ClothSimulator::integrate(float h) {
+  const PhaseTimer timer(stats_, ClothPhase::Integrate);
   const IntegratorReport solved = integrator_->step(state_, h, *forces_);
   stats_.solverIterations += solved.solverIterations;
   stats_.solverResidual = std::max(stats_.solverResidual, solved.solverResidual);
   applyRestingFriction(h);
-  endPhase(ClothPhase::Integrate);
-  const auto& springs = forces_->springs().springs();
-  const size_t structural = forces_->structuralCount();
-  collideWithColliders(h);
-  endPhase(ClothPhase::Collide);
-  bool held = true;
-  if (!sewing_.empty()) {
-    held = limitStretchWhileSewing(h);
-  } else if (settings_.stretchLimit == StretchLimitMode::PositionCorrection) {
-    const StretchLimitResult r =
-        stretchLimiter_.limitByPositions(state_, settings_.maxStretch, passBudget_, h);
+}
+
+// The elongation limit after integrating: the sewing variant while seams
+// close, else the settings' mode. False when it could not hold.
+bool ClothSimulator::limitStretch(float h) {
+  const PhaseTimer timer(stats_, ClothPhase::StretchLimit);
+  if (!sewing_.empty()) return limitStretchWhileSewing(h);
+  if (settings_.stretchLimit == StretchLimitMode::PositionCorrection) {
+    const StretchLimitResult r = stretchLimiter_.limitByPositions(state_, settings_.maxStretch, passBudget_, h);
     stats_.stretchPasses += r.passes;
-    held = r.maxStretchAfter <= settings_.maxStretch;
-  } else if (settings_.stretchLimit == StretchLimitMode::VelocityCorrection)
-    stats_.stretchPasses += limitStretchByVelocities(state_, stepStart_, springs, structural, settings_.maxStretch,
+    return r.maxStretchAfter <= settings_.maxStretch;
+  }
+  if (settings_.stretchLimit == StretchLimitMode::VelocityCorrection)
+    stats_.stretchPasses += limitStretchByVelocities(state_, stepStart_, forces_->springs().springs(),
+                                                     forces_->structuralCount(), settings_.maxStretch,
                                                      settings_.stretchIterations, h)
                                 .passes;
-  endPhase(ClothPhase::StretchLimit);
-  if (selfCollision_) stats_.selfContacts += selfCollision_->resolve(state_, stepStart_, settings_.selfThickness, 20);
-  endPhase(ClothPhase::SelfCollision);
-  collideWithColliders(h);
-  if (innerSurface_) collideWithInnerSurface(bodyFraction);
-  endPhase(ClothPhase::Collide);
-  // Body vertices through cloth triangles, between the cloth's vertices
-  // (not while sewing: the panels pulled together over the shoulders would
-  // be pushed apart, and the seams close late).
-  if (!body_.empty() && sewing_.empty())
-    stats_.bodyFeatureContacts += bodyFeatures_->resolve(state_, body_, settings_.collisionThickness, touched_, kContact,
-                                                      body_.moved() ? kSweptContact : kContact);
-  endPhase(ClothPhase::BodyFeatures);
-  if (settings_.stretchLimit == StretchLimitMode::PositionCorrection &&
-      (!colliders_.empty() || !body_.empty() || innerSurface_)) {
-    held = limitStretchAfterContacts(h);
-  }
-  endPhase(ClothPhase::LimitAfterContacts);
-  limitHeld_ = limitHeld_ && held;
-  placePins();
-  checkFinite("after a solver step");
-  endPhase(ClothPhase::Finish);
+  return true;
+}
+
+// Body vertices through cloth triangles, between the cloth's vertices (not
+// while sewing: the panels pulled together over the shoulders would be
+// pushed apart, and the seams close late).
+void ClothSimulator::pushOffBodyVertices() {
+  if (body_.empty() || !sewing_.empty()) return;
+  const PhaseTimer timer(stats_, ClothPhase::BodyFeatures);
+  stats_.bodyFeatureContacts += bodyFeatures_->resolve(state_, body_, settings_.collisionThickness, touched_, kContact,
+                                                    body_.moved() ? kSweptContact : kContact);
 }
 
 // Contacts moved vertices after the limit: limit again, with the vertices in
@@ -415,7 +446,7 @@ bool ClothSimulator::limitStretchWhileSewing(float h) {
   const bool limit = settings_.stretchLimit == StretchLimitMode::PositionCorrection;
   const std::vector<float> freeInvMass = state_.invMass;
   std::vector<float> heavy = state_.invMass;
-  for (const auto& [a, b] : sewing_) heavy[a] = 0.05f * freeInvMass[a], heavy[b] = 0.05f * freeInvMass[b];
+  for (const auto& [a, b] : sewing_) heavy[a] = kContactInvMassScale * freeInvMass[a], heavy[b] = kContactInvMassScale * freeInvMass[b];
   bool held = true;
   constexpr int kRounds = 4;
   for (int round = 0; round < kRounds; ++round) {

@@ -2,14 +2,21 @@
 // The cloth simulation a caller steps: the CLI, the editor (live while the
 // character plays, or baking with progress and cancel) and the tests.
 //
-// One step(dt) reads top to bottom (cloth_simulator.cpp): for each solver
-// substep, find the cloth a moving body part is about to reach (the solver
-// then moves it with the part), move the body and the pin targets,
-// integrate, limit the elongation, resolve self-collisions, resolve
-// collisions with the colliders and the body (and the surface of the cloth
-// it is worn over, when layered), push cloth triangles off the
-// body's vertices (body_feature_contact.h), limit the elongation again, put
-// pinned vertices on their targets, check for NaNs.
+// One step(dt) reads top to bottom (cloth_simulator.cpp). For each solver
+// substep, one stage after another:
+//  1. find the cloth a moving body part is about to reach (the solver then
+//     moves it with the part); move the body and the pin targets; find the
+//     resting contacts;
+//  2. integrate, then apply the resting contacts' friction;
+//  3. collide with the colliders and the body;
+//  4. limit the elongation (the sewing variant while seams close);
+//  5. resolve self-collisions;
+//  6. collide again (and with the surface of the cloth it is worn over,
+//     when layered);
+//  7. push cloth triangles off the body's vertices (body_feature_contact.h);
+//  8. limit the elongation again, keeping contacts out;
+//  9. put pinned vertices on their targets, check for NaNs.
+// Each stage's time goes to its ClothPhase in the stats.
 //
 //   ClothSimulator sim(mesh, fabricPreset("cotton"), settings);
 //   sim.addCollider(PrimitiveCollider::sphere({0, 0, 0}, 0.3f));
@@ -58,6 +65,22 @@ enum class ClothPhase : int {
   Count
 };
 constexpr int kClothPhaseCount = int(ClothPhase::Count);
+
+struct ClothStats;
+
+// Adds the time of its scope to one phase of the stats: one per stage.
+class PhaseTimer {
+ public:
+  PhaseTimer(ClothStats& stats, ClothPhase phase);
+  ~PhaseTimer();
+  PhaseTimer(const PhaseTimer&) = delete;
+  PhaseTimer& operator=(const PhaseTimer&) = delete;
+
+ private:
+  ClothStats& stats_;
+  ClothPhase phase_;
+  std::chrono::steady_clock::time_point start_;
+};
 // "body_pose", "approach", ... (the stats JSON's keys).
 const char* clothPhaseName(ClothPhase phase);
 
@@ -151,9 +174,14 @@ class ClothSimulator {
     int64_t bodyVertex = -1;
     glm::vec3 offset{0.0f};
   };
+  // The body's target pose and the step's first contacts; returns the substeps.
+  int startStep(float dt);
   void substep(float h, float bodyFraction, bool firstOfStep);
-  // Adds the time since the last phase ended to `phase` in the stats.
-  void endPhase(ClothPhase phase);
+  // The substep's stages (each timed as its ClothPhase).
+  void approachAndMoveBody(float h, float bodyFraction, bool firstOfStep);
+  void integrate(float h);
+  bool limitStretch(float h);
+  void pushOffBodyVertices();
   void preparePins(float h);
   void placePins();
   void findRestingContacts();
@@ -214,10 +242,9 @@ class ClothSimulator {
   float sewingStretchRelief_ = 1.0f;
   float activeMaxStretch() const { return sewing_.empty() ? settings_.maxStretch : settings_.maxStretch * sewingStretchRelief_; }
   ClothStats stats_;
-  std::chrono::steady_clock::time_point phaseStart_;
   mutable int penetrating_ = -1;  // penetratingVertices() since the last change; -1: not counted
-  bool limitHeld_ = true;
-  int passBudget_ = 100;   // elongation-limit passes per call in this try  // the elongation limit held in every substep of this try
+  bool limitHeld_ = true;  // the elongation limit held in every substep of this try
+  int passBudget_ = 100;   // elongation-limit passes per call in this try
 };
 
 }  // namespace mq::cloth

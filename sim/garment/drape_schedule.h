@@ -17,13 +17,15 @@ class DrapeSchedule {
  public:
   static constexpr float kMinSewingSeconds = 0.5f;
   static constexpr float kBlendSeconds = 1.0f;
+  // Seams that never weld are called sewn this long after the sewing time limit.
+  static constexpr float kSewingGraceSeconds = 0.25f;
 
   explicit DrapeSchedule(float maxSewingSeconds = GarmentSimulationSettings{}.maxSewingSeconds)
       : maxSewing_(maxSewingSeconds) {}
 
   // The weight of the wanted pose (0 = rest) for the next step of dt seconds.
   float advance(const GarmentSimulation& simulation, float dt) {
-    const bool sewn = simulation.welded() || sewing_ >= maxSewing_ + 0.25f;
+    const bool sewn = simulation.welded() || sewing_ >= maxSewing_ + kSewingGraceSeconds;
     if (blending_ == 0.0f && (!sewn || sewing_ < kMinSewingSeconds)) {
       sewing_ += dt;
       return 0.0f;
@@ -33,7 +35,7 @@ class DrapeSchedule {
   }
   // The sewing part is over: the next advance() starts moving the body.
   bool sewingDone(const GarmentSimulation& simulation) const {
-    const bool sewn = simulation.welded() || sewing_ >= maxSewing_ + 0.25f;
+    const bool sewn = simulation.welded() || sewing_ >= maxSewing_ + kSewingGraceSeconds;
     return blending_ > 0.0f || (sewn && sewing_ >= kMinSewingSeconds);
   }
   // For a simulation restored from a sewn state (GarmentSimulation::restore):
@@ -42,7 +44,7 @@ class DrapeSchedule {
   // On the wanted pose: the body follows the clip from here on.
   bool draped() const { return blending_ >= kBlendSeconds; }
   // Upper bound of the steps of dt before draped().
-  int maxSteps(float dt) const { return int((maxSewing_ + 0.25f + kBlendSeconds) / dt) + 2; }
+  int maxSteps(float dt) const { return int((maxSewing_ + kSewingGraceSeconds + kBlendSeconds) / dt) + 2; }
 
  private:
   float maxSewing_;
