@@ -311,7 +311,13 @@ void ClothSimulator::integrate(float h) {
 // close, else the settings' mode. False when it could not hold.
 bool ClothSimulator::limitStretch(float h) {
   const PhaseTimer timer(stats_, ClothPhase::StretchLimit);
-  if (!sewing_.empty()) return limitStretchWhileSewing(h);
+  if (sewing_.active()) {
+    const bool limit = settings_.stretchLimit == StretchLimitMode::PositionCorrection;
+    const SeamClosing::Result r = sewing_.close(state_, stepStart_, limit ? &stretchLimiter_ : nullptr,
+                                                activeMaxStretch(), passBudget_, h, kContactInvMassScale);
+    stats_.stretchPasses += r.passes;
+    return r.held;
+  }
   if (settings_.stretchLimit == StretchLimitMode::PositionCorrection) {
     const StretchLimitResult r = stretchLimiter_.limitByPositions(state_, settings_.maxStretch, passBudget_, h);
     stats_.stretchPasses += r.passes;
@@ -329,7 +335,7 @@ bool ClothSimulator::limitStretch(float h) {
 // while sewing: the panels pulled together over the shoulders would be
 // pushed apart, and the seams close late).
 void ClothSimulator::pushOffBodyVertices() {
-  if (body_.empty() || !sewing_.empty()) return;
+  if (body_.empty() || sewing_.active()) return;
   const PhaseTimer timer(stats_, ClothPhase::BodyFeatures);
   stats_.bodyFeatureContacts += bodyFeatures_->resolve(state_, body_, settings_.collisionThickness, touched_, kContact,
                                                     body_.moved() ? kSweptContact : kContact);
@@ -376,7 +382,7 @@ bool ClothSimulator::limitStretchAfterContacts(float h) {
 // back or push out (the rounds after it would change nothing).
 bool ClothSimulator::limitStretchKeepingContactsOut(float h, const std::vector<float>& freeInvMass) {
   const float thickness = settings_.collisionThickness;
-  const bool body = !body_.empty() && sewing_.empty();
+  const bool body = !body_.empty() && !sewing_.active();
   std::vector<glm::vec3> normal(body ? state_.size() : 0, glm::vec3(0.0f));
   std::vector<float> allowedIn(normal.size(), 0.0f);  // how far along -normal a vertex may go
   const std::vector<glm::vec3> start = body ? state_.x : std::vector<glm::vec3>{};
@@ -422,52 +428,7 @@ bool ClothSimulator::limitStretchKeepingContactsOut(float h, const std::vector<f
 
 void ClothSimulator::sewSeams(const std::vector<std::pair<uint32_t, uint32_t>>& seams, float closingSpeed,
                               float stretchRelief) {
-  if (!(stretchRelief >= 1.0f) || !std::isfinite(stretchRelief)) throw Error("sewing stretch relief must be >= 1");
-  sewingStretchRelief_ = stretchRelief;
-  for (const auto& [a, b] : seams)
-    if (a >= state_.size() || b >= state_.size()) throw Error("cloth seam vertex out of range");
-  if (!(closingSpeed > 0.0f) || !std::isfinite(closingSpeed)) throw Error("seam closing speed must be positive");
-  sewing_ = seams;
-  sewingSpeed_ = closingSpeed;
-}
-
-// Gauss-Seidel over two kinds of constraints: every seam pair no farther
-// apart than its distance at the start of the step minus the closing
-// distance, and the elongation limit with the seam vertices 20 times heavier
-// (so the panel behind a seam is dragged along instead of the seam giving
-// way). Positions only: the velocities keep no memory of the pull.
-bool ClothSimulator::limitStretchWhileSewing(float h) {
-  const float closing = sewingSpeed_ * h;
-  std::vector<float> target(sewing_.size());
-  for (size_t k = 0; k < sewing_.size(); ++k) {
-    const auto [a, b] = sewing_[k];
-    target[k] = std::max(0.0f, glm::length(stepStart_[a] - stepStart_[b]) - closing);
-  }
-  const bool limit = settings_.stretchLimit == StretchLimitMode::PositionCorrection;
-  const std::vector<float> freeInvMass = state_.invMass;
-  std::vector<float> heavy = state_.invMass;
-  for (const auto& [a, b] : sewing_) heavy[a] = kContactInvMassScale * freeInvMass[a], heavy[b] = kContactInvMassScale * freeInvMass[b];
-  bool held = true;
-  constexpr int kRounds = 4;
-  for (int round = 0; round < kRounds; ++round) {
-    for (size_t k = 0; k < sewing_.size(); ++k) {
-      const auto [a, b] = sewing_[k];
-      const glm::vec3 d = state_.x[a] - state_.x[b];
-      const float length = glm::length(d), wa = freeInvMass[a], wb = freeInvMass[b];
-      if (length <= target[k] || wa + wb == 0.0f) continue;
-      const glm::vec3 correction = (length - target[k]) / (length * (wa + wb)) * d;
-      state_.x[a] -= wa * correction;
-      state_.x[b] += wb * correction;
-    }
-    if (!limit) continue;
-    state_.invMass = heavy;
-    const StretchLimitResult r = stretchLimiter_.limitByPositions(state_, activeMaxStretch(),
-                                                         std::max(1, passBudget_ / kRounds), h);
-    state_.invMass = freeInvMass;
-    stats_.stretchPasses += r.passes;
-    held = r.maxStretchAfter <= activeMaxStretch();
-  }
-  return held;
+  sewing_.start(seams, closingSpeed, stretchRelief, state_.size());
 }
 
 void ClothSimulator::preparePins(float h) {

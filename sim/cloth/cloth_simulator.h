@@ -35,6 +35,7 @@
 #include "sim/cloth/cloth_topology.h"
 #include "sim/cloth/collision/body_collider.h"
 #include "sim/cloth/collision/primitive_collider.h"
+#include "sim/cloth/constraints/seam_closing.h"
 #include "sim/cloth/constraints/stretch_limit.h"
 #include "sim/cloth/forces/cloth_forces.h"
 
@@ -141,7 +142,7 @@ class ClothSimulator {
   // bent around the body may need a little more before the seams meet).
   void sewSeams(const std::vector<std::pair<uint32_t, uint32_t>>& seams, float closingSpeed,
                 float stretchRelief = 1.0f);
-  void stopSewing() { sewing_.clear(); }
+  void stopSewing() { sewing_.stop(); }
 
   // Stepping; throws ClothDiverged when the state is not finite.
   void step(float dt);
@@ -198,7 +199,6 @@ class ClothSimulator {
   void collideWithInnerSurface(float fraction);  // cloth_simulator_layers.cpp
   bool limitStretchAfterContacts(float h);
   bool limitStretchKeepingContactsOut(float h, const std::vector<float>& freeInvMass);
-  bool limitStretchWhileSewing(float h);
   void checkFinite(const char* where) const;
   void updateStats();
   Pin* findPin(uint32_t vertex);
@@ -237,10 +237,8 @@ class ClothSimulator {
   ClothSurfaceCollider* innerSurface_ = nullptr;
   std::vector<float> pendingBody_;
   std::vector<Pin> pins_;
-  std::vector<std::pair<uint32_t, uint32_t>> sewing_;
-  float sewingSpeed_ = 0.0f;  // m/s
-  float sewingStretchRelief_ = 1.0f;
-  float activeMaxStretch() const { return sewing_.empty() ? settings_.maxStretch : settings_.maxStretch * sewingStretchRelief_; }
+  SeamClosing sewing_;
+  float activeMaxStretch() const { return sewing_.maxStretch(settings_.maxStretch); }
   ClothStats stats_;
   mutable int penetrating_ = -1;  // penetratingVertices() since the last change; -1: not counted
   bool limitHeld_ = true;  // the elongation limit held in every substep of this try
