@@ -7,6 +7,7 @@
 #include "sim/cloth/collision/body_feature_contact.h"
 #include "sim/cloth/collision/contact_response.h"
 #include "sim/cloth/collision/self_collision.h"
+#include "sim/cloth/constraints/contact_aware_limit.h"
 #include "sim/cloth/constraints/stretch_limit.h"
 #include "sim/cloth/integrators/integrator.h"
 #include "sim/cloth/parallel.h"
@@ -23,7 +24,7 @@ constexpr int kSelfCollisionPasses = 20;  // per substep, at most
 constexpr float kMaxApproachReach = 0.08f;  // m: how far ahead findApproachingBody() looks at most
 constexpr float kApproachPerSubstep = 0.03f;  // m: see substepsForBodySpeed()
 constexpr int kMaxBodySpeedSubsteps = 4;
-constexpr int kContactLimitRounds = 8;  // see limitStretchKeepingContactsOut()
+constexpr int kContactLimitRounds = 8;  // with a body: see constraints/contact_aware_limit.h
 
 ClothState initialState(const ClothMesh& mesh, const ClothTopology& topology, const Fabric& fabric) {
   ClothState s;
@@ -341,89 +342,28 @@ void ClothSimulator::pushOffBodyVertices() {
                                                     body_.moved() ? kSweptContact : kContact);
 }
 
-// Contacts moved vertices after the limit: limit again, with the vertices in
-// contact 20 times heavier (so they move little, far less than the thickness
-// they keep from the surface) and none goes back in. The vertices a moving
-// body part swept along in this substep are first held where it put them
-// (pulled back, they would cross the part and come out of its far side); when
-// the limit cannot hold that way (cloth pinched between two body parts), it
-// is redone with them merely heavy like the others.
+// Contacts moved vertices after the limit: limit again without pulling them
+// back in (sim/cloth/constraints/contact_aware_limit.h).
 bool ClothSimulator::limitStretchAfterContacts(float h) {
-  const std::vector<float> freeInvMass = state_.invMass;
-  const bool anySwept = std::find(touched_.begin(), touched_.end(), kSweptContact) != touched_.end();
-  if (anySwept) {
-    // The held try gets the plain budget: pinched cloth fails it whatever the passes.
-    const std::vector<glm::vec3> x = state_.x, v = state_.v;
-    for (size_t i = 0; i < state_.size(); ++i)
-      if (touched_[i] == kSweptContact)
-        state_.invMass[i] = 0.0f;
-      else if (touched_[i])
-        state_.invMass[i] = kContactInvMassScale * freeInvMass[i];
-    const StretchLimitResult r =
-        stretchLimiter_.limitByPositions(state_, activeMaxStretch(), std::min(passBudget_, settings_.stretchIterations), h);
-    state_.invMass = freeInvMass;
-    stats_.stretchPasses += r.passes;
-    if (r.maxStretchAfter <= activeMaxStretch()) return true;
-    state_.x = x, state_.v = v;
+  ContactSet contacts{touched_, kContact, kSweptContact, nullptr, nullptr};
+  if (!body_.empty() && !sewing_.active()) {
+    contacts.nearestBody = [this](size_t i, float radius, BodyContact& c) { return nearestBodyContact(i, radius, c); };
+    contacts.pushBodyVerticesOut = [this] {
+      return bodyFeatures_->reapply(state_, body_, settings_.collisionThickness, touched_);
+    };
   }
-  return limitStretchKeepingContactsOut(h, freeInvMass);
-}
-
-// The vertices in contact heavy, not held: the limit pulls them along the
-// springs, which over a convex body part is partly into it (a leg swinging in
-// a trouser leg: up to 13 tube vertices inside after the limit with the
-// two-level solve; trousers stretched over a bent knee: the skin showing
-// through their triangles). So the limit runs in rounds, and between two a
-// touched vertex that went in deeper than half the thickness is put back
-// along its contact normal (it still slides along the surface) and the
-// body-vertex contacts are pushed out again, so the next round pulls the
-// cloth around them instead. The last round (the limit, with the rest of the
-// pass budget) ends it; so does a round that held when nothing is left to put
-// back or push out (the rounds after it would change nothing).
-bool ClothSimulator::limitStretchKeepingContactsOut(float h, const std::vector<float>& freeInvMass) {
-  const float thickness = settings_.collisionThickness;
-  const bool body = !body_.empty() && !sewing_.active();
-  std::vector<glm::vec3> normal(body ? state_.size() : 0, glm::vec3(0.0f));
-  std::vector<float> allowedIn(normal.size(), 0.0f);  // how far along -normal a vertex may go
-  const std::vector<glm::vec3> start = body ? state_.x : std::vector<glm::vec3>{};
-  if (body)
-    forRange(state_.size(), [&](size_t b, size_t e) {
-      for (size_t i = b; i < e; ++i) {
-        BodyContact contact;
-        if (!touched_[i] || freeInvMass[i] == 0.0f || !nearestBodyContact(i, 2.0f * thickness, contact))
-          continue;
-        normal[i] = contact.normal;
-        allowedIn[i] = std::max(0.0f, contact.signedDistance - 0.5f * thickness);
-      }
-    });
-  const int rounds = body ? kContactLimitRounds : 1;
-  StretchLimitResult r;
-  int used = 0;
-  for (int round = 0; round < rounds; ++round) {
-    if (round > 0) {
-      bool putBack = false;
-      for (size_t i = 0; i < normal.size(); ++i) {
-        const float in = -glm::dot(state_.x[i] - start[i], normal[i]) - allowedIn[i];
-        if (normal[i] == glm::vec3(0.0f) || in <= 0.0f) continue;
-        state_.x[i] += in * normal[i];
-        state_.v[i] += (in / h) * normal[i];
-        putBack = true;
-      }
-      // Nothing moved since a round that held: the rounds left would change nothing.
-      if (bodyFeatures_->reapply(state_, body_, thickness, touched_) == 0 && !putBack &&
-          r.maxStretchAfter <= activeMaxStretch())
-        break;
-    }
-    for (size_t i = 0; i < state_.size(); ++i)
-      if (touched_[i]) state_.invMass[i] = kContactInvMassScale * freeInvMass[i];
-    // The last round gets what the others left of the budget.
-    const int passes = round + 1 < rounds ? std::max(1, passBudget_ / rounds) : std::max(1, passBudget_ - used);
-    r = stretchLimiter_.limitByPositions(state_, activeMaxStretch(), passes, h);
-    state_.invMass = freeInvMass;
-    stats_.stretchPasses += r.passes;
-    used += r.passes;
-  }
-  return r.maxStretchAfter <= activeMaxStretch();
+  ContactAwareLimitSettings limit;
+  limit.maxStretch = activeMaxStretch();
+  limit.passBudget = passBudget_;
+  // The held try gets the plain budget: pinched cloth fails it whatever the passes.
+  limit.heldPassBudget = std::min(passBudget_, settings_.stretchIterations);
+  limit.h = h;
+  limit.contactInvMassScale = kContactInvMassScale;
+  limit.bodyRounds = kContactLimitRounds;
+  limit.thickness = settings_.collisionThickness;
+  const ContactAwareLimitResult r = limitStretchAroundContacts(state_, contacts, stretchLimiter_, limit);
+  stats_.stretchPasses += r.passes;
+  return r.held;
 }
 
 void ClothSimulator::sewSeams(const std::vector<std::pair<uint32_t, uint32_t>>& seams, float closingSpeed,

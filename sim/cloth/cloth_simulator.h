@@ -198,7 +198,6 @@ class ClothSimulator {
   void collideWithColliders(float h);
   void collideWithInnerSurface(float fraction);  // cloth_simulator_layers.cpp
   bool limitStretchAfterContacts(float h);
-  bool limitStretchKeepingContactsOut(float h, const std::vector<float>& freeInvMass);
   void checkFinite(const char* where) const;
   void updateStats();
   Pin* findPin(uint32_t vertex);
