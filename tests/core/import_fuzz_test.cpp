@@ -11,6 +11,7 @@
 
 #include "core/io/character_import.h"
 #include "core/io/file_bytes.h"
+#include "core/scene/scene_document.h"
 #include "core/util/error.h"
 #include "import_test_util.h"
 
@@ -99,6 +100,46 @@ TEST(ImportFuzz, BvhDigits) { fuzz("motion/makehuman_walk1.bvh", "bvh", 100, 4, 
 
 TEST(ImportFuzz, ColladaText) {
   fuzz("characters/assimp_collada_library_animation_clips/library_animation_clips.dae", "dae", 60, 4, "0123456789 <>/\"#");
+}
+
+}  // namespace
+}  // namespace mq
+
+namespace mq {
+namespace {
+
+// A scene document's material changes, mutated: parsed, or refused with a
+// FileError naming the document.
+TEST(ImportFuzz, SceneDocumentMaterialChanges) {
+  const std::string original = R"({"format": "mannequin-scene", "version": 1, "character": "default",
+    "view": {"skeleton": false, "look": "auto"},
+    "materials": {"coat": {"base_color": [0.5, 0.25, 0.125, 1.0], "roughness": 0.35, "metallic": 0.0,
+      "alpha_mode": "MASK", "alpha_cutoff": 0.5, "emissive": [0, 0, 0], "double_sided": true, "skin": false}}})";
+  std::mt19937 rng(4242);
+  const std::string alphabet = "0123456789-.,:[]{}\"eE";
+  int parsed = 0, refused = 0;
+  for (int round = 0; round < 2000; ++round) {
+    std::string text = original;
+    for (int f = 0; f < 2; ++f)
+      text[std::uniform_int_distribution<size_t>(0, text.size() - 1)(rng)] = alphabet[rng() % alphabet.size()];
+    try {
+      const SceneDocument doc = parseSceneDocument(text, "mutant.mqscene");
+      for (const auto& [name, changes] : doc.materials) {
+        Material m;
+        changes.applyTo(m);
+        EXPECT_TRUE(m.roughnessFactor >= 0.0f && m.roughnessFactor <= 1.0f);
+        EXPECT_TRUE(m.alphaCutoff >= 0.0f && m.alphaCutoff <= 1.0f);
+      }
+      ++parsed;
+    } catch (const FileError& e) {
+      EXPECT_EQ(e.path(), "mutant.mqscene");
+      ++refused;
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << "round " << round << ": " << e.what();
+    }
+  }
+  EXPECT_GT(parsed, 0);
+  EXPECT_GT(refused, 0);
 }
 
 }  // namespace

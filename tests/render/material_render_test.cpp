@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include <vtkActor.h>
 #include <vtkImageData.h>
@@ -14,6 +15,7 @@
 #include "core/gltf_test_util.h"
 #include "core/io/character_import.h"
 #include "render/image_checks.h"
+#include "render/material_textures.h"
 #include "render/offscreen.h"
 #include "render/scene_view.h"
 
@@ -238,6 +240,40 @@ TEST_F(MaterialRenderTest, FloorSitsUnderTheLowestPointWhateverTheOrigin) {
   for (size_t v = 0; v < c.meshes[0].vertexCount(); ++v) c.meshes[0].positions[3 * v + 1] -= 0.9f;  // origin at the top
   show(c);
   EXPECT_NEAR(view.floorHeight(), -0.9f, 1e-6f);
+}
+
+}  // namespace
+}  // namespace mq
+
+namespace mq {
+namespace {
+
+// Mutated texture images (random bytes changed in CesiumMan's JPEG and in a
+// PNG): each decodes or becomes a warning; never a crash.
+TEST(MaterialTexturesFuzz, MutatedImagesDecodeOrWarn) {
+  const Character c = importCharacter(kShared + "/assets/characters/CesiumMan/glTF-Binary/CesiumMan.glb");
+  const std::vector<uint8_t> jpeg = c.images.at(0).encoded;
+  const std::vector<uint8_t> png = encodePng(24, 24, [](int x, int y) {
+    return std::array<uint8_t, 4>{uint8_t(x * 10), uint8_t(y * 10), 99, 255};
+  });
+  std::mt19937 rng(777);
+  for (const std::vector<uint8_t>* original : {&jpeg, &png}) {
+    int decoded = 0, warned = 0;
+    for (int round = 0; round < 60; ++round) {
+      std::vector<ImageSource> images(1);
+      images[0].name = "mutant";
+      images[0].encoded = *original;
+      for (int f = 0; f < 4; ++f)
+        images[0].encoded[std::uniform_int_distribution<size_t>(0, original->size() - 1)(rng)] = uint8_t(rng());
+      render::MaterialTextures textures(images);
+      TextureRef ref;
+      ref.image = 0;
+      if (textures.colour(ref)) ++decoded;
+      else ++warned;
+      EXPECT_EQ(textures.warnings().size(), textures.colour(ref) ? 0u : 1u);
+    }
+    EXPECT_EQ(decoded + warned, 60);
+  }
 }
 
 }  // namespace
