@@ -183,8 +183,11 @@ const char* kPhysicalFragmentImpl = R"(//VTK::Light::Impl
       S += hairLobeWeight[3] * hairLongitudinal(sinI, cosI, sinO, cosO, hairVariance[3]) *
            hairResidualAt(abs(sinO)) * 0.15915494;
       // Light reaching this side of the hair volume, as for Kajiya-Kay.
+      // VTK's lights give a white Lambertian surface the radiance E cos,
+      // which is pi times the physical E cos / pi: S takes the same pi.
+      // The volume term stands for light scattered between fibres.
       float facing = clamp(0.55 + 0.45 * dot(volumeNormal, L), 0.0, 1.0);
-      color += hairLightColor[i] * shadow * facing * S;
+      color += hairLightColor[i] * shadow * facing * (3.14159265 * S + hairLobeWeight4 * hairVolumeAlbedo);
     }
     color *= 1.0 + hairColorVariation * (2.0 * hairParams.z - 1.0);
     float fade = clamp((along - hairTipFadeStart) / max(1e-3, 1.0 - hairTipFadeStart), 0.0, 1.0);
@@ -643,6 +646,8 @@ void HairActor::Impl::updatePhysicalUniforms() {
   float lobeWeight[4];
   for (int p = 0; p < 4; ++p) lobeWeight[p] = (shading.physicalLobes >> p) & 1u ? 1.0f : 0.0f;
   const float albedoF[3] = {float(albedo[0]), float(albedo[1]), float(albedo[2])};
+  const optics::Rgb volume = optics::hairVolumeReflectance(albedo);
+  const float volumeF[3] = {float(volume[0]), float(volume[1]), float(volume[2])};
   vtkUniforms* u = actor->GetShaderProperty()->GetFragmentCustomUniforms();
   u->SetUniform3fv("hairAzimuthalTable", int(table.lobes.size()), reinterpret_cast<const float(*)[3]>(lobes.data()));
   u->SetUniform3fv("hairResidualTable", int(table.residual.size()), reinterpret_cast<const float(*)[3]>(residual.data()));
@@ -651,6 +656,8 @@ void HairActor::Impl::updatePhysicalUniforms() {
   u->SetUniform4f("hairVariance", variance);
   u->SetUniform4f("hairLobeWeight", lobeWeight);
   u->SetUniform3f("hairAlbedo", albedoF);
+  u->SetUniform3f("hairVolumeAlbedo", volumeF);
+  u->SetUniformf("hairLobeWeight4", (shading.physicalLobes >> 4) & 1u ? 1.0f : 0.0f);
 }
 
 void HairActor::Impl::updateUniforms() {

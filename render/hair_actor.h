@@ -23,7 +23,8 @@
 // core function), their azimuthal terms averaged across the fibre read from
 // a small table the core computes (hairAzimuthalTable, 3 lobes x 8 exit
 // angles x 32 azimuths, uniforms), plus an ambient term, the light from all
-// around times the fibre's mean albedo. Its colour comes from the pigments;
+// around times the fibre's mean albedo, and a volume term per light, the
+// light scattered between fibres (hairVolumeReflectance). Its colour comes from the pigments;
 // the root and tip colours are not used. The same self-shadowing and tip
 // transparency as Kajiya-Kay.
 //
@@ -81,7 +82,7 @@ struct HairShading {
   HairShadowMethod shadowMethod = HairShadowMethod::PointCount;
   int opacityMapCount = 32;          // OpacityMaps: slices from the hair's front to its back
   HairShadingParams fibre;           // the model; pigments and roughness for Physical
-  unsigned physicalLobes = 15u;      // Physical: R 1, TT 2, TRT 4, residual 8 (pictures of one lobe)
+  unsigned physicalLobes = 31u;      // Physical: R 1, TT 2, TRT 4, residual 8, volume 16 (pictures of one lobe)
 };
 
 // The arrays for one set of strands (points, lines, tangents, volume normals,

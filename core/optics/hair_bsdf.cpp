@@ -261,6 +261,15 @@ Rgb hairMeanAlbedo(const HairFibre& fibre) {
   return sum;
 }
 
+Rgb hairVolumeReflectance(const Rgb& meanAlbedo) {
+  Rgb r{};
+  for (int c = 0; c < 3; ++c) {
+    const double root = std::sqrt(std::max(0.0, 1.0 - std::clamp(meanAlbedo[c], 0.0, 1.0)));
+    r[c] = (1.0 - root) / (1.0 + root);
+  }
+  return r;
+}
+
 // ---- Pigments ----
 
 Rgb hairSigmaAFromPigment(const HairPigment& pigment) {

@@ -131,6 +131,13 @@ Rgb hairScatteringFromTable(const HairFibre& fibre, const HairAzimuthalTable& ta
 // for the shader's ambient term and to order pigments.
 Rgb hairMeanAlbedo(const HairFibre& fibre);
 
+// The diffuse reflectance of a deep volume of such fibres, per channel, from
+// their mean albedo a: Kubelka-Munk's R_inf = (1 - sqrt(1 - a)) / (1 + sqrt(1 - a))
+// for isotropic scattering. A cheap stand-in for the light scattered many
+// times between fibres (what makes blond hair bright), not Zinke et al.'s
+// dual scattering; hair scatters forward, so it is an upper bound.
+Rgb hairVolumeReflectance(const Rgb& meanAlbedo);
+
 // ---- Pigments ----
 
 struct HairPigment {

@@ -192,7 +192,7 @@ Highlight highlightOf(const render::RgbImage& image, const std::vector<bool>& ma
   return h;
 }
 
-render::HairShading physical(const render::HairShading& base, const char* pigment, unsigned lobes = 15u) {
+render::HairShading physical(const render::HairShading& base, const char* pigment, unsigned lobes = 31u) {
   render::HairShading s = base;
   const optics::HairPigment p = optics::hairPigmentPreset(pigment);
   s.fibre.model = HairShadingModel::Physical;
@@ -258,8 +258,8 @@ TEST_F(HairRenderTest, PhysicalTrtHighlightIsShiftedAndTintedAgainstR) {
   std::printf("R highlight at (%.1f, %.1f), level %.0f, red/blue %.2f; TRT at (%.1f, %.1f), level %.0f, red/blue %.2f\n",
               r.centre.x, r.centre.y, r.level, r.redOverBlue, trt.centre.x, trt.centre.y, trt.level,
               trt.redOverBlue);
-  ASSERT_GT(r.level, 20.0);
-  ASSERT_GT(trt.level, 20.0);
+  ASSERT_GT(r.level, 8.0);  // a highlight at all (8-bit levels)
+  ASSERT_GT(trt.level, 8.0);
   EXPECT_GT(trt.centre.y - r.centre.y, 4.0);  // toward the tips
   EXPECT_GT(trt.redOverBlue, 1.3 * r.redOverBlue);
   EXPECT_LT(r.redOverBlue, 1.25);  // R: the light's colour
