@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <string>
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
@@ -28,6 +29,7 @@
 #include <vtkSmartPointer.h>
 #include <vtkUniforms.h>
 
+#include "core/optics/hair_bsdf.h"
 #include "core/util/thread_pool.h"
 
 namespace mq::render {
@@ -98,6 +100,101 @@ const char* kFragmentImpl = R"(//VTK::Light::Impl
                                       3.0, 11.0, 1.0, 9.0, 15.0, 7.0, 13.0, 5.0);
     ivec2 cell = ivec2(mod(gl_FragCoord.xy, 4.0));
     // The per-strand offset keeps neighbouring tips from sharing one pattern.
+    if (opacity < fract((bayer[cell.x + 4 * cell.y] + 0.5) / 16.0 + hairParams.z)) discard;
+    gl_FragData[0] = vec4(color, 1.0);
+  }
+)";
+
+// The physically based fibre (core/optics/hair_bsdf.h), per light:
+//   S = sum_p M_p(theta_i, theta_o - 2 alpha_p) Nbar_p(phi, |sin theta_o|) + M_3 Abar_3 / 2 pi
+// M_p in the shader (hairLongitudinal: hair_bsdf.cpp's, in floats, always
+// through logarithms), Nbar_p from the core's table (hairAzimuthalTable).
+// The table's size is in kTablePhi, kTableTheta below.
+constexpr int kTablePhi = 32, kTableTheta = 8;
+
+std::string physicalFragmentDec() {
+  return std::string(R"(//VTK::Normal::Dec
+in vec3 hairTangentVC;
+in vec3 hairParams;  // x: 0 root .. 1 tip, y: self-shadow, z: per-strand random
+const int kHairPhi = )") + std::to_string(kTablePhi) + R"(;
+const int kHairTheta = )" + std::to_string(kTableTheta) + R"(;
+// log I0(x): the series below 12, the asymptotic series above.
+float hairLogI0(float x) {
+  if (x > 12.0) {
+    float y = 1.0 / x;
+    return x - 0.5 * log(6.2831853 * x) + log(1.0 + y * (0.125 + y * (0.0703125 + y * 0.0732421875)));
+  }
+  float q = 0.25 * x * x, term = 1.0, sum = 1.0;
+  for (int k = 1; k < 18; ++k) {
+    term *= q / float(k * k);
+    sum += term;
+  }
+  return log(sum);
+}
+// d'Eon's M: csch(1/v) / (2v) exp(-sin_i sin_o / v) I0(cos_i cos_o / v).
+float hairLongitudinal(float sinI, float cosI, float sinO, float cosO, float v) {
+  float logNorm = v > 0.1 ? -log(2.0 * v * sinh(1.0 / v)) : -1.0 / v + 0.6931472 - log(2.0 * v);
+  return exp(hairLogI0(cosI * cosO / v) - sinI * sinO / v + logNorm);
+}
+// Nbar_p, bilinear in (phi in [0, pi], |sin theta_o| in [0, 1]).
+vec3 hairAzimuthalAt(int p, float phi, float sinO) {
+  float x = phi * 0.31830989 * float(kHairPhi - 1), y = sinO * float(kHairTheta - 1);
+  int k = min(int(x), kHairPhi - 2), t = min(int(y), kHairTheta - 2);
+  float fx = x - float(k), fy = y - float(t);
+  int i = (p * kHairTheta + t) * kHairPhi + k;
+  return mix(mix(hairAzimuthalTable[i], hairAzimuthalTable[i + 1], fx),
+             mix(hairAzimuthalTable[i + kHairPhi], hairAzimuthalTable[i + kHairPhi + 1], fx), fy);
+}
+vec3 hairResidualAt(float sinO) {
+  float y = sinO * float(kHairTheta - 1);
+  int t = min(int(y), kHairTheta - 2);
+  return mix(hairResidualTable[t], hairResidualTable[t + 1], y - float(t));
+}
+)";
+}
+
+const char* kPhysicalFragmentImpl = R"(//VTK::Light::Impl
+  {
+    vec3 T = normalize(hairTangentVC);
+    vec3 V = normalize(-vertexVC.xyz);
+    float volumeLength = length(normalVCVSOutput);
+    vec3 volumeNormal = volumeLength > 1e-4 ? normalVCVSOutput / volumeLength : V;
+    float along = hairParams.x;
+    float shadow = hairParams.y;
+    float sinO = clamp(dot(V, T), -1.0, 1.0);
+    float cosO = sqrt(max(0.0, 1.0 - sinO * sinO));
+    vec3 Vp = V - sinO * T;
+    // Ambient: light from all around, times the share the fibre sends back.
+    vec3 color = hairAmbient * hairAlbedo;
+    for (int i = 0; i < hairLightCount; ++i) {
+      vec3 L = hairLightDirVC[i];
+      float sinI = clamp(dot(L, T), -1.0, 1.0);
+      float cosI = sqrt(max(0.0, 1.0 - sinI * sinI));
+      vec3 Lp = L - sinI * T;
+      float across = length(Lp) * length(Vp);
+      float phi = across > 1e-6 ? acos(clamp(dot(Lp, Vp) / across, -1.0, 1.0)) : 0.0;
+      vec3 S = vec3(0.0);
+      for (int p = 0; p < 3; ++p) {
+        float sinOp = sinO * hairShiftCos[p] - cosO * hairShiftSin[p];
+        float cosOp = abs(cosO * hairShiftCos[p] + sinO * hairShiftSin[p]);
+        S += hairLobeWeight[p] * hairLongitudinal(sinI, cosI, sinOp, cosOp, hairVariance[p]) *
+             hairAzimuthalAt(p, phi, abs(sinO));
+      }
+      S += hairLobeWeight[3] * hairLongitudinal(sinI, cosI, sinO, cosO, hairVariance[3]) *
+           hairResidualAt(abs(sinO)) * 0.15915494;
+      // Light reaching this side of the hair volume, as for Kajiya-Kay.
+      // VTK's lights give a white Lambertian surface the radiance E cos,
+      // which is pi times the physical E cos / pi: S takes the same pi.
+      // The volume term stands for light scattered between fibres.
+      float facing = clamp(0.55 + 0.45 * dot(volumeNormal, L), 0.0, 1.0);
+      color += hairLightColor[i] * shadow * facing * (3.14159265 * S + hairLobeWeight4 * hairVolumeAlbedo);
+    }
+    color *= 1.0 + hairColorVariation * (2.0 * hairParams.z - 1.0);
+    float fade = clamp((along - hairTipFadeStart) / max(1e-3, 1.0 - hairTipFadeStart), 0.0, 1.0);
+    float opacity = mix(1.0, hairTipOpacity, fade);
+    const float bayer[16] = float[16](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0,
+                                      3.0, 11.0, 1.0, 9.0, 15.0, 7.0, 13.0, 5.0);
+    ivec2 cell = ivec2(mod(gl_FragCoord.xy, 4.0));
     if (opacity < fract((bayer[cell.x + 4 * cell.y] + 0.5) / 16.0 + hairParams.z)) discard;
     gl_FragData[0] = vec4(color, 1.0);
   }
@@ -443,9 +540,13 @@ struct HairActor::Impl {
   vtkNew<vtkActor> actor;
   std::optional<glm::vec3> keyLight;
   std::function<void()> requestReshade;
+  // The fragment shader installed, and the fibre the physical uniforms hold.
+  std::optional<HairShadingModel> installedModel;
+  std::optional<std::pair<HairShadingParams, unsigned>> physicalUniformsFor;
 
   Impl();
   void installShaders();
+  void updatePhysicalUniforms();
   void updateUniforms();
   void show(std::shared_ptr<const HairGeometry> shown);
   void beforeRender(vtkRenderer* renderer);
@@ -458,8 +559,7 @@ HairActor::Impl::Impl() {
   actor->GetProperty()->SetLineWidth(1.0f);  // wider lines go through a geometry shader that drops our varyings
   actor->GetProperty()->LightingOn();
   actor->PickableOff();
-  installShaders();
-  updateUniforms();
+  updateUniforms();  // installs the shaders
 }
 
 void HairActor::Impl::beforeRender(vtkRenderer* renderer) {
@@ -497,12 +597,67 @@ void HairActor::Impl::show(std::shared_ptr<const HairGeometry> shown) {
   mapper->SetInputData(count ? geometry->chunks[0].polyData.Get() : empty.Get());
 }
 
+// The fragment shader of the shading's model (a change rebuilds the program).
 void HairActor::Impl::installShaders() {
+  const HairShadingModel model = shading.fibre.model;
+  if (installedModel == model) return;
   vtkShaderProperty* sp = actor->GetShaderProperty();
-  sp->AddVertexShaderReplacement("//VTK::Normal::Dec", true, kVertexDec, false);
-  sp->AddVertexShaderReplacement("//VTK::Light::Impl", true, kVertexImpl, false);
-  sp->AddFragmentShaderReplacement("//VTK::Normal::Dec", true, kFragmentDec, false);
-  sp->AddFragmentShaderReplacement("//VTK::Light::Impl", true, kFragmentImpl, false);
+  if (!installedModel) {
+    sp->AddVertexShaderReplacement("//VTK::Normal::Dec", true, kVertexDec, false);
+    sp->AddVertexShaderReplacement("//VTK::Light::Impl", true, kVertexImpl, false);
+  }
+  sp->ClearAllFragmentShaderReplacements();
+  if (model == HairShadingModel::Physical) {
+    sp->AddFragmentShaderReplacement("//VTK::Normal::Dec", true, physicalFragmentDec(), false);
+    sp->AddFragmentShaderReplacement("//VTK::Light::Impl", true, kPhysicalFragmentImpl, false);
+  } else {
+    sp->AddFragmentShaderReplacement("//VTK::Normal::Dec", true, kFragmentDec, false);
+    sp->AddFragmentShaderReplacement("//VTK::Light::Impl", true, kFragmentImpl, false);
+  }
+  installedModel = model;
+}
+
+// The fibre's table, lobe shifts and widths and mean albedo (recomputed when
+// the pigments or the roughness change: a few milliseconds).
+void HairActor::Impl::updatePhysicalUniforms() {
+  if (shading.fibre.model != HairShadingModel::Physical) return;
+  const auto key = std::make_pair(shading.fibre, shading.physicalLobes);
+  if (physicalUniformsFor == key) return;
+  physicalUniformsFor = key;
+  optics::HairFibre fibre;
+  fibre.sigmaA = optics::hairSigmaAFromPigment({shading.fibre.melanin, shading.fibre.pheomelanin});
+  fibre.longitudinalRoughness = fibre.azimuthalRoughness = std::clamp(double(shading.fibre.roughness), 0.05, 1.0);
+  const optics::HairAzimuthalTable table = optics::hairAzimuthalTable(fibre, kTablePhi, kTableTheta);
+  std::vector<float> lobes(table.lobes.size() * 3), residual(table.residual.size() * 3);
+  for (size_t k = 0; k < table.lobes.size(); ++k)
+    for (int c = 0; c < 3; ++c) lobes[3 * k + c] = float(table.lobes[k][c]);
+  for (size_t k = 0; k < table.residual.size(); ++k)
+    for (int c = 0; c < 3; ++c) residual[3 * k + c] = float(table.residual[k][c]);
+  const optics::Rgb albedo = optics::hairMeanAlbedo(fibre);
+  const double v = optics::hairLongitudinalVariance(fibre.longitudinalRoughness);
+  const double alpha = fibre.alphaDegrees * 3.14159265358979323846 / 180.0;
+  const double shifts[3] = {alpha, -0.5 * alpha, -1.5 * alpha};  // alpha_R, alpha_TT, alpha_TRT
+  float shiftSin[3], shiftCos[3];
+  for (int p = 0; p < 3; ++p) {
+    shiftSin[p] = float(std::sin(2.0 * shifts[p]));
+    shiftCos[p] = float(std::cos(2.0 * shifts[p]));
+  }
+  const float variance[4] = {float(v), float(0.25 * v), float(4.0 * v), float(4.0 * v)};
+  float lobeWeight[4];
+  for (int p = 0; p < 4; ++p) lobeWeight[p] = (shading.physicalLobes >> p) & 1u ? 1.0f : 0.0f;
+  const float albedoF[3] = {float(albedo[0]), float(albedo[1]), float(albedo[2])};
+  const optics::Rgb volume = optics::hairVolumeReflectance(albedo);
+  const float volumeF[3] = {float(volume[0]), float(volume[1]), float(volume[2])};
+  vtkUniforms* u = actor->GetShaderProperty()->GetFragmentCustomUniforms();
+  u->SetUniform3fv("hairAzimuthalTable", int(table.lobes.size()), reinterpret_cast<const float(*)[3]>(lobes.data()));
+  u->SetUniform3fv("hairResidualTable", int(table.residual.size()), reinterpret_cast<const float(*)[3]>(residual.data()));
+  u->SetUniform3f("hairShiftSin", shiftSin);
+  u->SetUniform3f("hairShiftCos", shiftCos);
+  u->SetUniform4f("hairVariance", variance);
+  u->SetUniform4f("hairLobeWeight", lobeWeight);
+  u->SetUniform3f("hairAlbedo", albedoF);
+  u->SetUniform3f("hairVolumeAlbedo", volumeF);
+  u->SetUniformf("hairLobeWeight4", (shading.physicalLobes >> 4) & 1u ? 1.0f : 0.0f);
 }
 
 void HairActor::Impl::updateUniforms() {
@@ -522,6 +677,8 @@ void HairActor::Impl::updateUniforms() {
   u->SetUniformf("hairSecondaryShift", shading.secondaryShift);
   u->SetUniformf("hairTipOpacity", shading.tipOpacity);
   u->SetUniformf("hairTipFadeStart", shading.tipFadeStart);
+  installShaders();
+  updatePhysicalUniforms();
   // Declared here so the first frame's shader has them before the lights are read.
   const float zeros[kMaxLights][3] = {};
   u->SetUniformi("hairLightCount", 0);
@@ -574,6 +731,12 @@ void HairActor::setFrameBudget(double milliseconds) { impl_->mapper->frameBudget
 void HairActor::setColors(const glm::vec3& root, const glm::vec3& tip) {
   impl_->shading.rootColor = root;
   impl_->shading.tipColor = tip;
+  impl_->updateUniforms();
+  impl_->actor->Modified();
+}
+
+void HairActor::setFibre(const HairShadingParams& fibre) {
+  impl_->shading.fibre = fibre;
   impl_->updateUniforms();
   impl_->actor->Modified();
 }

@@ -17,6 +17,17 @@
 // Tangents and the shadow term are custom vertex attributes; the scene's
 // lights (camera, head or scene lights) are read every frame.
 //
+// Or, with HairShadingParams::model = Physical, the fibre of
+// core/optics/hair_bsdf.h per fragment and per light: the R, TT and TRT
+// lobes' longitudinal terms M_p evaluated in the shader (a GLSL port of the
+// core function), their azimuthal terms averaged across the fibre read from
+// a small table the core computes (hairAzimuthalTable, 3 lobes x 8 exit
+// angles x 32 azimuths, uniforms), plus an ambient term, the light from all
+// around times the fibre's mean albedo, and a volume term per light, the
+// light scattered between fibres (hairVolumeReflectance). Its colour comes from the pigments;
+// the root and tip colours are not used. The same self-shadowing and tip
+// transparency as Kajiya-Kay.
+//
 // The arrays it draws (HairGeometry) are built by static functions that touch
 // no VTK object already shown, so an editor can build them on a worker thread
 // and hand them over with showGeometry(), a pointer swap. The strands are
@@ -36,6 +47,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/hair/hairstyle.h"
 #include "core/hair/strands.h"
 
 class vtkActor;
@@ -69,6 +81,8 @@ struct HairShading {
   float minShadow = 0.25f;           // floor: light scattered in from around
   HairShadowMethod shadowMethod = HairShadowMethod::PointCount;
   int opacityMapCount = 32;          // OpacityMaps: slices from the hair's front to its back
+  HairShadingParams fibre;           // the model; pigments and roughness for Physical
+  unsigned physicalLobes = 31u;      // Physical: R 1, TT 2, TRT 4, residual 8, volume 16 (pictures of one lobe)
 };
 
 // The arrays for one set of strands (points, lines, tangents, volume normals,
@@ -130,6 +144,8 @@ class HairActor {
   // view, culled) must not be continued.
   size_t framesDrawn() const;
   void setColors(const glm::vec3& root, const glm::vec3& tip);
+  // The shading model and, for Physical, the pigments and roughness.
+  void setFibre(const HairShadingParams& fibre);
   void setShading(const HairShading& shading);
   const HairShading& shading() const;
   void setVisible(bool visible);

@@ -6,6 +6,7 @@
 #include "app/cli/render_garments.h"
 #include "app/cli/render_hair.h"
 #include "core/character/posed_character.h"
+#include "core/hair/hairstyle_json.h"
 #include "core/scene/open_scene.h"
 #include "core/util/error.h"
 #include "core/util/thread_pool.h"
@@ -54,7 +55,8 @@ void placeCamera(render::SceneView& view, const ViewSettings& settings, const Im
 
 int runRender(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--out", "--time", "--clip", "--size", "--skeleton", "--look", "--hair", "--hair-shadow", "--skinning"});
+  args.allowOnly({"--out", "--time", "--clip", "--size", "--skeleton", "--look", "--hair", "--hair-shadow", "--skinning",
+                  "--hair-shader", "--hair-pigment", "--melanin", "--pheomelanin", "--hair-roughness"});
   if (args.positional().size() != 1) throw Error("expects one FILE (or 'default'); see mannequin-cli --help");
   const std::string file = args.positional()[0];
   const std::string out = args.option("--out");
@@ -83,9 +85,13 @@ int runRender(const std::vector<std::string>& argv) {
   view.setAmbientOcclusion(true);
   placeCamera(view, scene.document.view, size);
   std::string hairSummary;
-  const auto hair = addSceneHair(view, scene, clip, time,
-                                 parseHairRenderOptions(args.option("--hair", "auto"), args.option("--hair-shadow", "count")),
-                                 hairSummary);
+  HairRenderOptions hairOptions = parseHairRenderOptions(args.option("--hair", "auto"), args.option("--hair-shadow", "count"));
+  if (args.has("--hair-shader")) hairOptions.model = hairShadingModelFromName(args.option("--hair-shader"));
+  if (args.has("--hair-pigment")) hairOptions.pigment = args.option("--hair-pigment");
+  if (args.has("--melanin")) hairOptions.melanin = float(args.number("--melanin", 0.0));
+  if (args.has("--pheomelanin")) hairOptions.pheomelanin = float(args.number("--pheomelanin", 0.0));
+  if (args.has("--hair-roughness")) hairOptions.roughness = float(args.number("--hair-roughness", 0.3));
+  const auto hair = addSceneHair(view, scene, clip, time, hairOptions, hairSummary);
   render::renderToPng(view, out, size.width, size.height);
   std::cout << "wrote " << out << " (" << size.width << "x" << size.height << ", "
             << (clip >= 0 ? "clip '" + scene.character.clips[clip].name + "' at t=" + std::to_string(time)
@@ -97,7 +103,9 @@ int runRender(const std::vector<std::string>& argv) {
 
 Registration reg({"render", "FILE --out OUT.png [--time T] [--clip NAME|INDEX|rest] [--size WxH] [--skeleton]\n"
                   "         [--look auto|skin|mannequin|plain] [--hair auto|simulate|rigid|off]\n"
-                  "         [--hair-shadow count|maps] [--skinning lbs|dqs|cones]",
+                  "         [--hair-shadow count|maps] [--skinning lbs|dqs|cones]\n"
+                  "         [--hair-shader kajiya-kay|physical] [--hair-pigment black|brown|blond|red|grey]\n"
+                  "         [--melanin M] [--pheomelanin P] [--hair-roughness R]",
                   "renders an image offscreen (starts a private Xvfb when there is no X display)", runRender});
 
 }  // namespace

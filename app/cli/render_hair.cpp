@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "app/cli/scene_hair.h"
+#include "core/optics/hair_bsdf.h"
 #include "core/util/error.h"
 #include "render/hair_actor.h"
 #include "render/scene_view.h"
@@ -42,6 +43,22 @@ HairRenderOptions parseHairRenderOptions(const std::string& mode, const std::str
   return options;
 }
 
+HairShadingParams HairRenderOptions::shadingFor(HairShadingParams style) const {
+  if (pigment) {
+    const optics::HairPigment p = optics::hairPigmentPreset(*pigment);
+    style.melanin = float(p.eumelanin);
+    style.pheomelanin = float(p.pheomelanin);
+  }
+  if (melanin) style.melanin = *melanin;
+  if (pheomelanin) style.pheomelanin = *pheomelanin;
+  if (roughness) style.roughness = *roughness;
+  if (pigment || melanin || pheomelanin || roughness) style.model = HairShadingModel::Physical;
+  if (model) style.model = *model;
+  if (style.melanin < 0.0f || style.pheomelanin < 0.0f) throw Error("--melanin and --pheomelanin must be >= 0");
+  if (!(style.roughness >= 0.05f && style.roughness <= 1.0f)) throw Error("--hair-roughness must be in 0.05..1");
+  return style;
+}
+
 std::unique_ptr<render::HairActor> addSceneHair(render::SceneView& view, const LoadedScene& scene, int clip,
                                                 float time, const HairRenderOptions& options, std::string& summary) {
   HairRenderMode mode = options.mode;
@@ -53,6 +70,8 @@ std::unique_ptr<render::HairActor> addSceneHair(render::SceneView& view, const L
   auto actor = std::make_unique<render::HairActor>();
   actor->setStrands(hair.groom().strands());
   actor->setColors(hair.style().rootColor, hair.style().tipColor);
+  const HairShadingParams fibre = options.shadingFor(hair.style().shading);
+  actor->setFibre(fibre);
   if (options.opacityShadowMaps) {
     render::HairShading shading = actor->shading();
     shading.shadowMethod = render::HairShadowMethod::OpacityMaps;
@@ -63,7 +82,11 @@ std::unique_ptr<render::HairActor> addSceneHair(render::SceneView& view, const L
                                   : hair.rigidStrands(time));
   view.add(*actor);
   summary = "hair " + hair.style().name + ", " + std::to_string(hair.groom().strands().strandCount()) + " strands, " +
-            (simulate ? "simulated to the time" : "carried by the head");
+            (simulate ? "simulated to the time" : "carried by the head") +
+            (fibre.model == HairShadingModel::Physical
+                 ? ", physical shading (melanin " + std::to_string(fibre.melanin).substr(0, 4) + ", pheomelanin " +
+                       std::to_string(fibre.pheomelanin).substr(0, 4) + ")"
+                 : "");
   return actor;
 }
 

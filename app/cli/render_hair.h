@@ -3,8 +3,10 @@
 // its character and drawn with render::HairActor, posed at the render time.
 
 #include <memory>
+#include <optional>
 #include <string>
 
+#include "core/hair/hairstyle.h"
 #include "core/scene/open_scene.h"
 
 namespace mq::render {
@@ -25,9 +27,17 @@ HairRenderMode parseHairRenderMode(const std::string& name);  // throws mq::Erro
 
 // --hair-shadow count|maps: the self-shadowing term (render/hair_actor.h),
 // the exact per-column count or opacity shadow maps.
+// --hair-shader kajiya-kay|physical, --hair-pigment black|brown|blond|red|grey,
+// --melanin M, --pheomelanin P, --hair-roughness R: override the style's
+// "shading" (a pigment or a concentration implies physical).
 struct HairRenderOptions {
   HairRenderMode mode = HairRenderMode::Auto;
   bool opacityShadowMaps = false;
+  std::optional<HairShadingModel> model;
+  std::optional<std::string> pigment;
+  std::optional<float> melanin, pheomelanin, roughness;
+  // The style's shading with these overrides.
+  HairShadingParams shadingFor(HairShadingParams style) const;
 };
 HairRenderOptions parseHairRenderOptions(const std::string& mode, const std::string& shadow);  // throws mq::Error
 

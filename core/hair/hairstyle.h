@@ -57,6 +57,21 @@ struct LengthPoint {
   float radius = 0.05f;
 };
 
+// How the strands are shaded (the document's "shading"): Kajiya-Kay with the
+// root and tip colours, or the physically based fibre of
+// core/optics/hair_bsdf.h coloured by its pigments.
+enum class HairShadingModel { KajiyaKay, Physical };
+struct HairShadingParams {
+  HairShadingModel model = HairShadingModel::KajiyaKay;
+  float melanin = 1.3f;      // eumelanin concentration (Chiang et al. 2016 units, 0 .. ~8)
+  float pheomelanin = 0.1f;  // the red pigment, same units
+  float roughness = 0.3f;    // longitudinal and azimuthal beta (0.1 sleek .. 0.6 coarse)
+  bool operator==(const HairShadingParams& o) const {
+    return model == o.model && melanin == o.melanin && pheomelanin == o.pheomelanin && roughness == o.roughness;
+  }
+  bool operator!=(const HairShadingParams& o) const { return !(*this == o); }
+};
+
 struct HairStyle {
   std::string name = "custom";
   FlowPrimitives primitives;
@@ -88,6 +103,7 @@ struct HairStyle {
   float frizzFrequency = 40.0f;  // cycles per metre of hair
   glm::vec3 rootColor{0.10f, 0.06f, 0.035f};
   glm::vec3 tipColor{0.25f, 0.16f, 0.09f};
+  HairShadingParams shading;
   uint32_t seed = 1;
 };
 

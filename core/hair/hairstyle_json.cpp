@@ -83,6 +83,37 @@ void readPrimitives(const json& j, FlowPrimitives& p) {
 
 }  // namespace
 
+std::string hairShadingModelName(HairShadingModel model) {
+  return model == HairShadingModel::Physical ? "physical" : "kajiya-kay";
+}
+
+HairShadingModel hairShadingModelFromName(const std::string& name) {
+  if (name == "kajiya-kay") return HairShadingModel::KajiyaKay;
+  if (name == "physical") return HairShadingModel::Physical;
+  throw Error("hair: unknown shading model '" + name + "' (kajiya-kay or physical)");
+}
+
+HairShadingParams hairShadingFromJson(const json& j, const HairShadingParams& base) {
+  if (!j.is_object()) throw Error("hair: 'shading' must be an object");
+  HairShadingParams s = base;
+  std::string model = hairShadingModelName(s.model);
+  read(j, "model", model);
+  s.model = hairShadingModelFromName(model);
+  read(j, "melanin", s.melanin);
+  read(j, "pheomelanin", s.pheomelanin);
+  read(j, "roughness", s.roughness);
+  if (!(s.melanin >= 0.0f) || !(s.pheomelanin >= 0.0f)) throw Error("hair: melanin concentrations must be >= 0");
+  if (!(s.roughness >= 0.05f && s.roughness <= 1.0f)) throw Error("hair: shading 'roughness' must be in 0.05..1");
+  return s;
+}
+
+json toJson(const HairShadingParams& s) {
+  return {{"model", hairShadingModelName(s.model)},
+          {"melanin", tidy(s.melanin)},
+          {"pheomelanin", tidy(s.pheomelanin)},
+          {"roughness", tidy(s.roughness)}};
+}
+
 HairStyle hairStyleFromJson(const json& j) {
   if (j.is_string()) return builtinHairStyle(j.get<std::string>());
   if (!j.is_object()) throw Error("hair: 'style' must be a built-in style name or an object");
@@ -120,6 +151,7 @@ HairStyle hairStyleFromJson(const json& j) {
   read(j, "root_color", s.rootColor);
   read(j, "tip_color", s.tipColor);
   read(j, "seed", s.seed);
+  if (j.contains("shading")) s.shading = hairShadingFromJson(j.at("shading"), s.shading);
   if (s.pointsPerStrand < 2 || s.pointsPerStrand > 1024) throw Error("hair: 'points_per_strand' must be in 2..1024");
   if (!(s.length > 0.0f)) throw Error("hair: 'length' must be positive");
   if (s.density < 0.0f || s.maxStrands < 0 || s.guideCount < 1) throw Error("hair: density and counts must be positive");
@@ -164,6 +196,7 @@ HairSection hairSectionFromJson(const json& j) {
     section.scalpGiven = true;
   }
   read(j, "strands", section.strands);
+  if (j.contains("shading")) section.style.shading = hairShadingFromJson(j.at("shading"), section.style.shading);
   return section;
 }
 
@@ -176,7 +209,7 @@ json toJson(const HairStyle& s) {
     vortices.push_back({{"position", vec(e.position)}, {"axis", vec(e.axis)}, {"strength", tidy(e.strength)}, {"radius", tidy(e.radius)}});
   for (const LengthPoint& e : s.lengthMap)
     lengthMap.push_back({{"position", vec(e.position)}, {"scale", tidy(e.scale)}, {"radius", tidy(e.radius)}});
-  return json{{"name", s.name},
+  json out{{"name", s.name},
               {"streams", streams},
               {"sources", sources},
               {"vortices", vortices},
@@ -202,6 +235,8 @@ json toJson(const HairStyle& s) {
               {"root_color", vec(s.rootColor)},
               {"tip_color", vec(s.tipColor)},
               {"seed", s.seed}};
+  if (s.shading != HairShadingParams{}) out["shading"] = toJson(s.shading);
+  return out;
 }
 
 json toJson(const ScalpRegion& r) {

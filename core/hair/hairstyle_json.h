@@ -10,8 +10,14 @@
 //     "scalp": {"kind": "tagged"}                          default: TagScalp vertices
 //            | {"kind": "bone_cone", "bone": "head", "axis": [0,1,0], "angle": 70}
 //            | {"kind": "faces", "mesh": 0, "faces": [..]},
-//     "strands": 0                             total count, 0 = from the density
+//     "strands": 0,                            total count, 0 = from the density
+//     "shading": {"model": "kajiya-kay" | "physical",   default kajiya-kay
+//                 "melanin": 1.3, "pheomelanin": 0.1,   pigments (physical)
+//                 "roughness": 0.3}                      fibre roughness beta (physical)
 //   }
+// "shading" may also sit in a style object (the editor saves it there); the
+// section's one wins. A style whose shading is the default writes none, so
+// files saved before it existed read and write unchanged.
 // Primitive positions are in head space (see hairstyle.h).
 
 #include <nlohmann/json.hpp>
@@ -38,6 +44,12 @@ struct HairSection {
 HairStyle hairStyleFromJson(const nlohmann::json& j);
 HairSection hairSectionFromJson(const nlohmann::json& j);
 ScalpRegion scalpRegionFromJson(const nlohmann::json& j);
+// Fields absent keep `base`'s values.
+HairShadingParams hairShadingFromJson(const nlohmann::json& j, const HairShadingParams& base = {});
+nlohmann::json toJson(const HairShadingParams& shading);
+// "kajiya-kay", "physical"; the parser throws mq::Error naming them.
+std::string hairShadingModelName(HairShadingModel model);
+HairShadingModel hairShadingModelFromName(const std::string& name);
 
 nlohmann::json toJson(const HairStyle& style);
 nlohmann::json toJson(const ScalpRegion& region);

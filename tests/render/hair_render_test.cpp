@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
+#include <string>
 
 #include <vtkActor.h>
 #include <vtkNew.h>
@@ -19,6 +21,7 @@
 #include "core/hair/hairstyle.h"
 #include "core/hair/head_fit.h"
 #include "core/io/character_import.h"
+#include "core/optics/hair_bsdf.h"
 #include "render/hair_actor.h"
 #include "render/image_checks.h"
 #include "render/offscreen.h"
@@ -131,6 +134,135 @@ TEST_F(HairRenderTest, DrapedHairHasHighlightsAndShadowedInnerStrands) {
 
   const std::string why = test::checkAgainstBaseline(image, "hair_draped_sphere");
   EXPECT_TRUE(why.empty()) << why;
+}
+
+// ---- The physical fibre (core/optics/hair_bsdf.h in the shader) ----
+
+// The hair's pixels: where the Kajiya-Kay image differs from the bare head
+// (the same pixels for every model and pigment compared).
+std::vector<bool> hairMask(const render::RgbImage& image, const render::RgbImage& bare) {
+  std::vector<bool> mask(size_t(image.width) * image.height);
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const uint8_t *a = image.at(x, y), *b = bare.at(x, y);
+      mask[size_t(y) * image.width + x] = std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]) > 72;
+    }
+  return mask;
+}
+
+double meanLuminance(const render::RgbImage& image, const std::vector<bool>& mask) {
+  double sum = 0.0;
+  size_t count = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      if (mask[size_t(y) * image.width + x]) sum += luminance(image.at(x, y)), ++count;
+  return count ? sum / double(count) : 0.0;
+}
+
+// The highlight of a one-lobe image: its brightest 2 % of hair pixels, their
+// luminance-weighted centre (pixels, y down) and their mean red / blue.
+struct Highlight {
+  glm::dvec2 centre{0.0};
+  double redOverBlue = 0.0;
+  double level = 0.0;
+};
+Highlight highlightOf(const render::RgbImage& image, const std::vector<bool>& mask) {
+  std::vector<double> lum;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      if (mask[size_t(y) * image.width + x]) lum.push_back(luminance(image.at(x, y)));
+  Highlight h;
+  if (lum.empty()) return h;
+  std::sort(lum.begin(), lum.end());
+  h.level = lum[lum.size() * 98 / 100];
+  double weight = 0.0, ratio = 0.0;
+  size_t count = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const uint8_t* p = image.at(x, y);
+      const double l = luminance(p);
+      if (!mask[size_t(y) * image.width + x] || l < h.level) continue;
+      h.centre += (l - h.level + 1.0) * glm::dvec2(x, y);
+      weight += l - h.level + 1.0;
+      ratio += (p[0] + 1.0) / (p[2] + 1.0);
+      ++count;
+    }
+  h.centre /= weight;
+  h.redOverBlue = ratio / double(count);
+  return h;
+}
+
+render::HairShading physical(const render::HairShading& base, const char* pigment, unsigned lobes = 31u) {
+  render::HairShading s = base;
+  const optics::HairPigment p = optics::hairPigmentPreset(pigment);
+  s.fibre.model = HairShadingModel::Physical;
+  s.fibre.melanin = float(p.eumelanin);
+  s.fibre.pheomelanin = float(p.pheomelanin);
+  s.physicalLobes = lobes;
+  return s;
+}
+
+TEST_F(HairRenderTest, PhysicalPigmentsOrderTheBrightness) {
+  const Strands strands = combedStrands(8000, 24, 0.3f);
+  render::OffscreenRenderer renderer(view, kWidth, kHeight);
+  const render::RgbImage bare = renderer.capture();
+  render::HairActor hair;
+  hair.setStrands(strands);
+  view.addProp(hair.actor());
+  const std::vector<bool> mask = hairMask(renderer.capture(), bare);
+  const render::HairShading kajiyaKay = hair.shading();
+  double previous = 0.0;
+  for (const char* pigment : {"black", "brown", "blond"}) {
+    hair.setShading(physical(kajiyaKay, pigment));
+    const render::RgbImage image = renderer.capture();
+    const double mean = meanLuminance(image, mask);
+    std::printf("physical %s: mean luminance %.1f\n", pigment, mean);
+    EXPECT_GT(mean, 1.15 * previous) << pigment;
+    previous = mean;
+    if (std::string(pigment) == "brown") {
+      const std::string why = test::checkAgainstBaseline(image, "hair_physical_brown");
+      EXPECT_TRUE(why.empty()) << why;
+    }
+  }
+  // The Kajiya-Kay picture is the same after a trip through the physical model.
+  hair.setShading(kajiyaKay);
+  const std::string why = test::checkAgainstBaseline(renderer.capture(), "hair_draped_sphere");
+  EXPECT_TRUE(why.empty()) << why;
+}
+
+// Marschner's two highlights: the white R reflected at the cuticle, shifted
+// toward the root (alpha_R = -3 degrees), and the TRT, tinted by the
+// pigment it crossed twice, shifted toward the tip (-3/2 alpha_R = +4.5
+// degrees). Rendered one lobe at a time, the TRT highlight must sit further
+// toward the tips (down the picture: the strands comb down) and be redder
+// than R's. With the shifts' signs swapped, no shift, or the lobes' colours
+// mixed up, this fails.
+TEST_F(HairRenderTest, PhysicalTrtHighlightIsShiftedAndTintedAgainstR) {
+  const Strands strands = combedStrands(8000, 24, 0.3f);
+  render::OffscreenRenderer renderer(view, kWidth, kHeight);
+  const render::RgbImage bare = renderer.capture();
+  render::HairActor hair;
+  render::HairShading shading = hair.shading();
+  shading.selfShadowing = false;  // the lobes alone
+  shading.ambient = 0.0f;
+  shading.colorVariation = 0.0f;
+  shading.tipOpacity = 1.0f;
+  hair.setShading(shading);
+  hair.setStrands(strands);
+  view.addProp(hair.actor());
+  const std::vector<bool> mask = hairMask(renderer.capture(), bare);
+  hair.setShading(physical(shading, "blond", optics::kHairR));
+  const Highlight r = highlightOf(renderer.capture(), mask);
+  hair.setShading(physical(shading, "blond", optics::kHairTRT));
+  const Highlight trt = highlightOf(renderer.capture(), mask);
+  std::printf("R highlight at (%.1f, %.1f), level %.0f, red/blue %.2f; TRT at (%.1f, %.1f), level %.0f, red/blue %.2f\n",
+              r.centre.x, r.centre.y, r.level, r.redOverBlue, trt.centre.x, trt.centre.y, trt.level,
+              trt.redOverBlue);
+  ASSERT_GT(r.level, 8.0);  // a highlight at all (8-bit levels)
+  ASSERT_GT(trt.level, 8.0);
+  EXPECT_GT(trt.centre.y - r.centre.y, 4.0);  // toward the tips
+  EXPECT_GT(trt.redOverBlue, 1.3 * r.redOverBlue);
+  EXPECT_LT(r.redOverBlue, 1.25);  // R: the light's colour
 }
 
 // The default hairstyle groomed on the default mannequin, seen from the

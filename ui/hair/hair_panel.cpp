@@ -18,6 +18,7 @@
 
 #include "core/hair/hair_groom.h"
 #include "core/hair/head_fit.h"
+#include "core/optics/hair_bsdf.h"
 #include "ui/hair/hair_style_command.h"
 #include "ui/hair/hair_tool.h"
 
@@ -28,7 +29,8 @@ namespace {
 enum FieldKey {
   kStrength = 1, kRadius, kAxisX, kAxisY, kAxisZ, kPosX, kPosY, kPosZ,
   kDensity, kLength, kClumping, kFrizz, kRootColor, kTipColor,
-  kScalpAxisX, kScalpAxisY, kScalpAxisZ, kScalpAngle
+  kScalpAxisX, kScalpAxisY, kScalpAxisZ, kScalpAngle,
+  kShadingModel, kMelanin, kPheomelanin, kRoughness, kPigmentPreset
 };
 
 // Scalp cone axes (world, rest pose; the character faces +Z).
@@ -192,6 +194,8 @@ HairPanel::HairPanel(HairTool* tool, QWidget* parent) : QWidget(parent), tool_(t
   connect(rootColor_, &QPushButton::clicked, this, [this] { pickColor(true); });
   connect(tipColor_, &QPushButton::clicked, this, [this] { pickColor(false); });
 
+  layout->addWidget(makeShadingGroup());
+
   // View and dynamics
   auto* dynamics = new QGroupBox(tr("View and dynamics"));
   auto* dynamicsLayout = new QVBoxLayout(dynamics);
@@ -227,6 +231,81 @@ HairPanel::HairPanel(HairTool* tool, QWidget* parent) : QWidget(parent), tool_(t
   connect(tool_, &HairTool::selectionChanged, this, &HairPanel::refresh);
   connect(tool_, &HairTool::scalpChanged, this, &HairPanel::refreshScalp);
   refresh();
+}
+
+// The shading model and the physical fibre's pigments and roughness. Every
+// change is one undo step (steps of one spin box merge, as for the strands).
+QWidget* HairPanel::makeShadingGroup() {
+  auto* group = new QGroupBox(tr("Shading"));
+  auto* form = new QFormLayout(group);
+  shadingModel_ = new QComboBox;
+  shadingModel_->addItem(tr("Kajiya-Kay"));
+  shadingModel_->addItem(tr("Physical (Marschner)"));
+  shadingModel_->setToolTip(tr("Kajiya-Kay: the root and tip colours with shifted highlights. Physical: a fibre "
+                               "that reflects, transmits and absorbs (R, TT and TRT lobes), coloured by its "
+                               "melanin."));
+  melanin_ = addSpin(0.0, 8.0, 0.1, 2);
+  melanin_->setToolTip(tr("Eumelanin, the brown-black pigment: 0 white, 0.3 blond, 1.3 brown, 8 black"));
+  pheomelanin_ = addSpin(0.0, 4.0, 0.1, 2);
+  pheomelanin_->setToolTip(tr("Pheomelanin, the red-yellow pigment"));
+  roughness_ = addSpin(0.05, 1.0, 0.05, 2);
+  roughness_->setToolTip(tr("Fibre roughness: 0.1 sleek with sharp highlights, 0.6 coarse"));
+  form->addRow(tr("Model"), shadingModel_);
+  form->addRow(tr("Melanin"), melanin_);
+  form->addRow(tr("Redness"), pheomelanin_);
+  form->addRow(tr("Roughness"), roughness_);
+  auto* presets = new QHBoxLayout;
+  for (const std::string& name : optics::hairPigmentPresetNames()) {
+    auto* button = new QPushButton(QString::fromStdString(name));
+    button->setObjectName(QString::fromStdString("hairPigment_" + name));
+    presets->addWidget(button);
+    pigmentButtons_.push_back(button);
+    connect(button, &QPushButton::clicked, this, [this, name] {
+      const optics::HairPigment p = optics::hairPigmentPreset(name);
+      lastFieldKey_ = 0;  // a preset is a step of its own
+      editField(tr("Hair colour %1").arg(QString::fromStdString(name)), kPigmentPreset, [&](HairStyle& s) {
+        s.shading.model = HairShadingModel::Physical;
+        s.shading.melanin = float(p.eumelanin);
+        s.shading.pheomelanin = float(p.pheomelanin);
+      });
+      lastFieldKey_ = 0;
+    });
+  }
+  form->addRow(presets);
+  connect(shadingModel_, &QComboBox::activated, this, [this](int index) {
+    lastFieldKey_ = 0;
+    editField(tr("Hair shading model"), kShadingModel, [&](HairStyle& s) {
+      s.shading.model = index == 1 ? HairShadingModel::Physical : HairShadingModel::KajiyaKay;
+    });
+    lastFieldKey_ = 0;
+  });
+  connect(melanin_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+    editField(tr("Hair melanin"), kMelanin, [&](HairStyle& s) { s.shading.melanin = float(v); });
+  });
+  connect(pheomelanin_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+    editField(tr("Hair redness"), kPheomelanin, [&](HairStyle& s) { s.shading.pheomelanin = float(v); });
+  });
+  connect(roughness_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+    editField(tr("Hair roughness"), kRoughness, [&](HairStyle& s) { s.shading.roughness = float(v); });
+  });
+  return group;
+}
+
+void HairPanel::refreshShading() {
+  const bool hair = tool_->hasHair();
+  const HairShadingParams shading = hair ? tool_->style().shading : HairShadingParams{};
+  const bool physical = shading.model == HairShadingModel::Physical;
+  shadingModel_->setEnabled(hair);
+  for (QDoubleSpinBox* spin : {melanin_, pheomelanin_, roughness_}) spin->setEnabled(hair && physical);
+  for (QPushButton* button : pigmentButtons_) button->setEnabled(hair);
+  // Kajiya-Kay colours from the root and tip; the physical fibre from its pigments.
+  rootColor_->setEnabled(hair && !physical);
+  tipColor_->setEnabled(hair && !physical);
+  QSignalBlocker blockModel(shadingModel_), blockM(melanin_), blockP(pheomelanin_), blockR(roughness_);
+  shadingModel_->setCurrentIndex(physical ? 1 : 0);
+  melanin_->setValue(shading.melanin);
+  pheomelanin_->setValue(shading.pheomelanin);
+  roughness_->setValue(shading.roughness);
 }
 
 QWidget* HairPanel::makeScalpGroup() {
@@ -489,6 +568,7 @@ void HairPanel::refresh() {
     QSignalBlocker block(displayLimit_);
     displayLimit_->setValue(int(tool_->displayStrandLimit()));
   }
+  refreshShading();
   refreshStrandCounts();
   refreshPrimitiveFields();
   refreshScalp();

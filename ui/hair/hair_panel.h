@@ -6,6 +6,8 @@
 // clip). Every change goes to HairTool::editStyle as an undoable edit; the
 // panel refreshes from the tool's signals.
 
+#include <vector>
+
 #include <QWidget>
 
 #include <glm/glm.hpp>
@@ -50,6 +52,12 @@ class HairPanel : public QWidget {
   QDoubleSpinBox* scalpAxisBox(int axis) const { return scalpAxis_[axis]; }
   QDoubleSpinBox* scalpAngleBox() const { return scalpAngle_; }
   QLabel* scalpStatusLabel() const { return scalpStatus_; }
+  // Shading group: model (0 Kajiya-Kay, 1 physical), pigments, roughness, presets.
+  QComboBox* shadingModelCombo() const { return shadingModel_; }
+  QDoubleSpinBox* melaninBox() const { return melanin_; }
+  QDoubleSpinBox* pheomelaninBox() const { return pheomelanin_; }
+  QDoubleSpinBox* roughnessBox() const { return roughness_; }
+  const std::vector<QPushButton*>& pigmentButtons() const { return pigmentButtons_; }
 
  private:
   void refresh();
@@ -58,6 +66,8 @@ class HairPanel : public QWidget {
   void refreshScalp();
   void refreshScalpStatus();
   QWidget* makeScalpGroup();
+  QWidget* makeShadingGroup();
+  void refreshShading();
   void chooseScalpMode(int mode);
   // Applies `change` to a copy of the scalp region and pushes it (merging
   // with the previous change of the same field).
@@ -89,6 +99,9 @@ class HairPanel : public QWidget {
   QDoubleSpinBox* scalpAxis_[3];
   QDoubleSpinBox* scalpAngle_;
   QLabel* scalpStatus_;
+  QComboBox* shadingModel_;
+  QDoubleSpinBox *melanin_, *pheomelanin_, *roughness_;
+  std::vector<QPushButton*> pigmentButtons_;
   QLabel* status_;
   bool refreshing_ = false;
   int lastFieldKey_ = 0, lastMergeKey_ = 0;

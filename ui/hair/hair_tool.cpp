@@ -210,6 +210,7 @@ void HairTool::applyStyle(const std::optional<HairStyle>& style, bool live) {
     const auto all = primitivesOf(*style_);
     if (std::find(all.begin(), all.end(), selected_) == all.end()) selected_ = {};
     actor_->setColors(style_->rootColor, style_->tipColor);  // shader uniforms: at once
+    actor_->setFibre(style_->shading);
     requestRegrow(live);
     updateHandles();
   }

@@ -17,9 +17,11 @@ bool rootsDiffer(const HairStyle& a, const HairStyle& b) {
          a.seed != b.seed || a.pointsPerStrand != b.pointsPerStrand;
 }
 
+// Colours and shading are shader uniforms: the strands stay.
 bool onlyColorsDiffer(HairStyle a, const HairStyle& b) {
   a.rootColor = b.rootColor;
   a.tipColor = b.tipColor;
+  a.shading = b.shading;
   return toJson(a) == toJson(b);
 }
 
