@@ -224,6 +224,37 @@ class HairToolTest : public QObject {
     QVERIFY(!tool_->opacityShadowMaps());
   }
 
+  // The Shading group: the physical model and a pigment preset change the
+  // viewport, each one undo step, without regrowing the strands.
+  void shadingModelAndPigmentAreUndoableAndShown() {
+    renderNow();
+    waitForHair();
+    const QImage kajiyaKay = window_->viewport()->grabFramebuffer();
+    const std::vector<float> guides = guidePoints(*tool_);
+    const int commands = doc()->undoStack()->index();
+    panel()->shadingModelCombo()->setCurrentIndex(1);
+    emit panel()->shadingModelCombo()->activated(1);  // as a user's pick
+    QCOMPARE(tool_->style().shading.model, HairShadingModel::Physical);
+    QCOMPARE(doc()->undoStack()->index(), commands + 1);
+    QVERIFY(!panel()->pigmentButtons().empty());
+    panel()->pigmentButtons().front()->click();
+    QCOMPARE(doc()->undoStack()->index(), commands + 2);
+    const float melanin = tool_->style().shading.melanin;
+    renderNow();
+    waitForHair();
+    const QImage physical = window_->viewport()->grabFramebuffer();
+    int differing = 0;
+    for (int y = 0; y < physical.height(); ++y)
+      for (int x = 0; x < physical.width(); ++x) differing += kajiyaKay.pixel(x, y) != physical.pixel(x, y);
+    QVERIFY2(differing > 100, "the viewport looks the same with the physical hair shader");
+    QCOMPARE(guidePoints(*tool_), guides);
+    doc()->undoStack()->undo();
+    QVERIFY(tool_->style().shading.melanin != melanin || panel()->pigmentButtons().size() == 1);
+    doc()->undoStack()->undo();
+    QCOMPARE(tool_->style().shading.model, HairShadingModel::KajiyaKay);
+    QCOMPARE(panel()->shadingModelCombo()->currentIndex(), 0);
+  }
+
   // Dragging the source's handle in the viewport moves it: live guides
   // during the drag, one undo step for the whole drag, children regrown at
   // the release.
