@@ -198,6 +198,8 @@ void MainWindow::adoptLoaded(LoadedDocument loaded, double seconds) {
   // Problems worked around while loading (a missing texture): printed in
   // full, and the first one shown with the open message.
   std::vector<std::string> warnings = document_->character().loadWarnings;
+  if (!document_->character().unitNotice.empty() && document_->sceneSections().scale == 1.0f)
+    warnings.push_back(document_->character().unitNotice);
   for (const std::string& w : scene_->warnings()) warnings.push_back(w);
   for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
   const QString more = warnings.empty() ? QString()

@@ -38,11 +38,12 @@ int exportSequence(const LoadedScene& scene, int clip, double fps, const std::st
 
 int runExport(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--out", "--clip", "--fps", "--skinning"});
+  args.allowOnly({"--out", "--clip", "--fps", "--skinning", "--scale"});
   if (args.positional().size() != 1) throw Error("export needs exactly one FILE");
   const std::string out = args.option("--out");
   if (out.empty() || !isMeshExportPath(out)) throw Error("export needs --out OUT.obj, .ply, .gltf or .glb");
   LoadedScene scene = openScene(args.positional()[0]);
+  applyScaleOption(args, scene);
   applySkinningOption(args, scene);
   if (scene.character.meshes.empty())
     throw Error("'" + scene.character.name + "' has no meshes to write (a BVH holds a skeleton and motion only: "
@@ -64,7 +65,7 @@ int runExport(const std::vector<std::string>& argv) {
   return exportSequence(scene, clip, fps, out);
 }
 
-static Registration reg({"export", "FILE --out OUT.obj|.ply|.gltf|.glb [--clip NAME|INDEX --fps F] [--skinning lbs|dqs|cones]",
+static Registration reg({"export", "FILE --out OUT.obj|.ply|.gltf|.glb [--clip NAME|INDEX --fps F] [--skinning lbs|dqs|cones] [--scale S]",
                          "write the rest pose, or every frame of a clip (OUT_0000.obj ...), as meshes", runExport});
 
 }  // namespace

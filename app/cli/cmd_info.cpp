@@ -89,9 +89,11 @@ void printText(const Character& c, std::ostream& out) {
 
 int runInfo(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--json"});
+  args.allowOnly({"--json", "--scale"});
   if (args.positional().size() != 1) throw Error("info needs exactly one FILE");
-  const LoadedScene scene = openScene(args.positional()[0]);
+  LoadedScene scene = openScene(args.positional()[0]);
+  applyScaleOption(args, scene);
+  for (const std::string& warning : loadNotices(scene)) std::cerr << "warning: " << warning << "\n";
   if (args.has("--json"))
     std::cout << std::setw(2) << describe(scene.character) << "\n";
   else
@@ -99,7 +101,7 @@ int runInfo(const std::vector<std::string>& argv) {
   return 0;
 }
 
-static Registration reg({"info", "FILE [--json]",
+static Registration reg({"info", "FILE [--json] [--scale S]",
                          "meshes (vertices, triangles), bones (name, parent), max influences, materials, clips (name, duration)",
                          runInfo});
 

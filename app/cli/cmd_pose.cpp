@@ -43,13 +43,14 @@ void writeJoints(const Skeleton& skeleton, const std::vector<glm::mat4>& worldFr
 
 int runPose(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--time", "--clip", "--motion", "--map", "--out", "--skinning", "--joints-out"});
+  args.allowOnly({"--time", "--clip", "--motion", "--map", "--out", "--skinning", "--joints-out", "--scale"});
   if (args.positional().size() != 1) throw Error("pose needs exactly one FILE");
   const std::string out = args.option("--out");
   if (out.empty()) throw Error("pose needs --out OUT.obj, .ply, .gltf or .glb");
   if (!isMeshExportPath(out)) throw Error("--out must end in .obj, .ply, .gltf or .glb: " + out);
 
   LoadedScene scene = openScene(args.positional()[0]);
+  applyScaleOption(args, scene);
   applySkinningOption(args, scene);
   if (scene.character.meshes.empty())
     throw Error("'" + scene.character.name + "' has no meshes to write (a BVH holds a skeleton and motion only: "
@@ -68,7 +69,7 @@ int runPose(const std::vector<std::string>& argv) {
 }
 
 static Registration reg({"pose", "FILE --time T [--clip NAME|INDEX|rest] [--motion BVH [--map MAP]] --out OUT.obj|.ply|.gltf|.glb\n"
-                         "         [--skinning lbs|dqs|cones] [--joints-out JOINTS.json]",
+                         "         [--skinning lbs|dqs|cones] [--scale S] [--joints-out JOINTS.json]",
                          "write the posed mesh at time T in world space (OBJ, PLY, glTF or GLB)", runPose});
 
 }  // namespace

@@ -55,7 +55,7 @@ void placeCamera(render::SceneView& view, const ViewSettings& settings, const Im
 
 int runRender(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--out", "--time", "--clip", "--size", "--skeleton", "--look", "--hair", "--hair-shadow", "--skinning",
+  args.allowOnly({"--out", "--time", "--clip", "--size", "--skeleton", "--look", "--scale", "--hair", "--hair-shadow", "--skinning",
                   "--hair-shader", "--hair-pigment", "--melanin", "--pheomelanin", "--hair-roughness"});
   if (args.positional().size() != 1) throw Error("expects one FILE (or 'default'); see mannequin-cli --help");
   const std::string file = args.positional()[0];
@@ -64,6 +64,7 @@ int runRender(const std::vector<std::string>& argv) {
   const ImageSize size = parseSize(args.option("--size", "960x720"));
 
   LoadedScene scene = openScene(file);
+  applyScaleOption(args, scene);
   applySkinningOption(args, scene);
   if (scene.character.skeleton.boneCount() == 0 && scene.character.meshes.empty())
     throw FileError(file, "has no character to render");
@@ -76,7 +77,7 @@ int runRender(const std::vector<std::string>& argv) {
   view.setCharacter(scene.character);
   view.updatePose(posed);
   view.setLookMode(parseLook(args.option("--look", scene.document.view.look)));
-  for (const std::string& warning : scene.character.loadWarnings) std::cerr << "warning: " << warning << "\n";
+  for (const std::string& warning : loadNotices(scene)) std::cerr << "warning: " << warning << "\n";
   for (const std::string& warning : view.warnings()) std::cerr << "warning: " << warning << "\n";
   // A motion file alone (no meshes) shows its skeleton.
   view.setSkeletonVisible(args.has("--skeleton") || scene.document.view.showSkeleton ||
@@ -103,7 +104,7 @@ int runRender(const std::vector<std::string>& argv) {
 
 Registration reg({"render", "FILE --out OUT.png [--time T] [--clip NAME|INDEX|rest] [--size WxH] [--skeleton]\n"
                   "         [--look auto|skin|mannequin|plain] [--hair auto|simulate|rigid|off]\n"
-                  "         [--hair-shadow count|maps] [--skinning lbs|dqs|cones]\n"
+                  "         [--hair-shadow count|maps] [--skinning lbs|dqs|cones] [--scale S]\n"
                   "         [--hair-shader kajiya-kay|physical] [--hair-pigment black|brown|blond|red|grey]\n"
                   "         [--melanin M] [--pheomelanin P] [--hair-roughness R]",
                   "renders an image offscreen (starts a private Xvfb when there is no X display)", runRender});

@@ -46,5 +46,8 @@ class Args {
 // --skinning lbs|dqs|cones: overrides the method the scene (or file) chose.
 // Throws mq::Error naming the choices for an unknown method.
 void applySkinningOption(const Args& args, LoadedScene& scene);
+// --scale S: the character file's units to metres (0.01 for centimetres).
+// Throws mq::Error for a scale that is not a positive number.
+void applyScaleOption(const Args& args, LoadedScene& scene);
 
 }  // namespace mq::cli

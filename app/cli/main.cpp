@@ -73,6 +73,15 @@ void applySkinningOption(const Args& args, LoadedScene& scene) {
   if (*method == SkinningMethod::Cones) bindSectionCones(scene.character);
 }
 
+void applyScaleOption(const Args& args, LoadedScene& scene) {
+  if (!args.has("--scale")) return;
+  const double factor = args.number("--scale", 1.0);
+  if (!(factor > 0.0) || !std::isfinite(factor) || factor > 1e4) throw Error("--scale expects a positive number");
+  scene.character.scaleUniformly(static_cast<float>(factor));
+  scene.document.scale *= static_cast<float>(factor);
+  if (scene.character.skinning == SkinningMethod::Cones) bindSectionCones(scene.character);
+}
+
 }  // namespace mq::cli
 
 namespace {

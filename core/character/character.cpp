@@ -53,6 +53,33 @@ void validateSurface(const Mesh& m, size_t materialCount, const std::string& whe
 
 }  // namespace
 
+namespace {
+
+// A uniform scale S conjugates every rigid or affine matrix, S M S^-1: the
+// linear part stays, the translation scales.
+void scaleTranslation(glm::mat4& m, float factor) { m[3] = glm::vec4(glm::vec3(m[3]) * factor, m[3].w); }
+
+}  // namespace
+
+void Character::scaleUniformly(float factor) {
+  for (Mesh& mesh : meshes) {
+    for (float& p : mesh.positions) p *= factor;
+    for (MorphTarget& t : mesh.morphTargets)
+      for (float& d : t.positionDeltas) d *= factor;
+    scaleTranslation(mesh.boneFromMesh, factor);
+    for (glm::mat4& m : mesh.skin.inverseBind) scaleTranslation(m, factor);
+    mesh.sectionCones.reset();
+  }
+  for (int b = 0; b < skeleton.boneCount(); ++b) {
+    Bone& bone = skeleton.bone(b);
+    bone.rest.translation *= factor;
+    scaleTranslation(bone.parentFromOffset, factor);
+  }
+  for (Clip& clip : clips)
+    for (BoneChannel& channel : clip.boneChannels)
+      for (float& v : channel.translation.values) v *= factor;
+}
+
 void Character::addMissingTangents() {
   for (Mesh& mesh : meshes) {
     if (!mesh.tangents.empty()) continue;

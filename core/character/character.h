@@ -25,6 +25,9 @@ struct Character {
   // Problems the loader worked around (a missing texture image), each naming
   // the file; the caller shows them.
   std::vector<std::string> loadWarnings;
+  // For a static mesh whose height suggests other units than metres: what
+  // the units may be and the scale that fixes them; empty otherwise.
+  std::string unitNotice;
   // How skinned meshes follow the skeleton (PosedCharacter::evaluate).
   SkinningMethod skinning = SkinningMethod::Lbs;
 
@@ -33,6 +36,10 @@ struct Character {
   int maxInfluences() const;
   // Finds a clip by name, or by index when `nameOrIndex` is a number; -1 if absent.
   int findClip(const std::string& nameOrIndex) const;
+  // Scales the whole character by `factor` about the origin (units: a file
+  // in centimetres takes 0.01): positions, morph offsets, bone and clip
+  // translations, bind matrices. Bind-time data (section cones) is dropped.
+  void scaleUniformly(float factor);
   // Normal maps need tangents: a mesh drawn with one and without tangents
   // gets them from the uv set the map samples.
   void addMissingTangents();

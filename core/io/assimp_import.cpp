@@ -65,6 +65,11 @@ const aiScene* readScene(Assimp::Importer& importer, const std::string& path, st
     scene = importer.ReadFileFromMemory(colladaText.data(), colladaText.size(), flags, "dae");
   } else {
     (void)readFileBytes(path);  // clear message for missing files
+    // OBJ indexes positions, normals and uvs apart and STL repeats every
+    // corner: welding identical corners gives a connected surface.
+    const std::string ext = fileExtension(path);
+    if (ext == "obj" || ext == "ply" || ext == "stl") flags |= aiProcess_JoinIdenticalVertices;
+    if (ext == "stl") flags |= aiProcess_DropNormals;  // per-face normals would keep the corners apart
     scene = importer.ReadFile(path, flags);
   }
   if (!scene || !scene->mRootNode) {
@@ -439,6 +444,33 @@ void convertMaterials(const aiScene* scene, const std::string& modelPath, Charac
         convertMaterial(scene, scene->mMaterials[i], static_cast<int>(i), modelPath, imageOfPath, character));
 }
 
+// A static mesh carries no unit. A person is 1 to 2.2 m tall and a head 0.15
+// to 0.35 m: a height outside both as metres, that one of the usual units
+// would bring inside, is worth a notice (MakeHuman exports in decimetres).
+void noteUnlikelyUnits(Character& character) {
+  Aabb box;
+  for (const Mesh& m : character.meshes) {
+    const Aabb b = boundsOf(m.positions);
+    if (b.valid()) box.extend(b.min), box.extend(b.max);
+  }
+  if (!box.valid()) return;
+  const float height = box.max.y - box.min.y;
+  auto humanSized = [](float metres) { return (metres >= 1.0f && metres <= 2.2f) || (metres >= 0.15f && metres <= 0.35f); };
+  if (humanSized(height)) return;
+  std::string guesses;
+  for (const auto& [unit, factor] : {std::pair{"decimetres", 0.1f}, {"centimetres", 0.01f}, {"millimetres", 0.001f}})
+    if (humanSized(height * factor)) {
+      char line[160];
+      std::snprintf(line, sizeof line, "%s%s (--scale %g makes it %.2f m)", guesses.empty() ? "" : " or ", unit,
+                    factor, height * factor);
+      guesses += line;
+    }
+  if (guesses.empty()) return;
+  char text[96];
+  std::snprintf(text, sizeof text, "the mesh is %.3g units tall, not a person's or a head's height in metres", height);
+  character.unitNotice = character.sourcePath + ": " + text + "; its units may be " + guesses;
+}
+
 Clip resolveClip(const RawClip& raw, const NodeTable& t) {
   Clip clip;
   clip.name = raw.name;
@@ -482,6 +514,7 @@ Character importWithAssimp(const std::string& path) {
     }
   }
   character.addMissingTangents();
+  if (character.skeleton.boneCount() == 0) noteUnlikelyUnits(character);
   for (const RawClip& raw : clips) character.clips.push_back(resolveClip(raw, table));
   try {
     character.validate();

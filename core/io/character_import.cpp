@@ -15,7 +15,8 @@ Character importCharacter(const std::string& path) {
   if (ext == "gltf" || ext == "glb") return readGltfCharacter(path);
   if (ext == "fbx" || ext == "dae") return importWithAssimp(path);
   if (ext == "bvh") return loadBvhCharacter(path);
-  throw FileError(path, "unsupported file type '." + ext + "' (expected .gltf, .glb, .fbx, .dae or .bvh)");
+  if (ext == "obj" || ext == "ply" || ext == "stl") return importWithAssimp(path);  // static meshes
+  throw FileError(path, "unsupported file type '." + ext + "' (expected .gltf, .glb, .fbx, .dae, .bvh, .obj, .ply or .stl)");
 }
 
 }  // namespace mq

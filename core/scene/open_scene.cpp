@@ -39,6 +39,7 @@ LoadedScene resolveSceneDocument(const SceneDocument& document, const std::strin
   } else {
     scene.character = importCharacter(resolveDocumentPath(documentPath, document.character));
   }
+  if (document.scale != 1.0f) scene.character.scaleUniformly(document.scale);
   if (!document.motionFile.empty()) {
     const std::string map =
         document.motionMapFile.empty() ? "" : resolveDocumentPath(documentPath, document.motionMapFile);
@@ -56,6 +57,12 @@ LoadedScene resolveSceneDocument(const SceneDocument& document, const std::strin
   scene.fileMaterials = scene.character.materials;
   applyMaterialOverrides(document.materials, scene.character);
   return scene;
+}
+
+std::vector<std::string> loadNotices(const LoadedScene& scene) {
+  std::vector<std::string> notices = scene.character.loadWarnings;
+  if (!scene.character.unitNotice.empty() && scene.document.scale == 1.0f) notices.push_back(scene.character.unitNotice);
+  return notices;
 }
 
 void applyMaterialOverrides(const std::map<std::string, MaterialOverride>& overrides, Character& character) {

@@ -28,6 +28,10 @@ void applyMaterialOverrides(const std::map<std::string, MaterialOverride>& overr
 // Throws FileError naming the file and the problem.
 LoadedScene openScene(const std::string& fileOrDefault);
 
+// What a user should read after loading: the load warnings, and the unit
+// notice unless the scene scales the character.
+std::vector<std::string> loadNotices(const LoadedScene& scene);
+
 // Loads the character a document refers to and applies its motion, clip and
 // pose. `documentPath` resolves relative paths ("" = relative to the cwd).
 LoadedScene resolveSceneDocument(const SceneDocument& document, const std::string& documentPath);

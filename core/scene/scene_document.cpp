@@ -99,6 +99,12 @@ SceneDocument fromJson(const json& root) {
     if (!parsed) throw Error("skinning.method: unknown method '" + method + "' (expected " + skinningMethodChoices() + ")");
     doc.skinning = *parsed;
   }
+  if (root.contains("scale")) {
+    if (!root["scale"].is_number()) throw Error("\"scale\" must be a number");
+    doc.scale = root["scale"].get<float>();
+    if (!std::isfinite(doc.scale) || doc.scale <= 0.0f || doc.scale > 1e4f)
+      throw Error("\"scale\" must be positive and at most 10000");
+  }
   if (root.contains("materials")) {
     if (!root["materials"].is_object()) throw Error("\"materials\" must map material names to changes");
     for (const auto& [name, changes] : root["materials"].items())
@@ -154,6 +160,7 @@ json toJson(const SceneDocument& doc) {
   if (doc.view.hasCamera)
     root["view"]["camera"] = {{"position", array3(doc.view.cameraPosition)}, {"focus", array3(doc.view.cameraFocus)}};
   root["skinning"] = {{"method", skinningMethodName(doc.skinning)}};
+  if (doc.scale != 1.0f) root["scale"] = doc.scale;
   json materials = json::object();
   for (const auto& [name, changes] : doc.materials)
     if (!changes.empty()) materials[name] = changes.toJson();

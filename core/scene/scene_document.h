@@ -12,6 +12,7 @@
 //     "pose": {"upperarm_l": [x, y, z, w], ...},   local rotation edits
 //     "view": {"skeleton": false, "look": "auto", "camera": {"position": [..], "focus": [..]}},
 //     "skinning": {"method": "lbs" | "dqs" | "cones"},   (absent: lbs)
+//     "scale": 0.01,   the character file's units to metres (absent: 1)
 //     "materials": {"<name>": {...}},   user changes to the file's materials
 //                                       (core/material/material_override.h)
 //     "hair": {...}, "garments": [...], "cloth": {...}, "colliders": [...] }
@@ -47,6 +48,7 @@ struct SceneDocument {
   std::map<std::string, glm::quat> poseRotations;  // bone name -> local rotation edit
   ViewSettings view;
   SkinningMethod skinning = SkinningMethod::Lbs;
+  float scale = 1.0f;  // applied to the character at load (its file's units to metres)
   std::map<std::string, MaterialOverride> materials;  // by material name
   // Sections owned by other modules (null when absent).
   nlohmann::json hair;

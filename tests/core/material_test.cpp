@@ -8,6 +8,7 @@
 #include "core/io/character_import.h"
 #include "core/material/material_override.h"
 #include "core/mesh/tangents.h"
+#include "core/character/posed_character.h"
 #include "core/scene/open_scene.h"
 #include "core/util/error.h"
 #include "gltf_test_util.h"
@@ -322,6 +323,66 @@ TEST(MaterialOverrides, SceneDocumentAppliesThemByNameAndWarnsOfUnknownNames) {
   EXPECT_EQ(saved["view"]["look"], "plain");
   EXPECT_THROW(parseSceneDocument(R"({"format": "mannequin-scene", "version": 1, "view": {"look": "shiny"}})", "x"),
                FileError);
+}
+
+}  // namespace
+}  // namespace mq
+
+namespace mq {
+namespace {
+
+// Static meshes (OBJ, PLY, STL through Assimp) open as characters without
+// bones; their units are guessed from their height.
+TEST(StaticMeshes, ObjHeadOpensWeldedWithAUnitNotice) {
+  const Character head = importCharacter(kShared + "/assets/heads/makehuman_hm08_head/makehuman_head.obj");
+  EXPECT_EQ(head.skeleton.boneCount(), 0);
+  ASSERT_EQ(head.meshes.size(), 1u);
+  // Welded: far fewer vertices than face corners.
+  EXPECT_LT(head.meshes[0].vertexCount(), head.meshes[0].triangleCount());
+  EXPECT_NE(head.unitNotice.find("decimetres"), std::string::npos) << head.unitNotice;
+  EXPECT_NE(head.unitNotice.find("--scale 0.1"), std::string::npos) << head.unitNotice;
+  PosedCharacter posed;
+  posed.evaluate(head, -1, 0.0f, nullptr, nullptr);
+  EXPECT_EQ(posed.meshes()[0].positions, head.meshes[0].positions);
+}
+
+TEST(StaticMeshes, PlyAndStlOpen) {
+  const auto dir = test::scratchDir("mq_static");
+  const std::string ply = (dir / "tet.ply").string(), stl = (dir / "tet.stl").string();
+  std::ofstream(ply) << "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                        "element face 4\nproperty list uchar int vertex_indices\nend_header\n"
+                        "0 0 0\n1 0 0\n0 1.7 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  std::ofstream(stl) << "solid t\nfacet normal 0 0 -1\nouter loop\nvertex 0 0 0\nvertex 0 170 0\nvertex 100 0 0\n"
+                        "endloop\nendfacet\nfacet normal 0 -1 0\nouter loop\nvertex 0 0 0\nvertex 100 0 0\nvertex 0 0 100\n"
+                        "endloop\nendfacet\nendsolid t\n";
+  const Character tet = importCharacter(ply);
+  ASSERT_EQ(tet.meshes.size(), 1u);
+  EXPECT_EQ(tet.meshes[0].triangleCount(), 4u);
+  EXPECT_TRUE(tet.unitNotice.empty()) << "1.7 units tall reads as metres";
+  const Character shape = importCharacter(stl);
+  ASSERT_EQ(shape.meshes.size(), 1u);
+  EXPECT_EQ(shape.meshes[0].vertexCount(), 4u) << "STL corners welded";
+  EXPECT_NE(shape.unitNotice.find("centimetres"), std::string::npos) << shape.unitNotice;
+}
+
+TEST(StaticMeshes, ScalingACharacterScalesItsPosesExactly) {
+  const Character original = importCharacter(kShared + "/assets/characters/CesiumMan/glTF/CesiumMan.gltf");
+  Character scaled = original;
+  scaled.scaleUniformly(0.01f);
+  PosedCharacter a, b;
+  a.evaluate(original, 0, 0.7f, nullptr, nullptr);
+  b.evaluate(scaled, 0, 0.7f, nullptr, nullptr);
+  const std::vector<float>& pa = a.meshes()[0].positions;
+  const std::vector<float>& pb = b.meshes()[0].positions;
+  ASSERT_EQ(pa.size(), pb.size());
+  float worst = 0.0f;
+  for (size_t i = 0; i < pa.size(); ++i) worst = std::max(worst, std::abs(pa[i] * 0.01f - pb[i]));
+  EXPECT_LT(worst, 1e-6f);
+  const SceneDocument doc = parseSceneDocument(
+      R"({"format": "mannequin-scene", "version": 1, "character": "default", "scale": 2})", "s.mqscene");
+  EXPECT_FLOAT_EQ(doc.scale, 2.0f);
+  EXPECT_FLOAT_EQ(toJson(doc)["scale"].get<float>(), 2.0f);
+  EXPECT_THROW(parseSceneDocument(R"({"format": "mannequin-scene", "version": 1, "scale": -1})", "s"), FileError);
 }
 
 }  // namespace
