@@ -63,6 +63,11 @@ class SceneView {
   const std::vector<Material>& materials() const;
   // Texture images that could not be used, each naming the image and why.
   std::vector<std::string> warnings() const;
+  // The skin used where skin applies (LookMode::Skin; materials marked as
+  // skin, in their own colour and base colour map); by default
+  // SurfaceLook::skinPresetLook("skin1").
+  void setSkinLook(const SurfaceLook& look);
+  const SurfaceLook& skinLook() const;
   // Shades every surface with `look`, whatever the look mode.
   void setSurfaceLook(const SurfaceLook& look);
   // Copies the posed positions and normals into the actors' arrays.

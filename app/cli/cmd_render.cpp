@@ -54,7 +54,8 @@ void placeCamera(render::SceneView& view, const ViewSettings& settings, const Im
 
 int runRender(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--out", "--time", "--clip", "--size", "--skeleton", "--look", "--hair", "--hair-shadow", "--skinning"});
+  args.allowOnly({"--out", "--time", "--clip", "--size", "--skeleton", "--look", "--hair", "--hair-shadow", "--skinning",
+                  "--skin-preset"});
   if (args.positional().size() != 1) throw Error("expects one FILE (or 'default'); see mannequin-cli --help");
   const std::string file = args.positional()[0];
   const std::string out = args.option("--out");
@@ -73,6 +74,9 @@ int runRender(const std::vector<std::string>& argv) {
   render::SceneView view;
   view.setCharacter(scene.character);
   view.updatePose(posed);
+  // The skin's scattering profile and colour, where skin is shown (--look
+  // skin, materials marked as skin); an unknown name lists the presets.
+  if (args.has("--skin-preset")) view.setSkinLook(render::SurfaceLook::skinPresetLook(args.option("--skin-preset")));
   if (args.has("--look")) view.setLookMode(parseLook(args.option("--look")));
   for (const std::string& warning : scene.character.loadWarnings) std::cerr << "warning: " << warning << "\n";
   for (const std::string& warning : view.warnings()) std::cerr << "warning: " << warning << "\n";
@@ -97,7 +101,8 @@ int runRender(const std::vector<std::string>& argv) {
 
 Registration reg({"render", "FILE --out OUT.png [--time T] [--clip NAME|INDEX|rest] [--size WxH] [--skeleton]\n"
                   "         [--look auto|skin|mannequin|plain] [--hair auto|simulate|rigid|off]\n"
-                  "         [--hair-shadow count|maps] [--skinning lbs|dqs|cones]",
+                  "         [--hair-shadow count|maps] [--skinning lbs|dqs|cones]\n"
+                  "         [--skin-preset skin1|skin2|light|medium|tan|dark]",
                   "renders an image offscreen (starts a private Xvfb when there is no X display)", runRender});
 
 }  // namespace
