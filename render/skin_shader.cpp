@@ -23,16 +23,19 @@ in vec3 mqRestMC;
 in float mqCurvatureMC;
 in float mqThicknessMC;
 in vec4 mqWrinkleMC;
+in float mqWrinklePhaseMC;
 out vec3 mqRest;
 out float mqCurvature;
 out float mqThickness;
 out vec4 mqWrinkle;
+out float mqWrinklePhase;
 )";
 const char* kVertexImpl = R"(//VTK::Normal::Impl
   mqRest = mqRestMC;
   mqCurvature = mqCurvatureMC;
   mqThickness = mqThicknessMC;
   mqWrinkle = mqWrinkleMC;
+  mqWrinklePhase = mqWrinklePhaseMC;
 )";
 const char* kVertexAlbedoDec = "in vec2 mqUVMC;\nout vec2 mqUV;\n";
 const char* kVertexAlbedoImpl = "  mqUV = mqUVMC;\n";
@@ -42,6 +45,7 @@ in vec3 mqRest;
 in float mqCurvature;
 in float mqThickness;
 in vec4 mqWrinkle;
+in float mqWrinklePhase;
 uniform sampler2D mqSkinLut;
 // Lattice hash and cellular relief: core/geometry/cellular_relief.cpp, line for line.
 uint mqHash(uint x) {
@@ -87,10 +91,10 @@ const char* kSkinLightBegin = R"(//VTK::Light::Impl
     float restPerPixel = max(max(length(dRdx), length(dRdy)), 1e-12);
     vec3 slope = vec3(0.0);
     float cell = 1e-3 * mqMicroScale;
-    float microFade = clamp((cell / restPerPixel - 4.0) / 4.0, 0.0, 1.0);
+    float microFade = clamp((cell / restPerPixel - 4.0) / 8.0, 0.0, 1.0);  // reliefFade
     if (microFade * mqMicroStrength > 0.0) slope += mqMicroStrength * microFade * mqReliefGradient(mqRest / cell);
     // Volino: t = 2 lambda (1 / (1 + (l/L)^2) - 1) + 1, clamped; height
-    // depth t (1 - cos ks) / 2 along the compression direction.
+    // depth t (1 - cos ks) / 2, s the phase along the compression direction.
     float directed = length(mqWrinkle.xyz);
     float spacing = 1e-3 * mqWrinkleSpacing;
     float wrinkleFade = clamp((spacing / restPerPixel - 4.0) / 4.0, 0.0, 1.0) * smoothstep(0.2, 0.8, directed);
@@ -99,7 +103,7 @@ const char* kSkinLightBegin = R"(//VTK::Light::Impl
       float ratio = mqWrinkle.w;
       float t = clamp(2.0 * mqWrinkleLambda * (1.0 / (1.0 + ratio * ratio) - 1.0) + 1.0, 0.0, 1.0);
       float k = 6.2831853 / spacing;
-      slope += 1e-3 * mqWrinkleDepth * t * wrinkleFade * 0.5 * k * sin(k * dot(mqRest, across)) * across;
+      slope += 1e-3 * mqWrinkleDepth * t * wrinkleFade * 0.5 * k * sin(k * mqWrinklePhase) * across;
     }
     vec3 Nb = N;
     if (slope != vec3(0.0)) {

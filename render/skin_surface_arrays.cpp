@@ -15,6 +15,7 @@ namespace {
 
 constexpr float kMillimetresPerMetre = 1000.0f;
 constexpr float kThickMillimetres = 1000.0f;  // where an inward ray finds no way out
+constexpr int kCurvatureSmoothing = 2;         // ring averages after the median (see mean_curvature.h)
 
 vtkSmartPointer<vtkFloatArray> filledArray(const char* name, int components, size_t tuples, float value) {
   auto array = vtkSmartPointer<vtkFloatArray>::New();
@@ -34,6 +35,7 @@ SkinSurfaceArrays::SkinSurfaceArrays(std::vector<float> restPositions, std::vect
   curvature_ = filledArray(kCurvatureArray, 1, n, 0.0f);
   thickness_ = filledArray(kThicknessArray, 1, n, kThickMillimetres);
   wrinkleArray_ = filledArray(kWrinkleArray, 4, n, 0.0f);
+  phaseArray_ = filledArray(kWrinklePhaseArray, 1, n, 0.0f);
   for (size_t v = 0; v < n; ++v) wrinkleArray_->SetComponent(vtkIdType(v), 3, 1.0f);
 }
 
@@ -41,13 +43,14 @@ void SkinSurfaceArrays::addTo(vtkPointData* pointData) const {
   pointData->AddArray(curvature_);
   pointData->AddArray(thickness_);
   pointData->AddArray(wrinkleArray_);
+  pointData->AddArray(phaseArray_);
 }
 
 void SkinSurfaceArrays::measure() {
   if (measured_) return;
   measured_ = true;
   if (restNormals_.size() != restPositions_.size()) computeVertexNormals(restPositions_, triangles_, restNormals_);
-  const std::vector<float> h = vertexMeanCurvature(restPositions_, restNormals_, triangles_);
+  const std::vector<float> h = vertexMeanCurvature(restPositions_, restNormals_, triangles_, kCurvatureSmoothing);
   const std::vector<float> d = inwardThickness(restPositions_, restNormals_, triangles_, kThickMillimetres / kMillimetresPerMetre);
   float* curvature = curvature_->GetPointer(0);
   float* thickness = thickness_->GetPointer(0);
@@ -62,10 +65,12 @@ void SkinSurfaceArrays::measure() {
 
 void SkinSurfaceArrays::update(const std::vector<float>& posedPositions) {
   if (!measured_ || posedPositions.size() != restPositions_.size()) return;
-  compression_.evaluate(posedPositions, wrinkle_);
+  compression_.evaluate(posedPositions, wrinkle_, &phase_);
   if (wrinkle_.size() != static_cast<size_t>(wrinkleArray_->GetNumberOfValues())) return;
   std::memcpy(wrinkleArray_->GetPointer(0), wrinkle_.data(), wrinkle_.size() * sizeof(float));
+  std::memcpy(phaseArray_->GetPointer(0), phase_.data(), phase_.size() * sizeof(float));
   wrinkleArray_->Modified();
+  phaseArray_->Modified();
 }
 
 }  // namespace mq::render

@@ -7,7 +7,8 @@
 //                (core/mesh/inward_thickness.h);
 //   mqWrinkle    the posed surface's compression: rest-frame direction (xyz)
 //                and l/L (w), Volino's wrinkle input, updated every pose
-//                (core/mesh/surface_compression.h).
+//                (core/mesh/surface_compression.h);
+//   mqWrinklePhase  distance along those directions (m), for the folds' sine.
 // The arrays exist from the start (flat, thick, uncompressed) so every
 // shader finds its attributes; measure() fills them the first time a skin
 // look is applied, so meshes never shown as skin cost nothing.
@@ -27,6 +28,7 @@ namespace mq::render {
 inline constexpr const char* kCurvatureArray = "mqCurvature";
 inline constexpr const char* kThicknessArray = "mqThickness";
 inline constexpr const char* kWrinkleArray = "mqWrinkle";
+inline constexpr const char* kWrinklePhaseArray = "mqWrinklePhase";
 
 class SkinSurfaceArrays {
  public:
@@ -46,8 +48,8 @@ class SkinSurfaceArrays {
   std::vector<uint32_t> triangles_;
   bool measured_ = false;
   SurfaceCompression compression_;
-  std::vector<float> wrinkle_;  // scratch, 4 floats per vertex
-  vtkSmartPointer<vtkFloatArray> curvature_, thickness_, wrinkleArray_;
+  std::vector<float> wrinkle_, phase_;  // scratch
+  vtkSmartPointer<vtkFloatArray> curvature_, thickness_, wrinkleArray_, phaseArray_;
 };
 
 }  // namespace mq::render

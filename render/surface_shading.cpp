@@ -137,6 +137,7 @@ vtkOpenGLPolyDataMapper* newSurfaceMapper() {
   mapper->MapDataArrayToVertexAttribute("mqCurvatureMC", kCurvatureArray, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
   mapper->MapDataArrayToVertexAttribute("mqThicknessMC", kThicknessArray, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
   mapper->MapDataArrayToVertexAttribute("mqWrinkleMC", kWrinkleArray, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+  mapper->MapDataArrayToVertexAttribute("mqWrinklePhaseMC", kWrinklePhaseArray, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
   return mapper;
 }
 

@@ -61,7 +61,7 @@ struct SurfaceLook {
   // compression, Volino's lambda, and the spacing between folds (mm).
   float wrinkleDepth = 0.6f;
   float wrinkleLambda = 1.0f;  // 1: none at rest
-  float wrinkleSpacing = 6.0f;
+  float wrinkleSpacing = 9.0f;
 
   static SurfaceLook mannequin();                     // satin, light warm wood
   static SurfaceLook skin(const glm::vec3& albedo);   // physically based skin in this colour (sRGB)

@@ -47,7 +47,7 @@ ReliefSample cellularRelief(const glm::vec3& p) {
   return s;
 }
 
-float reliefFade(float pixelsPerCell) { return std::clamp((pixelsPerCell - 4.0f) / 4.0f, 0.0f, 1.0f); }
+float reliefFade(float pixelsPerCell) { return std::clamp((pixelsPerCell - 4.0f) / 8.0f, 0.0f, 1.0f); }
 
 glm::vec3 bumpedNormal(const glm::vec3& normal, const glm::vec3& gradient, float strength) {
   const glm::vec3 tangential = gradient - glm::dot(gradient, normal) * normal;

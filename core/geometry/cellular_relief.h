@@ -34,7 +34,7 @@ ReliefSample cellularRelief(const glm::vec3& p);
 uint32_t reliefHash(uint32_t x);
 
 // How much of the relief to show when a cell covers `pixelsPerCell` pixels:
-// 0 below 4 (the furrows would alias), 1 from 8 (oracle O26).
+// 0 below 4 (the furrows would alias), 1 from 12 (oracle O26).
 float reliefFade(float pixelsPerCell);
 
 // The bumped unit normal for a relief of slope `strength` (height amplitude

@@ -22,7 +22,7 @@ double cotangent(const glm::dvec3& a, const glm::dvec3& b) {
 }  // namespace
 
 std::vector<float> vertexMeanCurvature(const std::vector<float>& positions, const std::vector<float>& normals,
-                                       const std::vector<uint32_t>& triangles) {
+                                       const std::vector<uint32_t>& triangles, int smoothingPasses) {
   const size_t n = positions.size() / 3;
   std::vector<float> curvature(n, 0.0f);
   if (n == 0 || normals.size() != positions.size()) return curvature;
@@ -60,16 +60,47 @@ std::vector<float> vertexMeanCurvature(const std::vector<float>& positions, cons
   std::vector<bool> boundary(w, false);
   for (const auto& [edge, uses] : edgeUses)
     if (uses == 1) boundary[edge.first] = boundary[edge.second] = true;
+  std::vector<float> welded_h(w, 0.0f);
+  std::vector<bool> known(w, false);
+  for (uint32_t u = 0; u < w; ++u) {
+    if (boundary[u] || area[u] <= 0.0) continue;
+    const glm::dvec3 delta = laplacian[u] / (2.0 * area[u]);
+    welded_h[u] = static_cast<float>(-0.5 * glm::dot(delta, glm::normalize(at(normals, weld.representative[u]))));
+    known[u] = true;
+  }
+  if (smoothingPasses > 0) {
+    std::vector<std::vector<uint32_t>> ring(w);
+    for (const auto& [edge, uses] : edgeUses) {
+      ring[edge.first].push_back(edge.second);
+      ring[edge.second].push_back(edge.first);
+    }
+    std::vector<float> next(w, 0.0f), values;
+    // The ring's median first: a sliver's lone spike goes, a ridge stays.
+    for (int pass = 0; pass <= smoothingPasses; ++pass) {
+      for (uint32_t u = 0; u < w; ++u) {
+        next[u] = welded_h[u];
+        if (!known[u]) continue;
+        values.assign(1, welded_h[u]);
+        for (uint32_t r : ring[u])
+          if (known[r]) values.push_back(welded_h[r]);
+        if (pass == 0) {
+          std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+          next[u] = values[values.size() / 2];
+        } else {
+          float sum = 0.0f;
+          for (float value : values) sum += value;
+          next[u] = sum / float(values.size());
+        }
+      }
+      welded_h.swap(next);
+    }
+  }
   // Each original vertex reads its welded vertex (matched by position).
   std::map<std::array<float, 3>, uint32_t> byPosition;
   for (uint32_t v = 0; v < w; ++v) byPosition[{welded[3 * v], welded[3 * v + 1], welded[3 * v + 2]}] = v;
   for (size_t v = 0; v < n; ++v) {
     const auto found = byPosition.find({positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]});
-    if (found == byPosition.end()) continue;
-    const uint32_t u = found->second;
-    if (boundary[u] || area[u] <= 0.0) continue;
-    const glm::dvec3 delta = laplacian[u] / (2.0 * area[u]);
-    curvature[v] = static_cast<float>(-0.5 * glm::dot(delta, glm::normalize(at(normals, v))));
+    if (found != byPosition.end()) curvature[v] = welded_h[found->second];
   }
   return curvature;
 }

@@ -22,7 +22,10 @@ namespace mq {
 // positions: 3 floats per vertex; triangles: 3 indices per triangle; normals:
 // 3 floats per vertex (orientation of the sign). Returns H per vertex, in
 // 1 / (position units).
+// smoothingPasses > 0: the median over each vertex's ring, then that many
+// ring averages. Marching-cubes and scanned meshes have slivers whose
+// cotangents spike; a shader reading H would show them as specks.
 std::vector<float> vertexMeanCurvature(const std::vector<float>& positions, const std::vector<float>& normals,
-                                       const std::vector<uint32_t>& triangles);
+                                       const std::vector<uint32_t>& triangles, int smoothingPasses = 0);
 
 }  // namespace mq

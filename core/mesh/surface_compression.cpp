@@ -10,6 +10,7 @@
 namespace mq {
 namespace {
 
+constexpr int kPhaseSweeps = 3;
 const glm::vec3 kSignReference = glm::normalize(glm::vec3(0.81f, 0.47f, 0.35f));  // any axis unlikely to lie in a fold
 
 glm::vec3 at(const std::vector<float>& xyz, size_t v) { return {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]}; }
@@ -22,6 +23,7 @@ glm::dvec3 rowOf(double x, double y) { return {x * x, 2.0 * x * y, y * y}; }
 
 SurfaceCompression::SurfaceCompression(const std::vector<float>& restPositions, const std::vector<uint32_t>& triangles) {
   const size_t n = restPositions.size() / 3;
+  restPositions_ = restPositions;
   std::vector<std::vector<uint32_t>> adjacent(n);
   for (size_t t = 0; t + 2 < triangles.size(); t += 3)
     for (int k = 0; k < 3; ++k) {
@@ -70,10 +72,20 @@ SurfaceCompression::SurfaceCompression(const std::vector<float>& restPositions, 
   }
 }
 
-void SurfaceCompression::evaluate(const std::vector<float>& posedPositions, std::vector<float>& out) const {
+void SurfaceCompression::evaluate(const std::vector<float>& posedPositions, std::vector<float>& out,
+                                  std::vector<float>* phase) const {
   const size_t n = vertexCount();
+  std::vector<float> raw(4 * n, 0.0f);
   out.assign(4 * n, 0.0f);
+  if (phase) phase->assign(n, 0.0f);
   if (posedPositions.size() != 3 * n) return;
+  fitStretch(posedPositions, raw);
+  smoothDirections(raw, out);
+  if (phase) integratePhase(out, *phase);
+}
+
+void SurfaceCompression::fitStretch(const std::vector<float>& posedPositions, std::vector<float>& out) const {
+  const size_t n = vertexCount();
   for (size_t v = 0; v < n; ++v) {
     float* result = &out[4 * v];
     result[3] = 1.0f;
@@ -93,7 +105,8 @@ void SurfaceCompression::evaluate(const std::vector<float>& posedPositions, std:
     const double mean = 0.5 * (a + c), radius = std::sqrt(0.25 * (a - c) * (a - c) + b * b);
     const double smallest = mean - radius;
     result[3] = static_cast<float>(std::sqrt(std::max(smallest, 0.0)));
-    if (smallest >= 1.0 || radius < 1e-12) continue;  // not compressed, or equally in every direction
+    // Not compressed (beyond skinning noise), or equally in every direction.
+    if (smallest >= (1.0 - kMinCompression) * (1.0 - kMinCompression) || radius < 1e-12) continue;
     glm::dvec2 direction = std::abs(a - smallest) > std::abs(c - smallest) ? glm::dvec2(b, smallest - a)
                                                                             : glm::dvec2(smallest - c, b);
     direction = glm::normalize(direction);
@@ -104,6 +117,81 @@ void SurfaceCompression::evaluate(const std::vector<float>& posedPositions, std:
     // from cancelling when the shader interpolates them.
     if (glm::dot(across, kSignReference) < 0.0f) across = -across;
     for (int k = 0; k < 3; ++k) result[k] = across[k];
+  }
+}
+
+void SurfaceCompression::smoothDirections(const std::vector<float>& raw, std::vector<float>& out) const {
+  const size_t n = vertexCount();
+  for (size_t v = 0; v < n; ++v) {
+    const glm::vec3 own(raw[4 * v], raw[4 * v + 1], raw[4 * v + 2]);
+    out[4 * v + 3] = raw[4 * v + 3];
+    if (own == glm::vec3(0.0f)) continue;  // smoothing never spreads folds onto uncompressed skin
+    glm::vec3 sum = (1.0f - raw[4 * v + 3]) * own;
+    for (uint32_t e = firstEdge_[v]; e < firstEdge_[v + 1]; ++e) {
+      const uint32_t u = neighbour_[e];
+      glm::vec3 other(raw[4 * u], raw[4 * u + 1], raw[4 * u + 2]);
+      if (glm::dot(other, own) < 0.0f) other = -other;
+      sum += std::max(1.0f - raw[4 * u + 3], 0.0f) * other;
+    }
+    const glm::vec3 direction = glm::length(sum) > 1e-12f ? glm::normalize(sum) : own;
+    for (int k = 0; k < 3; ++k) out[4 * v + k] = direction[k];
+  }
+}
+
+void SurfaceCompression::integratePhase(std::vector<float>& out, std::vector<float>& phase) const {
+  const size_t n = vertexCount();
+  std::vector<uint32_t> seeds;
+  for (uint32_t v = 0; v < n; ++v)
+    if (out[4 * v] != 0.0f || out[4 * v + 1] != 0.0f || out[4 * v + 2] != 0.0f) seeds.push_back(v);
+  // Most compressed first; ties by index, so the result never depends on timing.
+  std::sort(seeds.begin(), seeds.end(), [&](uint32_t a, uint32_t b) {
+    return out[4 * a + 3] != out[4 * b + 3] ? out[4 * a + 3] < out[4 * b + 3] : a < b;
+  });
+  std::vector<bool> reached(n, false);
+  std::vector<uint32_t> queue;
+  for (uint32_t seed : seeds) {
+    if (reached[seed]) continue;
+    reached[seed] = true;
+    phase[seed] = 0.0f;
+    queue.assign(1, seed);
+    for (size_t head = 0; head < queue.size(); ++head) {
+      const uint32_t v = queue[head];
+      const glm::vec3 a(out[4 * v], out[4 * v + 1], out[4 * v + 2]);
+      for (uint32_t e = firstEdge_[v]; e < firstEdge_[v + 1]; ++e) {
+        const uint32_t u = neighbour_[e];
+        if (reached[u]) continue;
+        glm::vec3 b(out[4 * u], out[4 * u + 1], out[4 * u + 2]);
+        if (b == glm::vec3(0.0f)) continue;
+        // Orient the neighbour like its parent, so the phase grows along it.
+        if (glm::dot(a, b) < 0.0f) {
+          b = -b;
+          for (int k = 0; k < 3; ++k) out[4 * u + k] = b[k];
+        }
+        reached[u] = true;
+        phase[u] = phase[v] + glm::dot(at(restPositions_, u) - at(restPositions_, v), 0.5f * (a + b));
+        queue.push_back(u);
+      }
+    }
+  }
+  // Breadth-first sums depend on the path where the directions turn; a few
+  // Jacobi sweeps of the same relation, averaged over each ring, even out
+  // the seams where fronts met.
+  std::vector<float> next(phase);
+  for (int sweep = 0; sweep < kPhaseSweeps; ++sweep) {
+    for (uint32_t v : seeds) {
+      const glm::vec3 a(out[4 * v], out[4 * v + 1], out[4 * v + 2]);
+      float sum = phase[v];
+      int count = 1;
+      for (uint32_t e = firstEdge_[v]; e < firstEdge_[v + 1]; ++e) {
+        const uint32_t u = neighbour_[e];
+        const glm::vec3 b(out[4 * u], out[4 * u + 1], out[4 * u + 2]);
+        if (b == glm::vec3(0.0f) || glm::dot(a, b) <= 0.0f) continue;
+        sum += phase[u] + glm::dot(at(restPositions_, v) - at(restPositions_, u), 0.5f * (a + b));
+        ++count;
+      }
+      next[v] = sum / float(count);
+    }
+    phase.swap(next);
   }
 }
 

@@ -16,6 +16,16 @@ TEST(MeanCurvature, SphereIsOneOverItsRadius) {
   }
 }
 
+TEST(MeanCurvature, SmoothingRemovesASpikeAndKeepsTheSphere) {
+  test::FlatMesh sphere = test::makeIcosphere(1.0f, 3);
+  // One vertex pushed out: a spike of curvature at it and its ring.
+  for (int c = 0; c < 3; ++c) sphere.positions[c] *= 1.05f;
+  const std::vector<float> raw = vertexMeanCurvature(sphere.positions, sphere.normals, sphere.triangles);
+  const std::vector<float> smooth = vertexMeanCurvature(sphere.positions, sphere.normals, sphere.triangles, 2);
+  EXPECT_GT(raw[0], 2.0f);
+  for (size_t v = 0; v < smooth.size(); ++v) EXPECT_NEAR(smooth[v], 1.0f, 0.2f) << v;
+}
+
 TEST(MeanCurvature, InwardNormalsGiveNegativeCurvature) {
   test::FlatMesh sphere = test::makeIcosphere(0.5f, 3);
   for (float& n : sphere.normals) n = -n;

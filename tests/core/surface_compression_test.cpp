@@ -64,6 +64,17 @@ TEST(SurfaceCompression, SquashedSheetGivesRatioAndDirection) {
     EXPECT_NEAR(std::abs(out[4 * v + 1]), 1.0f, 1e-4f);
   }
   EXPECT_EQ(undetermined, 2u);
+  // The phase runs along the compression (y), the same way everywhere: the
+  // folds it draws are straight lines across it.
+  std::vector<float> phase;
+  compression.evaluate(transformed(grid.positions, glm::scale(glm::mat4(1.0f), {1.2f, 0.8f, 1.0f})), out, &phase);
+  const size_t first = 1;  // vertex (1, 0): determined
+  const float sign = phase[first + 8] > phase[first] ? 1.0f : -1.0f;
+  for (size_t v = 0; v < compression.vertexCount(); ++v) {
+    if (out[4 * v + 1] == 0.0f) continue;
+    EXPECT_NEAR(phase[v] - phase[first], sign * (grid.positions[3 * v + 1] - grid.positions[3 * first + 1]), 1e-4f);
+    EXPECT_NEAR(out[4 * v + 1], sign, 1e-4f);  // directions oriented along the phase
+  }
   // Folded along a line: a sheet bent in a right angle keeps its lengths.
   std::vector<float> folded = grid.positions;
   for (size_t v = 0; v < folded.size() / 3; ++v)
