@@ -6,11 +6,13 @@
 #include <glm/glm.hpp>
 
 #include "core/mesh/mesh.h"
+#include "core/util/thread_pool.h"
 
 namespace mq {
 namespace {
 
 constexpr int kPhaseSweeps = 3;
+constexpr size_t kMinChunk = 4096;  // vertices; smaller meshes stay on the calling thread
 const glm::vec3 kSignReference = glm::normalize(glm::vec3(0.81f, 0.47f, 0.35f));  // any axis unlikely to lie in a fold
 
 glm::vec3 at(const std::vector<float>& xyz, size_t v) { return {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]}; }
@@ -85,8 +87,9 @@ void SurfaceCompression::evaluate(const std::vector<float>& posedPositions, std:
 }
 
 void SurfaceCompression::fitStretch(const std::vector<float>& posedPositions, std::vector<float>& out) const {
-  const size_t n = vertexCount();
-  for (size_t v = 0; v < n; ++v) {
+  // Each vertex writes only its own 4 floats: split by index, deterministic.
+  ThreadPool::shared().parallelFor(0, vertexCount(), kMinChunk, [&](size_t begin, size_t end) {
+  for (size_t v = begin; v < end; ++v) {
     float* result = &out[4 * v];
     result[3] = 1.0f;
     const float* m = &inverseNormal_[6 * v];
@@ -118,11 +121,12 @@ void SurfaceCompression::fitStretch(const std::vector<float>& posedPositions, st
     if (glm::dot(across, kSignReference) < 0.0f) across = -across;
     for (int k = 0; k < 3; ++k) result[k] = across[k];
   }
+  });
 }
 
 void SurfaceCompression::smoothDirections(const std::vector<float>& raw, std::vector<float>& out) const {
-  const size_t n = vertexCount();
-  for (size_t v = 0; v < n; ++v) {
+  ThreadPool::shared().parallelFor(0, vertexCount(), kMinChunk, [&](size_t begin, size_t end) {
+  for (size_t v = begin; v < end; ++v) {
     const glm::vec3 own(raw[4 * v], raw[4 * v + 1], raw[4 * v + 2]);
     out[4 * v + 3] = raw[4 * v + 3];
     if (own == glm::vec3(0.0f)) continue;  // smoothing never spreads folds onto uncompressed skin
@@ -136,6 +140,7 @@ void SurfaceCompression::smoothDirections(const std::vector<float>& raw, std::ve
     const glm::vec3 direction = glm::length(sum) > 1e-12f ? glm::normalize(sum) : own;
     for (int k = 0; k < 3; ++k) out[4 * v + k] = direction[k];
   }
+  });
 }
 
 void SurfaceCompression::integratePhase(std::vector<float>& out, std::vector<float>& phase) const {
