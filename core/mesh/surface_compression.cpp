@@ -11,7 +11,7 @@
 namespace mq {
 namespace {
 
-constexpr int kPhaseSweeps = 3;
+constexpr int kPhaseSweeps = 2;
 constexpr size_t kMinChunk = 4096;  // vertices; smaller meshes stay on the calling thread
 const glm::vec3 kSignReference = glm::normalize(glm::vec3(0.81f, 0.47f, 0.35f));  // any axis unlikely to lie in a fold
 
@@ -60,10 +60,9 @@ SurfaceCompression::SurfaceCompression(const std::vector<float>& restPositions, 
       const float planar = glm::length(inPlane);
       const glm::vec2 direction = planar > 0.0f ? inPlane / planar : glm::vec2(0.0f);
       neighbour_.push_back(u);
-      restLength_.push_back(glm::length(edge));
-      projected_.push_back(direction.x);
-      projected_.push_back(direction.y);
       const glm::dvec3 row = rowOf(direction.x, direction.y);
+      inverseRestLengthSquared_.push_back(1.0f / std::max(glm::dot(edge, edge), 1e-30f));
+      for (int k = 0; k < 3; ++k) rows_.push_back(float(row[k]));
       normalMatrix += glm::outerProduct(row, row);
     }
     if (std::abs(glm::determinant(normalMatrix)) < 1e-9) continue;  // fewer than 3 distinct directions
@@ -95,13 +94,13 @@ void SurfaceCompression::fitStretch(const std::vector<float>& posedPositions, st
     const float* m = &inverseNormal_[6 * v];
     if (m[0] == 0.0f && m[3] == 0.0f && m[5] == 0.0f) continue;
     // Right-hand side of the normal equations: sum of row_e (l_e / L_e)^2.
-    glm::dvec3 rhs(0.0);
+    glm::vec3 rhs(0.0f);
     const glm::vec3 p = at(posedPositions, v);
     for (uint32_t e = firstEdge_[v]; e < firstEdge_[v + 1]; ++e) {
-      const double ratio = glm::length(at(posedPositions, neighbour_[e]) - p) / std::max(restLength_[e], 1e-20f);
-      rhs += rowOf(projected_[2 * e], projected_[2 * e + 1]) * (ratio * ratio);
+      const glm::vec3 d = at(posedPositions, neighbour_[e]) - p;
+      rhs += glm::vec3(rows_[3 * e], rows_[3 * e + 1], rows_[3 * e + 2]) * (glm::dot(d, d) * inverseRestLengthSquared_[e]);
     }
-    const double a = m[0] * rhs.x + m[1] * rhs.y + m[2] * rhs.z;
+    const double a = double(m[0]) * rhs.x + m[1] * rhs.y + m[2] * rhs.z;
     const double b = m[1] * rhs.x + m[3] * rhs.y + m[4] * rhs.z;
     const double c = m[2] * rhs.x + m[4] * rhs.y + m[5] * rhs.z;
     // Smallest eigenvalue of [[a, b], [b, c]] and its eigenvector.
@@ -148,10 +147,8 @@ void SurfaceCompression::integratePhase(std::vector<float>& out, std::vector<flo
   std::vector<uint32_t> seeds;
   for (uint32_t v = 0; v < n; ++v)
     if (out[4 * v] != 0.0f || out[4 * v + 1] != 0.0f || out[4 * v + 2] != 0.0f) seeds.push_back(v);
-  // Most compressed first; ties by index, so the result never depends on timing.
-  std::sort(seeds.begin(), seeds.end(), [&](uint32_t a, uint32_t b) {
-    return out[4 * a + 3] != out[4 * b + 3] ? out[4 * a + 3] < out[4 * b + 3] : a < b;
-  });
+  // Seeds in index order: a patch's phase origin is arbitrary (it only
+  // shifts its folds), and the order never depends on timing.
   std::vector<bool> reached(n, false);
   std::vector<uint32_t> queue;
   for (uint32_t seed : seeds) {

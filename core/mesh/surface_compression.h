@@ -16,9 +16,10 @@
 // Then, for the shader, the directions are smoothed over each vertex's ring
 // (weighted by how compressed the neighbours are) and a phase is integrated
 // along them: s grows by (r_u - r_v) . (a_u + a_v) / 2 from vertex to
-// vertex, breadth first from the most compressed vertex of each compressed
-// patch, then evened out by a few Jacobi sweeps, so that sin(k s) draws
-// straight parallel folds across the compression. (s = r . a would bend them into rings wherever a turns.)
+// vertex, breadth first from one vertex of each compressed patch, then is
+// evened out by a few Jacobi sweeps, so that sin(k s) draws straight
+// parallel folds across the compression (s = r . a would bend them into
+// rings wherever a turns).
 //
 // Built once from the rest mesh; evaluate() is per frame, over flat arrays,
 // a few dozen flops per edge.
@@ -54,8 +55,8 @@ class SurfaceCompression {
 
   std::vector<uint32_t> firstEdge_;      // CSR: vertex v's edges are [firstEdge_[v], firstEdge_[v + 1])
   std::vector<uint32_t> neighbour_;      // the edge's other vertex
-  std::vector<float> restLength_;        // L_e
-  std::vector<float> projected_;         // u_e: 2 floats per edge, in the vertex's tangent frame
+  std::vector<float> inverseRestLengthSquared_;  // 1 / L_e^2
+  std::vector<float> rows_;              // 3 floats per edge: (x^2, 2xy, y^2) of u_e in the vertex's tangent frame
   std::vector<float> tangentFrame_;      // 6 floats per vertex: t1, t2 (rest frame)
   std::vector<float> inverseNormal_;     // 6 floats per vertex: symmetric 3x3 inverse; zeros when singular
   std::vector<float> restPositions_;
