@@ -88,7 +88,12 @@ const char* kSkinLightBegin = R"(//VTK::Light::Impl
     // Bumps: height gradients on the rest surface (metres per metre).
     vec3 dPdx = dFdx(vertexVC.xyz), dPdy = dFdy(vertexVC.xyz);
     vec3 dRdx = dFdx(mqRest), dRdy = dFdy(mqRest);
-    float restPerPixel = max(max(length(dRdx), length(dRdy)), 1e-12);
+    // A pixel's footprint on the surface, from depth and slant: smooth from
+    // triangle to triangle (screen derivatives are constant per triangle and
+    // would fade detail in facets). The derivatives stand in without perspective.
+    float restPerPixel = mqPixelAngle > 0.0 ? -vertexVC.z * mqPixelAngle / max(NdV, 0.3)
+                                            : max(length(dRdx), length(dRdy));
+    restPerPixel = max(restPerPixel, 1e-12);
     vec3 slope = vec3(0.0);
     float cell = 1e-3 * mqMicroScale;
     float microFade = clamp((cell / restPerPixel - 4.0) / 8.0, 0.0, 1.0);  // reliefFade
@@ -97,7 +102,11 @@ const char* kSkinLightBegin = R"(//VTK::Light::Impl
     // depth t (1 - cos ks) / 2, s the phase along the compression direction.
     float directed = length(mqWrinkle.xyz);
     float spacing = 1e-3 * mqWrinkleSpacing;
-    float wrinkleFade = clamp((spacing / restPerPixel - 4.0) / 4.0, 0.0, 1.0) * smoothstep(0.2, 0.8, directed);
+    // Faded by the folds' actual width on screen: where the phase field runs
+    // faster than the nominal spacing (a twisted patch), folds would alias.
+    float phasePixels = spacing / max(fwidth(mqWrinklePhase), 1e-12);
+    float wrinkleFade = clamp((spacing / restPerPixel - 4.0) / 8.0, 0.0, 1.0) * clamp((phasePixels - 3.0) / 3.0, 0.0, 1.0) *
+                        smoothstep(0.2, 0.8, directed);
     if (mqWrinkleDepth > 0.0 && wrinkleFade > 0.0) {
       vec3 across = mqWrinkle.xyz / directed;
       float ratio = mqWrinkle.w;
@@ -224,6 +233,7 @@ void applySkinShading(vtkActor* actor, const SurfaceLook& look, vtkTexture* albe
   u->SetUniform3fv("mqLightDirVC", ViewLights::kMax, none.towardLightVC);
   u->SetUniform3fv("mqLightColour", ViewLights::kMax, none.colour);
   u->SetUniform3f("mqUpVC", none.upVC);
+  u->SetUniformf("mqPixelAngle", 0.0f);
 }
 
 }  // namespace mq::render

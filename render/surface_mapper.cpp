@@ -1,6 +1,9 @@
 #include "render/surface_mapper.h"
 
+#include <cmath>
+
 #include <vtkActor.h>
+#include <vtkCamera.h>
 #include <vtkObjectFactory.h>
 #include <vtkOpenGLHelper.h>
 #include <vtkOpenGLTexture.h>
@@ -16,6 +19,14 @@ namespace mq::render {
 
 vtkStandardNewMacro(SurfaceMapper);
 
+float pixelAngle(vtkRenderer* renderer) {
+  const int* size = renderer->GetSize();
+  const double height = size && size[1] > 0 ? size[1] : 1.0;
+  vtkCamera* camera = renderer->GetActiveCamera();
+  if (camera->GetParallelProjection()) return 0.0f;  // no perspective: see the shader's fallback
+  return static_cast<float>(2.0 * std::tan(0.5 * camera->GetViewAngle() * M_PI / 180.0) / height);
+}
+
 void SurfaceMapper::setSamplers(std::vector<std::pair<std::string, vtkSmartPointer<vtkTexture>>> samplers) {
   samplers_ = std::move(samplers);
   Modified();
@@ -28,6 +39,7 @@ void SurfaceMapper::RenderPiece(vtkRenderer* renderer, vtkActor* actor) {
   u->SetUniform3fv("mqLightDirVC", ViewLights::kMax, lights.towardLightVC);
   u->SetUniform3fv("mqLightColour", ViewLights::kMax, lights.colour);
   u->SetUniform3f("mqUpVC", lights.upVC);
+  if (!samplers_.empty()) u->SetUniformf("mqPixelAngle", pixelAngle(renderer));
   for (auto& [name, texture] : samplers_) texture->Render(renderer);  // loads once, then activates a unit
   vtkOpenGLPolyDataMapper::RenderPiece(renderer, actor);
   for (auto& [name, texture] : samplers_) texture->PostRender(renderer);

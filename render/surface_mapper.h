@@ -5,6 +5,7 @@
 // replacements declare themselves. VTK 9.1 binds only the property's own
 // textures; these ride along through RenderPiece (activate, draw,
 // deactivate) and SetMapperShaderParameters (the sampler's texture unit).
+// With samplers bound it also sets mqPixelAngle (pixelAngle below).
 
 #include <string>
 #include <utility>
@@ -13,9 +14,14 @@
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkSmartPointer.h>
 
+class vtkRenderer;
 class vtkTexture;
 
 namespace mq::render {
+
+// Radians per pixel at the image's centre (vertical), for shaders that fade
+// detail by its size on screen; 0 under a parallel projection.
+float pixelAngle(vtkRenderer* renderer);
 
 class SurfaceMapper : public vtkOpenGLPolyDataMapper {
  public:

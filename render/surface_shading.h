@@ -55,7 +55,7 @@ struct SurfaceLook {
   float lobeMix = 0.85f;
   // Micro-relief: cellular plateaus and furrows, `microScale` mm across,
   // of slope `microStrength` (height / cell size); fades out below 4 px a cell.
-  float microStrength = 0.25f;
+  float microStrength = 0.15f;
   float microScale = 1.2f;  // mm
   // Volino wrinkles where the posed skin is compressed: depth (mm) at full
   // compression, Volino's lambda, and the spacing between folds (mm).
