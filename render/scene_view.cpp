@@ -164,6 +164,15 @@ void markModified(vtkActor* part) {
   polyData->Modified();
 }
 
+// The skin shader's per-vertex measures, made the first time a skin look
+// needs them, with the wrinkles of the pose shown now.
+void measureSkin(MeshActor& mesh) {
+  if (mesh.skin->measured()) return;
+  mesh.skin->measure();
+  const float* posed = mesh.positions->GetPointer(0);
+  mesh.skin->update(std::vector<float>(posed, posed + mesh.positions->GetNumberOfValues()));
+}
+
 // Copies `source` (3 floats per vertex) into `target` when the sizes agree.
 bool copyInto(vtkFloatArray* target, const std::vector<float>& source) {
   if (static_cast<size_t>(target->GetNumberOfValues()) != source.size()) return false;
@@ -283,13 +292,9 @@ void SceneView::Impl::applyLooks() {
     const Material* material = index >= 0 ? &materials[index] : nullptr;
     const glm::vec3 colour = material ? srgbOf(material->baseColorFactor) : mesh.baseColor;
     // Skin: the view's skin look, in a material's colour and base colour map
-    // when there is one; its per-vertex measures are made the first time.
+    // when there is one.
     auto applySkin = [&] {
-      if (!mesh.skin->measured()) {
-        mesh.skin->measure();
-        const float* posed = mesh.positions->GetPointer(0);
-        mesh.skin->update(std::vector<float>(posed, posed + mesh.positions->GetNumberOfValues()));
-      }
+      measureSkin(mesh);
       SurfaceLook look = skinLook;
       if (material) look.albedo = colour;
       applySurfaceLook(actor, look, material ? textures->colour(material->baseColorTexture) : nullptr);
@@ -342,11 +347,7 @@ std::vector<std::string> SceneView::warnings() const {
 
 void SceneView::setSurfaceLook(const SurfaceLook& look) {
   impl_->forEachPart([&](MeshActor& mesh, size_t p) {
-    if (look.skinShading && !mesh.skin->measured()) {
-      mesh.skin->measure();
-      const float* posed = mesh.positions->GetPointer(0);
-      mesh.skin->update(std::vector<float>(posed, posed + mesh.positions->GetNumberOfValues()));
-    }
+    if (look.skinShading) measureSkin(mesh);
     applySurfaceLook(mesh.parts[p], look);
   });
   useStudioEnvironment(impl_->renderer, false);
