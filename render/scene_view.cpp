@@ -31,6 +31,7 @@
 #include "render/ground.h"
 #include "render/hair_actor.h"
 #include "render/skeleton_overlay.h"
+#include "render/skin_surface_arrays.h"
 #include "render/studio.h"
 #include "render/surface_shading.h"
 
@@ -48,6 +49,7 @@ struct MeshActor {
   std::vector<float> restNormals, restTangents;  // tangents follow the normals' turn
   std::vector<uint32_t> triangles;  // for normals when the posed mesh has none
   glm::vec3 baseColor{0.8f};
+  std::shared_ptr<SkinSurfaceArrays> skin;  // curvature, thickness, wrinkles
 };
 
 // The built-in mannequin, and meshes without a colour of their own (the
@@ -101,12 +103,17 @@ vtkSmartPointer<vtkActor> makePart(const Mesh& mesh, const Submesh& range, const
   polyData->SetPolys(cells);
   polyData->GetPointData()->SetNormals(m.normals);
   polyData->GetPointData()->AddArray(rest);
+  m.skin->addTo(polyData->GetPointData());
+  vtkSmartPointer<vtkOpenGLPolyDataMapper> mapper = vtkSmartPointer<vtkOpenGLPolyDataMapper>::Take(newSurfaceMapper());
   if (material)
     if (const TextureRef* source = textureCoordinateSource(*material))
-      if (auto tcoords = textureCoordinates(mesh, *source)) polyData->GetPointData()->SetTCoords(tcoords);
+      if (auto tcoords = textureCoordinates(mesh, *source)) {
+        polyData->GetPointData()->SetTCoords(tcoords);
+        // The skin shader reads its albedo map through them.
+        mapper->MapDataArrayToVertexAttribute("mqUVMC", "TCoords", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+      }
   if (m.tangents) polyData->GetPointData()->SetTangents(m.tangents);
 
-  vtkSmartPointer<vtkOpenGLPolyDataMapper> mapper = vtkSmartPointer<vtkOpenGLPolyDataMapper>::Take(newSurfaceMapper());
   mapper->SetInputData(polyData);
   mapper->ScalarVisibilityOff();
   auto actor = vtkSmartPointer<vtkActor>::New();
@@ -122,6 +129,7 @@ MeshActor makeMeshActor(const Mesh& mesh, const std::vector<Material>& materials
   m.positions = newArray(nullptr, 3, n);
   m.normals = newArray("Normals", 3, n);
   m.restNormals = mesh.normals;
+  m.skin = std::make_shared<SkinSurfaceArrays>(mesh.positions, mesh.normals, mesh.triangles);
   if (mesh.tangents.size() == 4 * n) {
     m.restTangents = mesh.tangents;
     m.tangents = newArray("Tangents", 3, n);
@@ -156,6 +164,15 @@ void markModified(vtkActor* part) {
   polyData->Modified();
 }
 
+// The skin shader's per-vertex measures, made the first time a skin look
+// needs them, with the wrinkles of the pose shown now.
+void measureSkin(MeshActor& mesh) {
+  if (mesh.skin->measured()) return;
+  mesh.skin->measure();
+  const float* posed = mesh.positions->GetPointer(0);
+  mesh.skin->update(std::vector<float>(posed, posed + mesh.positions->GetNumberOfValues()));
+}
+
 // Copies `source` (3 floats per vertex) into `target` when the sizes agree.
 bool copyInto(vtkFloatArray* target, const std::vector<float>& source) {
   if (static_cast<size_t>(target->GetNumberOfValues()) != source.size()) return false;
@@ -187,6 +204,7 @@ struct SceneView::Impl {
   std::unique_ptr<MaterialTextures> textures;
   bool builtInMannequin = false;
   LookMode lookMode = LookMode::Auto;
+  SurfaceLook skinLook = SurfaceLook::skinPresetLook("skin1");
   float floorHeight = 0.0f;
   SkeletonOverlay skeleton;
   Ground ground;
@@ -273,16 +291,24 @@ void SceneView::Impl::applyLooks() {
     const int index = mesh.partMaterials[p];
     const Material* material = index >= 0 ? &materials[index] : nullptr;
     const glm::vec3 colour = material ? srgbOf(material->baseColorFactor) : mesh.baseColor;
+    // Skin: the view's skin look, in a material's colour and base colour map
+    // when there is one.
+    auto applySkin = [&] {
+      measureSkin(mesh);
+      SurfaceLook look = skinLook;
+      if (material) look.albedo = colour;
+      applySurfaceLook(actor, look, material ? textures->colour(material->baseColorTexture) : nullptr);
+    };
     switch (lookMode) {
       case LookMode::Mannequin: applySurfaceLook(actor, SurfaceLook::mannequin()); return;
       case LookMode::Plain: applySurfaceLook(actor, SurfaceLook::plain(colour)); return;
-      case LookMode::Skin: applySurfaceLook(actor, SurfaceLook::skin(material ? colour : kDefaultSkinAlbedo)); return;
+      case LookMode::Skin: applySkin(); return;
       case LookMode::Auto: break;
     }
     if (!material) {
       applySurfaceLook(actor, defaultLookFor(colour, builtInMannequin));
     } else if (material->skin) {
-      applySurfaceLook(actor, SurfaceLook::skin(colour));
+      applySkin();
     } else {
       applyMaterial(actor, *material, *textures);
       physicallyBased = true;
@@ -298,6 +324,14 @@ void SceneView::setLookMode(LookMode mode) {
 
 LookMode SceneView::lookMode() const { return impl_->lookMode; }
 
+void SceneView::setSkinLook(const SurfaceLook& look) {
+  impl_->skinLook = look;
+  impl_->skinLook.skinShading = true;
+  impl_->applyLooks();
+}
+
+const SurfaceLook& SceneView::skinLook() const { return impl_->skinLook; }
+
 void SceneView::setMaterial(int index, const Material& material) {
   Impl& m = *impl_;
   if (index < 0 || index >= static_cast<int>(m.materials.size())) return;
@@ -312,7 +346,10 @@ std::vector<std::string> SceneView::warnings() const {
 }
 
 void SceneView::setSurfaceLook(const SurfaceLook& look) {
-  impl_->forEachPart([&](MeshActor& mesh, size_t p) { applySurfaceLook(mesh.parts[p], look); });
+  impl_->forEachPart([&](MeshActor& mesh, size_t p) {
+    if (look.skinShading) measureSkin(mesh);
+    applySurfaceLook(mesh.parts[p], look);
+  });
   useStudioEnvironment(impl_->renderer, false);
 }
 
@@ -334,6 +371,7 @@ void SceneView::updatePose(const PosedCharacter& posed) {
       carryTangents(mesh.restNormals, mesh.restTangents, posedNormals, carriedTangents);
       copyTangentsInto(mesh.tangents, carriedTangents);
     }
+    mesh.skin->update(posedMeshes[i].positions);  // wrinkles, once a skin look measured the mesh
     for (vtkActor* part : mesh.parts) markModified(part);
   }
   m.updateBounds(posed.worldFromBone());

@@ -40,7 +40,6 @@ enum class LookMode { Auto, Skin, Mannequin, Plain };
 // "auto", "skin", "mannequin", "plain"; false when `name` is none of them.
 bool parseLookMode(const std::string& name, LookMode& mode);
 const char* lookModeName(LookMode mode);
-inline constexpr glm::vec3 kDefaultSkinAlbedo{0.85f, 0.69f, 0.6f};
 
 class SceneView {
  public:
@@ -63,6 +62,11 @@ class SceneView {
   const std::vector<Material>& materials() const;
   // Texture images that could not be used, each naming the image and why.
   std::vector<std::string> warnings() const;
+  // The skin used where skin applies (LookMode::Skin; materials marked as
+  // skin, in their own colour and base colour map); by default
+  // SurfaceLook::skinPresetLook("skin1").
+  void setSkinLook(const SurfaceLook& look);
+  const SurfaceLook& skinLook() const;
   // Shades every surface with `look`, whatever the look mode.
   void setSurfaceLook(const SurfaceLook& look);
   // Copies the posed positions and normals into the actors' arrays.

@@ -1,14 +1,18 @@
 #include "render/surface_shading.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <vtkActor.h>
 #include <vtkDataObject.h>
-#include <vtkObjectFactory.h>
-#include <vtkOpenGLPolyDataMapper.h>
 #include <vtkProperty.h>
-#include <vtkRenderer.h>
 #include <vtkShaderProperty.h>
 #include <vtkUniforms.h>
 
+#include "core/optics/skin_tone.h"
+#include "render/skin_shader.h"
+#include "render/skin_surface_arrays.h"
+#include "render/surface_mapper.h"
 #include "render/view_lights.h"
 
 namespace mq::render {
@@ -89,23 +93,6 @@ const char* kSurfaceLight = R"(//VTK::Light::Impl
   }
 )";
 
-class SurfaceMapper : public vtkOpenGLPolyDataMapper {
- public:
-  static SurfaceMapper* New();
-  vtkTypeMacro(SurfaceMapper, vtkOpenGLPolyDataMapper);
-
-  void RenderPiece(vtkRenderer* renderer, vtkActor* actor) override {
-    const ViewLights lights = gatherViewLights(renderer);
-    vtkUniforms* u = actor->GetShaderProperty()->GetFragmentCustomUniforms();
-    u->SetUniformi("mqLightCount", lights.count);
-    u->SetUniform3fv("mqLightDirVC", ViewLights::kMax, lights.towardLightVC);
-    u->SetUniform3fv("mqLightColour", ViewLights::kMax, lights.colour);
-    u->SetUniform3f("mqUpVC", lights.upVC);
-    vtkOpenGLPolyDataMapper::RenderPiece(renderer, actor);
-  }
-};
-vtkStandardNewMacro(SurfaceMapper);
-
 void setUniform3(vtkUniforms* u, const char* name, const glm::vec3& v) {
   const float values[3] = {v.x, v.y, v.z};
   u->SetUniform3f(name, values);
@@ -117,16 +104,21 @@ SurfaceLook SurfaceLook::mannequin() { return SurfaceLook{}; }
 
 SurfaceLook SurfaceLook::skin(const glm::vec3& albedo) {
   SurfaceLook look;
+  look.skinShading = true;
   look.albedo = albedo;
-  look.wrap = 0.5f;
-  look.scatterColour = {1.0f, 0.5f, 0.38f};
-  look.scatter = 0.5f;
-  look.translucency = 0.35f;
+  look.translucency = 1.0f;
   look.grain = 0.0f;
-  look.specular = 0.18f;
-  look.glossiness = 40.0f;
+  look.specular = 1.0f;  // rho_s of the Kelemen/Szirmay-Kalos lobes
   look.rim = 1.0f;
   look.rimPower = 2.5f;
+  return look;
+}
+
+SurfaceLook SurfaceLook::skinPresetLook(const std::string& preset) {
+  const optics::Rgb reflectance = optics::skinPreset(preset).totalReflectance();
+  auto srgb = [](double linear) { return float(std::pow(std::clamp(linear, 0.0, 1.0), 1.0 / 2.2)); };
+  SurfaceLook look = skin({srgb(reflectance[0]), srgb(reflectance[1]), srgb(reflectance[2])});
+  look.skinPreset = preset;
   return look;
 }
 
@@ -142,10 +134,14 @@ SurfaceLook SurfaceLook::plain(const glm::vec3& albedo) {
 vtkOpenGLPolyDataMapper* newSurfaceMapper() {
   SurfaceMapper* mapper = SurfaceMapper::New();
   mapper->MapDataArrayToVertexAttribute("mqRestMC", kRestPositionArray, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+  mapper->MapDataArrayToVertexAttribute("mqCurvatureMC", kCurvatureArray, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+  mapper->MapDataArrayToVertexAttribute("mqThicknessMC", kThicknessArray, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+  mapper->MapDataArrayToVertexAttribute("mqWrinkleMC", kWrinkleArray, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+  mapper->MapDataArrayToVertexAttribute("mqWrinklePhaseMC", kWrinklePhaseArray, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
   return mapper;
 }
 
-void applySurfaceLook(vtkActor* actor, const SurfaceLook& look) {
+void applySurfaceLook(vtkActor* actor, const SurfaceLook& look, vtkTexture* albedoMap) {
   vtkProperty* p = actor->GetProperty();
   p->RemoveAllTextures();  // a file material's, when switching looks
   p->SetBackfaceCulling(false);
@@ -154,6 +150,11 @@ void applySurfaceLook(vtkActor* actor, const SurfaceLook& look) {
   actor->SetForceOpaque(false);
   p->SetInterpolationToPhong();
   p->SetColor(look.albedo.x, look.albedo.y, look.albedo.z);  // for renderers without the shader
+  if (look.skinShading) {
+    applySkinShading(actor, look, albedoMap);
+    return;
+  }
+  if (auto* mapper = SurfaceMapper::SafeDownCast(actor->GetMapper())) mapper->setSamplers({});
   vtkShaderProperty* sp = actor->GetShaderProperty();
   sp->ClearAllShaderReplacements();
   sp->AddVertexShaderReplacement("//VTK::Normal::Dec", true, kVertexDec, false);

@@ -56,7 +56,7 @@ void placeCamera(render::SceneView& view, const ViewSettings& settings, const Im
 int runRender(const std::vector<std::string>& argv) {
   const Args args(argv);
   args.allowOnly({"--out", "--time", "--clip", "--size", "--skeleton", "--look", "--scale", "--hair", "--hair-shadow", "--skinning",
-                  "--hair-shader", "--hair-pigment", "--melanin", "--pheomelanin", "--hair-roughness"});
+                  "--hair-shader", "--hair-pigment", "--melanin", "--pheomelanin", "--hair-roughness", "--skin-preset"});
   if (args.positional().size() != 1) throw Error("expects one FILE (or 'default'); see mannequin-cli --help");
   const std::string file = args.positional()[0];
   const std::string out = args.option("--out");
@@ -76,6 +76,9 @@ int runRender(const std::vector<std::string>& argv) {
   render::SceneView view;
   view.setCharacter(scene.character);
   view.updatePose(posed);
+  // The skin's scattering profile and colour, where skin is shown (--look
+  // skin, materials marked as skin); an unknown name lists the presets.
+  if (args.has("--skin-preset")) view.setSkinLook(render::SurfaceLook::skinPresetLook(args.option("--skin-preset")));
   view.setLookMode(parseLook(args.option("--look", scene.document.view.look)));
   for (const std::string& warning : loadNotices(scene)) std::cerr << "warning: " << warning << "\n";
   for (const std::string& warning : view.warnings()) std::cerr << "warning: " << warning << "\n";
@@ -105,6 +108,7 @@ int runRender(const std::vector<std::string>& argv) {
 Registration reg({"render", "FILE --out OUT.png [--time T] [--clip NAME|INDEX|rest] [--size WxH] [--skeleton]\n"
                   "         [--look auto|skin|mannequin|plain] [--hair auto|simulate|rigid|off]\n"
                   "         [--hair-shadow count|maps] [--skinning lbs|dqs|cones] [--scale S]\n"
+                  "         [--skin-preset skin1|skin2|light|medium|tan|dark]\n"
                   "         [--hair-shader kajiya-kay|physical] [--hair-pigment black|brown|blond|red|grey]\n"
                   "         [--melanin M] [--pheomelanin P] [--hair-roughness R]",
                   "renders an image offscreen (starts a private Xvfb when there is no X display)", runRender});

@@ -165,26 +165,6 @@ TEST_F(SceneViewTest, RimLightBrightensTheSilhouette) {
   EXPECT_GT(edgeWithRim, insideWithRim);
 }
 
-TEST_F(SceneViewTest, SkinLookScattersWarmLightPastTheTerminator) {
-  show(test::makeTestFigure());
-  render::OffscreenRenderer renderer(view, kWidth, kHeight);
-  const render::RgbImage empty = background(renderer, 1);
-  view.setSurfaceLook(render::SurfaceLook::plain({0.87f, 0.67f, 0.55f}));
-  const render::RgbImage plain = renderer.capture();
-  view.setSurfaceLook(render::SurfaceLook::skin({0.87f, 0.67f, 0.55f}));
-  const render::RgbImage skin = renderer.capture();
-  // Over the figure, the skin look adds light, and more red than blue.
-  double red = 0.0, blue = 0.0;
-  for (int y = 0; y < kHeight; ++y)
-    for (int x = 0; x < kWidth; ++x) {
-      if (std::abs(plain.at(x, y)[1] - empty.at(x, y)[1]) <= 24) continue;
-      red += skin.at(x, y)[0] - plain.at(x, y)[0];
-      blue += skin.at(x, y)[2] - plain.at(x, y)[2];
-    }
-  EXPECT_GT(red, 0.0);
-  EXPECT_GT(red, 1.5 * blue);
-}
-
 TEST_F(SceneViewTest, AmbientOcclusionDarkensWhereSurfacesMeet) {
   const LoadedScene scene = openScene("default");
   show(scene.character);

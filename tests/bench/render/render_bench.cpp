@@ -30,14 +30,16 @@ void BM_UpdatePose(benchmark::State& state) {
 }
 BENCHMARK(BM_UpdatePose)->Unit(benchmark::kMicrosecond);
 
-// arg 0: plain; 1: with ambient occlusion. Each frame poses, syncs and draws.
+// arg 0: plain; 1: with ambient occlusion; 2: the skin look (no occlusion).
+// Each frame poses, syncs and draws.
 void BM_OffscreenFrame(benchmark::State& state) {
   setenv("LIBGL_ALWAYS_SOFTWARE", "1", 1);
   const mq::Character& character = mannequin();
   const int clip = character.findClip("walk");
   mq::render::SceneView view;
   view.setCharacter(character);
-  view.setAmbientOcclusion(state.range(0) != 0);
+  view.setAmbientOcclusion(state.range(0) == 1);
+  if (state.range(0) == 2) view.setLookMode(mq::render::LookMode::Skin);
   view.frameAll(4.0 / 3.0);
   mq::render::OffscreenRenderer renderer(view, 640, 480);
   mq::PosedCharacter posed;
@@ -49,7 +51,19 @@ void BM_OffscreenFrame(benchmark::State& state) {
     t += 1.0f / 30.0f;
   }
 }
-BENCHMARK(BM_OffscreenFrame)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_OffscreenFrame)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+
+// Pose sync with the skin look: adds the per-vertex compression (wrinkles).
+void BM_UpdatePoseSkin(benchmark::State& state) {
+  const mq::Character& character = mannequin();
+  mq::render::SceneView view;
+  view.setCharacter(character);
+  view.setLookMode(mq::render::LookMode::Skin);
+  mq::PosedCharacter posed;
+  posed.evaluate(character, character.findClip("walk"), 0.3f, nullptr, &mq::ThreadPool::shared());
+  for (auto _ : state) view.updatePose(posed);
+}
+BENCHMARK(BM_UpdatePoseSkin)->Unit(benchmark::kMicrosecond);
 
 // An imported character with its own texture on the physically based path
 // (image-based lighting), walking: what the editor draws per frame for it.

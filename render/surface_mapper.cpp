@@ -1,0 +1,60 @@
+#include "render/surface_mapper.h"
+
+#include <cmath>
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkObjectFactory.h>
+#include <vtkOpenGLHelper.h>
+#include <vtkOpenGLTexture.h>
+#include <vtkRenderer.h>
+#include <vtkShaderProgram.h>
+#include <vtkShaderProperty.h>
+#include <vtkTexture.h>
+#include <vtkUniforms.h>
+
+#include "render/view_lights.h"
+
+namespace mq::render {
+
+vtkStandardNewMacro(SurfaceMapper);
+
+float pixelAngle(vtkRenderer* renderer) {
+  const int* size = renderer->GetSize();
+  const double height = size && size[1] > 0 ? size[1] : 1.0;
+  vtkCamera* camera = renderer->GetActiveCamera();
+  if (camera->GetParallelProjection()) return 0.0f;  // no perspective: see the shader's fallback
+  return static_cast<float>(2.0 * std::tan(0.5 * camera->GetViewAngle() * M_PI / 180.0) / height);
+}
+
+void SurfaceMapper::setSamplers(std::vector<std::pair<std::string, vtkSmartPointer<vtkTexture>>> samplers) {
+  samplers_ = std::move(samplers);
+  Modified();
+}
+
+void SurfaceMapper::RenderPiece(vtkRenderer* renderer, vtkActor* actor) {
+  const ViewLights lights = gatherViewLights(renderer);
+  vtkUniforms* u = actor->GetShaderProperty()->GetFragmentCustomUniforms();
+  u->SetUniformi("mqLightCount", lights.count);
+  u->SetUniform3fv("mqLightDirVC", ViewLights::kMax, lights.towardLightVC);
+  u->SetUniform3fv("mqLightColour", ViewLights::kMax, lights.colour);
+  u->SetUniform3f("mqUpVC", lights.upVC);
+  if (!samplers_.empty()) u->SetUniformf("mqPixelAngle", pixelAngle(renderer));
+  for (auto& [name, texture] : samplers_) texture->Render(renderer);  // loads once, then activates a unit
+  vtkOpenGLPolyDataMapper::RenderPiece(renderer, actor);
+  for (auto& [name, texture] : samplers_) texture->PostRender(renderer);
+}
+
+void SurfaceMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* renderer, vtkActor* actor) {
+  vtkOpenGLPolyDataMapper::SetMapperShaderParameters(cellBO, renderer, actor);
+  for (auto& [name, texture] : samplers_)
+    if (auto* gl = vtkOpenGLTexture::SafeDownCast(texture); gl && cellBO.Program->IsUniformUsed(name.c_str()))
+      cellBO.Program->SetUniformi(name.c_str(), gl->GetTextureUnit());
+}
+
+void SurfaceMapper::ReleaseGraphicsResources(vtkWindow* window) {
+  for (auto& [name, texture] : samplers_) texture->ReleaseGraphicsResources(window);
+  vtkOpenGLPolyDataMapper::ReleaseGraphicsResources(window);
+}
+
+}  // namespace mq::render

@@ -1,0 +1,45 @@
+#pragma once
+// The polydata mapper of the character's surfaces: feeds the view's lights to
+// the surface shaders each frame and binds extra textures (the skin's
+// pre-integrated table, its albedo map) to sampler uniforms the shader
+// replacements declare themselves. VTK 9.1 binds only the property's own
+// textures; these ride along through RenderPiece (activate, draw,
+// deactivate) and SetMapperShaderParameters (the sampler's texture unit).
+// With samplers bound it also sets mqPixelAngle (pixelAngle below).
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <vtkOpenGLPolyDataMapper.h>
+#include <vtkSmartPointer.h>
+
+class vtkRenderer;
+class vtkTexture;
+
+namespace mq::render {
+
+// Radians per pixel at the image's centre (vertical), for shaders that fade
+// detail by its size on screen; 0 under a parallel projection.
+float pixelAngle(vtkRenderer* renderer);
+
+class SurfaceMapper : public vtkOpenGLPolyDataMapper {
+ public:
+  static SurfaceMapper* New();
+  vtkTypeMacro(SurfaceMapper, vtkOpenGLPolyDataMapper);
+
+  // Textures to bind, each to `uniform sampler2D <name>`; replaces the last set.
+  void setSamplers(std::vector<std::pair<std::string, vtkSmartPointer<vtkTexture>>> samplers);
+
+  void RenderPiece(vtkRenderer* renderer, vtkActor* actor) override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+ protected:
+  SurfaceMapper() = default;
+  void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* renderer, vtkActor* actor) override;
+
+ private:
+  std::vector<std::pair<std::string, vtkSmartPointer<vtkTexture>>> samplers_;
+};
+
+}  // namespace mq::render
