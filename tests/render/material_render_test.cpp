@@ -139,6 +139,22 @@ TEST_F(MaterialRenderTest, CesiumManShowsItsTexture) {
   EXPECT_TRUE(problem.empty()) << problem;
 }
 
+TEST_F(MaterialRenderTest, SkinMaterialKeepsItsTextureAsAlbedo) {
+  Character c = importCharacter(kShared + "/assets/characters/CesiumMan/glTF/CesiumMan.gltf");
+  c.materials[0].skin = true;
+  show(c, 0, 0.5f);
+  render::OffscreenRenderer renderer(view, kWidth, kHeight);
+  const render::RgbImage empty = withoutCharacter(renderer);
+  const render::RgbImage skin = renderer.capture();
+  const BandPixels bands = bandPixels(skin, empty);
+  ASSERT_GT(bands.figure, 2000u);
+  EXPECT_GT(bands.blue, bands.figure / 25) << "the texture's blue bands under skin shading";
+  // And it is shaded differently from the physically based material.
+  c.materials[0].skin = false;
+  view.setMaterial(0, c.materials[0]);
+  EXPECT_GT(test::compareImages(skin, renderer.capture()).rms, 2.0);
+}
+
 TEST_F(MaterialRenderTest, GlbEmbeddedTextureMatchesTheGltfOne) {
   show(importCharacter(kShared + "/assets/characters/CesiumMan/glTF/CesiumMan.gltf"), 0, 0.5f);
   render::OffscreenRenderer renderer(view, kWidth, kHeight);
