@@ -416,6 +416,7 @@ class EditorSmokeTest : public QObject {
     MaterialPage* page = window_->properties()->materialPage();
     QVERIFY(page->isVisible());
     QCOMPARE(page->roughnessBox()->value(), 1.0);
+    QVERIFY2(!page->thumbnailLabel()->pixmap().isNull(), "the base colour texture's thumbnail");
 
     const int commands = doc()->undoStack()->index();
     page->roughnessBox()->setValue(0.35);

@@ -8,6 +8,8 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
+#include <QImage>
+#include <QPixmap>
 #include <QLabel>
 #include <QPushButton>
 #include <QUndoStack>
@@ -28,6 +30,19 @@ QColor toQColor(const glm::vec4& linear) {
 glm::vec4 fromQColor(const QColor& c) {
   return {srgbToLinear(float(c.redF())), srgbToLinear(float(c.greenF())), srgbToLinear(float(c.blueF())),
           float(c.alphaF())};
+}
+
+// The base colour texture as a small picture (Qt decodes PNG and JPEG);
+// empty when there is none or it does not decode.
+QPixmap thumbnailOf(const Material& m, const Character& character) {
+  const TextureRef& ref = m.baseColorTexture;
+  if (!ref.present() || ref.image >= static_cast<int>(character.images.size())) return {};
+  const ImageSource& source = character.images[ref.image];
+  QImage image;
+  if (!source.path.empty()) image.load(QString::fromStdString(source.path));
+  else image.loadFromData(source.encoded.data(), static_cast<int>(source.encoded.size()));
+  if (image.isNull()) return {};
+  return QPixmap::fromImage(image.scaled(96, 96, Qt::KeepAspectRatio, Qt::SmoothTransformation));
 }
 
 QString textureList(const Material& m, const Character& character) {
@@ -55,6 +70,8 @@ MaterialPage::MaterialPage(EditorDocument* document, QWidget* parent) : QWidget(
   textures_ = new QLabel;
   textures_->setWordWrap(true);
   form_->addRow(tr("Textures"), textures_);
+  thumbnail_ = new QLabel;
+  form_->addRow(QString(), thumbnail_);
 
   baseColour_ = new QPushButton;
   baseColour_->setToolTip(tr("Base colour factor (multiplies the base colour texture) and opacity"));
@@ -159,6 +176,9 @@ void MaterialPage::showMaterial(int index) {
   syncing_ = true;
   name_->setText(QString::fromStdString(m.name));
   textures_->setText(textureList(m, c));
+  const QPixmap thumbnail = thumbnailOf(m, c);
+  thumbnail_->setPixmap(thumbnail);
+  thumbnail_->setVisible(!thumbnail.isNull());
   showColour(baseColour_, toQColor(m.baseColorFactor));
   metallic_->setValue(m.metallicFactor);
   roughness_->setValue(m.roughnessFactor);

@@ -37,6 +37,7 @@ class MaterialPage : public QWidget {
   QCheckBox* skinBox() const { return skin_; }
   QComboBox* alphaModeBox() const { return alphaMode_; }
   QPushButton* resetButton() const { return reset_; }
+  QLabel* thumbnailLabel() const { return thumbnail_; }
 
  private:
   QDoubleSpinBox* addFactor(const QString& label, double max, double step, const QString& tip,
@@ -51,6 +52,7 @@ class MaterialPage : public QWidget {
   QFormLayout* form_ = nullptr;
   QLabel* name_ = nullptr;
   QLabel* textures_ = nullptr;
+  QLabel* thumbnail_ = nullptr;  // the base colour texture, small
   QLabel* changed_ = nullptr;
   QPushButton* baseColour_ = nullptr;
   QDoubleSpinBox* metallic_ = nullptr;
