@@ -1,5 +1,7 @@
 #include "core/hair/hairstyle_json.h"
 
+#include <nlohmann/json.hpp>
+
 #include <cstdio>
 #include <cstdlib>
 

@@ -20,7 +20,7 @@
 // files saved before it existed read and write unchanged.
 // Primitive positions are in head space (see hairstyle.h).
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "core/hair/hairstyle.h"
 #include "core/hair/scalp.h"

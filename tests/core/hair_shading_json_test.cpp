@@ -3,6 +3,8 @@
 // named.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include "core/hair/hairstyle_json.h"
 #include "core/util/error.h"
 

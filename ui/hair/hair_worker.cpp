@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include <QtConcurrent/QtConcurrentRun>
+#include <nlohmann/json.hpp>
 
 #include "core/hair/hair_groom.h"
 #include "core/hair/hairstyle_json.h"
