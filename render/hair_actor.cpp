@@ -57,8 +57,9 @@ in vec3 hairTangentVC;
 in vec3 hairParams;  // x: 0 root .. 1 tip, y: self-shadow, z: per-strand random
 )";
 
-// Runs after VTK's own lighting and replaces its result.
-const char* kFragmentImpl = R"(//VTK::Light::Impl
+// Both models' fragment code runs after VTK's own lighting and replaces its
+// result: this frame of the fibre first, their lighting, then the tip fade.
+const char* kFibreFrame = R"(//VTK::Light::Impl
   {
     vec3 T = normalize(hairTangentVC);
     vec3 V = normalize(-vertexVC.xyz);
@@ -68,6 +69,23 @@ const char* kFragmentImpl = R"(//VTK::Light::Impl
     vec3 volumeNormal = volumeLength > 1e-4 ? normalVCVSOutput / volumeLength : V;
     float along = hairParams.x;
     float shadow = hairParams.y;
+)";
+
+// Thinner towards the tip: screen-door transparency (no sorting needed).
+const char* kTipFade = R"(
+    float fade = clamp((along - hairTipFadeStart) / max(1e-3, 1.0 - hairTipFadeStart), 0.0, 1.0);
+    float opacity = mix(1.0, hairTipOpacity, fade);
+    const float bayer[16] = float[16](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0,
+                                      3.0, 11.0, 1.0, 9.0, 15.0, 7.0, 13.0, 5.0);
+    ivec2 cell = ivec2(mod(gl_FragCoord.xy, 4.0));
+    // The per-strand offset keeps neighbouring tips from sharing one pattern.
+    if (opacity < fract((bayer[cell.x + 4 * cell.y] + 0.5) / 16.0 + hairParams.z)) discard;
+    gl_FragData[0] = vec4(color, 1.0);
+  }
+)";
+
+// Kajiya-Kay with two shifted highlights.
+const char* kKajiyaKayLighting = R"(
     vec3 base = mix(hairRootColor, hairTipColor, along) * (1.0 + hairColorVariation * (2.0 * hairParams.z - 1.0));
     // Shifted tangents (Scheuermann 2004, after Marschner et al. 2003): the
     // part of the view direction across the fibre stands in for its normal.
@@ -93,16 +111,6 @@ const char* kFragmentImpl = R"(//VTK::Light::Impl
                + hairSecondarySpecular * secondary * tint * brightest;
       color += hairLightColor[i] * shadow * facing * lit;
     }
-    // Thinner towards the tip: screen-door transparency (no sorting needed).
-    float fade = clamp((along - hairTipFadeStart) / max(1e-3, 1.0 - hairTipFadeStart), 0.0, 1.0);
-    float opacity = mix(1.0, hairTipOpacity, fade);
-    const float bayer[16] = float[16](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0,
-                                      3.0, 11.0, 1.0, 9.0, 15.0, 7.0, 13.0, 5.0);
-    ivec2 cell = ivec2(mod(gl_FragCoord.xy, 4.0));
-    // The per-strand offset keeps neighbouring tips from sharing one pattern.
-    if (opacity < fract((bayer[cell.x + 4 * cell.y] + 0.5) / 16.0 + hairParams.z)) discard;
-    gl_FragData[0] = vec4(color, 1.0);
-  }
 )";
 
 // The physically based fibre (core/optics/hair_bsdf.h), per light:
@@ -153,14 +161,7 @@ vec3 hairResidualAt(float sinO) {
 )";
 }
 
-const char* kPhysicalFragmentImpl = R"(//VTK::Light::Impl
-  {
-    vec3 T = normalize(hairTangentVC);
-    vec3 V = normalize(-vertexVC.xyz);
-    float volumeLength = length(normalVCVSOutput);
-    vec3 volumeNormal = volumeLength > 1e-4 ? normalVCVSOutput / volumeLength : V;
-    float along = hairParams.x;
-    float shadow = hairParams.y;
+const char* kPhysicalLighting = R"(
     float sinO = clamp(dot(V, T), -1.0, 1.0);
     float cosO = sqrt(max(0.0, 1.0 - sinO * sinO));
     vec3 Vp = V - sinO * T;
@@ -190,14 +191,6 @@ const char* kPhysicalFragmentImpl = R"(//VTK::Light::Impl
       color += hairLightColor[i] * shadow * facing * (3.14159265 * S + hairLobeWeight4 * hairVolumeAlbedo);
     }
     color *= 1.0 + hairColorVariation * (2.0 * hairParams.z - 1.0);
-    float fade = clamp((along - hairTipFadeStart) / max(1e-3, 1.0 - hairTipFadeStart), 0.0, 1.0);
-    float opacity = mix(1.0, hairTipOpacity, fade);
-    const float bayer[16] = float[16](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0,
-                                      3.0, 11.0, 1.0, 9.0, 15.0, 7.0, 13.0, 5.0);
-    ivec2 cell = ivec2(mod(gl_FragCoord.xy, 4.0));
-    if (opacity < fract((bayer[cell.x + 4 * cell.y] + 0.5) / 16.0 + hairParams.z)) discard;
-    gl_FragData[0] = vec4(color, 1.0);
-  }
 )";
 
 // ---- Lights ----
@@ -609,10 +602,12 @@ void HairActor::Impl::installShaders() {
   sp->ClearAllFragmentShaderReplacements();
   if (model == HairShadingModel::Physical) {
     sp->AddFragmentShaderReplacement("//VTK::Normal::Dec", true, physicalFragmentDec(), false);
-    sp->AddFragmentShaderReplacement("//VTK::Light::Impl", true, kPhysicalFragmentImpl, false);
+    sp->AddFragmentShaderReplacement("//VTK::Light::Impl", true,
+                                     std::string(kFibreFrame) + kPhysicalLighting + kTipFade, false);
   } else {
     sp->AddFragmentShaderReplacement("//VTK::Normal::Dec", true, kFragmentDec, false);
-    sp->AddFragmentShaderReplacement("//VTK::Light::Impl", true, kFragmentImpl, false);
+    sp->AddFragmentShaderReplacement("//VTK::Light::Impl", true,
+                                     std::string(kFibreFrame) + kKajiyaKayLighting + kTipFade, false);
   }
   installedModel = model;
 }

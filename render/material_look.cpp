@@ -46,8 +46,8 @@ vtkTexture* whiteTexture() {
 
 const TextureRef* textureCoordinateSource(const Material& material) {
   if (material.baseColorTexture.present()) return &material.baseColorTexture;
-  for (const TextureRef* t : material.textures())
-    if (t->present()) return t;
+  for (const TextureSlot& slot : material.textureSlots())
+    if (slot.ref->present()) return slot.ref;
   return nullptr;
 }
 

@@ -57,6 +57,18 @@ int vtkWrap(TextureWrap wrap) {
   return vtkTexture::Repeat;
 }
 
+vtkSmartPointer<vtkTexture> makeTexture(vtkImageData* image, const TextureSampler& sampler, bool srgb) {
+  auto texture = vtkSmartPointer<vtkTexture>::New();
+  texture->SetInputData(image);
+  texture->SetUseSRGBColorSpace(srgb);
+  texture->SetInterpolate(sampler.linear);
+  texture->SetMipmap(sampler.mipmaps);
+  // VTK has one wrap mode for both axes: the u axis decides.
+  texture->SetWrap(vtkWrap(sampler.wrapS));
+  texture->SetColorModeToDirectScalars();
+  return texture;
+}
+
 std::string keyOf(const TextureRef& ref, bool srgb) {
   const TextureSampler& s = ref.sampler;
   return std::to_string(ref.image) + (srgb ? "s" : "l") + std::to_string(static_cast<int>(s.wrapS)) +
@@ -99,16 +111,7 @@ vtkTexture* MaterialTextures::texture(const TextureRef& ref, bool srgb) {
   if (!image) return nullptr;
   const std::string key = keyOf(ref, srgb);
   if (auto found = textures_.find(key); found != textures_.end()) return found->second;
-  vtkNew<vtkTexture> texture;
-  texture->SetInputData(image);
-  texture->SetUseSRGBColorSpace(srgb);
-  texture->SetInterpolate(ref.sampler.linear);
-  texture->SetMipmap(ref.sampler.mipmaps);
-  // VTK has one wrap mode for both axes: the u axis decides.
-  texture->SetWrap(vtkWrap(ref.sampler.wrapS));
-  texture->SetColorModeToDirectScalars();
-  textures_[key] = texture;
-  return texture;
+  return textures_[key] = makeTexture(image, ref.sampler, srgb);
 }
 
 vtkTexture* MaterialTextures::colour(const TextureRef& ref) { return texture(ref, true); }
@@ -146,14 +149,7 @@ vtkTexture* MaterialTextures::occlusionRoughnessMetallic(const Material& materia
     out[3 * i + 1] = mrScalars ? component(mrScalars, i, 1, 255) : 255;  // factors scale these
     out[3 * i + 2] = mrScalars ? component(mrScalars, i, 2, 255) : 255;
   }
-  vtkNew<vtkTexture> texture;
-  texture->SetInputData(packed);
-  texture->SetInterpolate(base.sampler.linear);
-  texture->SetMipmap(base.sampler.mipmaps);
-  texture->SetWrap(vtkWrap(base.sampler.wrapS));
-  texture->SetColorModeToDirectScalars();
-  textures_[key] = texture;
-  return texture;
+  return textures_[key] = makeTexture(packed, base.sampler, false);
 }
 
 }  // namespace mq::render

@@ -130,7 +130,15 @@ MeshActor makeMeshActor(const Mesh& mesh, const std::vector<Material>& materials
   m.normals = newArray("Normals", 3, n);
   m.restNormals = mesh.normals;
   m.skin = std::make_shared<SkinSurfaceArrays>(mesh.positions, mesh.normals, mesh.triangles);
-  if (mesh.tangents.size() == 4 * n) {
+  // Tangents only matter to normal maps: carried each frame only then.
+  const auto drawnWithNormalMap = [&] {
+    for (const Submesh& range : mesh.drawRanges())
+      if (range.material >= 0 && range.material < static_cast<int>(materials.size()) &&
+          materials[range.material].normalTexture.present())
+        return true;
+    return false;
+  };
+  if (mesh.tangents.size() == 4 * n && drawnWithNormalMap()) {
     m.restTangents = mesh.tangents;
     m.tangents = newArray("Tangents", 3, n);
   }
@@ -181,7 +189,7 @@ bool copyInto(vtkFloatArray* target, const std::vector<float>& source) {
   return true;
 }
 
-// Bounds of the vertices near (or below) the floor y = 0: the planted feet.
+// Bounds of the vertices near (or below) the floor: the planted feet.
 // Invalid when nothing touches the floor (a jump: no contact shadow).
 Aabb footprintOf(const std::vector<MeshActor>& meshes, const Aabb& bounds, float floorHeight) {
   Aabb feet;
@@ -206,6 +214,7 @@ struct SceneView::Impl {
   LookMode lookMode = LookMode::Auto;
   SurfaceLook skinLook = SurfaceLook::skinPresetLook("skin1");
   float floorHeight = 0.0f;
+  std::vector<float> computedNormals, carriedTangents;  // updatePose's scratch, kept between frames
   SkeletonOverlay skeleton;
   Ground ground;
   Aabb bounds;
@@ -356,7 +365,8 @@ void SceneView::setSurfaceLook(const SurfaceLook& look) {
 void SceneView::updatePose(const PosedCharacter& posed) {
   Impl& m = *impl_;
   const auto& posedMeshes = posed.meshes();
-  std::vector<float> computedNormals, carriedTangents;
+  std::vector<float>& computedNormals = m.computedNormals;
+  std::vector<float>& carriedTangents = m.carriedTangents;
   for (size_t i = 0; i < m.meshes.size() && i < posedMeshes.size(); ++i) {
     MeshActor& mesh = m.meshes[i];
     if (!copyInto(mesh.positions, posedMeshes[i].positions)) continue;

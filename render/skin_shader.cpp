@@ -13,7 +13,6 @@
 #include "core/optics/skin_tone.h"
 #include "render/skin_lut_texture.h"
 #include "render/surface_mapper.h"
-#include "render/view_lights.h"
 
 namespace mq::render {
 namespace {
@@ -157,16 +156,7 @@ const char* kSkinLightEnd = R"(
       colour += C * (albedo * (scattered * (1.0 - 0.6 * behind) + translucent) + vec3(spec));
       rimLight += C * behind * smoothstep(-0.2, 0.4, dot(N, L));
     }
-    float rimShape = pow(1.0 - NdV, mqRimPower);
-    colour += mqRim * rimShape * rimLight * mix(vec3(1.0), albedo / max(albedo.r, 1e-3), 0.35);
-    gl_FragData[0] = vec4(pow(mqExposure * colour, vec3(1.0 / 2.2)), opacity);
-  }
 )";
-
-void setUniform3(vtkUniforms* u, const char* name, const glm::vec3& v) {
-  const float values[3] = {v.x, v.y, v.z};
-  u->SetUniform3f(name, values);
-}
 
 // A stable name for the look's scattering profile: one table per name.
 std::string skinKey(const SurfaceLook& look) {
@@ -203,7 +193,7 @@ void applySkinShading(vtkActor* actor, const SurfaceLook& look, vtkTexture* albe
   sp->AddFragmentShaderReplacement("//VTK::Normal::Dec", true,
                                    furrow + kFragmentDec + (albedoMap ? kFragmentAlbedoDec : ""), false);
   sp->AddFragmentShaderReplacement("//VTK::Light::Impl", true,
-                                   std::string(kSkinLightBegin) + (albedoMap ? kAlbedoMapped : kAlbedoConstant) + kSkinLightEnd, false);
+                                   std::string(kSkinLightBegin) + (albedoMap ? kAlbedoMapped : kAlbedoConstant) + kSkinLightEnd + kRimLightAndOutputGlsl, false);
   vtkUniforms* u = sp->GetFragmentCustomUniforms();
   u->RemoveAllUniforms();  // the wood's, when switching looks
   setUniform3(u, "mqAlbedo", look.albedo);
@@ -227,12 +217,7 @@ void applySkinShading(vtkActor* actor, const SurfaceLook& look, vtkTexture* albe
   const float lutSize[2] = {float(lutLayout.width), float(lutLayout.height)};
   u->SetUniform2f("mqLutSize", lutSize);
   u->SetUniformf("mqLutMaxCurvature", float(lutLayout.maxCurvature));
-  // Declared before the first frame so the first shader compiles with them.
-  const ViewLights none;
-  u->SetUniformi("mqLightCount", 0);
-  u->SetUniform3fv("mqLightDirVC", ViewLights::kMax, none.towardLightVC);
-  u->SetUniform3fv("mqLightColour", ViewLights::kMax, none.colour);
-  u->SetUniform3f("mqUpVC", none.upVC);
+  declareViewLightUniforms(u);
   u->SetUniformf("mqPixelAngle", 0.0f);
 }
 

@@ -17,6 +17,26 @@
 
 namespace mq::render {
 
+const char* const kRimLightAndOutputGlsl = R"(
+    float rimShape = pow(1.0 - NdV, mqRimPower);
+    colour += mqRim * rimShape * rimLight * mix(vec3(1.0), albedo / max(albedo.r, 1e-3), 0.35);
+    gl_FragData[0] = vec4(pow(mqExposure * colour, vec3(1.0 / 2.2)), opacity);
+  }
+)";
+
+void setUniform3(vtkUniforms* u, const char* name, const glm::vec3& v) {
+  const float values[3] = {v.x, v.y, v.z};
+  u->SetUniform3f(name, values);
+}
+
+void declareViewLightUniforms(vtkUniforms* u) {
+  const ViewLights none;
+  u->SetUniformi("mqLightCount", 0);
+  u->SetUniform3fv("mqLightDirVC", ViewLights::kMax, none.towardLightVC);
+  u->SetUniform3fv("mqLightColour", ViewLights::kMax, none.colour);
+  u->SetUniform3f("mqUpVC", none.upVC);
+}
+
 vtkStandardNewMacro(SurfaceMapper);
 
 float pixelAngle(vtkRenderer* renderer) {

@@ -11,17 +11,30 @@
 #include <utility>
 #include <vector>
 
+#include <glm/glm.hpp>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkSmartPointer.h>
 
 class vtkRenderer;
 class vtkTexture;
+class vtkUniforms;
 
 namespace mq::render {
 
 // Radians per pixel at the image's centre (vertical), for shaders that fade
 // detail by its size on screen; 0 under a parallel projection.
 float pixelAngle(vtkRenderer* renderer);
+
+// Shared by the surface shaders (the mannequin's wood, the skin).
+void setUniform3(vtkUniforms* u, const char* name, const glm::vec3& v);
+// Declares the uniforms the mapper feeds each frame (the view's lights), so
+// that the first shader compiles with them.
+void declareViewLightUniforms(vtkUniforms* u);
+// GLSL ending a surface shader's light replacement: the survey's rim term,
+// (1 - N.V)^k times the light from behind (rimLight), then exposure and
+// sRGB encoding of `colour`. Reads mqRim, mqRimPower, mqExposure, NdV,
+// albedo, rimLight and colour; closes the replacement's block.
+extern const char* const kRimLightAndOutputGlsl;
 
 class SurfaceMapper : public vtkOpenGLPolyDataMapper {
  public:

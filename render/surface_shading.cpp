@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include <vtkActor.h>
 #include <vtkDataObject.h>
@@ -13,7 +14,6 @@
 #include "render/skin_shader.h"
 #include "render/skin_surface_arrays.h"
 #include "render/surface_mapper.h"
-#include "render/view_lights.h"
 
 namespace mq::render {
 namespace {
@@ -87,16 +87,7 @@ const char* kSurfaceLight = R"(//VTK::Light::Impl
       colour += C * (albedo * diffuse * (1.0 - 0.6 * behind) + vec3(gloss));
       rimLight += C * behind * smoothstep(-0.2, 0.4, NdL);
     }
-    float rimShape = pow(1.0 - NdV, mqRimPower);
-    colour += mqRim * rimShape * rimLight * mix(vec3(1.0), albedo / max(albedo.r, 1e-3), 0.35);
-    gl_FragData[0] = vec4(pow(mqExposure * colour, vec3(1.0 / 2.2)), opacity);
-  }
 )";
-
-void setUniform3(vtkUniforms* u, const char* name, const glm::vec3& v) {
-  const float values[3] = {v.x, v.y, v.z};
-  u->SetUniform3f(name, values);
-}
 
 }  // namespace
 
@@ -160,7 +151,7 @@ void applySurfaceLook(vtkActor* actor, const SurfaceLook& look, vtkTexture* albe
   sp->AddVertexShaderReplacement("//VTK::Normal::Dec", true, kVertexDec, false);
   sp->AddVertexShaderReplacement("//VTK::Normal::Impl", true, kVertexImpl, false);
   sp->AddFragmentShaderReplacement("//VTK::Normal::Dec", true, kFragmentDec, false);
-  sp->AddFragmentShaderReplacement("//VTK::Light::Impl", true, kSurfaceLight, false);
+  sp->AddFragmentShaderReplacement("//VTK::Light::Impl", true, std::string(kSurfaceLight) + kRimLightAndOutputGlsl, false);
   vtkUniforms* u = sp->GetFragmentCustomUniforms();
   setUniform3(u, "mqAlbedo", look.albedo);
   setUniform3(u, "mqScatterColour", look.scatterColour);
@@ -175,12 +166,7 @@ void applySurfaceLook(vtkActor* actor, const SurfaceLook& look, vtkTexture* albe
   u->SetUniformf("mqExposure", look.exposure);
   u->SetUniformf("mqGrainStrength", look.grain);
   u->SetUniformf("mqGrainScale", look.grainScale);
-  // Declared before the first frame so the first shader compiles with them.
-  const ViewLights none;
-  u->SetUniformi("mqLightCount", 0);
-  u->SetUniform3fv("mqLightDirVC", ViewLights::kMax, none.towardLightVC);
-  u->SetUniform3fv("mqLightColour", ViewLights::kMax, none.colour);
-  u->SetUniform3f("mqUpVC", none.upVC);
+  declareViewLightUniforms(u);
 }
 
 }  // namespace mq::render

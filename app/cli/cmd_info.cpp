@@ -14,12 +14,9 @@ namespace {
 // A material's factors and the images its textures sample.
 nlohmann::json describe(const Material& m, const Character& c) {
   nlohmann::json textures = nlohmann::json::object();
-  const std::pair<const char*, const TextureRef*> maps[] = {
-      {"base_color", &m.baseColorTexture}, {"metallic_roughness", &m.metallicRoughnessTexture},
-      {"normal", &m.normalTexture},         {"occlusion", &m.occlusionTexture},
-      {"emissive", &m.emissiveTexture},     {"specular", &m.specularTexture}};
-  for (const auto& [role, ref] : maps)
-    if (ref->present() && ref->image < static_cast<int>(c.images.size())) textures[role] = c.images[ref->image].name;
+  for (const TextureSlot& slot : m.textureSlots())
+    if (slot.ref->present() && slot.ref->image < static_cast<int>(c.images.size()))
+      textures[slot.key] = c.images[slot.ref->image].name;
   const glm::vec4& base = m.baseColorFactor;
   return {{"name", m.name},
           {"base_color", {base.x, base.y, base.z, base.w}},

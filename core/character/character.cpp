@@ -121,8 +121,8 @@ void Character::validate() const {
       if (j >= s.jointBones.size()) throw std::runtime_error(where + "vertex joint index out of range");
   }
   for (const Material& material : materials)
-    for (const TextureRef* t : material.textures())
-      if (t->image >= static_cast<int>(images.size()))
+    for (const TextureSlot& slot : material.textureSlots())
+      if (slot.ref->image >= static_cast<int>(images.size()))
         throw std::runtime_error("material '" + material.name + "': texture refers to a missing image");
   for (const Clip& c : clips) {
     try {

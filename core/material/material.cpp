@@ -15,14 +15,18 @@ glm::vec2 TextureTransform::apply(const glm::vec2& uv) const {
 }
 
 bool Material::textured() const {
-  for (const TextureRef* t : textures())
-    if (t->present()) return true;
+  for (const TextureSlot& slot : textureSlots())
+    if (slot.ref->present()) return true;
   return false;
 }
 
-std::vector<const TextureRef*> Material::textures() const {
-  return {&baseColorTexture, &metallicRoughnessTexture, &normalTexture, &occlusionTexture, &emissiveTexture,
-          &specularTexture};
+std::vector<TextureSlot> Material::textureSlots() const {
+  return {{"base_color", "base colour", &baseColorTexture},
+          {"metallic_roughness", "metallic-roughness", &metallicRoughnessTexture},
+          {"normal", "normal", &normalTexture},
+          {"occlusion", "occlusion", &occlusionTexture},
+          {"emissive", "emissive", &emissiveTexture},
+          {"specular", "specular", &specularTexture}};
 }
 
 const char* alphaModeName(AlphaMode mode) {

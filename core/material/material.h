@@ -48,6 +48,14 @@ struct TextureRef {
 
 enum class AlphaMode : uint8_t { Opaque, Mask, Blend };
 
+// One texture of a material with its role: `key` as in JSON output
+// ("base_color"), `label` for people ("base colour").
+struct TextureSlot {
+  const char* key;
+  const char* label;
+  const TextureRef* ref;
+};
+
 struct Material {
   std::string name;
   glm::vec4 baseColorFactor{1.0f};  // linear RGBA
@@ -69,8 +77,8 @@ struct Material {
   bool skin = false;  // shaded by the skin model, base colour as albedo
 
   bool textured() const;
-  // Every texture reference, for code that walks them all.
-  std::vector<const TextureRef*> textures() const;
+  // Every texture reference with its role, for code that walks them all.
+  std::vector<TextureSlot> textureSlots() const;
 };
 
 const char* alphaModeName(AlphaMode mode);

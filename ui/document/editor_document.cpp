@@ -161,29 +161,23 @@ void EditorDocument::addClip(Clip clip) {
 // --- selection and view -------------------------------------------------------------
 
 void EditorDocument::selectBone(int bone) {
-  if (bone >= character_.skeleton.boneCount()) bone = -1;
-  if (bone == selectedBone_ && selectedMesh_ < 0 && selectedMaterial_ < 0) return;
-  selectedBone_ = bone;
-  selectedMesh_ = -1;
-  selectedMaterial_ = -1;
-  emit selectionChanged();
+  setSelection(bone < character_.skeleton.boneCount() ? bone : -1, -1, -1);
 }
 
 void EditorDocument::selectMesh(int mesh) {
-  if (mesh >= static_cast<int>(character_.meshes.size())) mesh = -1;
-  if (mesh == selectedMesh_ && selectedBone_ < 0 && selectedMaterial_ < 0) return;
-  selectedMesh_ = mesh;
-  selectedBone_ = -1;
-  selectedMaterial_ = -1;
-  emit selectionChanged();
+  setSelection(-1, mesh < static_cast<int>(character_.meshes.size()) ? mesh : -1, -1);
 }
 
 void EditorDocument::selectMaterial(int material) {
-  if (material >= static_cast<int>(character_.materials.size())) material = -1;
-  if (material == selectedMaterial_ && selectedBone_ < 0 && selectedMesh_ < 0) return;
+  setSelection(-1, -1, material < static_cast<int>(character_.materials.size()) ? material : -1);
+}
+
+// At most one of the three is selected (the others -1).
+void EditorDocument::setSelection(int bone, int mesh, int material) {
+  if (bone == selectedBone_ && mesh == selectedMesh_ && material == selectedMaterial_) return;
+  selectedBone_ = bone;
+  selectedMesh_ = mesh;
   selectedMaterial_ = material;
-  selectedBone_ = -1;
-  selectedMesh_ = -1;
   emit selectionChanged();
 }
 

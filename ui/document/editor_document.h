@@ -125,6 +125,7 @@ class EditorDocument : public QObject {
 
  private:
   void evaluatePose();
+  void setSelection(int bone, int mesh, int material);
 
   Character character_;
   SceneDocument scene_;

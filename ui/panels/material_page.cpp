@@ -47,13 +47,9 @@ QPixmap thumbnailOf(const Material& m, const Character& character) {
 
 QString textureList(const Material& m, const Character& character) {
   QStringList lines;
-  const std::pair<const char*, const TextureRef*> maps[] = {
-      {"base colour", &m.baseColorTexture}, {"metallic-roughness", &m.metallicRoughnessTexture},
-      {"normal", &m.normalTexture},          {"occlusion", &m.occlusionTexture},
-      {"emissive", &m.emissiveTexture},      {"specular", &m.specularTexture}};
-  for (const auto& [role, ref] : maps)
-    if (ref->present() && ref->image < static_cast<int>(character.images.size()))
-      lines << QObject::tr("%1: %2").arg(role, QString::fromStdString(character.images[ref->image].name));
+  for (const TextureSlot& slot : m.textureSlots())
+    if (slot.ref->present() && slot.ref->image < static_cast<int>(character.images.size()))
+      lines << QObject::tr("%1: %2").arg(slot.label, QString::fromStdString(character.images[slot.ref->image].name));
   return lines.isEmpty() ? QObject::tr("none") : lines.join("\n");
 }
 
