@@ -37,7 +37,9 @@ json toJson(const SkinReport& r) {
                           {"half_area", measured(p.halfArea)},
                           {"twist_section", measured(p.twistSection)},
                           {"local_volume", measured(p.localVolume)},
-                          {"intersections", measured(p.intersections)}});
+                          {"intersections", measured(p.intersections)},
+                          {"body_deviation_rms_mm", p.deviationRms < 0.0 ? json() : measured(1e3 * p.deviationRms)},
+                          {"body_deviation_mean_mm", p.deviationRms < 0.0 ? json() : json(std::round(1e7 * p.deviationMean) / 1e4)}});
   j["clips"] = json::array();
   for (const ClipMeasure& c : r.clips)
     j["clips"].push_back({{"clip", c.name},
@@ -63,12 +65,12 @@ void printTable(const std::string& file, const SkinReport& r, std::ostream& out)
       << " triangles (welded); rest pose error " << std::scientific << std::setprecision(1) << r.restError
       << std::defaultfloat << " of the bounding box\n";
   if (!r.poses.empty()) {
-    out << "  pose               M1 thick  M1 half  M2 twist  M3 volume  M4 pairs\n";
+    out << "  pose               M1 thick  M1 half  M2 twist  M3 volume  M4 pairs  M6 rms mm\n";
     for (const PoseMeasure& p : r.poses)
       out << "  " << std::left << std::setw(18) << p.name << std::right << std::setw(9) << cell(p.thickness)
           << std::setw(9) << cell(p.halfArea) << std::setw(10) << cell(p.twistSection) << std::setw(11)
           << cell(p.localVolume) << std::setw(10) << (p.intersections < 0 ? "-" : std::to_string(p.intersections))
-          << "\n";
+          << std::setw(11) << cell(p.deviationRms < 0.0 ? -1.0 : 1e3 * p.deviationRms, 1) << "\n";
   }
   for (const ClipMeasure& c : r.clips)
     out << "  clip '" << c.name << "', " << c.frames << " frames: M4 worst "

@@ -7,6 +7,7 @@
 #include "core/scene/open_scene.h"
 #include "core/skinning/section_cones.h"
 #include "core/util/error.h"
+#include "core/character/posed_character.h"
 
 namespace mq::cli {
 
@@ -70,7 +71,7 @@ void applySkinningOption(const Args& args, LoadedScene& scene) {
   if (!method) throw Error("--skinning: unknown method '" + name + "' (expected " + skinningMethodChoices() + ")");
   scene.character.skinning = *method;
   scene.document.skinning = *method;
-  if (*method == SkinningMethod::Cones) bindSectionCones(scene.character);
+  prepareSkinning(scene.character);
 }
 
 void applyScaleOption(const Args& args, LoadedScene& scene) {
@@ -79,7 +80,7 @@ void applyScaleOption(const Args& args, LoadedScene& scene) {
   if (!(factor > 0.0) || !std::isfinite(factor) || factor > 1e4) throw Error("--scale expects a positive number");
   scene.character.scaleUniformly(static_cast<float>(factor));
   scene.document.scale *= static_cast<float>(factor);
-  if (scene.character.skinning == SkinningMethod::Cones) bindSectionCones(scene.character);
+  prepareSkinning(scene.character);
 }
 
 }  // namespace mq::cli

@@ -1,5 +1,6 @@
 #include "core/character/character.h"
 
+#include "core/character/implicit_body.h"
 #include "core/mesh/tangents.h"
 
 #include <cmath>
@@ -59,6 +60,12 @@ namespace {
 // linear part stays, the translation scales.
 void scaleTranslation(glm::mat4& m, float factor) { m[3] = glm::vec4(glm::vec3(m[3]) * factor, m[3].w); }
 
+std::shared_ptr<const ImplicitBody> scaledBody(const ImplicitBody& body, float factor) {
+  auto scaled = std::make_shared<ImplicitBody>(body);
+  scaled->scale(factor);
+  return scaled;
+}
+
 }  // namespace
 
 void Character::scaleUniformly(float factor) {
@@ -69,6 +76,7 @@ void Character::scaleUniformly(float factor) {
     scaleTranslation(mesh.boneFromMesh, factor);
     for (glm::mat4& m : mesh.skin.inverseBind) scaleTranslation(m, factor);
     mesh.sectionCones.reset();
+    if (mesh.implicitBody) mesh.implicitBody = scaledBody(*mesh.implicitBody, factor);
   }
   for (int b = 0; b < skeleton.boneCount(); ++b) {
     Bone& bone = skeleton.bone(b);

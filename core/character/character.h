@@ -38,7 +38,8 @@ struct Character {
   int findClip(const std::string& nameOrIndex) const;
   // Scales the whole character by `factor` about the origin (units: a file
   // in centimetres takes 0.01): positions, morph offsets, bone and clip
-  // translations, bind matrices. Bind-time data (section cones) is dropped.
+  // translations, bind matrices. Section cones are dropped; an implicit body
+  // is scaled with the rest.
   void scaleUniformly(float factor);
   // Normal maps need tangents: a mesh drawn with one and without tangents
   // gets them from the uv set the map samples.

@@ -474,10 +474,11 @@ Character makeDefaultMannequin() {
   character.name = "Mannequin";
   character.sourcePath = "default";
   character.skeleton = buildSkeleton(specs);
-  const ImplicitBody body = BodyBuilder(character.skeleton, specs).build();
-  Mesh mesh = polygonise(body);
-  bindSkin(mesh, body, character.skeleton);
+  auto body = std::make_shared<const ImplicitBody>(BodyBuilder(character.skeleton, specs).build());
+  Mesh mesh = polygonise(*body);
+  bindSkin(mesh, *body, character.skeleton);
   tagScalp(mesh, character.skeleton);
+  mesh.implicitBody = body;
   character.meshes.push_back(std::move(mesh));
   character.clips.push_back(makeWalk(character.skeleton));
   character.clips.push_back(makeArmRaise(character.skeleton));

@@ -66,6 +66,20 @@ glm::mat3 frameAlong(const glm::vec3& axis, glm::vec3 wide) {
   return glm::transpose(glm::mat3(x, y, z));  // rows: world -> local
 }
 
+// The box around `box` rotated and translated (Arvo: each output axis sums
+// the extremes of the rotated input axes).
+Aabb movedBox(const Aabb& box, const glm::mat3& rotation, const glm::vec3& translation) {
+  Aabb out;
+  out.min = out.max = translation;
+  for (int axis = 0; axis < 3; ++axis)
+    for (int k = 0; k < 3; ++k) {
+      const float a = rotation[k][axis] * box.min[k], b = rotation[k][axis] * box.max[k];
+      out.min[axis] += std::min(a, b);
+      out.max[axis] += std::max(a, b);
+    }
+  return out;
+}
+
 }  // namespace
 
 ImplicitPrimitive ImplicitPrimitive::roundCone(const glm::vec3& a, const glm::vec3& b, float r0, float r1,
@@ -147,14 +161,52 @@ float ImplicitBody::valueFrom(const glm::vec3& p, const int* candidates, size_t 
   return v;
 }
 
-float ImplicitBody::value(const glm::vec3& p) const {
-  static thread_local std::vector<int> near;
-  near.clear();
+void ImplicitBody::candidatesAt(const glm::vec3& p, std::vector<int>& out) const {
+  out.clear();
   for (size_t i = 0; i < primitives_.size(); ++i) {
     const Aabb& s = primitives_[i].support;
-    if (glm::all(glm::lessThanEqual(s.min, p)) && glm::all(glm::lessThanEqual(p, s.max))) near.push_back(int(i));
+    if (glm::all(glm::lessThanEqual(s.min, p)) && glm::all(glm::lessThanEqual(p, s.max))) out.push_back(int(i));
   }
+}
+
+float ImplicitBody::value(const glm::vec3& p) const {
+  static thread_local std::vector<int> near;
+  candidatesAt(p, near);
   return valueFrom(p, near.data(), near.size());
+}
+
+ImplicitBody ImplicitBody::posed(const std::vector<glm::mat4>& worldFromBind) const {
+  ImplicitBody out;
+  out.referenceBlend_ = referenceBlend_;
+  out.primitives_ = primitives_;
+  for (ImplicitPrimitive& prim : out.primitives_) {
+    if (prim.bone < 0 || prim.bone >= static_cast<int>(worldFromBind.size())) continue;
+    const glm::mat4& m = worldFromBind[prim.bone];
+    const glm::mat3 rotation(glm::normalize(glm::vec3(m[0])), glm::normalize(glm::vec3(m[1])),
+                             glm::normalize(glm::vec3(m[2])));
+    const glm::vec3 translation(m[3]);
+    prim.origin = rotation * prim.origin + translation;
+    prim.localFromWorld = prim.localFromWorld * glm::transpose(rotation);
+    prim.extent = movedBox(prim.extent, rotation, translation);
+    prim.support = movedBox(prim.support, rotation, translation);
+  }
+  return out;
+}
+
+void ImplicitBody::scale(float factor) {
+  for (ImplicitPrimitive& prim : primitives_) {
+    prim.origin *= factor;
+    prim.length *= factor;
+    prim.radius0 *= factor;
+    prim.radius1 *= factor;
+    prim.radii *= factor;
+    prim.blend *= factor;
+    prim.extent = {prim.extent.min * factor, prim.extent.max * factor};
+    prim.support = {prim.support.min * factor, prim.support.max * factor};
+  }
+  referenceBlend_ *= factor;
+  groundHeight_ *= factor;
+  groundRounding_ *= factor;
 }
 
 glm::vec3 ImplicitBody::normal(const glm::vec3& p, float h) const {

@@ -91,6 +91,12 @@ const SectionCones& PosedCharacter::conesOf(size_t meshIndex, const Mesh& mesh, 
   return *ownCones_[meshIndex];
 }
 
+void prepareSkinning(Character& character) {
+  if (character.skinning != SkinningMethod::Cones) return;
+  for (Mesh& mesh : character.meshes)
+    if (!mesh.skin.empty() && !mesh.sectionCones) mesh.sectionCones = bindSectionCones(mesh, character.skeleton);
+}
+
 void PosedCharacter::evaluate(const Character& character, const Pose& pose,
                               const std::vector<std::vector<float>>& morphWeights, ThreadPool* pool) {
   character.skeleton.worldTransforms(pose, worldFromBone_);

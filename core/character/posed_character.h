@@ -22,6 +22,10 @@ struct PosedMesh {
 std::vector<float> concatenatedPositions(const std::vector<PosedMesh>& meshes);
 std::vector<uint32_t> concatenatedTriangles(const Character& character);
 
+// Binds ahead of time what the character's skinning method needs (section
+// cones), so that posing it does not.
+void prepareSkinning(Character& character);
+
 class PosedCharacter {
  public:
   // Poses `character` with local bone transforms `pose` and per-mesh morph

@@ -13,6 +13,7 @@
 namespace mq {
 
 struct SectionCones;
+class ImplicitBody;
 
 struct MorphTarget {
   std::string name;
@@ -60,6 +61,10 @@ struct Mesh {
   SkinBinding skin;
   // Bind-time data of the cone-corrected skinning (built on demand).
   std::shared_ptr<const SectionCones> sectionCones;
+  // The implicit body the skin was polygonised from, in bind space (the
+  // built-in mannequin's): the ground truth of the skin metric M6. Null for
+  // other meshes.
+  std::shared_ptr<const ImplicitBody> implicitBody;
   // Unskinned meshes: world = worldFromBone[attachBone] * boneFromMesh, or
   // boneFromMesh alone when attachBone is -1.
   int attachBone = -1;

@@ -5,6 +5,7 @@
 #include "core/io/character_import.h"
 #include "core/skinning/section_cones.h"
 #include "core/util/error.h"
+#include "core/character/posed_character.h"
 
 namespace mq {
 
@@ -53,7 +54,7 @@ LoadedScene resolveSceneDocument(const SceneDocument& document, const std::strin
   }
   scene.edits = poseEditsFromNames(document.poseRotations, scene.character.skeleton);
   scene.character.skinning = document.skinning;
-  if (scene.character.skinning == SkinningMethod::Cones) bindSectionCones(scene.character);
+  prepareSkinning(scene.character);
   scene.fileMaterials = scene.character.materials;
   applyMaterialOverrides(document.materials, scene.character);
   return scene;

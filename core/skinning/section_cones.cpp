@@ -227,15 +227,9 @@ std::shared_ptr<const SectionCones> bindSectionCones(const Mesh& mesh, const Ske
   return out;
 }
 
-void bindSectionCones(Character& character) {
-  for (Mesh& mesh : character.meshes)
-    if (!mesh.skin.empty() && !mesh.sectionCones) mesh.sectionCones = bindSectionCones(mesh, character.skeleton);
-}
-
 namespace {
 
 glm::dvec3 transformPoint(const glm::dmat4& m, const glm::dvec3& p) { return glm::dvec3(m * glm::dvec4(p, 1.0)); }
-glm::dvec3 transformVector(const glm::dmat4& m, const glm::dvec3& v) { return glm::dmat3(m) * v; }
 
 struct JointFrames {
   std::vector<glm::dmat4> worldFromMesh, meshFromWorld;

@@ -35,7 +35,6 @@ namespace mq {
 
 class Skeleton;
 class ThreadPool;
-struct Character;
 
 struct SectionCone {
   static constexpr float kBaseNear = 0.15f, kBaseFar = 0.85f;  // base positions along the bone
@@ -78,8 +77,6 @@ std::shared_ptr<const SectionCones> bindSectionCones(const Mesh& mesh, const Ske
 // The cones alone, one per skin joint (the torso's too, marked not limb).
 std::vector<SectionCone> fitSectionCones(const Mesh& mesh, const Skeleton& skeleton);
 
-// Binds the cones of every skinned mesh of the character that has none yet.
-void bindSectionCones(Character& character);
 
 // Applies the creases to dual-quaternion-skinned positions (and recomputes
 // the moved vertices' normals, if given) in place; the skinning matrices come from worldFromBone and the skin's

@@ -1,7 +1,9 @@
 #include "core/skinning/skin_metrics.h"
 
+#include <algorithm>
 #include <cmath>
 
+#include "core/character/implicit_body.h"
 #include "core/mesh/mesh_checks.h"
 #include "core/mesh/plane_section.h"
 
@@ -105,6 +107,28 @@ double localVolumeRatio(const std::vector<float>& rest, const std::vector<float>
 
 size_t intersectingPairs(const std::vector<float>& positions, const std::vector<uint32_t>& triangles) {
   return selfIntersections(positions, triangles).size();
+}
+
+BodyDeviation implicitBodyDeviation(const ImplicitBody& posedBody, const std::vector<float>& rest,
+                                    const std::vector<float>& posed, const glm::dvec3& jointRest, double radius) {
+  BodyDeviation out;
+  double sum = 0.0, squares = 0.0;
+  size_t beyond = 0;
+  for (size_t v = 0; 3 * v + 2 < rest.size() && 3 * v + 2 < posed.size(); ++v) {
+    const glm::dvec3 r(rest[3 * v], rest[3 * v + 1], rest[3 * v + 2]);
+    if (glm::distance(r, jointRest) > radius) continue;
+    const double d = posedBody.value({posed[3 * v], posed[3 * v + 1], posed[3 * v + 2]});
+    ++out.vertices;
+    sum += d;
+    squares += d * d;
+    out.largest = std::max(out.largest, std::abs(d));
+    beyond += std::abs(d) > 0.002;
+  }
+  if (out.vertices == 0) return out;
+  out.mean = sum / double(out.vertices);
+  out.rms = std::sqrt(squares / double(out.vertices));
+  out.beyond2mm = double(beyond) / double(out.vertices);
+  return out;
 }
 
 }  // namespace mq

@@ -1,6 +1,6 @@
 #pragma once
 // Measures of how well a skinning keeps the body's shape, as defined in the
-// skinning research brief (M1-M4): each compares the posed skin with the rest
+// skinning research brief (M1-M4, M6): each compares the posed skin with the rest
 // skin, on the character's meshes welded into one closed body (vertices with
 // bit-equal rest positions merged, as exporters split them at UV seams).
 
@@ -14,6 +14,8 @@
 #include "core/mesh/position_weld.h"
 
 namespace mq {
+
+class ImplicitBody;
 
 class MetricBody {
  public:
@@ -65,5 +67,19 @@ double localVolumeRatio(const std::vector<float>& rest, const std::vector<float>
 // M4: triangle pairs that cross each other (CGAL, exact predicates); 0 for a
 // body that is not 2-manifold is never returned: that throws.
 size_t intersectingPairs(const std::vector<float>& positions, const std::vector<uint32_t>& triangles);
+
+// M6, for a skin polygonised from an implicit body (the mannequin): the posed
+// body's field (each primitive moved by its bone, about a signed distance,
+// negative inside) at the posed vertices whose rest position lies within
+// `radius` of `jointRest`. In metres; vertices 0 when none is that close.
+struct BodyDeviation {
+  size_t vertices = 0;
+  double mean = 0.0;        // negative: sunk into the body
+  double rms = 0.0;
+  double largest = 0.0;     // largest |deviation|
+  double beyond2mm = 0.0;   // share of the vertices more than 2 mm inside or outside
+};
+BodyDeviation implicitBodyDeviation(const ImplicitBody& posedBody, const std::vector<float>& rest,
+                                    const std::vector<float>& posed, const glm::dvec3& jointRest, double radius);
 
 }  // namespace mq

@@ -1,10 +1,12 @@
 #include "core/skinning/skin_report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
 #include <glm/gtc/quaternion.hpp>
 
+#include "core/character/implicit_body.h"
 #include "core/mesh/mesh_checks.h"
 #include "core/skeleton/humanoid_roles.h"
 #include "core/skinning/skin_metrics.h"
@@ -61,8 +63,35 @@ class Measurer {
     posed_.evaluate(character_, clip, time, nullptr, pool_);
     return body_.weld(posed_.meshes());
   }
+  // M6 on the meshes built from an implicit body, from the last evaluation;
+  // rms -1 when the character has no such mesh.
+  BodyDeviation implicitDeviation(const glm::dvec3& jointRest, double radius) const {
+    BodyDeviation all;
+    double sum = 0.0, squares = 0.0, beyond = 0.0;
+    for (size_t i = 0; i < character_.meshes.size(); ++i) {
+      const Mesh& mesh = character_.meshes[i];
+      if (!mesh.implicitBody) continue;
+      const std::vector<glm::mat4> worldFromBind = worldFromBindOf(posed_.worldFromBone());
+      const BodyDeviation d = implicitBodyDeviation(mesh.implicitBody->posed(worldFromBind), mesh.positions,
+                                                    posed_.meshes()[i].positions, jointRest, radius);
+      all.vertices += d.vertices;
+      sum += d.mean * double(d.vertices);
+      squares += d.rms * d.rms * double(d.vertices);
+      beyond += d.beyond2mm * double(d.vertices);
+      all.largest = std::max(all.largest, d.largest);
+    }
+    if (all.vertices == 0) return {0, 0.0, -1.0, 0.0, 0.0};
+    const double n = double(all.vertices);
+    return {all.vertices, sum / n, std::sqrt(squares / n), all.largest, beyond / n};
+  }
   long intersections(const std::vector<float>& positions) const {
     return options_.intersections ? long(intersectingPairs(positions, body_.triangles())) : -1;
+  }
+  // Each bone's transform from the rest (bind) pose to `world`.
+  std::vector<glm::mat4> worldFromBindOf(const std::vector<glm::mat4>& world) const {
+    std::vector<glm::mat4> out(world.size());
+    for (size_t b = 0; b < world.size() && b < restWorld_.size(); ++b) out[b] = world[b] * glm::inverse(restWorld_[b]);
+    return out;
   }
   double volumeRatio(const std::vector<float>& positions) const {
     return restVolume_ != 0.0 ? signedVolume(positions, body_.triangles()) / restVolume_ : 1.0;
@@ -145,6 +174,9 @@ void measureHingePoses(Measurer& m, const Character& character, const HumanoidBo
       }
       pm.localVolume = localVolumeRatio(m.rest(), posed, m.body().triangles(), joint, headOf(world, h.bone),
                                         h.radius * scale);
+      const BodyDeviation deviation = m.implicitDeviation(joint, h.radius * scale);
+      pm.deviationRms = deviation.rms;
+      pm.deviationMean = deviation.mean;
       pm.intersections = m.intersections(posed);
       out.push_back(pm);
     }

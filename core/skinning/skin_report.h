@@ -21,6 +21,8 @@ struct PoseMeasure {
   double twistSection = -1.0; // M2 least section ratio in the twist band
   double localVolume = -1.0;  // M3
   long intersections = -1;    // M4 pairs (-1: not measured)
+  double deviationRms = -1.0; // M6 RMS distance to the posed implicit body, metres (-1: not measured)
+  double deviationMean = 0.0; // M6 mean (negative: sunk in)
 };
 
 struct ClipMeasure {

@@ -81,3 +81,17 @@ report("${CESIUM}" cones cesium --no-clips)
 expect_compare("${cesium}" CesiumMan "elbow 120" thickness ">=" 0.95)
 expect_compare("${cesium}" CesiumMan "forearm twist 180" twist_section ">=" 0.9)
 expect_compare("${cesium}" CesiumMan "knee 120" intersections "<=" 27)
+
+# M6: the skin's distance to the mannequin's posed implicit body. LBS sinks
+# the elbow into it (the brief's baseline, 12.7 mm); DQS keeps it closer.
+expect_compare("${lbs}" lbs "elbow 120" body_deviation_rms_mm ">=" 10.0)
+expect_compare("${dqs}" dqs "elbow 120" body_deviation_rms_mm "<=" 11.5)
+pose_value("${lbs}" "elbow 120" body_deviation_mean_mm lbsMean)
+if(lbsMean GREATER -5.0)
+  message(FATAL_ERROR "lbs elbow 120: the skin should sink into the body (mean ${lbsMean} mm)")
+endif()
+# An imported skin has no implicit body: M6 is not measured.
+pose_value("${cesium}" "elbow 120" body_deviation_rms_mm cesiumDeviation)
+if(NOT (cesiumDeviation STREQUAL "" OR cesiumDeviation STREQUAL "null"))  # JSON null
+  message(FATAL_ERROR "CesiumMan has no implicit body, yet M6 = ${cesiumDeviation}")
+endif()

@@ -99,7 +99,7 @@ void BM_SkinMannequin(benchmark::State& state) {
   static const mq::Character mannequin = mq::makeDefaultMannequin();
   mq::Character character = mannequin;
   character.skinning = mq::SkinningMethod(state.range(0));
-  if (character.skinning == mq::SkinningMethod::Cones) mq::bindSectionCones(character);
+  mq::prepareSkinning(character);
   const int walk = character.findClip("walk");
   const mq::Pose pose = mq::samplePose(character, walk, 0.25f);
   mq::PosedCharacter posed;

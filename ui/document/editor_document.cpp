@@ -7,6 +7,7 @@
 
 #include "core/skinning/section_cones.h"
 #include "core/util/thread_pool.h"
+#include "core/character/posed_character.h"
 
 namespace mq::ui {
 
@@ -100,7 +101,7 @@ void EditorDocument::setSkinning(SkinningMethod method) {
   if (method == character_.skinning) return;
   character_.skinning = method;
   scene_.skinning = method;
-  if (method == SkinningMethod::Cones) bindSectionCones(character_);
+  prepareSkinning(character_);
   evaluatePose();
   emit poseChanged();
   emit documentChanged();
