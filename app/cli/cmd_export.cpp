@@ -38,7 +38,7 @@ int exportSequence(const LoadedScene& scene, int clip, double fps, const std::st
 
 int runExport(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--out", "--clip", "--fps", "--skinning", "--scale"});
+  args.allowOnly({"--out", "--clip", "--fps", "--skinning", "--helper-bones", "--scale"});
   if (args.positional().size() != 1) throw Error("export needs exactly one FILE");
   const std::string out = args.option("--out");
   if (out.empty() || !isMeshExportPath(out)) throw Error("export needs --out OUT.obj, .ply, .gltf or .glb");
@@ -65,7 +65,7 @@ int runExport(const std::vector<std::string>& argv) {
   return exportSequence(scene, clip, fps, out);
 }
 
-static Registration reg({"export", "FILE --out OUT.obj|.ply|.gltf|.glb [--clip NAME|INDEX --fps F] [--skinning lbs|dqs|cones] [--scale S]",
+static Registration reg({"export", "FILE --out OUT.obj|.ply|.gltf|.glb [--clip NAME|INDEX --fps F] [--skinning lbs|dqs|cones] [--helper-bones] [--scale S]",
                          "write the rest pose, or every frame of a clip (OUT_0000.obj ...), as meshes", runExport});
 
 }  // namespace

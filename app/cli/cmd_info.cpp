@@ -49,6 +49,7 @@ nlohmann::json describe(const Character& c) {
   j["materials"] = nlohmann::json::array();
   for (const Material& m : c.materials) j["materials"].push_back(describe(m, c));
   j["skinning"] = skinningMethodName(c.skinning);
+  j["helper_bones"] = c.helperBones.size();
   j["vertices"] = c.vertexCount();
   j["triangles"] = c.triangleCount();
   j["max_influences"] = c.maxInfluences();

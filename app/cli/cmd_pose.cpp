@@ -43,7 +43,7 @@ void writeJoints(const Skeleton& skeleton, const std::vector<glm::mat4>& worldFr
 
 int runPose(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--time", "--clip", "--motion", "--map", "--out", "--skinning", "--joints-out", "--scale"});
+  args.allowOnly({"--time", "--clip", "--motion", "--map", "--out", "--skinning", "--helper-bones", "--joints-out", "--scale"});
   if (args.positional().size() != 1) throw Error("pose needs exactly one FILE");
   const std::string out = args.option("--out");
   if (out.empty()) throw Error("pose needs --out OUT.obj, .ply, .gltf or .glb");
@@ -64,12 +64,16 @@ int runPose(const std::vector<std::string>& argv) {
   std::cout << "wrote " << out << ": " << scene.character.vertexCount() << " vertices, "
             << scene.character.triangleCount() << " triangles, clip "
             << (clip >= 0 ? "'" + scene.character.clips[clip].name + "'" : std::string("none (rest pose)"))
-            << " at t = " << time << " s, " << skinningMethodName(scene.character.skinning) << " skinning\n";
+            << " at t = " << time << " s, " << skinningMethodName(scene.character.skinning) << " skinning"
+            << (scene.character.helperBones.empty()
+                    ? ""
+                    : " with " + std::to_string(scene.character.helperBones.size()) + " helper bones")
+            << "\n";
   return 0;
 }
 
 static Registration reg({"pose", "FILE --time T [--clip NAME|INDEX|rest] [--motion BVH [--map MAP]] --out OUT.obj|.ply|.gltf|.glb\n"
-                         "         [--skinning lbs|dqs|cones] [--scale S] [--joints-out JOINTS.json]",
+                         "         [--skinning lbs|dqs|cones] [--helper-bones] [--scale S] [--joints-out JOINTS.json]",
                          "write the posed mesh at time T in world space (OBJ, PLY, glTF or GLB)", runPose});
 
 }  // namespace

@@ -129,7 +129,7 @@ json phaseProfile(const RunResult& r, const SceneCloth& cloth, int frames) {
 
 int runSimulate(const std::vector<std::string>& argv) {
   const cli::Args args(argv);
-  args.allowOnly({"--frames", "--fps", "--stats-json", "--export-dir", "--layers", "--skinning", "--scale"});
+  args.allowOnly({"--frames", "--fps", "--stats-json", "--export-dir", "--layers", "--skinning", "--helper-bones", "--scale"});
   const std::string layers = args.option("--layers", "on");
   if (layers != "on" && layers != "off") throw Error("--layers expects on or off");
   if (args.positional().size() != 1) throw Error("simulate needs exactly one SCENE argument");
@@ -219,7 +219,7 @@ int runSimulate(const std::vector<std::string>& argv) {
 }
 
 const cli::Registration reg({"simulate", "SCENE --frames N [--fps F] [--stats-json OUT] [--export-dir DIR] [--layers on|off]\n"
-                             "         [--skinning lbs|dqs|cones] [--scale S]",
+                             "         [--skinning lbs|dqs|cones] [--helper-bones] [--scale S]",
                              "run the scene's cloth (sheet and garments) and hair headless; stats as JSON, frames as OBJ/PLY",
                              runSimulate});
 

@@ -44,7 +44,9 @@ class Args {
 };
 
 // --skinning lbs|dqs|cones: overrides the method the scene (or file) chose.
-// Throws mq::Error naming the choices for an unknown method.
+// --helper-bones: adds helper bones at the joints (a humanoid's).
+// Throws mq::Error naming the choices for an unknown method, or why a
+// character cannot have helper bones.
 void applySkinningOption(const Args& args, LoadedScene& scene);
 // --scale S: the character file's units to metres (0.01 for centimetres).
 // Throws mq::Error for a scale that is not a positive number.

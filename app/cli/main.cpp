@@ -20,7 +20,7 @@ Args::Args(const std::vector<std::string>& args) {
   // Flags that take no value; everything else starting with -- takes one.
   static const std::vector<std::string> flags = {"--json", "--help", "--skeleton", "--no-hair",
                                                  "--no-cloth", "--self-collisions", "--no-poses", "--no-clips",
-                                                 "--no-intersections"};
+                                                 "--no-intersections", "--helper-bones"};
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a.rfind("--", 0) == 0 && a.size() > 2) {
@@ -65,6 +65,12 @@ void Args::allowOnly(const std::vector<std::string>& known) const {
 }
 
 void applySkinningOption(const Args& args, LoadedScene& scene) {
+  if (args.has("--helper-bones") && scene.character.helperBones.empty()) {
+    std::string why;
+    if (addHelperBones(scene.character, &why) == 0) throw Error("--helper-bones: " + why);
+    scene.document.helperBones = true;
+    prepareSkinning(scene.character);
+  }
   if (!args.has("--skinning")) return;
   const std::string name = args.option("--skinning");
   const auto method = parseSkinningMethod(name);

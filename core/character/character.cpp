@@ -149,6 +149,7 @@ Pose samplePose(const Character& character, int clipIndex, float time, const Pos
     for (const auto& [bone, rotation] : edits->rotations)
       if (bone >= 0 && bone < static_cast<int>(pose.size()))
         pose[bone].rotation = glm::normalize(pose[bone].rotation * rotation);
+  driveHelperBones(character.helperBones, character.skeleton, pose);
   return pose;
 }
 

@@ -9,6 +9,7 @@
 #include "core/material/material.h"
 #include "core/mesh/mesh.h"
 #include "core/skeleton/skeleton.h"
+#include "core/skinning/helper_bones.h"
 #include "core/skinning/skinning_method.h"
 
 namespace mq {
@@ -30,6 +31,8 @@ struct Character {
   std::string unitNotice;
   // How skinned meshes follow the skeleton (PosedCharacter::evaluate).
   SkinningMethod skinning = SkinningMethod::Lbs;
+  // Procedural bones at the joints (helper_bones.h), driven by the pose.
+  std::vector<HelperBone> helperBones;
 
   size_t vertexCount() const;
   size_t triangleCount() const;

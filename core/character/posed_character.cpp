@@ -99,7 +99,13 @@ void prepareSkinning(Character& character) {
 
 void PosedCharacter::evaluate(const Character& character, const Pose& pose,
                               const std::vector<std::vector<float>>& morphWeights, ThreadPool* pool) {
-  character.skeleton.worldTransforms(pose, worldFromBone_);
+  if (character.helperBones.empty()) {
+    character.skeleton.worldTransforms(pose, worldFromBone_);
+  } else {
+    drivenPose_ = pose;
+    driveHelperBones(character.helperBones, character.skeleton, drivenPose_);
+    character.skeleton.worldTransforms(drivenPose_, worldFromBone_);
+  }
   meshes_.resize(character.meshes.size());
   for (size_t i = 0; i < character.meshes.size(); ++i) {
     const Mesh& mesh = character.meshes[i];

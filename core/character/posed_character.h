@@ -52,6 +52,7 @@ class PosedCharacter {
   std::vector<std::shared_ptr<const SectionCones>> ownCones_;  // per mesh, for characters bound without cones
   std::vector<const float*> ownConesKey_;                      // the rest positions they were bound on
   std::vector<float> morphedPositions_, morphedNormals_;
+  Pose drivenPose_;  // the pose with its helper bones driven
 };
 
 }  // namespace mq

@@ -53,6 +53,10 @@ LoadedScene resolveSceneDocument(const SceneDocument& document, const std::strin
     scene.clipIndex = 0;
   }
   scene.edits = poseEditsFromNames(document.poseRotations, scene.character.skeleton);
+  if (document.helperBones) {
+    std::string why;
+    if (addHelperBones(scene.character, &why) == 0) scene.character.loadWarnings.push_back("skinning.helper_bones: " + why);
+  }
   scene.character.skinning = document.skinning;
   prepareSkinning(scene.character);
   scene.fileMaterials = scene.character.materials;

@@ -98,6 +98,10 @@ SceneDocument fromJson(const json& root) {
     const auto parsed = parseSkinningMethod(method);
     if (!parsed) throw Error("skinning.method: unknown method '" + method + "' (expected " + skinningMethodChoices() + ")");
     doc.skinning = *parsed;
+    if (k.contains("helper_bones")) {
+      if (!k["helper_bones"].is_boolean()) throw Error("skinning.helper_bones must be true or false");
+      doc.helperBones = k["helper_bones"].get<bool>();
+    }
   }
   if (root.contains("scale")) {
     if (!root["scale"].is_number()) throw Error("\"scale\" must be a number");
@@ -160,6 +164,7 @@ json toJson(const SceneDocument& doc) {
   if (doc.view.hasCamera)
     root["view"]["camera"] = {{"position", array3(doc.view.cameraPosition)}, {"focus", array3(doc.view.cameraFocus)}};
   root["skinning"] = {{"method", skinningMethodName(doc.skinning)}};
+  if (doc.helperBones) root["skinning"]["helper_bones"] = true;
   if (doc.scale != 1.0f) root["scale"] = doc.scale;
   json materials = json::object();
   for (const auto& [name, changes] : doc.materials)

@@ -11,7 +11,8 @@
 //     "animation": {"clip": "walk", "time": 0.5},
 //     "pose": {"upperarm_l": [x, y, z, w], ...},   local rotation edits
 //     "view": {"skeleton": false, "look": "auto", "camera": {"position": [..], "focus": [..]}},
-//     "skinning": {"method": "lbs" | "dqs" | "cones"},   (absent: lbs)
+//     "skinning": {"method": "lbs" | "dqs" | "cones",    (absent: lbs)
+//                  "helper_bones": bool},               (absent: false)
 //     "scale": 0.01,   the character file's units to metres (absent: 1)
 //     "materials": {"<name>": {...}},   user changes to the file's materials
 //                                       (core/material/material_override.h)
@@ -48,6 +49,7 @@ struct SceneDocument {
   std::map<std::string, glm::quat> poseRotations;  // bone name -> local rotation edit
   ViewSettings view;
   SkinningMethod skinning = SkinningMethod::Lbs;
+  bool helperBones = false;  // add helper bones at the joints (helper_bones.h) on open
   float scale = 1.0f;  // applied to the character at load (its file's units to metres)
   std::map<std::string, MaterialOverride> materials;  // by material name
   // Sections owned by other modules (null when absent).

@@ -253,7 +253,8 @@ ClipMeasure measureClip(Measurer& m, const Character& character, int clip, float
 
 SkinReport measureSkinning(const Character& character, const SkinReportOptions& options, ThreadPool* pool) {
   SkinReport report;
-  report.method = skinningMethodName(character.skinning);
+  report.method = std::string(skinningMethodName(character.skinning)) +
+                  (character.helperBones.empty() ? "" : " + helper bones");
   Measurer m(character, options, pool);
   report.vertices = m.body().vertexCount();
   report.triangles = m.body().triangles().size() / 3;

@@ -95,3 +95,15 @@ pose_value("${cesium}" "elbow 120" body_deviation_rms_mm cesiumDeviation)
 if(NOT (cesiumDeviation STREQUAL "" OR cesiumDeviation STREQUAL "null"))  # JSON null
   message(FATAL_ERROR "CesiumMan has no implicit body, yet M6 = ${cesiumDeviation}")
 endif()
+
+# Helper bones under plain LBS (the exportable path): the research brief's
+# targets at 120 degrees and for the 180-degree wrist twist, on both characters.
+report(default lbs helpers --no-clips --helper-bones)
+report("${CESIUM}" lbs cesiumHelpers --no-clips --helper-bones)
+foreach(pose "elbow 120" "knee 120")
+  expect_compare("${helpers}" "lbs + helper bones" "${pose}" thickness ">=" 0.85)
+  expect_compare("${cesiumHelpers}" "CesiumMan lbs + helper bones" "${pose}" thickness ">=" 0.85)
+endforeach()
+expect_compare("${helpers}" "lbs + helper bones" "wrist twist 180" twist_section ">=" 0.6)
+expect_compare("${helpers}" "lbs + helper bones" "elbow 120" intersections "<=" 20)
+expect_compare("${helpers}" "lbs + helper bones" "hip 90" local_volume ">=" 0.8)

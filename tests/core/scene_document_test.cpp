@@ -30,6 +30,7 @@ TEST(SceneDocument, RoundTripKeepsEverything) {
   doc.view.hasCamera = true;
   doc.view.cameraPosition = {1, 2, 3};
   doc.hair = {{"style", "bob"}};
+  doc.helperBones = true;
   const fs::path path = scratchDir() / "round.mqscene";
   saveSceneDocument(doc, path.string());
   const SceneDocument back = loadSceneDocument(path.string());
@@ -43,6 +44,7 @@ TEST(SceneDocument, RoundTripKeepsEverything) {
   EXPECT_FLOAT_EQ(back.view.cameraPosition.z, 3.0f);
   EXPECT_EQ(back.hair["style"], "bob");
   EXPECT_TRUE(back.garments.is_null());
+  EXPECT_TRUE(back.helperBones);
 }
 
 TEST(SceneDocument, NullCharacterMeansNone) {
@@ -69,6 +71,8 @@ TEST(SceneDocument, BadDocumentsFailClearly) {
   expectFileError(R"({"format":"mannequin-scene","version":7})", "newer version");
   expectFileError(R"({"format":"mannequin-scene","version":1,"pose":{"head":[0,0,0]}})", "quaternion");
   expectFileError(R"({"format":"mannequin-scene","version":1,"animation":{"time":"soon"}})", "number");
+  expectFileError(R"({"format":"mannequin-scene","version":1,"skinning":{"helper_bones":"yes"}})",
+                  "skinning.helper_bones must be true or false");
 }
 
 TEST(SceneDocument, MissingFileNamesTheFile) {

@@ -1,0 +1,298 @@
+#include "core/skinning/helper_bones.h"
+
+#include <algorithm>
+#include <utility>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/character/character.h"
+#include "core/skeleton/humanoid_roles.h"
+#include "core/util/error.h"
+
+namespace mq {
+namespace {
+
+constexpr int kMaxInfluences = 4;
+
+using Influences = std::vector<std::pair<int, float>>;  // skin joint, weight
+
+std::vector<Influences> influencesOf(const SkinBinding& skin, size_t vertices) {
+  std::vector<Influences> out(vertices);
+  const int k = skin.influencesPerVertex;
+  for (size_t v = 0; v < vertices; ++v)
+    for (int i = 0; i < k; ++i)
+      if (skin.weights[v * k + i] > 0.0f) out[v].push_back({skin.joints[v * k + i], skin.weights[v * k + i]});
+  return out;
+}
+
+// Writes the influences back, the heaviest kMaxInfluences of each vertex,
+// normalised.
+void setInfluences(SkinBinding& skin, std::vector<Influences>& influences) {
+  const int k = std::max(skin.influencesPerVertex, kMaxInfluences);
+  skin.influencesPerVertex = k;
+  skin.joints.assign(influences.size() * k, 0);
+  skin.weights.assign(influences.size() * k, 0.0f);
+  for (size_t v = 0; v < influences.size(); ++v) {
+    Influences& list = influences[v];
+    std::stable_sort(list.begin(), list.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
+    if (list.size() > size_t(kMaxInfluences)) list.resize(kMaxInfluences);
+    for (size_t i = 0; i < list.size(); ++i) {
+      skin.joints[v * k + i] = static_cast<uint16_t>(list[i].first);
+      skin.weights[v * k + i] = list[i].second;
+    }
+  }
+  skin.normalise();
+}
+
+float& weightOf(Influences& list, int joint) {
+  for (auto& [j, w] : list)
+    if (j == joint) return w;
+  list.push_back({joint, 0.0f});
+  return list.back().second;
+}
+
+int jointOf(const SkinBinding& skin, int bone) {
+  const auto it = std::find(skin.jointBones.begin(), skin.jointBones.end(), bone);
+  return it == skin.jointBones.end() ? -1 : int(it - skin.jointBones.begin());
+}
+
+glm::quat rotationOf(const glm::mat4& m) {
+  return glm::normalize(glm::quat_cast(
+      glm::mat3(glm::normalize(glm::vec3(m[0])), glm::normalize(glm::vec3(m[1])), glm::normalize(glm::vec3(m[2])))));
+}
+
+void dropEmpty(Influences& list) {
+  list.erase(std::remove_if(list.begin(), list.end(), [](const auto& i) { return i.second <= 0.0f; }), list.end());
+}
+
+// A vertex shared by `parent` and `driver` gives the half-angle joint twice
+// the smaller of their weights.
+void moveToHalfAngle(std::vector<Influences>& influences, int parent, int driver, int helper) {
+  for (Influences& list : influences) {
+    float& wp = weightOf(list, parent);
+    float& wd = weightOf(list, driver);
+    const float shared = std::min(wp, wd);
+    wp -= shared;
+    wd -= shared;
+    if (shared > 0.0f) weightOf(list, helper) += 2.0f * shared;
+    dropEmpty(list);
+  }
+}
+
+// The forearm's weight spread over the forearm (elbow), the twist joints at a
+// third and two thirds, by the vertex's place along the forearm.
+void spreadOverTwist(const Mesh& mesh, std::vector<Influences>& influences, int forearm, const int twist[2],
+                     const glm::mat4& forearmSkinAtRest, const glm::vec3& elbow, const glm::vec3& wrist) {
+  const glm::vec3 axis = wrist - elbow;
+  const float length2 = glm::dot(axis, axis);
+  if (length2 <= 0.0f) return;
+  for (size_t v = 0; v < influences.size(); ++v) {
+    Influences& list = influences[v];
+    float& wf = weightOf(list, forearm);
+    const float total = wf;
+    if (total > 0.0f) {
+      const glm::vec3 p(forearmSkinAtRest *
+                        glm::vec4(mesh.positions[3 * v], mesh.positions[3 * v + 1], mesh.positions[3 * v + 2], 1.0f));
+      const float t = std::clamp(glm::dot(p - elbow, axis) / length2, 0.0f, 1.0f);
+      float shares[3] = {0.0f, 0.0f, 0.0f};  // forearm, twist 1, twist 2
+      if (t < 1.0f / 3.0f) {
+        shares[1] = 3.0f * t, shares[0] = 1.0f - shares[1];
+      } else if (t < 2.0f / 3.0f) {
+        shares[2] = 3.0f * t - 1.0f, shares[1] = 1.0f - shares[2];
+      } else {
+        shares[2] = 1.0f;
+      }
+      wf = total * shares[0];
+      weightOf(list, twist[0]) += total * shares[1];
+      weightOf(list, twist[1]) += total * shares[2];
+    }
+    dropEmpty(list);
+  }
+}
+
+class HelperBuilder {
+ public:
+  HelperBuilder(Character& character)
+      : c_(character), restWorld_(character.skeleton.worldTransforms(character.skeleton.restPose())) {}
+
+  int build(const HumanoidBones& roles) {
+    for (int side = 0; side < 2; ++side) {
+      addHalfAngle(roles.upperArm[side], roles.forearm[side]);
+      addHalfAngle(roles.thigh[side], roles.shin[side]);
+      addHalfAngle(c_.skeleton.bone(roles.thigh[side]).parent, roles.thigh[side]);
+      addHalfAngle(c_.skeleton.bone(roles.upperArm[side]).parent, roles.upperArm[side]);
+      addTwists(roles.forearm[side], roles.hand[side]);
+    }
+    for (Mesh& mesh : c_.meshes) mesh.sectionCones.reset();
+    return added_;
+  }
+
+ private:
+  int addBone(const std::string& name, int parent, const Trs& rest, const glm::mat4& parentFromOffset) {
+    Bone bone;
+    bone.name = name;
+    bone.parent = parent;
+    bone.rest = rest;
+    bone.parentFromOffset = parentFromOffset;
+    const int index = c_.skeleton.addBone(bone);
+    restWorld_.push_back((parent >= 0 ? restWorld_[parent] : glm::mat4(1.0f)) * parentFromOffset * rest.matrix());
+    ++added_;
+    return index;
+  }
+
+  void addHalfAngle(int parent, int driver) {
+    if (parent < 0 || driver < 0 || c_.skeleton.bone(driver).parent != parent) return;
+    const Bone& d = c_.skeleton.bone(driver);
+    HelperBone helper;
+    helper.kind = HelperBone::Kind::HalfAngle;
+    helper.driver = driver;
+    helper.share = 0.5f;
+    helper.bone = addBone(d.name + "_half", parent, d.rest, d.parentFromOffset);
+    c_.helperBones.push_back(helper);
+    for (Mesh& mesh : c_.meshes) {
+      const int jp = jointOf(mesh.skin, parent), jd = jointOf(mesh.skin, driver);
+      if (mesh.skin.empty() || jp < 0 || jd < 0) continue;
+      // At rest the helper sits where its driver does: same bind.
+      const int jh = addJoint(mesh.skin, helper.bone, mesh.skin.inverseBind[jd]);
+      std::vector<Influences> influences = influencesOf(mesh.skin, mesh.vertexCount());
+      moveToHalfAngle(influences, jp, jd, jh);
+      setInfluences(mesh.skin, influences);
+    }
+  }
+
+  void addTwists(int forearm, int hand) {
+    if (forearm < 0 || hand < 0 || c_.skeleton.bone(hand).parent != forearm) return;
+    const glm::mat4 handInForearm = glm::inverse(restWorld_[forearm]) * restWorld_[hand];
+    const glm::vec3 towardsHand(handInForearm[3]);
+    if (glm::length(towardsHand) <= 0.0f) return;
+    int twist[2];
+    for (int i = 0; i < 2; ++i) {
+      HelperBone helper;
+      helper.kind = HelperBone::Kind::Twist;
+      helper.driver = hand;
+      helper.share = float(i + 1) / 3.0f;
+      helper.axis = glm::normalize(towardsHand);
+      helper.driverRestInParent = handInForearm;
+      Trs rest;
+      rest.translation = helper.share * towardsHand;
+      helper.bone = twist[i] =
+          addBone(c_.skeleton.bone(forearm).name + "_twist" + std::to_string(i + 1), forearm, rest, glm::mat4(1.0f));
+      c_.helperBones.push_back(helper);
+    }
+    for (Mesh& mesh : c_.meshes) {
+      const int jf = jointOf(mesh.skin, forearm);
+      if (mesh.skin.empty() || jf < 0) continue;
+      // At rest each twist joint moves the skin as the forearm does.
+      const glm::mat4 forearmSkin = restWorld_[forearm] * mesh.skin.inverseBind[jf];
+      int joints[2];
+      for (int i = 0; i < 2; ++i)
+        joints[i] = addJoint(mesh.skin, twist[i], glm::inverse(restWorld_[twist[i]]) * forearmSkin);
+      std::vector<Influences> influences = influencesOf(mesh.skin, mesh.vertexCount());
+      spreadOverTwist(mesh, influences, jf, joints, forearmSkin, glm::vec3(restWorld_[forearm][3]),
+                      glm::vec3(restWorld_[hand][3]));
+      setInfluences(mesh.skin, influences);
+    }
+  }
+
+  static int addJoint(SkinBinding& skin, int bone, const glm::mat4& inverseBind) {
+    skin.jointBones.push_back(bone);
+    skin.inverseBind.push_back(inverseBind);
+    return int(skin.jointBones.size()) - 1;
+  }
+
+  Character& c_;
+  std::vector<glm::mat4> restWorld_;
+  int added_ = 0;
+};
+
+}  // namespace
+
+glm::quat twistAbout(const glm::quat& q, const glm::vec3& axis) {
+  const glm::vec3 along = glm::dot(glm::vec3(q.x, q.y, q.z), axis) * axis;
+  const glm::quat twist(q.w, along.x, along.y, along.z);
+  const float length = glm::length(twist);
+  return length > 1e-8f ? twist / length : glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
+}
+
+int addHelperBones(Character& character, std::string* why) {
+  auto refuse = [&](const std::string& reason) {
+    if (why) *why = reason;
+    return 0;
+  };
+  if (!character.helperBones.empty()) return refuse("the character has helper bones already");
+  HumanoidBones roles;
+  try {
+    roles = findHumanoidBones(character.skeleton, character.skeleton.worldTransforms(character.skeleton.restPose()));
+  } catch (const Error& e) {
+    return refuse(std::string("helper bones need a humanoid: ") + e.what());
+  }
+  const int added = HelperBuilder(character).build(roles);
+  if (added == 0) return refuse("no elbow, knee or forearm joint to add helpers to");
+  return added;
+}
+
+void removeHelperBones(Character& character) {
+  if (character.helperBones.empty()) return;
+  int first = character.skeleton.boneCount();
+  for (const HelperBone& h : character.helperBones) first = std::min(first, h.bone);
+  auto helperOf = [&](int bone) -> const HelperBone* {
+    for (const HelperBone& h : character.helperBones)
+      if (h.bone == bone) return &h;
+    return nullptr;
+  };
+  for (Mesh& mesh : character.meshes) {
+    if (mesh.skin.empty()) continue;
+    SkinBinding& skin = mesh.skin;
+    size_t kept = skin.jointBones.size();
+    while (kept > 0 && skin.jointBones[kept - 1] >= first) --kept;
+    std::vector<Influences> influences = influencesOf(skin, mesh.vertexCount());
+    for (Influences& list : influences) {
+      Influences back;
+      for (const auto& [joint, weight] : list) {
+        const HelperBone* h = size_t(joint) >= kept ? helperOf(skin.jointBones[joint]) : nullptr;
+        if (!h) {
+          back.push_back({joint, weight});
+          continue;
+        }
+        const int parent = jointOf(skin, character.skeleton.bone(h->bone).parent);
+        const int driver = jointOf(skin, h->driver);
+        if (h->kind == HelperBone::Kind::HalfAngle && parent >= 0 && driver >= 0) {
+          weightOf(back, parent) += 0.5f * weight;
+          weightOf(back, driver) += 0.5f * weight;
+        } else if (parent >= 0) {
+          weightOf(back, parent) += weight;
+        }
+      }
+      list = std::move(back);
+    }
+    skin.jointBones.resize(kept);
+    skin.inverseBind.resize(kept);
+    setInfluences(skin, influences);
+    mesh.sectionCones.reset();
+  }
+  Skeleton skeleton;
+  for (int b = 0; b < first; ++b) skeleton.addBone(character.skeleton.bone(b));
+  character.skeleton = std::move(skeleton);
+  character.helperBones.clear();
+}
+
+void driveHelperBones(const std::vector<HelperBone>& helpers, const Skeleton& skeleton, Pose& pose) {
+  const glm::quat identity(1.0f, 0.0f, 0.0f, 0.0f);
+  for (const HelperBone& h : helpers) {
+    if (h.bone < 0 || h.bone >= int(pose.size()) || h.driver < 0 || h.driver >= int(pose.size())) continue;
+    const Trs& driver = pose[h.driver];
+    Trs& out = pose[h.bone];
+    if (h.kind == HelperBone::Kind::HalfAngle) {
+      out.translation = driver.translation;
+      out.scale = driver.scale;
+      out.rotation = slerpShortest(skeleton.bone(h.driver).rest.rotation, driver.rotation, h.share);
+      continue;
+    }
+    const glm::mat4 handInForearm = skeleton.bone(h.driver).parentFromOffset * driver.matrix();
+    const glm::quat turn = rotationOf(handInForearm) * glm::inverse(rotationOf(h.driverRestInParent));
+    out.translation = skeleton.bone(h.bone).rest.translation;
+    out.rotation = slerpShortest(identity, twistAbout(turn, h.axis), h.share);
+  }
+}
+
+}  // namespace mq
