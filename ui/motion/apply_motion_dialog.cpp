@@ -55,26 +55,6 @@ ApplyMotionDialog::ApplyMotionDialog(const Character& character, QWidget* parent
       rootMotion_(new QCheckBox(tr("Root motion: the character travels with the motion (off: in place)"))),
       buttons_(new QDialogButtonBox(QDialogButtonBox::Cancel)) {
   setWindowTitle(tr("Apply Motion"));
-  motionPath_->setReadOnly(true);
-  motionPath_->setPlaceholderText(tr("choose a BVH file"));
-  mapPath_->setReadOnly(true);
-  mapPath_->setPlaceholderText(tr("none: joints match by name, then by humanoid role"));
-  auto* browseMotion = new QPushButton(tr("Browse..."));
-  auto* browseMap = new QPushButton(tr("Browse..."));
-  auto* clearMap = new QPushButton(tr("Clear"));
-  connect(browseMotion, &QPushButton::clicked, this, &ApplyMotionDialog::browseMotion);
-  connect(browseMap, &QPushButton::clicked, this, &ApplyMotionDialog::browseNameMap);
-  connect(clearMap, &QPushButton::clicked, this, [this] { setNameMapFile(QString()); });
-
-  auto* files = new QGridLayout;
-  files->addWidget(new QLabel(tr("Motion (BVH):")), 0, 0);
-  files->addWidget(motionPath_, 0, 1);
-  files->addWidget(browseMotion, 0, 2);
-  files->addWidget(new QLabel(tr("Bone-name map:")), 1, 0);
-  files->addWidget(mapPath_, 1, 1);
-  files->addWidget(browseMap, 1, 2);
-  files->addWidget(clearMap, 1, 3);
-
   auto* trees = new QSplitter;
   trees->addWidget(motionTree_);
   trees->addWidget(characterTree_);
@@ -88,14 +68,37 @@ ApplyMotionDialog::ApplyMotionDialog(const Character& character, QWidget* parent
   connect(buttons_, &QDialogButtonBox::rejected, this, &QDialog::reject);
 
   auto* layout = new QVBoxLayout(this);
-  layout->addLayout(files);
+  layout->addLayout(makeFileRows());
   layout->addWidget(summary_);
   layout->addWidget(trees, 1);
   layout->addWidget(rootMotion_);
   layout->addWidget(buttons_);
   resize(980, 640);
-  fillCharacterTree();
   rematch();
+}
+
+// The BVH and the optional map, each with its chooser.
+QGridLayout* ApplyMotionDialog::makeFileRows() {
+  motionPath_->setReadOnly(true);
+  motionPath_->setPlaceholderText(tr("choose a BVH file"));
+  mapPath_->setReadOnly(true);
+  mapPath_->setPlaceholderText(tr("none: joints match by name, then by humanoid role"));
+  auto* browseMotion = new QPushButton(tr("Browse..."));
+  auto* browseMap = new QPushButton(tr("Browse..."));
+  auto* clearMap = new QPushButton(tr("Clear"));
+  connect(browseMotion, &QPushButton::clicked, this, &ApplyMotionDialog::browseMotion);
+  connect(browseMap, &QPushButton::clicked, this, &ApplyMotionDialog::browseNameMap);
+  connect(clearMap, &QPushButton::clicked, this, [this] { setNameMapFile(QString()); });
+
+  auto* rows = new QGridLayout;
+  rows->addWidget(new QLabel(tr("Motion (BVH):")), 0, 0);
+  rows->addWidget(motionPath_, 0, 1);
+  rows->addWidget(browseMotion, 0, 2);
+  rows->addWidget(new QLabel(tr("Bone-name map:")), 1, 0);
+  rows->addWidget(mapPath_, 1, 1);
+  rows->addWidget(browseMap, 1, 2);
+  rows->addWidget(clearMap, 1, 3);
+  return rows;
 }
 
 QString ApplyMotionDialog::motionFile() const { return motionPath_->text(); }

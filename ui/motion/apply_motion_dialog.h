@@ -15,6 +15,7 @@
 
 class QCheckBox;
 class QDialogButtonBox;
+class QGridLayout;
 class QLabel;
 class QLineEdit;
 class QPushButton;
@@ -49,6 +50,7 @@ class ApplyMotionDialog : public QDialog {
   QPushButton* applyButton() const { return apply_; }
 
  private:
+  QGridLayout* makeFileRows();
   void browseMotion();
   void browseNameMap();
   void rematch();
