@@ -170,6 +170,11 @@ void MainWindow::createActions() {
     viewport_->requestRender();
   });
 
+  followAction_ = new QAction(tr("F&ollow Character"), this);
+  followAction_->setCheckable(true);
+  followAction_->setStatusTip(tr("Move the camera with the character when a motion carries it away"));
+  connect(followAction_, &QAction::toggled, this, [this](bool on) { followedRoot_ = on ? rootOnGround() : std::nullopt; });
+
   resetBoneAction_ = new QAction(tr("Reset &Bone Rotation"), this);
   resetBoneAction_->setShortcut(QKeySequence(tr("Alt+R")));
   connect(resetBoneAction_, &QAction::triggered, this, [this] {
@@ -233,6 +238,7 @@ void MainWindow::createMenus() {
   viewMenu_->addAction(showSkeletonAction_);
   viewMenu_->addAction(showGridAction_);
   viewMenu_->addAction(frameAllAction_);
+  viewMenu_->addAction(followAction_);
   lookMenu_ = viewMenu_->addMenu(tr("Surface &Look"));
   auto* looks = new QActionGroup(this);
   for (const auto& [mode, label, tip] :
@@ -349,6 +355,7 @@ void MainWindow::onCharacterReplaced() {
   scene_->setSkeletonVisible(document_->viewSettings().showSkeleton);
   scene_->setHighlightedBone(-1);
   restoreCamera();
+  followedRoot_ = followAction_->isChecked() ? rootOnGround() : std::nullopt;  // follow from here
   statsLabel_->setText(document_->summary());
   updateTitle();
   viewport_->requestRender();
@@ -364,7 +371,26 @@ void MainWindow::applyLook() {
 
 void MainWindow::onPoseChanged() {
   scene_->updatePose(document_->posed());
+  followCharacter();
   viewport_->requestRender();
+}
+
+// The camera keeps its view of the root bone's place on the ground: it
+// follows the travel, not the up-and-down of the steps.
+void MainWindow::followCharacter() {
+  if (!followAction_->isChecked()) return;
+  const std::optional<glm::vec3> root = rootOnGround();
+  if (root && followedRoot_) {
+    const glm::vec3 shift = *root - *followedRoot_;
+    scene_->setCamera(scene_->cameraPosition() + shift, scene_->cameraFocus() + shift);
+  }
+  followedRoot_ = root;
+}
+
+std::optional<glm::vec3> MainWindow::rootOnGround() const {
+  const std::vector<glm::mat4>& worldFromBone = document_->posed().worldFromBone();
+  if (worldFromBone.empty()) return std::nullopt;
+  return glm::vec3(worldFromBone[0][3].x, 0.0f, worldFromBone[0][3].z);
 }
 
 void MainWindow::onSelectionChanged() {

@@ -11,6 +11,9 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
+
+#include <glm/vec3.hpp>
 
 #include <QMainWindow>
 #include <QStringList>
@@ -35,6 +38,7 @@ class SceneTreePanel;
 class TimelinePanel;
 class VtkViewportWidget;
 struct LoadedDocument;
+struct LoadedMotion;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -50,6 +54,8 @@ class MainWindow : public QMainWindow {
   SceneTreePanel* sceneTree() const { return sceneTree_; }
   PropertiesPanel* properties() const { return properties_; }
   TimelinePanel* timeline() const { return timeline_; }
+  // View > Follow Character: the camera travels with the character's root.
+  QAction* followAction() const { return followAction_; }
 
   // Adds a tool's dock (tabbed with the properties on the right by default)
   // and lists it in the View menu.
@@ -59,8 +65,13 @@ class MainWindow : public QMainWindow {
   // to the current character) on a worker thread; emits loadFinished.
   void openFile(const QString& fileOrDefault);
   // Applies a BVH motion to the current character as a new clip (worker
-  // thread), mapping joint names through `nameMapPath` when given.
-  void applyMotion(const QString& bvhPath, const QString& nameMapPath = QString());
+  // thread, one undo step), pairing joints with bones through `nameMapPath`
+  // first when given; `inPlace` drops the root's horizontal travel. The
+  // status bar says how many bones matched and which did not.
+  void applyMotion(const QString& bvhPath, const QString& nameMapPath = QString(), bool inPlace = false);
+  // File > Apply Motion: the dialog that shows both skeletons and the
+  // matches before applying (window-modal, returns at once).
+  void applyMotionWithDialog();
   bool isBusy() const { return busy_; }
   // Same, on the calling thread (tests, scripts). False and `error` on failure.
   bool openFileNow(const QString& fileOrDefault, QString* error = nullptr);
@@ -105,12 +116,13 @@ class MainWindow : public QMainWindow {
   // File menu
   void newDocument();
   void openWithDialog();
-  void applyMotionWithDialog();
   bool save();
   bool saveAs();
   void exportWithDialog();
   bool maybeDiscardChanges();
   void adoptLoaded(LoadedDocument loaded, double seconds);
+  // One undo step: the motion's clip made current and recorded in the scene.
+  void adoptMotion(LoadedMotion motion, double seconds);
   void addRecentFile(const QString& path);
   void rebuildRecentMenu();
   void setBusy(bool busy, const QString& message);
@@ -118,6 +130,9 @@ class MainWindow : public QMainWindow {
   // Document -> scene sync
   void onCharacterReplaced();
   void onPoseChanged();
+  void followCharacter();
+  // The root bone's position projected on the ground (y = 0); none without bones.
+  std::optional<glm::vec3> rootOnGround() const;
   // Shades the scene with the document's surface look and ticks its menu entry.
   void applyLook();
   void onSelectionChanged();
@@ -149,6 +164,7 @@ class MainWindow : public QMainWindow {
   QAction* frameAllAction_ = nullptr;
   QAction* showSkeletonAction_ = nullptr;
   QAction* showGridAction_ = nullptr;
+  QAction* followAction_ = nullptr;
   QAction* resetBoneAction_ = nullptr;
   QAction* resetPoseAction_ = nullptr;
   QAction* deselectAction_ = nullptr;
@@ -163,6 +179,7 @@ class MainWindow : public QMainWindow {
   QLabel* selectionLabel_ = nullptr;
   QLabel* statsLabel_ = nullptr;
   bool busy_ = false;
+  std::optional<glm::vec3> followedRoot_;  // where the root was when the camera last followed
 };
 
 }  // namespace mq::ui

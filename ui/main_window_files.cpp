@@ -19,12 +19,15 @@
 #include <QProgressBar>
 #include <QSettings>
 #include <QStatusBar>
+#include <QUndoStack>
 #include <QtConcurrent/QtConcurrentRun>
 
 #include "core/io/mesh_export.h"
 #include "render/scene_view.h"
 #include "ui/document/document_loader.h"
 #include "ui/document/editor_document.h"
+#include "ui/document/motion_commands.h"
+#include "ui/motion/apply_motion_dialog.h"
 
 namespace mq::ui {
 namespace {
@@ -125,14 +128,14 @@ void MainWindow::openFile(const QString& fileOrDefault) {
   }));
 }
 
-void MainWindow::applyMotion(const QString& bvhPath, const QString& nameMapPath) {
+void MainWindow::applyMotion(const QString& bvhPath, const QString& nameMapPath, bool inPlace) {
   if (busy_) return;
   setBusy(true, tr("Applying %1...").arg(QFileInfo(bvhPath).fileName()));
   auto clock = std::make_shared<QElapsedTimer>();
   clock->start();
-  auto* watcher = new QFutureWatcher<Outcome<Clip>>(this);
-  connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, bvhPath, nameMapPath, clock] {
-    Outcome<Clip> outcome = watcher->future().takeResult();
+  auto* watcher = new QFutureWatcher<Outcome<LoadedMotion>>(this);
+  connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, bvhPath, clock] {
+    Outcome<LoadedMotion> outcome = watcher->future().takeResult();
     watcher->deleteLater();
     setBusy(false, QString());
     if (auto* error = std::get_if<QString>(&outcome)) {
@@ -141,33 +144,37 @@ void MainWindow::applyMotion(const QString& bvhPath, const QString& nameMapPath)
       emit loadFinished(false);
       return;
     }
-    Clip clip = std::move(std::get<Clip>(outcome));
-    const QString name = QString::fromStdString(clip.name);
-    // The document records the motion so a saved scene re-applies it.
-    SceneDocument& scene = document_->sceneSections();
-    scene.motionFile = QFileInfo(bvhPath).absoluteFilePath().toStdString();
-    scene.motionMapFile = nameMapPath.isEmpty() ? std::string() : QFileInfo(nameMapPath).absoluteFilePath().toStdString();
-    document_->addClip(std::move(clip));
     addRecentFile(bvhPath);
-    statusBar()->showMessage(tr("Applied motion %1 (%2 s)").arg(name).arg(clock->elapsed() / 1000.0, 0, 'f', 2), 8000);
+    adoptMotion(std::move(std::get<LoadedMotion>(outcome)), clock->elapsed() / 1000.0);
     emit loadFinished(true);
   });
   const Character target = document_->character();
-  watcher->setFuture(QtConcurrent::run([bvhPath, nameMapPath, target] {
-    return runCatching<Clip>([&] { return loadMotion(bvhPath, target, nameMapPath); });
+  watcher->setFuture(QtConcurrent::run([bvhPath, nameMapPath, inPlace, target] {
+    return runCatching<LoadedMotion>([&] { return loadMotion(bvhPath, target, nameMapPath, inPlace); });
   }));
 }
 
 void MainWindow::applyMotionWithDialog() {
-  QSettings settings;
-  const QString bvh = QFileDialog::getOpenFileName(this, tr("Apply Motion"), settings.value("lastDirectory").toString(),
-                                                   motionFilter());
-  if (bvh.isEmpty()) return;
-  settings.setValue("lastDirectory", QFileInfo(bvh).absolutePath());
-  const QString map = QFileDialog::getOpenFileName(
-      this, tr("Bone-name map for %1 (cancel: match names as they are)").arg(QFileInfo(bvh).fileName()),
-      QFileInfo(bvh).absolutePath(), nameMapFilter());
-  applyMotion(bvh, map);
+  auto* dialog = new ApplyMotionDialog(document_->character(), this);
+  dialog->setAttribute(Qt::WA_DeleteOnClose);
+  connect(dialog, &QDialog::accepted, this, [this, dialog] {
+    applyMotion(dialog->motionFile(), dialog->nameMapFile(), dialog->inPlace());
+  });
+  dialog->open();
+}
+
+void MainWindow::adoptMotion(LoadedMotion loaded, double seconds) {
+  const BoneMatchReport match = loaded.motion.match;
+  const QString name = QString::fromStdString(loaded.motion.clip.name);
+  MotionRecord record{loaded.bvhPath.toStdString(), loaded.nameMapPath.toStdString(), loaded.inPlace};
+  document_->undoStack()->push(new ApplyMotionCommand(document_, std::move(loaded.motion.clip), std::move(record)));
+  // The whole report on the terminal, a short one in the status bar.
+  std::cerr << "motion " << loaded.bvhPath.toStdString() << ": " << match.summary() << "\n";
+  statusBar()->showMessage(tr("Applied motion %1 (%2 s): %3")
+                               .arg(name)
+                               .arg(seconds, 0, 'f', 2)
+                               .arg(QString::fromStdString(match.summary(6))),
+                           15000);
 }
 
 bool MainWindow::openFileNow(const QString& fileOrDefault, QString* error) {
@@ -175,9 +182,7 @@ bool MainWindow::openFileNow(const QString& fileOrDefault, QString* error) {
   clock.start();
   try {
     if (isMotionFile(fileOrDefault)) {
-      Clip clip = loadMotion(fileOrDefault, document_->character());
-      document_->sceneSections().motionFile = QFileInfo(fileOrDefault).absoluteFilePath().toStdString();
-      document_->addClip(std::move(clip));
+      adoptMotion(loadMotion(fileOrDefault, document_->character()), clock.elapsed() / 1000.0);
     } else {
       adoptLoaded(loadDocument(fileOrDefault), clock.elapsed() / 1000.0);
     }

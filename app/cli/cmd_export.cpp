@@ -43,6 +43,7 @@ int runExport(const std::vector<std::string>& argv) {
   const std::string out = args.option("--out");
   if (out.empty() || !isMeshExportPath(out)) throw Error("export needs --out OUT.obj, .ply, .gltf or .glb");
   LoadedScene scene = openScene(args.positional()[0]);
+  printMotionMatch(scene);
   applyScaleOption(args, scene);
   applySkinningOption(args, scene);
   if (scene.character.meshes.empty())

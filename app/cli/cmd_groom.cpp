@@ -59,6 +59,7 @@ int runGroom(const std::vector<std::string>& argv) {
   if (args.positional().size() != 1) throw Error("groom needs exactly one SCENE (or 'default')");
   const auto start = std::chrono::steady_clock::now();
   const LoadedScene scene = openScene(args.positional()[0]);
+  printMotionMatch(scene);
   HairSection section = hairSectionOf(scene);
   if (args.has("--style")) {
     section.style = builtinHairStyle(args.option("--style"));

@@ -90,6 +90,7 @@ int runInfo(const std::vector<std::string>& argv) {
   args.allowOnly({"--json", "--scale"});
   if (args.positional().size() != 1) throw Error("info needs exactly one FILE");
   LoadedScene scene = openScene(args.positional()[0]);
+  printMotionMatch(scene);
   applyScaleOption(args, scene);
   for (const std::string& warning : loadNotices(scene)) std::cerr << "warning: " << warning << "\n";
   if (args.has("--json"))

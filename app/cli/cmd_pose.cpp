@@ -1,6 +1,6 @@
-// mannequin-cli pose FILE --time T [--clip NAME|INDEX] [--motion BVH [--map MAP]] --out OUT.obj|.ply|.gltf|.glb
+// mannequin-cli pose FILE --time T [--clip NAME|INDEX] [--motion BVH [--map MAP] [--in-place]] --out OUT.obj|.ply|.gltf|.glb
 // Writes the character posed at time T (on the clip's own key-time axis) in
-// world space.
+// world space. A motion prints how its joints were paired with the bones.
 #include <iostream>
 
 #include <nlohmann/json.hpp>
@@ -20,8 +20,13 @@ namespace {
 // otherwise the scene's current clip.
 int chooseClip(const Args& args, LoadedScene& scene) {
   int clip = scene.clipIndex;
-  if (args.has("--motion")) clip = addMotion(scene.character, args.option("--motion"), args.option("--map"));
-  else if (args.has("--map")) throw Error("--map needs --motion");
+  if (args.has("--motion")) {
+    BoneMatchReport match;
+    clip = addMotion(scene.character, args.option("--motion"), {args.option("--map"), args.has("--in-place")}, &match);
+    printMotionMatch(args.option("--motion"), match);
+  } else if (args.has("--map") || args.has("--in-place")) {
+    throw Error(std::string(args.has("--map") ? "--map" : "--in-place") + " needs --motion");
+  }
   if (args.has("--clip")) {
     if (args.option("--clip") == "rest") return -1;  // the rest pose plus the document's pose edits
     clip = scene.character.findClip(args.option("--clip"));
@@ -43,13 +48,15 @@ void writeJoints(const Skeleton& skeleton, const std::vector<glm::mat4>& worldFr
 
 int runPose(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--time", "--clip", "--motion", "--map", "--out", "--skinning", "--helper-bones", "--joints-out", "--scale"});
+  args.allowOnly({"--time", "--clip", "--motion", "--map", "--in-place", "--out", "--skinning", "--helper-bones",
+                  "--joints-out", "--scale"});
   if (args.positional().size() != 1) throw Error("pose needs exactly one FILE");
   const std::string out = args.option("--out");
   if (out.empty()) throw Error("pose needs --out OUT.obj, .ply, .gltf or .glb");
   if (!isMeshExportPath(out)) throw Error("--out must end in .obj, .ply, .gltf or .glb: " + out);
 
   LoadedScene scene = openScene(args.positional()[0]);
+  printMotionMatch(scene);
   applyScaleOption(args, scene);
   applySkinningOption(args, scene);
   if (scene.character.meshes.empty())
@@ -72,9 +79,14 @@ int runPose(const std::vector<std::string>& argv) {
   return 0;
 }
 
-static Registration reg({"pose", "FILE --time T [--clip NAME|INDEX|rest] [--motion BVH [--map MAP]] --out OUT.obj|.ply|.gltf|.glb\n"
-                         "         [--skinning lbs|dqs|cones] [--helper-bones] [--scale S] [--joints-out JOINTS.json]",
-                         "write the posed mesh at time T in world space (OBJ, PLY, glTF or GLB)", runPose});
+static Registration reg({"pose", "FILE --time T [--clip NAME|INDEX|rest] [--motion BVH [--map MAP] [--in-place]]\n"
+                         "         --out OUT.obj|.ply|.gltf|.glb [--skinning lbs|dqs|cones] [--helper-bones]\n"
+                         "         [--scale S] [--joints-out JOINTS.json]",
+                         "write the posed mesh at time T in world space (OBJ, PLY, glTF or GLB)", runPose,
+                         "--motion applies a BVH to the character: its joints drive the bones of the same name,\n"
+                         "then of the same humanoid role; --map MAP pairs them by a file of 'bvh_joint bone' lines\n"
+                         "first. Prints 'matched N of M bones; unmatched: ...' on stderr. --in-place drops the\n"
+                         "root's horizontal travel (a walk stays on the spot)."});
 
 }  // namespace
 }  // namespace mq::cli

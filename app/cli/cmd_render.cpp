@@ -64,6 +64,7 @@ int runRender(const std::vector<std::string>& argv) {
   const ImageSize size = parseSize(args.option("--size", "960x720"));
 
   LoadedScene scene = openScene(file);
+  printMotionMatch(scene);
   applyScaleOption(args, scene);
   applySkinningOption(args, scene);
   if (scene.character.skeleton.boneCount() == 0 && scene.character.meshes.empty())

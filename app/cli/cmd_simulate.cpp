@@ -143,6 +143,7 @@ int runSimulate(const std::vector<std::string>& argv) {
   } catch (const json::exception& e) {
     throw FileError(path, std::string("not a valid scene document: ") + e.what());
   }
+  cli::printMotionMatch(scene);
   applyScaleOption(args, scene);
   applySkinningOption(args, scene);
   const json& garmentsSection = scene.document.garments;

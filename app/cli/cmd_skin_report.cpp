@@ -86,6 +86,7 @@ int runSkinReport(const std::vector<std::string>& argv) {
   if (args.positional().size() != 1) throw Error("skin-report needs exactly one FILE");
   const std::string file = args.positional()[0];
   LoadedScene scene = openScene(file);
+  printMotionMatch(scene);
   applyScaleOption(args, scene);
   applySkinningOption(args, scene);
   if (scene.character.meshes.empty()) throw Error("'" + file + "' has no skin to measure");

@@ -8,6 +8,7 @@
 
 namespace mq {
 struct LoadedScene;
+struct BoneMatchReport;
 }
 
 namespace mq::cli {
@@ -18,6 +19,7 @@ struct Command {
   std::string summary;  // one line: what it does
   // Returns the process exit code; throws mq::Error for user errors.
   std::function<int(const std::vector<std::string>& args)> run;
+  std::string details = {};  // shown by "<command> --help" only, after the summary
 };
 
 std::vector<Command>& commands();
@@ -51,5 +53,11 @@ void applySkinningOption(const Args& args, LoadedScene& scene);
 // --scale S: the character file's units to metres (0.01 for centimetres).
 // Throws mq::Error for a scale that is not a positive number.
 void applyScaleOption(const Args& args, LoadedScene& scene);
+
+// "motion walk.bvh: matched 19 of 31 bones; unmatched: ..." on stderr, beside
+// the load warnings, so that --json output on stdout stays valid.
+void printMotionMatch(const std::string& bvhPath, const BoneMatchReport& match);
+// The same for the motion a scene document applied, if it has one.
+void printMotionMatch(const LoadedScene& scene);
 
 }  // namespace mq::cli

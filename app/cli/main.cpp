@@ -20,7 +20,7 @@ Args::Args(const std::vector<std::string>& args) {
   // Flags that take no value; everything else starting with -- takes one.
   static const std::vector<std::string> flags = {"--json", "--help", "--skeleton", "--no-hair",
                                                  "--no-cloth", "--self-collisions", "--no-poses", "--no-clips",
-                                                 "--no-intersections", "--helper-bones"};
+                                                 "--no-intersections", "--in-place", "--helper-bones"};
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a.rfind("--", 0) == 0 && a.size() > 2) {
@@ -89,6 +89,14 @@ void applyScaleOption(const Args& args, LoadedScene& scene) {
   prepareSkinning(scene.character);
 }
 
+void printMotionMatch(const std::string& bvhPath, const BoneMatchReport& match) {
+  std::cerr << "motion " << bvhPath << ": " << match.summary() << "\n";
+}
+
+void printMotionMatch(const LoadedScene& scene) {
+  if (scene.motionMatch) printMotionMatch(scene.document.motionFile, *scene.motionMatch);
+}
+
 }  // namespace mq::cli
 
 namespace {
@@ -121,6 +129,7 @@ int main(int argc, char** argv) {
     if (std::find(args.begin() + 1, args.end(), "--help") != args.end() ||
         std::find(args.begin() + 1, args.end(), "-h") != args.end()) {
       std::cout << "usage: mannequin-cli " << c.name << " " << c.usage << "\n\n" << c.summary << "\n";
+      if (!c.details.empty()) std::cout << "\n" << c.details << "\n";
       return 0;
     }
     try {

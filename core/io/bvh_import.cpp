@@ -8,7 +8,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
-#include <sstream>
 
 #include "core/io/file_bytes.h"
 #include "core/util/error.h"
@@ -258,57 +257,6 @@ void appendKey(Track& track, float time, const glm::quat& q) {
   track.values.insert(track.values.end(), {q.x, q.y, q.z, q.w});
 }
 
-// --- name matching ----------------------------------------------------------
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
-}
-
-// bvh joint name -> (target bone name, line)
-std::map<std::string, std::pair<std::string, int>> readNameMap(const std::string& path) {
-  std::map<std::string, std::pair<std::string, int>> map;
-  std::istringstream in(loadFileText(path));
-  std::string line;
-  for (int number = 1; std::getline(in, line); ++number) {
-    line = line.substr(0, line.find('#'));
-    std::istringstream words(line);
-    std::vector<std::string> w;
-    for (std::string s; words >> s;) w.push_back(s);
-    if (w.empty()) continue;
-    if (w.size() != 2)
-      throw FileError(path, "line " + std::to_string(number) + ": expected 'bvh_joint_name target_bone_name'");
-    map.emplace(w[0], std::pair{w[1], number});
-  }
-  return map;
-}
-
-// Target bone driven by each BVH joint (-1: none); each bone is driven once.
-std::vector<int> matchJoints(const BvhData& bvh, const Skeleton& target, const std::string& mapPath) {
-  std::vector<int> boneOfJoint(bvh.joints.size(), -1);
-  std::vector<bool> taken(target.boneCount(), false);
-  auto assign = [&](size_t j, int bone) {
-    if (bone >= 0 && !taken[bone] && boneOfJoint[j] < 0) {
-      boneOfJoint[j] = bone;
-      taken[bone] = true;
-    }
-  };
-  if (!mapPath.empty()) {
-    const auto map = readNameMap(mapPath);
-    for (const auto& [bvhName, targetAndLine] : map)
-      if (target.findBone(targetAndLine.first) < 0)
-        throw FileError(mapPath, "line " + std::to_string(targetAndLine.second) + ": the character has no bone '" +
-                                     targetAndLine.first + "'");
-    for (size_t j = 0; j < bvh.joints.size(); ++j)
-      if (auto it = map.find(bvh.joints[j].name); it != map.end()) assign(j, target.findBone(it->second.first));
-  }
-  for (size_t j = 0; j < bvh.joints.size(); ++j) assign(j, target.findBone(bvh.joints[j].name));
-  for (size_t j = 0; j < bvh.joints.size(); ++j)
-    for (int b = 0; b < target.boneCount() && boneOfJoint[j] < 0; ++b)
-      if (lower(target.bone(b).name) == lower(bvh.joints[j].name)) assign(j, b);
-  return boneOfJoint;
-}
-
 // --- retargeting -----------------------------------------------------------
 
 glm::quat rotationOf(const glm::mat4& m) { return Trs::fromMatrix(m).rotation; }
@@ -358,7 +306,15 @@ std::vector<glm::quat> restAlignment(const BvhData& bvh, const std::vector<glm::
   return align;
 }
 
-Clip retarget(const BvhData& bvh, const std::vector<int>& boneOfJoint, const Skeleton& target, const std::string& name) {
+// Where the root goes, from its first-frame position, in the character's units.
+glm::vec3 rootDisplacement(const glm::vec3& bvhDisplacement, float scale, bool inPlace) {
+  glm::vec3 d = scale * bvhDisplacement;
+  if (inPlace) d.x = d.z = 0.0f;  // Y is up: the vertical bob of a walk stays
+  return d;
+}
+
+Clip retarget(const BvhData& bvh, const std::vector<int>& boneOfJoint, const Skeleton& target, const std::string& name,
+              bool inPlace) {
   const Skeleton source = skeletonOf(bvh);
   const std::vector<glm::mat4> sourceRest = source.worldTransforms(source.restPose());
   const Pose targetRestPose = target.restPose();
@@ -408,7 +364,8 @@ Clip retarget(const BvhData& bvh, const std::vector<int>& boneOfJoint, const Ske
         appendKey(channel.rotation, time, local);
         if (j == rootJoint) {
           const glm::mat4 parentRest = (bone.parent >= 0 ? targetRest[bone.parent] : glm::mat4(1.0f)) * bone.parentFromOffset;
-          const glm::vec3 displacement = scale * (glm::vec3(sourceWorld[j][3]) - firstRootPosition);
+          const glm::vec3 displacement =
+              rootDisplacement(glm::vec3(sourceWorld[j][3]) - firstRootPosition, scale, inPlace);
           appendKey(channel.translation, time, bone.rest.translation + glm::inverse(glm::mat3(parentRest)) * displacement);
         }
       }
@@ -451,13 +408,23 @@ Character loadBvhCharacter(const std::string& bvhPath) {
   return character;
 }
 
-Clip importBvhMotion(const std::string& bvhPath, const Character& target, const std::string& nameMapPath) {
+BoneMatchReport matchBvhMotion(const std::string& bvhPath, const Character& target, const std::string& nameMapPath) {
+  return matchBones(skeletonOf(readBvh(bvhPath)), target.skeleton, nameMapPath);
+}
+
+RetargetedMotion retargetBvhMotion(const std::string& bvhPath, const Character& target, const MotionOptions& options) {
   const BvhData bvh = readBvh(bvhPath);
-  const std::vector<int> boneOfJoint = matchJoints(bvh, target.skeleton, nameMapPath);
-  if (std::all_of(boneOfJoint.begin(), boneOfJoint.end(), [](int b) { return b < 0; }))
+  RetargetedMotion motion;
+  motion.match = matchBones(skeletonOf(bvh), target.skeleton, options.nameMapPath);
+  if (motion.match.matchedCount() == 0)
     throw FileError(bvhPath, "no BVH joint matches a bone of '" + target.name +
                                  "' (give a name map: lines 'bvh_joint_name target_bone_name')");
-  return retarget(bvh, boneOfJoint, target.skeleton, stemOf(bvhPath));
+  motion.clip = retarget(bvh, motion.match.boneOfJoint(), target.skeleton, stemOf(bvhPath), options.inPlace);
+  return motion;
+}
+
+Clip importBvhMotion(const std::string& bvhPath, const Character& target, const std::string& nameMapPath) {
+  return retargetBvhMotion(bvhPath, target, {nameMapPath, false}).clip;
 }
 
 }  // namespace mq

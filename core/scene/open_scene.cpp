@@ -9,8 +9,10 @@
 
 namespace mq {
 
-int addMotion(Character& character, const std::string& bvhPath, const std::string& nameMapPath) {
-  character.clips.push_back(importBvhMotion(bvhPath, character, nameMapPath));
+int addMotion(Character& character, const std::string& bvhPath, const MotionOptions& options, BoneMatchReport* match) {
+  RetargetedMotion motion = retargetBvhMotion(bvhPath, character, options);
+  character.clips.push_back(std::move(motion.clip));
+  if (match) *match = std::move(motion.match);
   return static_cast<int>(character.clips.size()) - 1;
 }
 
@@ -42,9 +44,12 @@ LoadedScene resolveSceneDocument(const SceneDocument& document, const std::strin
   }
   if (document.scale != 1.0f) scene.character.scaleUniformly(document.scale);
   if (!document.motionFile.empty()) {
-    const std::string map =
-        document.motionMapFile.empty() ? "" : resolveDocumentPath(documentPath, document.motionMapFile);
-    scene.clipIndex = addMotion(scene.character, resolveDocumentPath(documentPath, document.motionFile), map);
+    MotionOptions options;
+    if (!document.motionMapFile.empty()) options.nameMapPath = resolveDocumentPath(documentPath, document.motionMapFile);
+    options.inPlace = document.motionInPlace;
+    scene.motionMatch.emplace();
+    scene.clipIndex = addMotion(scene.character, resolveDocumentPath(documentPath, document.motionFile), options,
+                                &*scene.motionMatch);
   }
   if (!document.clip.empty()) {
     scene.clipIndex = scene.character.findClip(document.clip);

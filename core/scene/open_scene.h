@@ -3,9 +3,11 @@
 // a character file (glTF, GLB, FBX, DAE, BVH) or a scene document. The CLI
 // and the editor both go through here, so they agree on what a FILE means.
 
+#include <optional>
 #include <string>
 
 #include "core/character/character.h"
+#include "core/io/bvh_import.h"
 #include "core/scene/scene_document.h"
 
 namespace mq {
@@ -19,6 +21,8 @@ struct LoadedScene {
   // The character file's materials before the document's changes (the
   // editor diffs against them when it saves).
   std::vector<Material> fileMaterials;
+  // How the document's motion was paired with the character (when it has one).
+  std::optional<BoneMatchReport> motionMatch;
 };
 
 // Applies a document's material changes to `character` by material name; a
@@ -36,8 +40,10 @@ std::vector<std::string> loadNotices(const LoadedScene& scene);
 // pose. `documentPath` resolves relative paths ("" = relative to the cwd).
 LoadedScene resolveSceneDocument(const SceneDocument& document, const std::string& documentPath);
 
-// Adds a BVH motion to `character` as a new clip and returns its index.
-int addMotion(Character& character, const std::string& bvhPath, const std::string& nameMapPath = "");
+// Adds a BVH motion to `character` as a new clip and returns its index;
+// `match` (optional) receives how its joints were paired with the bones.
+int addMotion(Character& character, const std::string& bvhPath, const MotionOptions& options = {},
+              BoneMatchReport* match = nullptr);
 
 // Pose rotations keyed by bone name <-> bone index (unknown names throw Error).
 PoseEdits poseEditsFromNames(const std::map<std::string, glm::quat>& rotations, const Skeleton& skeleton);

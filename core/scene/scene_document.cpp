@@ -63,6 +63,10 @@ SceneDocument fromJson(const json& root) {
     if (!m.is_object()) throw Error("\"motion\" must be an object with a \"file\"");
     doc.motionFile = readString(m, "file");
     doc.motionMapFile = readString(m, "map");
+    if (m.contains("inPlace")) {
+      if (!m["inPlace"].is_boolean()) throw Error("\"motion\".\"inPlace\" must be true or false");
+      doc.motionInPlace = m["inPlace"].get<bool>();
+    }
   }
   if (root.contains("animation")) {
     const json& a = root["animation"];
@@ -155,6 +159,7 @@ json toJson(const SceneDocument& doc) {
   if (!doc.motionFile.empty()) {
     root["motion"] = {{"file", doc.motionFile}};
     if (!doc.motionMapFile.empty()) root["motion"]["map"] = doc.motionMapFile;
+    if (doc.motionInPlace) root["motion"]["inPlace"] = true;
   }
   root["animation"] = {{"clip", doc.clip}, {"time", doc.time}};
   json pose = json::object();

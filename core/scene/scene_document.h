@@ -7,7 +7,7 @@
 //
 //   { "format": "mannequin-scene", "version": 1,
 //     "character": "default" | "relative/or/absolute/path.glb" | null,
-//     "motion": {"file": "walk.bvh", "map": "names.txt"},        (optional)
+//     "motion": {"file": "walk.bvh", "map": "names.txt", "inPlace": false},   (optional)
 //     "animation": {"clip": "walk", "time": 0.5},
 //     "pose": {"upperarm_l": [x, y, z, w], ...},   local rotation edits
 //     "view": {"skeleton": false, "look": "auto", "camera": {"position": [..], "focus": [..]}},
@@ -44,6 +44,7 @@ struct SceneDocument {
   std::string character = "default";  // "default", a file path, or "" for none
   std::string motionFile;             // BVH applied to the character, optional
   std::string motionMapFile;          // bone-name map for the BVH, optional
+  bool motionInPlace = false;         // the root's horizontal travel dropped
   std::string clip;                   // clip name or index; "" = the first clip
   float time = 0.0f;
   std::map<std::string, glm::quat> poseRotations;  // bone name -> local rotation edit

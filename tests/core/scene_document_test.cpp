@@ -23,6 +23,7 @@ TEST(SceneDocument, RoundTripKeepsEverything) {
   SceneDocument doc;
   doc.character = "chars/hero.glb";
   doc.motionFile = "walk.bvh";
+  doc.motionInPlace = true;
   doc.clip = "walk";
   doc.time = 0.75f;
   doc.poseRotations["upperarm_l"] = glm::normalize(glm::quat(0.9f, 0.1f, 0.2f, 0.3f));
@@ -36,6 +37,7 @@ TEST(SceneDocument, RoundTripKeepsEverything) {
   const SceneDocument back = loadSceneDocument(path.string());
   EXPECT_EQ(back.character, doc.character);
   EXPECT_EQ(back.motionFile, doc.motionFile);
+  EXPECT_TRUE(back.motionInPlace);
   EXPECT_EQ(back.clip, "walk");
   EXPECT_FLOAT_EQ(back.time, 0.75f);
   ASSERT_EQ(back.poseRotations.count("upperarm_l"), 1u);
@@ -73,6 +75,8 @@ TEST(SceneDocument, BadDocumentsFailClearly) {
   expectFileError(R"({"format":"mannequin-scene","version":1,"animation":{"time":"soon"}})", "number");
   expectFileError(R"({"format":"mannequin-scene","version":1,"skinning":{"helper_bones":"yes"}})",
                   "skinning.helper_bones must be true or false");
+  expectFileError(R"({"format":"mannequin-scene","version":1,"motion":{"file":"a.bvh","inPlace":"yes"}})",
+                  "\"motion\".\"inPlace\" must be true or false");
 }
 
 TEST(SceneDocument, MissingFileNamesTheFile) {

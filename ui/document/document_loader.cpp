@@ -33,8 +33,13 @@ LoadedDocument loadDocument(const QString& fileOrDefault) {
   return out;
 }
 
-Clip loadMotion(const QString& bvhPath, const Character& target, const QString& nameMapPath) {
-  return importBvhMotion(bvhPath.toStdString(), target, nameMapPath.toStdString());
+LoadedMotion loadMotion(const QString& bvhPath, const Character& target, const QString& nameMapPath, bool inPlace) {
+  LoadedMotion out;
+  out.motion = retargetBvhMotion(bvhPath.toStdString(), target, {nameMapPath.toStdString(), inPlace});
+  out.bvhPath = QFileInfo(bvhPath).absoluteFilePath();
+  out.nameMapPath = nameMapPath.isEmpty() ? QString() : QFileInfo(nameMapPath).absoluteFilePath();
+  out.inPlace = inPlace;
+  return out;
 }
 
 bool isMotionFile(const QString& path) { return suffixOf(path) == "bvh"; }

@@ -5,6 +5,7 @@
 
 #include <QString>
 
+#include "core/io/bvh_import.h"
 #include "ui/document/editor_document.h"
 
 namespace mq::ui {
@@ -13,9 +14,19 @@ namespace mq::ui {
 // character, motion and edits. Otherwise a character file (glTF, GLB, FBX, DAE).
 LoadedDocument loadDocument(const QString& fileOrDefault);
 
-// A BVH motion retargeted onto `target` by bone names, optionally through a
-// name-map file (lines "bvh_joint target_bone"; see core/io/bvh_import.h).
-Clip loadMotion(const QString& bvhPath, const Character& target, const QString& nameMapPath = QString());
+// A BVH motion retargeted onto a character, and the choices that made it.
+struct LoadedMotion {
+  RetargetedMotion motion;  // the clip and how joints were paired with bones
+  QString bvhPath;          // absolute
+  QString nameMapPath;      // absolute, empty for none
+  bool inPlace = false;
+};
+
+// A BVH motion retargeted onto `target` by bone names and humanoid roles,
+// through a name-map file first when given (lines "bvh_joint target_bone";
+// see core/io/bone_match.h); `inPlace` drops the root's horizontal travel.
+LoadedMotion loadMotion(const QString& bvhPath, const Character& target, const QString& nameMapPath = QString(),
+                        bool inPlace = false);
 
 // File kinds by extension.
 bool isMotionFile(const QString& path);

@@ -155,8 +155,16 @@ void EditorDocument::addClip(Clip clip) {
   emit clipsChanged();
   clipIndex_ = -2;  // force setClip to apply and signal
   setClip(static_cast<int>(character_.clips.size()) - 1);
-  unsavedSectionChanges_ = true;
-  emit modifiedChanged(true);
+}
+
+void EditorDocument::removeLastClip(int clipIndex, float seconds) {
+  if (character_.clips.empty()) return;
+  clipIndex_ = -1;  // the panels must not read the clip going away
+  character_.clips.pop_back();
+  emit clipsChanged();
+  clipIndex_ = -2;  // force setClip to apply and signal
+  setClip(std::min(clipIndex, static_cast<int>(character_.clips.size()) - 1));
+  setTime(seconds);
 }
 
 // --- selection and view -------------------------------------------------------------

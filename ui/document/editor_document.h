@@ -71,8 +71,12 @@ class EditorDocument : public QObject {
   // cloth and colliders without a character scrubs its bake on it (the
   // garment tool sets it from the bake's length). The pose stays the rest pose.
   void setNoClipDuration(float seconds);
-  // Adds a clip (e.g. an imported BVH motion) and makes it current.
+  // Adds a clip (e.g. an imported BVH motion) and makes it current. Callers
+  // outside the undo stack mark the change with notifyChanged().
   void addClip(Clip clip);
+  // Removes the last clip (undoing addClip) and returns to `clipIndex` at
+  // `seconds`.
+  void removeLastClip(int clipIndex, float seconds);
 
   // How the skin follows the bones (saved in the document's "skinning").
   SkinningMethod skinning() const { return character_.skinning; }
