@@ -323,6 +323,7 @@ void MainWindow::addToolDock(QDockWidget* dock, Qt::DockWidgetArea area) {
 
 void MainWindow::connectDocument() {
   connect(document_, &EditorDocument::characterReplaced, this, &MainWindow::onCharacterReplaced);
+  connect(document_, &EditorDocument::skeletonChanged, this, &MainWindow::showCharacter);
   connect(document_, &EditorDocument::poseChanged, this, &MainWindow::onPoseChanged);
   connect(document_, &EditorDocument::selectionChanged, this, &MainWindow::onSelectionChanged);
   connect(document_, &EditorDocument::viewSettingsChanged, this, [this] {
@@ -349,13 +350,18 @@ void MainWindow::connectDocument() {
 // --- document -> scene ---------------------------------------------------------------
 
 void MainWindow::onCharacterReplaced() {
+  showCharacter();
+  restoreCamera();
+  followedRoot_ = followAction_->isChecked() ? rootOnGround() : std::nullopt;  // follow from here
+  viewport_->requestRender();
+}
+
+void MainWindow::showCharacter() {
   scene_->setCharacter(document_->character());
   applyLook();
   scene_->updatePose(document_->posed());
   scene_->setSkeletonVisible(document_->viewSettings().showSkeleton);
   scene_->setHighlightedBone(-1);
-  restoreCamera();
-  followedRoot_ = followAction_->isChecked() ? rootOnGround() : std::nullopt;  // follow from here
   statsLabel_->setText(document_->summary());
   updateTitle();
   viewport_->requestRender();

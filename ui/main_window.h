@@ -129,6 +129,8 @@ class MainWindow : public QMainWindow {
 
   // Document -> scene sync
   void onCharacterReplaced();
+  // Shows the document's character (its skeleton changed, or it was replaced).
+  void showCharacter();
   void onPoseChanged();
   void followCharacter();
   // The root bone's position projected on the ground (y = 0); none without bones.

@@ -78,6 +78,8 @@ void Character::scaleUniformly(float factor) {
     mesh.sectionCones.reset();
     if (mesh.implicitBody) mesh.implicitBody = scaledBody(*mesh.implicitBody, factor);
   }
+  for (SkinBinding& skin : skinsBeforeHelpers)
+    for (glm::mat4& m : skin.inverseBind) scaleTranslation(m, factor);
   for (int b = 0; b < skeleton.boneCount(); ++b) {
     Bone& bone = skeleton.bone(b);
     bone.rest.translation *= factor;

@@ -33,6 +33,7 @@ struct Character {
   SkinningMethod skinning = SkinningMethod::Lbs;
   // Procedural bones at the joints (helper_bones.h), driven by the pose.
   std::vector<HelperBone> helperBones;
+  std::vector<SkinBinding> skinsBeforeHelpers;  // per mesh, to take the helpers out again
 
   size_t vertexCount() const;
   size_t triangleCount() const;

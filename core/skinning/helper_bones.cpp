@@ -69,6 +69,7 @@ void dropEmpty(Influences& list) {
 // the smaller of their weights.
 void moveToHalfAngle(std::vector<Influences>& influences, int parent, int driver, int helper) {
   for (Influences& list : influences) {
+    list.reserve(list.size() + 3);  // weightOf may append: keep the references valid
     float& wp = weightOf(list, parent);
     float& wd = weightOf(list, driver);
     const float shared = std::min(wp, wd);
@@ -88,6 +89,7 @@ void spreadOverTwist(const Mesh& mesh, std::vector<Influences>& influences, int 
   if (length2 <= 0.0f) return;
   for (size_t v = 0; v < influences.size(); ++v) {
     Influences& list = influences[v];
+    list.reserve(list.size() + 3);  // weightOf may append: keep the references valid
     float& wf = weightOf(list, forearm);
     const float total = wf;
     if (total > 0.0f) {
@@ -214,20 +216,35 @@ glm::quat twistAbout(const glm::quat& q, const glm::vec3& axis) {
   return length > 1e-8f ? twist / length : glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
 }
 
-int addHelperBones(Character& character, std::string* why) {
-  auto refuse = [&](const std::string& reason) {
-    if (why) *why = reason;
-    return 0;
-  };
-  if (!character.helperBones.empty()) return refuse("the character has helper bones already");
-  HumanoidBones roles;
+namespace {
+
+// The humanoid's roles, or why helpers cannot be added.
+std::string rolesFor(const Character& character, HumanoidBones& roles) {
+  if (!character.helperBones.empty()) return "the character has helper bones already";
   try {
     roles = findHumanoidBones(character.skeleton, character.skeleton.worldTransforms(character.skeleton.restPose()));
   } catch (const Error& e) {
-    return refuse(std::string("helper bones need a humanoid: ") + e.what());
+    return std::string("helper bones need a humanoid: ") + e.what();
   }
-  const int added = HelperBuilder(character).build(roles);
-  if (added == 0) return refuse("no elbow, knee or forearm joint to add helpers to");
+  return {};
+}
+
+}  // namespace
+
+std::string helperBonesRefusal(const Character& character) {
+  HumanoidBones roles;
+  return rolesFor(character, roles);
+}
+
+int addHelperBones(Character& character, std::string* why) {
+  HumanoidBones roles;
+  std::string refusal = rolesFor(character, roles);
+  std::vector<SkinBinding> before;
+  for (const Mesh& mesh : character.meshes) before.push_back(mesh.skin);
+  const int added = refusal.empty() ? HelperBuilder(character).build(roles) : 0;
+  if (added > 0) character.skinsBeforeHelpers = std::move(before);
+  if (added == 0 && refusal.empty()) refusal = "no shoulder, elbow, hip, knee or forearm joint to add helpers to";
+  if (why) *why = refusal;
   return added;
 }
 
@@ -235,45 +252,15 @@ void removeHelperBones(Character& character) {
   if (character.helperBones.empty()) return;
   int first = character.skeleton.boneCount();
   for (const HelperBone& h : character.helperBones) first = std::min(first, h.bone);
-  auto helperOf = [&](int bone) -> const HelperBone* {
-    for (const HelperBone& h : character.helperBones)
-      if (h.bone == bone) return &h;
-    return nullptr;
-  };
-  for (Mesh& mesh : character.meshes) {
-    if (mesh.skin.empty()) continue;
-    SkinBinding& skin = mesh.skin;
-    size_t kept = skin.jointBones.size();
-    while (kept > 0 && skin.jointBones[kept - 1] >= first) --kept;
-    std::vector<Influences> influences = influencesOf(skin, mesh.vertexCount());
-    for (Influences& list : influences) {
-      Influences back;
-      for (const auto& [joint, weight] : list) {
-        const HelperBone* h = size_t(joint) >= kept ? helperOf(skin.jointBones[joint]) : nullptr;
-        if (!h) {
-          back.push_back({joint, weight});
-          continue;
-        }
-        const int parent = jointOf(skin, character.skeleton.bone(h->bone).parent);
-        const int driver = jointOf(skin, h->driver);
-        if (h->kind == HelperBone::Kind::HalfAngle && parent >= 0 && driver >= 0) {
-          weightOf(back, parent) += 0.5f * weight;
-          weightOf(back, driver) += 0.5f * weight;
-        } else if (parent >= 0) {
-          weightOf(back, parent) += weight;
-        }
-      }
-      list = std::move(back);
-    }
-    skin.jointBones.resize(kept);
-    skin.inverseBind.resize(kept);
-    setInfluences(skin, influences);
-    mesh.sectionCones.reset();
+  for (size_t m = 0; m < character.meshes.size() && m < character.skinsBeforeHelpers.size(); ++m) {
+    character.meshes[m].skin = character.skinsBeforeHelpers[m];
+    character.meshes[m].sectionCones.reset();
   }
   Skeleton skeleton;
   for (int b = 0; b < first; ++b) skeleton.addBone(character.skeleton.bone(b));
   character.skeleton = std::move(skeleton);
   character.helperBones.clear();
+  character.skinsBeforeHelpers.clear();
 }
 
 void driveHelperBones(const std::vector<HelperBone>& helpers, const Skeleton& skeleton, Pose& pose) {

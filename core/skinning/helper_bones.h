@@ -45,10 +45,13 @@ struct HelperBone {
 // a humanoid, is left as it is (0; `why` says why when given).
 int addHelperBones(Character& character, std::string* why = nullptr);
 
-// Takes the helpers out again: their weights go back to the bones they came
-// from (half to the parent and half to the driver for a half-angle bone, to
-// the forearm for a twist bone). The helpers must be the skeleton's last bones
-// and joints, as addHelperBones leaves them.
+// Why addHelperBones would add nothing to `character`; empty when it would
+// add some.
+std::string helperBonesRefusal(const Character& character);
+
+// Takes the helpers out again and gives the skins back their weights as they
+// were. The helpers must be the skeleton's last bones, as addHelperBones
+// leaves them.
 void removeHelperBones(Character& character);
 
 // Sets each helper's local transform in `pose` from its driver's.

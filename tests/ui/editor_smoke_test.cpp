@@ -499,6 +499,43 @@ class EditorSmokeTest : public QObject {
     QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));
   }
 
+  void helperBonesAreUndoableAndSaved() {
+    // Bend the left elbow 120 degrees, then tick Helper bones as a user would.
+    const int forearm = bone("forearm_l");
+    doc()->undoStack()->push(new SetBoneRotationCommand(doc(), forearm, quatFromEulerDegrees({120, 0, 0})));
+    QCheckBox* box = window_->properties()->helperBonesBox();
+    QVERIFY(!box->isChecked());
+    const int bones = doc()->character().skeleton.boneCount();
+    const std::vector<float> plain = allPositions(*doc());
+    const int commands = doc()->undoStack()->index();
+    box->click();
+    QVERIFY(doc()->helperBones());
+    QCOMPARE(doc()->undoStack()->index(), commands + 1);
+    QCOMPARE(doc()->character().skeleton.boneCount(), bones + 12);
+    const std::vector<float> helped = allPositions(*doc());
+    QVERIFY2(maxDifference(plain, helped) > 0.005f, "helper bones at a 120-degree elbow moved nothing");
+    QVERIFY(doc()->poseEdits().rotations.count(forearm) == 1);  // the pose is kept
+
+    doc()->undoStack()->undo();
+    QVERIFY(!doc()->helperBones());
+    QVERIFY(!box->isChecked());
+    QCOMPARE(doc()->character().skeleton.boneCount(), bones);
+    QVERIFY2(maxDifference(plain, allPositions(*doc())) < 1e-5f, "removing the helpers did not restore the skin");
+    doc()->undoStack()->redo();
+
+    QTemporaryDir dir;
+    const QString path = dir.filePath("helpers.mqscene");
+    QString error;
+    QVERIFY2(window_->saveDocument(path, &error), qPrintable(error));
+    QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));
+    QVERIFY(!doc()->helperBones());
+    QVERIFY2(window_->openFileNow(path, &error), qPrintable(error));
+    QVERIFY(doc()->helperBones());
+    QVERIFY(box->isChecked());
+    QVERIFY2(maxDifference(helped, allPositions(*doc())) < 1e-5f, "the reopened document poses differently");
+    QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));
+  }
+
   void exportWritesTheMesh() {
     QTemporaryDir dir;
     const QString path = dir.filePath("posed.obj");

@@ -107,6 +107,28 @@ void EditorDocument::setSkinning(SkinningMethod method) {
   emit documentChanged();
 }
 
+std::string EditorDocument::setHelperBones(bool on) {
+  if (on == helperBones()) return {};
+  if (on) {
+    std::string why;
+    if (addHelperBones(character_, &why) == 0) return why;
+  } else {
+    removeHelperBones(character_);
+    const int bones = character_.skeleton.boneCount();
+    for (auto it = edits_.rotations.begin(); it != edits_.rotations.end();)
+      it = it->first >= bones ? edits_.rotations.erase(it) : std::next(it);
+    if (selectedBone_ >= bones) selectedBone_ = -1;
+  }
+  scene_.helperBones = on;
+  prepareSkinning(character_);
+  evaluatePose();
+  emit skeletonChanged();
+  emit selectionChanged();
+  emit poseChanged();
+  emit documentChanged();
+  return {};
+}
+
 void EditorDocument::evaluatePose() {
   posed_.evaluate(character_, clipIndex_, time_, &edits_, &ThreadPool::shared());
 }

@@ -82,6 +82,11 @@ class EditorDocument : public QObject {
   SkinningMethod skinning() const { return character_.skinning; }
   // Binds the section cones on first use of that method.
   void setSkinning(SkinningMethod method);
+  // Helper bones at the joints (saved in the document's skinning section).
+  // Adding them to a character that cannot have them changes nothing and
+  // returns why; removing gives the weights back.
+  bool helperBones() const { return !character_.helperBones.empty(); }
+  std::string setHelperBones(bool on);
 
   // Materials: the user's changes are saved in the scene document as
   // overrides of the file's material (the file is never modified).
@@ -115,6 +120,7 @@ class EditorDocument : public QObject {
 
  signals:
   void characterReplaced();
+  void skeletonChanged();  // bones added or removed on the same character (helper bones)
   void poseChanged();  // the posed meshes changed (edit, clip or time)
   void timeChanged(float seconds);
   void clipChanged(int clipIndex);

@@ -45,4 +45,11 @@ SetSkinningCommand::SetSkinningCommand(EditorDocument* document, SkinningMethod 
 void SetSkinningCommand::undo() { document_->setSkinning(before_); }
 void SetSkinningCommand::redo() { document_->setSkinning(after_); }
 
+SetHelperBonesCommand::SetHelperBonesCommand(EditorDocument* document, bool on) : document_(document), on_(on) {
+  setText(on ? QObject::tr("Add helper bones") : QObject::tr("Remove helper bones"));
+}
+
+void SetHelperBonesCommand::undo() { document_->setHelperBones(!on_); }
+void SetHelperBonesCommand::redo() { document_->setHelperBones(on_); }
+
 }  // namespace mq::ui

@@ -63,4 +63,16 @@ class SetSkinningCommand : public QUndoCommand {
   SkinningMethod after_;
 };
 
+// Adds or removes the helper bones at the joints.
+class SetHelperBonesCommand : public QUndoCommand {
+ public:
+  SetHelperBonesCommand(EditorDocument* document, bool on);
+  void undo() override;
+  void redo() override;
+
+ private:
+  EditorDocument* document_;
+  bool on_;
+};
+
 }  // namespace mq::ui

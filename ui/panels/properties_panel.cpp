@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -16,6 +17,7 @@
 #include <QtConcurrent/QtConcurrentRun>
 
 #include "core/math/transform.h"
+#include "core/skinning/helper_bones.h"
 #include "core/skinning/skin_metrics.h"
 #include "ui/document/editor_document.h"
 #include "ui/document/pose_commands.h"
@@ -44,6 +46,7 @@ PropertiesPanel::PropertiesPanel(EditorDocument* document, QWidget* parent)
 
   connect(document_, &EditorDocument::selectionChanged, this, &PropertiesPanel::showSelection);
   connect(document_, &EditorDocument::characterReplaced, this, &PropertiesPanel::showSelection);
+  connect(document_, &EditorDocument::skeletonChanged, this, &PropertiesPanel::showSelection);
   connect(document_, &EditorDocument::poseChanged, this, [this] {
     ++poseGeneration_;
     crossings_->setText(tr("-"));
@@ -90,6 +93,20 @@ QWidget* PropertiesPanel::makeCharacterPage() {
     if (method != document_->skinning()) document_->undoStack()->push(new SetSkinningCommand(document_, method));
   });
   form->addRow(tr("Skinning"), skinning_);
+  helperBones_ = new QCheckBox(tr("Helper bones"));
+  helperBones_->setToolTip(tr("Small bones at the shoulders, elbows, hips and knees that turn half as far as the "
+                              "limb, and two twist bones in each forearm: linear blend skinning then keeps bent "
+                              "joints round and twisted forearms thick. A humanoid's only."));
+  connect(helperBones_, &QCheckBox::clicked, this, [this](bool on) {
+    const std::string refusal = on ? helperBonesRefusal(document_->character()) : std::string();
+    if (!refusal.empty()) {
+      helperBones_->setChecked(false);
+      helperBones_->setToolTip(QString::fromStdString(refusal));
+      return;
+    }
+    if (on != document_->helperBones()) document_->undoStack()->push(new SetHelperBonesCommand(document_, on));
+  });
+  form->addRow(QString(), helperBones_);
   crossings_ = new QLabel(tr("-"));
   crossings_->setToolTip(tr("Triangle pairs of the skin that cross each other at this pose (exact predicates): "
                             "what a fold or a limb pressed into the body does to the mesh."));
@@ -149,6 +166,7 @@ void PropertiesPanel::showCharacter() {
   characterClips_->setToolTip(clips.join("\n"));
   characterEdits_->setText(QString::number(document_->poseEdits().rotations.size()));
   skinning_->setCurrentIndex(skinning_->findData(int(document_->skinning())));
+  helperBones_->setChecked(document_->helperBones());
 }
 
 QWidget* PropertiesPanel::makeBonePage() {

@@ -12,6 +12,7 @@
 #include <QFutureWatcher>
 #include <QWidget>
 
+class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
@@ -32,6 +33,7 @@ class PropertiesPanel : public QWidget {
   QDoubleSpinBox* angleBox(int axis) const { return angles_[axis]; }
   QPushButton* resetButton() const { return resetBone_; }
   QComboBox* skinningBox() const { return skinning_; }
+  QCheckBox* helperBonesBox() const { return helperBones_; }
   QPushButton* countCrossingsButton() const { return countCrossings_; }
   MaterialPage* materialPage() const { return materialPage_; }
   QLabel* crossingsLabel() const { return crossings_; }
@@ -64,6 +66,7 @@ class PropertiesPanel : public QWidget {
   QLabel* characterClips_ = nullptr;
   QLabel* characterEdits_ = nullptr;
   QComboBox* skinning_ = nullptr;
+  QCheckBox* helperBones_ = nullptr;
   QLabel* crossings_ = nullptr;
   QPushButton* countCrossings_ = nullptr;
   QFutureWatcher<long> crossingsWatcher_;

@@ -28,6 +28,7 @@ SceneTreePanel::SceneTreePanel(EditorDocument* document, QWidget* parent)
   tree_->setUniformRowHeights(true);
 
   connect(document_, &EditorDocument::characterReplaced, this, &SceneTreePanel::rebuild);
+  connect(document_, &EditorDocument::skeletonChanged, this, &SceneTreePanel::rebuild);
   connect(document_, &EditorDocument::selectionChanged, this, &SceneTreePanel::showSelection);
   connect(document_, &EditorDocument::poseChanged, this, &SceneTreePanel::showPoseEdits);
   connect(tree_, &QTreeWidget::currentItemChanged, this,

@@ -38,6 +38,7 @@ PoseTool::PoseTool(EditorDocument* document, render::SceneView* scene, VtkViewpo
   connect(document_, &EditorDocument::poseChanged, this, &PoseTool::updateGizmo);
   connect(document_, &EditorDocument::selectionChanged, this, &PoseTool::updateGizmo);
   connect(document_, &EditorDocument::characterReplaced, this, &PoseTool::updateGizmo);
+  connect(document_, &EditorDocument::skeletonChanged, this, &PoseTool::updateGizmo);
 }
 
 glm::quat PoseTool::editAfterWorldRotation(const glm::quat& editBefore, const glm::quat& worldRotationBefore,
