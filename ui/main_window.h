@@ -76,6 +76,11 @@ class MainWindow : public QMainWindow {
   // Same, on the calling thread (tests, scripts). False and `error` on failure.
   bool openFileNow(const QString& fileOrDefault, QString* error = nullptr);
   bool saveDocument(const QString& path, QString* error = nullptr);
+  // Where Save As starts: the document itself, unless it is one of the
+  // shipped examples (resources/scenes), lives in a folder the user cannot
+  // write, or is not a scene document yet; then `documentsDir`.
+  static QString saveAsProposal(const QString& documentPath, const QString& characterName,
+                                const QString& documentsDir);
   bool exportPosedMesh(const QString& path, QString* error = nullptr);
   void frameAll();
   void setSkeletonVisible(bool visible);

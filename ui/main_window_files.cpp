@@ -18,6 +18,7 @@
 #include <QMimeData>
 #include <QProgressBar>
 #include <QSettings>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QUndoStack>
 #include <QtConcurrent/QtConcurrentRun>
@@ -56,9 +57,7 @@ bool MainWindow::maybeDiscardChanges() {
   return !document_->isModified() || !confirmDiscardChanges || confirmDiscardChanges();
 }
 
-void MainWindow::newDocument() {
-  if (maybeDiscardChanges()) openFile("default");
-}
+void MainWindow::newDocument() { openFile("default"); }
 
 void MainWindow::openWithDialog() {
   QSettings settings;
@@ -66,7 +65,7 @@ void MainWindow::openWithDialog() {
   const QString path = QFileDialog::getOpenFileName(this, tr("Open"), start, openFileFilter());
   if (path.isEmpty()) return;
   settings.setValue("lastDirectory", QFileInfo(path).absolutePath());
-  if (isMotionFile(path) || maybeDiscardChanges()) openFile(path);
+  openFile(path);
 }
 
 void MainWindow::setBusy(bool busy, const QString& message) {
@@ -116,6 +115,13 @@ void MainWindow::openFile(const QString& fileOrDefault) {
     if (auto* error = std::get_if<QString>(&outcome)) {
       statusBar()->showMessage(tr("Could not open %1").arg(fileOrDefault), 8000);
       if (reportError) reportError(tr("Could not open the file"), *error);
+      emit loadFinished(false);
+      return;
+    }
+    // Asked only now that the new file has been read: a file that fails to
+    // open costs the open document nothing.
+    if (!maybeDiscardChanges()) {
+      statusBar()->showMessage(tr("Kept the open document; %1 was not opened").arg(fileOrDefault), 8000);
       emit loadFinished(false);
       return;
     }
@@ -254,8 +260,22 @@ bool MainWindow::save() {
   return false;
 }
 
+QString MainWindow::saveAsProposal(const QString& documentPath, const QString& characterName,
+                                   const QString& documentsDir) {
+  const QFileInfo current(documentPath);
+  const QString folder = current.absolutePath();
+  const bool example = QDir::fromNativeSeparators(folder).endsWith("/resources/scenes");
+  if (!documentPath.isEmpty() && !example && QFileInfo(folder).isWritable()) return documentPath;
+  const QString name = documentPath.isEmpty() ? (characterName.isEmpty() ? QString("scene") : characterName)
+                                              : current.completeBaseName();
+  return QDir(documentsDir).filePath(name + ".mqscene");
+}
+
 bool MainWindow::saveAs() {
-  QString path = QFileDialog::getSaveFileName(this, tr("Save Scene"), document_->documentPath(), saveSceneFilter());
+  const QString start =
+      saveAsProposal(document_->documentPath(), QString::fromStdString(document_->character().name),
+                     QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation));
+  QString path = QFileDialog::getSaveFileName(this, tr("Save Scene"), start, saveSceneFilter());
   if (path.isEmpty()) return false;
   if (QFileInfo(path).suffix().isEmpty()) path += ".mqscene";
   QString error;
@@ -305,7 +325,7 @@ void MainWindow::rebuildRecentMenu() {
     QAction* action = recentMenu_->addAction(QFileInfo(file).fileName());
     action->setToolTip(file);
     connect(action, &QAction::triggered, this, [this, file] {
-      if (isMotionFile(file) || maybeDiscardChanges()) openFile(file);
+      openFile(file);
     });
   }
   recentMenu_->setEnabled(!files.isEmpty() && !busy_);
@@ -345,7 +365,7 @@ void MainWindow::dropEvent(QDropEvent* event) {
     const QString path = url.toLocalFile();
     if (!isOpenableFile(path)) continue;
     event->acceptProposedAction();
-    if (isMotionFile(path) || maybeDiscardChanges()) openFile(path);
+    openFile(path);
     return;
   }
 }

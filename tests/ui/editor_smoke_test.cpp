@@ -362,6 +362,52 @@ class EditorSmokeTest : public QObject {
     doc()->setBoneRotation(upperarm, std::nullopt);
   }
 
+  void unsavedChangesAreAskedAboutOnlyOnceTheNewFileIsRead() {
+    QTemporaryDir dir;
+    const QString broken = dir.filePath("broken.glb");
+    QFile file(broken);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("not a glTF");
+    file.close();
+    const int upperarm = bone("upperarm_l");
+    doc()->undoStack()->push(new SetBoneRotationCommand(doc(), upperarm, quatFromEulerDegrees({0, 0, 25})));
+    QVERIFY(doc()->isModified());
+    const std::vector<float> before = allPositions(*doc());
+
+    int asked = 0;
+    auto previousConfirm = window_->confirmDiscardChanges;
+    auto previousReport = window_->reportError;
+    window_->confirmDiscardChanges = [&asked] { return ++asked, false; };
+    window_->reportError = [](const QString&, const QString&) {};
+    QSignalSpy finished(window_, &MainWindow::loadFinished);
+    window_->openFile(broken);  // fails: nothing to ask
+    QVERIFY(finished.wait(20000));
+    QCOMPARE(asked, 0);
+    window_->openFile("default");  // read, then the user keeps the open document
+    QVERIFY(finished.wait(20000));
+    QCOMPARE(asked, 1);
+    QCOMPARE(finished.last().first().toBool(), false);
+    QVERIFY(doc()->isModified());
+    QCOMPARE(allPositions(*doc()), before);
+    window_->confirmDiscardChanges = previousConfirm;
+    window_->reportError = previousReport;
+    QString error;
+    QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));
+  }
+
+  void saveAsProposesTheDocumentsFolderForExamples() {
+    QTemporaryDir dir;
+    const QString documents = dir.filePath("Documents");
+    // An example scene: its name, in the user's documents.
+    QCOMPARE(MainWindow::saveAsProposal("/opt/mannequin/resources/scenes/hair_bob.json", "Mannequin", documents),
+             QDir(documents).filePath("hair_bob.mqscene"));
+    // A character file that is not a scene yet: the character's name.
+    QCOMPARE(MainWindow::saveAsProposal("", "CesiumMan", documents), QDir(documents).filePath("CesiumMan.mqscene"));
+    // The user's own scene, in a folder they can write: where it is.
+    const QString own = dir.filePath("mine.mqscene");
+    QCOMPARE(MainWindow::saveAsProposal(own, "Mannequin", documents), own);
+  }
+
   void windowStaysResponsiveWhileLoading() {
     // The default mannequin is polygonised on a worker thread: the event
     // loop keeps running meanwhile.
