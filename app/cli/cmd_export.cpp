@@ -1,6 +1,7 @@
-// mannequin-cli export FILE --out OUT.obj|.ply|.gltf|.glb [--clip NAME|INDEX --fps F]
+// mannequin-cli export FILE --out OUT.obj|.ply|.gltf|.glb [--clip NAME|INDEX --fps F] [--rigged]
 // Without --fps: the rest (bind) pose. With --fps: every frame of the clip,
 // one file per frame (OUT_0000.obj, OUT_0001.obj, ...), for other tools.
+// --rigged: one glTF with the skeleton, the skins and every clip.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include "app/cli/command.h"
 #include "core/character/posed_character.h"
 #include "core/io/mesh_export.h"
+#include "core/io/rigged_export.h"
 #include "core/scene/open_scene.h"
 #include "core/util/error.h"
 #include "core/util/thread_pool.h"
@@ -38,7 +40,7 @@ int exportSequence(const LoadedScene& scene, int clip, double fps, const std::st
 
 int runExport(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--out", "--clip", "--fps", "--skinning", "--helper-bones", "--scale"});
+  args.allowOnly({"--out", "--clip", "--fps", "--skinning", "--helper-bones", "--scale", "--rigged"});
   if (args.positional().size() != 1) throw Error("export needs exactly one FILE");
   const std::string out = args.option("--out");
   if (out.empty() || !isMeshExportPath(out)) throw Error("export needs --out OUT.obj, .ply, .gltf or .glb");
@@ -50,6 +52,18 @@ int runExport(const std::vector<std::string>& argv) {
     throw Error("'" + scene.character.name + "' has no meshes to write (a BVH holds a skeleton and motion only: "
                 "apply it to a character with pose FILE --motion BVH)");
 
+  if (args.has("--rigged")) {
+    if (!isRiggedExportPath(out)) throw Error("--rigged writes glTF: use --out OUT.gltf or OUT.glb");
+    if (args.has("--clip")) throw Error("--rigged writes every clip; --clip does not apply");
+    const double fps = args.number("--fps", 30.0);
+    exportRiggedCharacter(scene.character, out, static_cast<float>(fps));
+    std::cout << "wrote " << out << " (rigged: " << scene.character.skeleton.boneCount() << " bones"
+              << (scene.character.helperBones.empty()
+                      ? std::string()
+                      : " with " + std::to_string(scene.character.helperBones.size()) + " helper bones")
+              << ", " << scene.character.clips.size() << " clips sampled at " << fps << " fps)\n";
+    return 0;
+  }
   if (!args.has("--fps")) {
     if (args.has("--clip")) throw Error("--clip needs --fps (export writes one file per frame)");
     PosedCharacter posed;
@@ -66,8 +80,10 @@ int runExport(const std::vector<std::string>& argv) {
   return exportSequence(scene, clip, fps, out);
 }
 
-static Registration reg({"export", "FILE --out OUT.obj|.ply|.gltf|.glb [--clip NAME|INDEX --fps F] [--skinning lbs|dqs|cones] [--helper-bones] [--scale S]",
-                         "write the rest pose, or every frame of a clip (OUT_0000.obj ...), as meshes", runExport});
+static Registration reg({"export", "FILE --out OUT.obj|.ply|.gltf|.glb [--clip NAME|INDEX --fps F] [--skinning lbs|dqs|cones]\n"
+                         "         [--helper-bones] [--scale S] [--rigged [--fps F]]",
+                         "write the rest pose, or every frame of a clip (OUT_0000.obj ...), as meshes; --rigged: the\n"
+                         "skeleton, skins and every clip (sampled at F fps, 30 by default) as one glTF or GLB", runExport});
 
 }  // namespace
 }  // namespace mq::cli

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/io/file_bytes.h"
+#include "core/io/gltf_writer.h"
 #include "core/util/atomic_file.h"
 #include "core/util/error.h"
 
@@ -96,94 +97,40 @@ void writePly(std::ostream& out, const std::vector<const Mesh*>& meshes, const s
 
 // --- glTF 2.0 (static meshes, world space) --------------------------------
 
-void appendBytes(std::vector<uint8_t>& buffer, const void* data, size_t bytes) {
-  const size_t at = buffer.size();
-  buffer.resize(at + bytes);
-  std::memcpy(buffer.data() + at, data, bytes);
-  while (buffer.size() % 4) buffer.push_back(0);
-}
-
-std::string base64(const std::vector<uint8_t>& bytes) {
-  static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
-  for (size_t i = 0; i < bytes.size(); i += 3) {
-    const uint32_t n = (uint32_t(bytes[i]) << 16) | (i + 1 < bytes.size() ? uint32_t(bytes[i + 1]) << 8 : 0u) |
-                       (i + 2 < bytes.size() ? uint32_t(bytes[i + 2]) : 0u);
-    out += table[(n >> 18) & 63];
-    out += table[(n >> 12) & 63];
-    out += i + 1 < bytes.size() ? table[(n >> 6) & 63] : '=';
-    out += i + 2 < bytes.size() ? table[n & 63] : '=';
-  }
-  return out;
-}
-
-// One accessor over a new bufferView holding `count` elements.
-int addAccessor(nlohmann::json& gltf, std::vector<uint8_t>& buffer, const void* data, size_t count, const char* type,
-                int components, int componentType, int target) {
-  const size_t componentSize = componentType == 5126 || componentType == 5125 ? 4 : 2;
-  const size_t offset = buffer.size();
-  appendBytes(buffer, data, count * components * componentSize);
-  nlohmann::json view = {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", count * components * componentSize}};
-  if (target) view["target"] = target;
-  gltf["bufferViews"].push_back(view);
-  nlohmann::json accessor = {{"bufferView", gltf["bufferViews"].size() - 1},
-                             {"componentType", componentType}, {"count", count}, {"type", type}};
-  gltf["accessors"].push_back(accessor);
-  return static_cast<int>(gltf["accessors"].size()) - 1;
-}
-
-nlohmann::json buildGltf(const std::vector<const Mesh*>& meshes, const std::vector<PosedMesh>& posed,
-                         std::vector<uint8_t>& buffer) {
-  nlohmann::json gltf = {{"asset", {{"version", "2.0"}, {"generator", "mannequin posed-mesh export"}}},
-                         {"scene", 0}, {"scenes", {{{"nodes", nlohmann::json::array()}}}},
-                         {"nodes", nlohmann::json::array()}, {"meshes", nlohmann::json::array()},
-                         {"accessors", nlohmann::json::array()}, {"bufferViews", nlohmann::json::array()}};
+void buildGltf(GltfWriter& writer, const std::vector<const Mesh*>& meshes, const std::vector<PosedMesh>& posed) {
+  nlohmann::json& gltf = writer.json();
   for (size_t m = 0; m < meshes.size(); ++m) {
     const Mesh& mesh = *meshes[m];
     const PosedMesh& p = posed[m];
     const size_t n = p.positions.size() / 3;
     nlohmann::json attributes;
-    const int position = addAccessor(gltf, buffer, p.positions.data(), n, "VEC3", 3, 5126, 34962);
+    const int position = writer.addAccessor(p.positions.data(), n, "VEC3", 3, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
     const Aabb box = boundsOf(p.positions);  // the spec requires POSITION min/max
     gltf["accessors"][position]["min"] = {box.min.x, box.min.y, box.min.z};
     gltf["accessors"][position]["max"] = {box.max.x, box.max.y, box.max.z};
     attributes["POSITION"] = position;
-    if (p.normals.size() == 3 * n) attributes["NORMAL"] = addAccessor(gltf, buffer, p.normals.data(), n, "VEC3", 3, 5126, 34962);
-    if (mesh.uvs.size() == 2 * n) attributes["TEXCOORD_0"] = addAccessor(gltf, buffer, mesh.uvs.data(), n, "VEC2", 2, 5126, 34962);
+    if (p.normals.size() == 3 * n)
+      attributes["NORMAL"] = writer.addAccessor(p.normals.data(), n, "VEC3", 3, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
+    if (mesh.uvs.size() == 2 * n)
+      attributes["TEXCOORD_0"] = writer.addAccessor(mesh.uvs.data(), n, "VEC2", 2, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
     nlohmann::json primitive = {{"attributes", attributes}, {"mode", 4}};
     if (!mesh.triangles.empty())
-      primitive["indices"] = addAccessor(gltf, buffer, mesh.triangles.data(), mesh.triangles.size(), "SCALAR", 1, 5125, 34963);
+      primitive["indices"] = writer.addAccessor(mesh.triangles.data(), mesh.triangles.size(), "SCALAR", 1,
+                                                GltfWriter::kUnsignedInt, GltfWriter::kElementArrayBuffer);
     gltf["meshes"].push_back({{"name", mesh.name}, {"primitives", {primitive}}});
     gltf["nodes"].push_back({{"name", mesh.name}, {"mesh", m}});
     gltf["scenes"][0]["nodes"].push_back(m);
   }
-  return gltf;
 }
 
-void writeGltf(std::ostream& out, const std::vector<const Mesh*>& meshes, const std::vector<PosedMesh>& posed) {
-  std::vector<uint8_t> buffer;
-  nlohmann::json gltf = buildGltf(meshes, posed, buffer);
-  gltf["buffers"] = {{{"byteLength", buffer.size()}, {"uri", "data:application/octet-stream;base64," + base64(buffer)}}};
-  out << gltf.dump(1) << "\n";
-}
-
-void writeGlb(std::ostream& out, const std::vector<const Mesh*>& meshes, const std::vector<PosedMesh>& posed) {
-  std::vector<uint8_t> buffer;
-  nlohmann::json gltf = buildGltf(meshes, posed, buffer);
-  gltf["buffers"] = {{{"byteLength", buffer.size()}}};
-  std::string text = gltf.dump();
-  while (text.size() % 4) text += ' ';
-  const uint32_t total = 12 + 8 + uint32_t(text.size()) + 8 + uint32_t(buffer.size());
-  put(out, uint32_t(0x46546C67));
-  put(out, uint32_t(2));
-  put(out, total);
-  put(out, uint32_t(text.size()));
-  put(out, uint32_t(0x4E4F534A));
-  out.write(text.data(), static_cast<std::streamsize>(text.size()));
-  put(out, uint32_t(buffer.size()));
-  put(out, uint32_t(0x004E4942));
-  out.write(reinterpret_cast<const char*>(buffer.data()), static_cast<std::streamsize>(buffer.size()));
+void writeGltf(std::ostream& out, const std::vector<const Mesh*>& meshes, const std::vector<PosedMesh>& posed,
+               bool binary) {
+  GltfWriter writer("mannequin posed-mesh export");
+  buildGltf(writer, meshes, posed);
+  if (binary)
+    writer.writeGlb(out);
+  else
+    writer.writeGltf(out);
 }
 
 }  // namespace
@@ -205,9 +152,9 @@ void exportPosedMesh(const std::vector<const Mesh*>& meshes, const std::vector<P
   else if (ext == "ply")
     writeFileAtomically(path, [&](std::ostream& out) { writePly(out, meshes, posed); }, true);
   else if (ext == "gltf")
-    writeFileAtomically(path, [&](std::ostream& out) { writeGltf(out, meshes, posed); });
+    writeFileAtomically(path, [&](std::ostream& out) { writeGltf(out, meshes, posed, false); });
   else if (ext == "glb")
-    writeFileAtomically(path, [&](std::ostream& out) { writeGlb(out, meshes, posed); }, true);
+    writeFileAtomically(path, [&](std::ostream& out) { writeGltf(out, meshes, posed, true); }, true);
   else
     throw FileError(path, "cannot export to '." + ext + "' (use .obj, .ply, .gltf or .glb)");
 }
