@@ -11,7 +11,7 @@
 // before them (how long a frame of this scene alone stalls the loop right
 // now); the orbit with hair runs twice in turns with the bare one and the
 // better run of each counts, since a spike from other processes on the
-// machine can fall in either. Each step also checks that the hair really
+// machine can fall in either (the shadow-map toggle also runs twice). Each step also checks that the hair really
 // changed, so a test that does no work cannot pass.
 // Needs X: run under xvfb-run; `mannequin_gui_tests hair-stall`.
 #include <algorithm>
@@ -246,14 +246,23 @@ class HairStallTest : public QObject {
     QVERIFY2(guidePoints(*tool_) == guidesBeforeVortex_, "undo did not give the guides back");
   }
 
+  // On and off twice, the better round counting: the toggle recomputes the
+  // hair twice per round, so a spike from another process is twice as
+  // likely to fall in it as in the other edits (CI saw 508 ms once where
+  // this machine measures 380 ms).
   void togglingOpacityShadowMapsDoesNotStall() {
-    probe_.start();
-    panel()->shadowMapsBox()->setChecked(true);
-    waitUntilHairShown();
-    panel()->shadowMapsBox()->setChecked(false);
-    waitUntilHairShown();
-    recordEdit("opacity shadow maps on and off", probe_.stop());
-    QVERIFY(!tool_->opacityShadowMaps());
+    double best = INFINITY;
+    for (int round = 0; round < 2; ++round) {
+      probe_.start();
+      panel()->shadowMapsBox()->setChecked(true);
+      waitUntilHairShown();
+      QVERIFY(tool_->opacityShadowMaps());
+      panel()->shadowMapsBox()->setChecked(false);
+      waitUntilHairShown();
+      best = std::min(best, probe_.stop());
+      QVERIFY(!tool_->opacityShadowMaps());
+    }
+    recordEdit("opacity shadow maps on and off", best);
   }
 
   void editsStayUnderTheLimit() {
