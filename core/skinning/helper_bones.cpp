@@ -130,14 +130,17 @@ class HelperBuilder {
   }
 
  private:
+  // `rest` and `parentFromOffset` may belong to a bone of the skeleton, which
+  // adding a bone reallocates: only the copies in `bone` are used after that.
   int addBone(const std::string& name, int parent, const Trs& rest, const glm::mat4& parentFromOffset) {
     Bone bone;
     bone.name = name;
     bone.parent = parent;
     bone.rest = rest;
     bone.parentFromOffset = parentFromOffset;
-    const int index = c_.skeleton.addBone(bone);
-    restWorld_.push_back((parent >= 0 ? restWorld_[parent] : glm::mat4(1.0f)) * parentFromOffset * rest.matrix());
+    restWorld_.push_back((parent >= 0 ? restWorld_[parent] : glm::mat4(1.0f)) * bone.parentFromOffset *
+                         bone.rest.matrix());
+    const int index = c_.skeleton.addBone(std::move(bone));
     ++added_;
     return index;
   }
