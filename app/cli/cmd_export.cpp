@@ -58,10 +58,7 @@ int runExport(const std::vector<std::string>& argv) {
     const double fps = args.number("--fps", 30.0);
     exportRiggedCharacter(scene.character, out, static_cast<float>(fps));
     std::cout << "wrote " << out << " (rigged: " << scene.character.skeleton.boneCount() << " bones"
-              << (scene.character.helperBones.empty()
-                      ? std::string()
-                      : " with " + std::to_string(scene.character.helperBones.size()) + " helper bones")
-              << ", " << scene.character.clips.size() << " clips sampled at " << fps << " fps)\n";
+              << withHelperBones(scene.character) << ", " << scene.character.clips.size() << " clips sampled at " << fps << " fps)\n";
     return 0;
   }
   if (!args.has("--fps")) {

@@ -72,10 +72,7 @@ int runPose(const std::vector<std::string>& argv) {
             << scene.character.triangleCount() << " triangles, clip "
             << (clip >= 0 ? "'" + scene.character.clips[clip].name + "'" : std::string("none (rest pose)"))
             << " at t = " << time << " s, " << skinningMethodName(scene.character.skinning) << " skinning"
-            << (scene.character.helperBones.empty()
-                    ? ""
-                    : " with " + std::to_string(scene.character.helperBones.size()) + " helper bones")
-            << "\n";
+            << withHelperBones(scene.character) << "\n";
   return 0;
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 namespace mq {
+struct Character;
 struct LoadedScene;
 struct BoneMatchReport;
 }
@@ -50,6 +51,8 @@ class Args {
 // Throws mq::Error naming the choices for an unknown method, or why a
 // character cannot have helper bones.
 void applySkinningOption(const Args& args, LoadedScene& scene);
+// " with N helper bones" for a character that has them, else "" (for summaries).
+std::string withHelperBones(const Character& character);
 // --scale S: the character file's units to metres (0.01 for centimetres).
 // Throws mq::Error for a scale that is not a positive number.
 void applyScaleOption(const Args& args, LoadedScene& scene);

@@ -80,6 +80,11 @@ void applySkinningOption(const Args& args, LoadedScene& scene) {
   prepareSkinning(scene.character);
 }
 
+std::string withHelperBones(const Character& character) {
+  if (character.helperBones.empty()) return {};
+  return " with " + std::to_string(character.helperBones.size()) + " helper bones";
+}
+
 void applyScaleOption(const Args& args, LoadedScene& scene) {
   if (!args.has("--scale")) return;
   const double factor = args.number("--scale", 1.0);

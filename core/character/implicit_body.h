@@ -61,19 +61,12 @@ class ImplicitBody {
   void add(const ImplicitPrimitive& primitive);
   void setGround(float height, float rounding) { groundHeight_ = height, groundRounding_ = rounding, hasGround_ = true; }
   void setReferenceBlend(float k) { referenceBlend_ = k; }
-  float referenceBlend() const { return referenceBlend_; }
 
   const std::vector<ImplicitPrimitive>& primitives() const { return primitives_; }
   Aabb bounds() const;  // where the field is not "far away"
 
   // The field: about the signed distance to the skin, negative inside.
   float value(const glm::vec3& p) const;
-  // The primitives whose support contains p, and the field from those alone
-  // (equal to value(p) there): callers that evaluate near one point many
-  // times look the candidates up once.
-  void candidatesAt(const glm::vec3& p, std::vector<int>& out) const;
-  float valueFrom(const glm::vec3& p, const int* candidates, size_t count) const;
-
   // The body posed by its skeleton: each primitive moved by the rotation and
   // translation of worldFromBind[primitive.bone] (bind space to posed world).
   // The ground plane is dropped: it does not move with the feet.
@@ -90,6 +83,11 @@ class ImplicitBody {
   ScalarGrid sample(float cellSize, ThreadPool* pool) const;
 
  private:
+  // The primitives whose support contains p, and the field from those alone
+  // (equal to value(p) there).
+  void candidatesAt(const glm::vec3& p, std::vector<int>& out) const;
+  float valueFrom(const glm::vec3& p, const int* candidates, size_t count) const;
+
   std::vector<ImplicitPrimitive> primitives_;
   float referenceBlend_ = 0.01f;
   bool hasGround_ = false;

@@ -40,20 +40,16 @@ void addSkeleton(GltfWriter& writer, const Skeleton& skeleton) {
 
 // JOINTS_0 / WEIGHTS_0: the four heaviest influences of each vertex.
 void addSkinAttributes(GltfWriter& writer, const SkinBinding& skin, size_t vertices, json& attributes) {
+  SkinBinding four = skin;
+  four.limitInfluences(4);
+  const int k = four.influencesPerVertex;
   std::vector<uint16_t> joints(4 * vertices, 0);
   std::vector<float> weights(4 * vertices, 0.0f);
-  const int k = skin.influencesPerVertex;
-  std::vector<std::pair<float, uint16_t>> order(k);
-  for (size_t v = 0; v < vertices; ++v) {
-    for (int i = 0; i < k; ++i) order[i] = {skin.weights[v * k + i], skin.joints[v * k + i]};
-    std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-    float sum = 0.0f;
-    for (int i = 0; i < std::min(k, 4); ++i) sum += order[i].first;
-    for (int i = 0; i < std::min(k, 4); ++i) {
-      joints[4 * v + i] = order[i].second;
-      weights[4 * v + i] = sum > 0.0f ? order[i].first / sum : 0.0f;
+  for (size_t v = 0; v < vertices; ++v)
+    for (int i = 0; i < k; ++i) {
+      joints[4 * v + i] = four.joints[v * k + i];
+      weights[4 * v + i] = four.weights[v * k + i];
     }
-  }
   attributes["JOINTS_0"] = writer.addAccessor(joints.data(), vertices, "VEC4", 4, GltfWriter::kUnsignedShort,
                                               GltfWriter::kArrayBuffer);
   attributes["WEIGHTS_0"] =

@@ -1,6 +1,7 @@
 #include "core/skinning/helper_bones.h"
 
 #include <algorithm>
+#include <array>
 #include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -44,21 +45,29 @@ void setInfluences(SkinBinding& skin, std::vector<Influences>& influences) {
   skin.normalise();
 }
 
-float& weightOf(Influences& list, int joint) {
-  for (auto& [j, w] : list)
+float weightIn(const Influences& list, int joint) {
+  for (const auto& [j, w] : list)
     if (j == joint) return w;
-  list.push_back({joint, 0.0f});
-  return list.back().second;
+  return 0.0f;
+}
+
+void setWeight(Influences& list, int joint, float weight) {
+  for (auto& [j, w] : list)
+    if (j == joint) w = weight;
+}
+
+void addWeight(Influences& list, int joint, float delta) {
+  for (auto& [j, w] : list)
+    if (j == joint) {
+      w += delta;
+      return;
+    }
+  if (delta != 0.0f) list.push_back({joint, delta});
 }
 
 int jointOf(const SkinBinding& skin, int bone) {
   const auto it = std::find(skin.jointBones.begin(), skin.jointBones.end(), bone);
   return it == skin.jointBones.end() ? -1 : int(it - skin.jointBones.begin());
-}
-
-glm::quat rotationOf(const glm::mat4& m) {
-  return glm::normalize(glm::quat_cast(
-      glm::mat3(glm::normalize(glm::vec3(m[0])), glm::normalize(glm::vec3(m[1])), glm::normalize(glm::vec3(m[2])))));
 }
 
 void dropEmpty(Influences& list) {
@@ -69,19 +78,26 @@ void dropEmpty(Influences& list) {
 // the smaller of their weights.
 void moveToHalfAngle(std::vector<Influences>& influences, int parent, int driver, int helper) {
   for (Influences& list : influences) {
-    list.reserve(list.size() + 3);  // weightOf may append: keep the references valid
-    float& wp = weightOf(list, parent);
-    float& wd = weightOf(list, driver);
-    const float shared = std::min(wp, wd);
-    wp -= shared;
-    wd -= shared;
-    if (shared > 0.0f) weightOf(list, helper) += 2.0f * shared;
+    const float shared = std::min(weightIn(list, parent), weightIn(list, driver));
+    if (shared <= 0.0f) continue;
+    addWeight(list, parent, -shared);
+    addWeight(list, driver, -shared);
+    addWeight(list, helper, 2.0f * shared);
     dropEmpty(list);
   }
 }
 
-// The forearm's weight spread over the forearm (elbow), the twist joints at a
-// third and two thirds, by the vertex's place along the forearm.
+// Shares of the forearm (elbow), the twist joint at a third and the one at
+// two thirds for a vertex at t along the forearm: linear between them, all
+// on the second twist joint from two thirds on.
+std::array<float, 3> twistShares(float t) {
+  if (t < 1.0f / 3.0f) return {1.0f - 3.0f * t, 3.0f * t, 0.0f};
+  if (t < 2.0f / 3.0f) return {0.0f, 1.0f - (3.0f * t - 1.0f), 3.0f * t - 1.0f};
+  return {0.0f, 0.0f, 1.0f};
+}
+
+// The forearm's weight spread over the forearm and its twist joints by the
+// vertex's place along the forearm.
 void spreadOverTwist(const Mesh& mesh, std::vector<Influences>& influences, int forearm, const int twist[2],
                      const glm::mat4& forearmSkinAtRest, const glm::vec3& elbow, const glm::vec3& wrist) {
   const glm::vec3 axis = wrist - elbow;
@@ -89,25 +105,14 @@ void spreadOverTwist(const Mesh& mesh, std::vector<Influences>& influences, int 
   if (length2 <= 0.0f) return;
   for (size_t v = 0; v < influences.size(); ++v) {
     Influences& list = influences[v];
-    list.reserve(list.size() + 3);  // weightOf may append: keep the references valid
-    float& wf = weightOf(list, forearm);
-    const float total = wf;
-    if (total > 0.0f) {
-      const glm::vec3 p(forearmSkinAtRest *
-                        glm::vec4(mesh.positions[3 * v], mesh.positions[3 * v + 1], mesh.positions[3 * v + 2], 1.0f));
-      const float t = std::clamp(glm::dot(p - elbow, axis) / length2, 0.0f, 1.0f);
-      float shares[3] = {0.0f, 0.0f, 0.0f};  // forearm, twist 1, twist 2
-      if (t < 1.0f / 3.0f) {
-        shares[1] = 3.0f * t, shares[0] = 1.0f - shares[1];
-      } else if (t < 2.0f / 3.0f) {
-        shares[2] = 3.0f * t - 1.0f, shares[1] = 1.0f - shares[2];
-      } else {
-        shares[2] = 1.0f;
-      }
-      wf = total * shares[0];
-      weightOf(list, twist[0]) += total * shares[1];
-      weightOf(list, twist[1]) += total * shares[2];
-    }
+    const float total = weightIn(list, forearm);
+    if (total <= 0.0f) continue;
+    const glm::vec3 p(forearmSkinAtRest *
+                      glm::vec4(mesh.positions[3 * v], mesh.positions[3 * v + 1], mesh.positions[3 * v + 2], 1.0f));
+    const std::array<float, 3> shares = twistShares(std::clamp(glm::dot(p - elbow, axis) / length2, 0.0f, 1.0f));
+    setWeight(list, forearm, total * shares[0]);
+    addWeight(list, twist[0], total * shares[1]);
+    addWeight(list, twist[1], total * shares[2]);
     dropEmpty(list);
   }
 }
@@ -279,7 +284,8 @@ void driveHelperBones(const std::vector<HelperBone>& helpers, const Skeleton& sk
       continue;
     }
     const glm::mat4 handInForearm = skeleton.bone(h.driver).parentFromOffset * driver.matrix();
-    const glm::quat turn = rotationOf(handInForearm) * glm::inverse(rotationOf(h.driverRestInParent));
+    const glm::quat turn =
+        Trs::fromMatrix(handInForearm).rotation * glm::inverse(Trs::fromMatrix(h.driverRestInParent).rotation);
     out.translation = skeleton.bone(h.bone).rest.translation;
     out.rotation = slerpShortest(identity, twistAbout(turn, h.axis), h.share);
   }

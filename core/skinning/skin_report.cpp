@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <optional>
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -63,26 +64,30 @@ class Measurer {
     posed_.evaluate(character_, clip, time, nullptr, pool_);
     return body_.weld(posed_.meshes());
   }
-  // M6 on the meshes built from an implicit body, from the last evaluation;
-  // rms -1 when the character has no such mesh.
-  BodyDeviation implicitDeviation(const glm::dvec3& jointRest, double radius) const {
+  // M6 over the meshes built from an implicit body, from the last
+  // evaluation; nothing when the character has no such mesh.
+  std::optional<BodyDeviation> implicitDeviation(const glm::dvec3& jointRest, double radius) const {
     BodyDeviation all;
     double sum = 0.0, squares = 0.0, beyond = 0.0;
+    const std::vector<glm::mat4> worldFromBind = worldFromBindOf(posed_.worldFromBone());
     for (size_t i = 0; i < character_.meshes.size(); ++i) {
       const Mesh& mesh = character_.meshes[i];
       if (!mesh.implicitBody) continue;
-      const std::vector<glm::mat4> worldFromBind = worldFromBindOf(posed_.worldFromBone());
       const BodyDeviation d = implicitBodyDeviation(mesh.implicitBody->posed(worldFromBind), mesh.positions,
                                                     posed_.meshes()[i].positions, jointRest, radius);
+      const double n = double(d.vertices);
       all.vertices += d.vertices;
-      sum += d.mean * double(d.vertices);
-      squares += d.rms * d.rms * double(d.vertices);
-      beyond += d.beyond2mm * double(d.vertices);
+      sum += d.mean * n;
+      squares += d.rms * d.rms * n;
+      beyond += d.beyond2mm * n;
       all.largest = std::max(all.largest, d.largest);
     }
-    if (all.vertices == 0) return {0, 0.0, -1.0, 0.0, 0.0};
+    if (all.vertices == 0) return std::nullopt;
     const double n = double(all.vertices);
-    return {all.vertices, sum / n, std::sqrt(squares / n), all.largest, beyond / n};
+    all.mean = sum / n;
+    all.rms = std::sqrt(squares / n);
+    all.beyond2mm = beyond / n;
+    return all;
   }
   long intersections(const std::vector<float>& positions) const {
     return options_.intersections ? long(intersectingPairs(positions, body_.triangles())) : -1;
@@ -174,9 +179,10 @@ void measureHingePoses(Measurer& m, const Character& character, const HumanoidBo
       }
       pm.localVolume = localVolumeRatio(m.rest(), posed, m.body().triangles(), joint, headOf(world, h.bone),
                                         h.radius * scale);
-      const BodyDeviation deviation = m.implicitDeviation(joint, h.radius * scale);
-      pm.deviationRms = deviation.rms;
-      pm.deviationMean = deviation.mean;
+      if (const std::optional<BodyDeviation> deviation = m.implicitDeviation(joint, h.radius * scale)) {
+        pm.deviationRms = deviation->rms;
+        pm.deviationMean = deviation->mean;
+      }
       pm.intersections = m.intersections(posed);
       out.push_back(pm);
     }

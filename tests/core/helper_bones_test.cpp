@@ -86,9 +86,8 @@ TEST(HelperBones, TwistBonesTakeAThirdAndTwoThirdsOfTheHandsTwist) {
   const int hand = c.skeleton.findBone("hand_l");
   const int t1 = c.skeleton.findBone("forearm_l_twist1"), t2 = c.skeleton.findBone("forearm_l_twist2");
   Pose pose = c.skeleton.restPose();
-  // The hand turns 90 degrees about the forearm's axis (its own +Y) and bends 30.
-  pose[hand].rotation = pose[hand].rotation * glm::angleAxis(glm::radians(90.0f), glm::vec3(0, 1, 0)) *
-                        glm::angleAxis(glm::radians(0.0f), glm::vec3(1, 0, 0));
+  // The hand turns 90 degrees about the forearm's axis (its own +Y).
+  pose[hand].rotation = pose[hand].rotation * glm::angleAxis(glm::radians(90.0f), glm::vec3(0, 1, 0));
   driveHelperBones(c.helperBones, c.skeleton, pose);
   const glm::quat identity(1, 0, 0, 0);
   EXPECT_NEAR(angleDegrees(pose[t1].rotation, identity), 30.0f, 0.5f);
