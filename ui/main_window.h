@@ -100,6 +100,8 @@ class MainWindow : public QMainWindow {
 
  signals:
   void loadFinished(bool ok);
+  // A load or motion is being read on a worker (true) or has come back (false).
+  void busyChanged(bool busy);
   // Relayed from the document for tools that only know the window.
   void documentChanged();
   void timeChanged(float seconds);

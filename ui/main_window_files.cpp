@@ -78,6 +78,7 @@ void MainWindow::setBusy(bool busy, const QString& message) {
   if (busy) QApplication::setOverrideCursor(Qt::BusyCursor);
   else QApplication::restoreOverrideCursor();
   statusBar()->showMessage(message, busy ? 0 : 8000);
+  emit busyChanged(busy);
 }
 
 void MainWindow::showProgress(const QString& message, int percent) {
