@@ -5,32 +5,13 @@
 
 #include <glm/glm.hpp>
 
+#include "core/garment/panel_coordinates.h"
+
 namespace mq {
 
 namespace {
 
-struct PanelBounds {
-  glm::vec2 min{std::numeric_limits<float>::max()};
-  glm::vec2 max{std::numeric_limits<float>::lowest()};
-  glm::vec2 extent() const { return glm::max(max - min, glm::vec2(1e-6f)); }
-};
-
-glm::vec2 uvOf(const GarmentMesh& mesh, size_t v) { return {mesh.restUvs[2 * v], mesh.restUvs[2 * v + 1]}; }
-
-bool hasPatterns(const GarmentMesh& mesh) {
-  return mesh.panelIds.size() == mesh.vertexCount() && mesh.restUvs.size() == 2 * mesh.vertexCount();
-}
-
-std::vector<PanelBounds> panelBounds(const GarmentMesh& mesh) {
-  std::vector<PanelBounds> bounds;
-  for (size_t v = 0; v < mesh.vertexCount(); ++v) {
-    const size_t panel = mesh.panelIds[v];
-    if (panel >= bounds.size()) bounds.resize(panel + 1);
-    bounds[panel].min = glm::min(bounds[panel].min, uvOf(mesh, v));
-    bounds[panel].max = glm::max(bounds[panel].max, uvOf(mesh, v));
-  }
-  return bounds;
-}
+using namespace panel_coordinates;
 
 uint32_t nearestInRestPose(const GarmentMesh& mesh, glm::vec3 p) {
   uint32_t best = 0;
@@ -54,14 +35,12 @@ std::vector<uint32_t> remapPins(const GarmentMesh& before, const std::vector<uin
   for (uint32_t pin : pins) {
     if (pin >= before.vertexCount()) continue;
     const size_t panel = patterns ? before.panelIds[pin] : 0;
-    if (!patterns || panel >= boundsAfter.size() || boundsAfter[panel].min.x > boundsAfter[panel].max.x) {
+    if (!patterns || panel >= boundsAfter.size() || boundsAfter[panel].empty()) {
       out.push_back(nearestInRestPose(after, before.position(pin)));
       continue;
     }
     // Where the pin sits in its panel (0..1 across the pattern's bounds), in the rebuilt panel's metres.
-    const PanelBounds& from = boundsBefore[panel];
-    const PanelBounds& to = boundsAfter[panel];
-    const glm::vec2 wanted = to.min + (uvOf(before, pin) - from.min) / from.extent() * to.extent();
+    const glm::vec2 wanted = samePlace(uvOf(before, pin), boundsBefore[panel], boundsAfter[panel]);
     uint32_t best = 0;
     float bestDistance = std::numeric_limits<float>::max();
     for (size_t v = 0; v < after.vertexCount(); ++v) {

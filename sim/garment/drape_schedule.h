@@ -41,6 +41,12 @@ class DrapeSchedule {
   // For a simulation restored from a sewn state (GarmentSimulation::restore):
   // the body starts moving with the next step.
   void skipSewing() { sewing_ = std::max(sewing_, kMinSewingSeconds); }
+  // For a simulation started from a drape on the wanted pose
+  // (GarmentSimulation::startFromDrape): it follows the clip at once.
+  void skipToPose() {
+    skipSewing();
+    blending_ = kBlendSeconds;
+  }
   // On the wanted pose: the body follows the clip from here on.
   bool draped() const { return blending_ >= kBlendSeconds; }
   // Upper bound of the steps of dt before draped().

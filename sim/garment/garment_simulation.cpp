@@ -275,6 +275,31 @@ size_t GarmentSimulation::vertexCount() const { return impl_->mesh.vertexCount()
 const ClothStats& GarmentSimulation::stats() const { return impl_->sim->stats(); }
 const ClothSimulator& GarmentSimulation::simulator() const { return *impl_->sim; }
 
+void GarmentSimulation::startFromDrape(const std::vector<float>& positions, const std::vector<float>& body) {
+  Impl& m = *impl_;
+  if (positions.size() != 3 * vertexCount()) throw Error("the drape is of another garment mesh");
+  if (body.size() != m.body.size()) throw Error("the drape's body has a different vertex count");
+  for (float value : positions)
+    if (!std::isfinite(value)) throw Error("the drape has a non-finite position");
+  if (!m.body.empty()) {
+    m.body = body;
+    m.sim->setBody(m.body, m.bodyTriangles);
+  }
+  // Pins are re-anchored where the drape has them, before the weld applies them.
+  for (Impl::Pin& p : m.pins)
+    if (p.bodyVertex >= 0) p.bodyVertex = int64_t(nearestVertex(m.body, vec3At(positions, p.vertex)));
+  ClothState& state = m.sim->mutableState();
+  for (size_t i = 0; i < vertexCount(); ++i) state.x[m.running(uint32_t(i))] = vec3At(positions, i);
+  if (!m.welded) {
+    m.weldNow();
+  } else {  // a garment without seams: welded from the start, pins re-applied here
+    for (const Impl::Pin& p : m.pins)
+      if (p.bodyVertex >= 0) m.applyPin(p);
+      else m.sim->pinVertex(m.running(p.vertex), vec3At(positions, p.vertex));
+  }
+  for (glm::vec3& v : m.sim->mutableState().v) v = glm::vec3(0.0f);
+}
+
 GarmentSimulation::Snapshot GarmentSimulation::snapshot() const {
   const Impl& m = *impl_;
   if (!m.welded) throw Error("a garment simulation can only be saved once its seams are welded");

@@ -89,6 +89,16 @@ class GarmentSimulation {
     ClothState state;                      // of the welded solver
     std::vector<float> body;               // the body then (flat), empty: none
   };
+  // Continues from a drape kept from an earlier run of this garment (with
+  // another fabric, other pins or another pattern mapped onto this mesh)
+  // instead of sewing flat panels: the seams weld where `positions` put
+  // them, the cloth starts at rest, and every pin holds the cloth where the
+  // drape has it (a body pin follows the body vertex nearest its draped
+  // place), so pins chosen on a drape do not stretch it. `body` is the body
+  // the drape lies on (as at construction; empty when there is none). Call
+  // before the first step. Throws Error when the sizes do not fit.
+  void startFromDrape(const std::vector<float>& positions, const std::vector<float>& body);
+
   // Throws Error before the weld.
   Snapshot snapshot() const;
   // Welds as this simulation did (so pins keep their offsets), then takes the

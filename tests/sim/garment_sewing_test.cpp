@@ -2,7 +2,9 @@
 // seams are welded, and the settled shirt has no vertex inside the body.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "core/character/default_mannequin.h"
 #include "core/character/posed_character.h"
@@ -227,6 +229,47 @@ TEST(GarmentSewing, TrousersOnCesiumManStayAtTheWaistWithTheTwoLevelSolve) {
   EXPECT_GT(g.bounds.max.y, std::min(m.hip[0].y, m.hip[1].y));
   EXPECT_LT(g.bounds.max.y, m.waist.y + 0.1f);
   EXPECT_GT(g.bounds.min.y, 0.05f);
+}
+
+// The editor's warm start: a shirt sewn and settled on the mannequin, then
+// simulated again from that drape with many pins chosen on it (every
+// seventh vertex, following the body): the pins hold it where it is, and
+// nothing is pulled past the elongation limit.
+TEST(GarmentSewing, ShirtStartedFromItsDrapeWithPinsChosenOnItKeepsItsShape) {
+  const Character body = makeDefaultMannequin();
+  PosedCharacter rest;
+  rest.evaluate(body, -1, 0.0f, nullptr, nullptr);
+  const std::vector<float> bodyPositions = concatenatedPositions(rest.meshes());
+  const std::vector<uint32_t> bodyTriangles = concatenatedTriangles(body);
+  Garment garment = makeParametricGarment("tshirt", body);
+  garment.targetEdgeLength = 0.045f;
+  GarmentSimulationSettings settings;
+  settings.fabric = fabricPreset("cotton");
+  const GarmentMesh mesh = buildGarmentMesh(garment);
+  const float dt = 1.0f / 30.0f;
+  GarmentSimulation sewn(mesh, settings, bodyPositions, bodyTriangles);
+  for (int f = 0; f < 150 && !sewn.welded(); ++f) sewn.step(dt);
+  ASSERT_TRUE(sewn.welded());
+  for (int f = 0; f < 30; ++f) sewn.step(dt);
+  const std::vector<float> drape = sewn.positions();
+  auto largest = [](const std::vector<float>& v) { return *std::max_element(v.begin(), v.end()); };
+  const float settled = largest(sewn.vertexStretch());
+
+  for (const int every : {0, 7}) {
+    GarmentSimulation warm(mesh, settings, bodyPositions, bodyTriangles);
+    std::vector<uint32_t> pins;
+    for (uint32_t v = 0; every > 0 && v < mesh.vertexCount(); v += every) warm.pinToBody(v), pins.push_back(v);
+    warm.startFromDrape(drape, bodyPositions);
+    const float atStart = largest(warm.vertexStretch());
+    for (int f = 0; f < 5; ++f) warm.step(dt);
+    const std::vector<float> x = warm.positions();
+    float pinMoved = 0.0f;
+    for (uint32_t v : pins) pinMoved = std::max(pinMoved, glm::length(vec3At(x, v) - vec3At(drape, v)));
+    std::printf("every %d: settled %.3f, at start %.3f, after 5 steps %.3f, pins moved %.4f m\n", every, settled, atStart,
+                largest(warm.vertexStretch()), pinMoved);
+    EXPECT_LT(largest(warm.vertexStretch()), std::max(settled, 1.1f) + 0.005f) << "pins every " << every;
+    EXPECT_LT(pinMoved, 1e-3f);
+  }
 }
 
 }  // namespace

@@ -85,6 +85,60 @@ TEST(GarmentSnapshot, DrapeScheduleSkipsSewingForARestoredGarment) {
   EXPECT_GT(skipped.advance(sim, 0.1f), 0.0f);  // moves the body at once
 }
 
+// The editor's warm start after an edit: the same garment with another
+// fabric and a pin chosen on the drape starts where the drape was, sewn, and
+// the pin holds the cloth where it hangs instead of pulling it back to where
+// the flat panels were placed.
+TEST(GarmentSnapshot, StartFromDrapeKeepsTheDrapeAndPinsItWhereItIs) {
+  const GarmentMesh mesh = buildGarmentMesh(test::twoSewnSquares());
+  const uint32_t corner = mesh.panelFirstVertex[0];
+  GarmentSimulation first(mesh, cotton(), {}, {});
+  first.pin(corner);
+  for (int f = 0; f < 90 && !first.welded(); ++f) first.step(1.0f / 30.0f);
+  ASSERT_TRUE(first.welded());
+  for (int f = 0; f < 30; ++f) first.step(1.0f / 30.0f);
+  const std::vector<float> drape = first.positions();
+  // A vertex that fell well away from where the panels were placed.
+  uint32_t fallen = 0;
+  for (uint32_t v = 0; v < mesh.vertexCount(); ++v)
+    if (glm::length(vec3At(drape, v) - mesh.position(v)) > glm::length(vec3At(drape, fallen) - mesh.position(fallen)))
+      fallen = v;
+  ASSERT_GT(glm::length(vec3At(drape, fallen) - mesh.position(fallen)), 0.1f);
+
+  GarmentSimulationSettings silk = cotton();
+  silk.fabric = fabricPreset("silk");
+  GarmentSimulation warm(mesh, silk, {}, {});
+  warm.pin(corner);
+  warm.pin(fallen);
+  warm.startFromDrape(drape, {});
+  EXPECT_TRUE(warm.welded());
+  EXPECT_EQ(warm.seamGap(), 0.0f);
+  EXPECT_LT(maxDifference(warm.positions(), drape), 1e-6f);
+  for (int f = 0; f < 15; ++f) warm.step(1.0f / 30.0f);
+  const std::vector<float> x = warm.positions();
+  EXPECT_LT(glm::length(vec3At(x, fallen) - vec3At(drape, fallen)), 1e-4f);  // held where it hung
+  EXPECT_LT(glm::length(vec3At(x, corner) - vec3At(drape, corner)), 1e-4f);
+  const std::vector<float> stretch = warm.vertexStretch();
+  EXPECT_LT(*std::max_element(stretch.begin(), stretch.end()), 1.1f);  // the pins do not pull it apart
+
+  // Started from the flat panels instead, the same pin holds the placed position.
+  GarmentSimulation cold(mesh, silk, {}, {});
+  cold.pin(fallen);
+  cold.step(1.0f / 30.0f);
+  EXPECT_GT(glm::length(vec3At(cold.positions(), fallen) - vec3At(drape, fallen)), 0.1f);
+}
+
+TEST(GarmentSnapshot, StartFromDrapeRefusesAnotherMeshOrNonFinitePositions) {
+  const GarmentMesh mesh = buildGarmentMesh(test::twoSewnSquares());
+  GarmentSimulation sim(mesh, cotton(), {}, {});
+  EXPECT_THROW(sim.startFromDrape(std::vector<float>(3 * mesh.vertexCount() - 3, 0.0f), {}), Error);
+  std::vector<float> drape = mesh.positions;
+  drape[4] = NAN;
+  EXPECT_THROW(sim.startFromDrape(drape, {}), Error);
+  EXPECT_THROW(sim.startFromDrape(mesh.positions, std::vector<float>(9, 0.0f)), Error);  // a body it was not built with
+  EXPECT_FALSE(sim.welded());  // refused: nothing changed
+}
+
 TEST(GarmentSheet, SheetFallsOnItsColliderAndKeepsItsPins) {
   ClothSceneSpec spec;
   spec.sheet.columns = spec.sheet.rows = 12;

@@ -452,19 +452,116 @@ class GarmentToolTest : public QObject {
     QCOMPARE(tool_->reusedSewings(), reused + 1);
     doc()->setTime(start);
     QVERIFY(maxDifference(tool_->shownPositions(0), first) < 1e-6f);
-    // Simulate starts from the sewn state too: straight to draping.
+    // Simulate starts from the baked frame on screen: no sewing, no draping.
+    const int warm = tool_->warmStarts();
     tool_->setSimulating(true);
-    QCOMPARE(tool_->reusedSewings(), reused + 2);
-    QVERIFY(tool_->simulationPhase() != QString("Sewing"));
+    QCOMPARE(tool_->warmStarts(), warm + 1);
+    QCOMPARE(tool_->sewingRuns(), runs);
+    QCOMPARE(tool_->simulationPhase(), QString("Following the clip"));
+    QVERIFY(maxDifference(tool_->shownPositions(0), first) < 1e-4f);
     tool_->setSimulating(false);
-    // Another fabric sews again.
+    QVERIFY2(tool_->bake(start, start + 0.1f), qPrintable(tool_->lastError()));
+    // Another fabric: the bake is out of date and says why; the drape stays
+    // on screen, and the next bake starts from it instead of sewing again.
+    doc()->setTime(start);
+    const std::vector<float> cotton = tool_->shownPositions(0);
     tool_->setFabricPreset(0, "silk");
-    QTimer::singleShot(300, tool_, [this] { tool_->cancelBake(); });
-    tool_->bake(start, start + 0.1f);
-    QCOMPARE(tool_->sewingRuns(), runs + 1);
+    QVERIFY(!tool_->hasBake());
+    QCOMPARE(tool_->bakeOutOfDate(), QString("fabric changed"));
+    QVERIFY(maxDifference(tool_->shownPositions(0), cotton) < 1e-4f);
+    QVERIFY2(tool_->bake(start, start + 0.1f), qPrintable(tool_->lastError()));
+    QCOMPARE(tool_->sewingRuns(), runs);
+    QVERIFY(tool_->bakeOutOfDate().isEmpty());
+    doc()->setTime(start);
+    const std::vector<float> silk = tool_->shownPositions(0);
+    QVERIFY(maxDifference(silk, cotton) > 1e-5f);   // simulated again, with silk
+    QVERIFY(maxDifference(silk, cotton) < 0.1f);    // from the cotton drape, not from flat panels
+    // Undo: cotton again, and its drape with it.
     undo()->undo();
     QCOMPARE(tool_->scene().garments[0].fabric, std::string("cotton"));
+    QVERIFY(!tool_->hasBake());
+    QVERIFY(maxDifference(tool_->shownPositions(0), cotton) < 1e-4f);
     doc()->setClip(-1);
+  }
+
+  // The complaint: every edit dropped the drape (the shirt snapped
+  // back to flat panels), and pins chosen on the drape pulled it back
+  // towards where the panels had been placed.
+  void editsKeepTheDrapeAndPinsHoldItWhereItIs() {
+    const int undoIndex = undo()->index();
+    // The earlier tests' pins were chosen on the flat panels and hold the
+    // drape where the panels were placed: without them it relaxes.
+    tool_->clearPins();
+    tool_->setSimulating(true);
+    QTRY_VERIFY_WITH_TIMEOUT(tool_->simulationPhase() == QString("Following the clip") && tool_->simulatedSteps() >= 30,
+                             60000);
+    tool_->setSimulating(false);
+    const std::vector<float> drape = tool_->shownPositions(0);
+    const GarmentMesh before = *tool_->garmentMesh(0);
+    const int runs = tool_->sewingRuns();
+    const float drapeStretch = *std::max_element(tool_->shownStretch(0).begin(), tool_->shownStretch(0).end());
+    QVERIFY2(drapeStretch < 1.105f, qPrintable(QString("the drape is stretched %1 times").arg(drapeStretch)));
+    QVERIFY(maxDifference(drape, before.positions) > 0.01f);  // a drape, not the placed panels
+
+    // A finer mesh: the drape comes along instead of the flat panels.
+    panel()->particleDistanceField()->setValue(1000.0 * tool_->scene().garments[0].targetEdgeLength * 0.8);
+    const GarmentMesh& finer = *tool_->garmentMesh(0);
+    QVERIFY(finer.vertexCount() > before.vertexCount());
+    const std::vector<float> carried = tool_->shownPositions(0);
+    QVERIFY(maxDifference(carried, finer.positions) > 0.01f);
+    float farthest = 0.0f;  // from the old drape's surface, roughly: its nearest vertex
+    for (size_t v = 0; v < finer.vertexCount(); ++v) {
+      float nearest = INFINITY;
+      for (size_t w = 0; w < before.vertexCount(); ++w)
+        nearest = std::min(nearest, glm::distance(glm::vec3(carried[3 * v], carried[3 * v + 1], carried[3 * v + 2]),
+                                                  glm::vec3(drape[3 * w], drape[3 * w + 1], drape[3 * w + 2])));
+      farthest = std::max(farthest, nearest);
+    }
+    QVERIFY2(farthest < 0.03f, qPrintable(QString("%1 m off the old drape").arg(farthest)));
+    // Simulate continues from it: no sewing, nothing torn.
+    const int warm = tool_->warmStarts();
+    tool_->setSimulating(true);
+    QCOMPARE(tool_->warmStarts(), warm + 1);
+    QVERIFY(tool_->simulationPhase() != QString("Sewing"));
+    QTRY_VERIFY_WITH_TIMEOUT(tool_->simulatedSteps() >= 3, 60000);
+    tool_->setSimulating(false);
+    QCOMPARE(tool_->sewingRuns(), runs);
+    const std::vector<float> resewn = tool_->shownStretch(0);
+    QVERIFY2(*std::max_element(resewn.begin(), resewn.end()) < 1.105f, "the carried drape is torn");
+
+    // Pins chosen on the drape hold it where it is, without stretching it.
+    const std::vector<float> onScreen = tool_->shownPositions(0);
+    // The shirt's shoulders, as a user pins a garment to hang it.
+    float top = -INFINITY;
+    for (size_t v = 0; v < finer.vertexCount(); ++v) top = std::max(top, onScreen[3 * v + 1]);
+    std::vector<uint32_t> chosen;
+    for (uint32_t v = 0; v < finer.vertexCount(); ++v)
+      if (onScreen[3 * v + 1] > top - 0.06f) chosen.push_back(v);
+    QVERIFY(chosen.size() > 10);
+    tool_->setSelectedVertices(chosen);
+    tool_->pinSelected();
+    QVERIFY(maxDifference(tool_->shownPositions(0), onScreen) < 1e-4f);  // the edit keeps what is shown
+    tool_->setSimulating(true);
+    QTRY_VERIFY_WITH_TIMEOUT(tool_->simulatedSteps() >= 5, 60000);
+    tool_->setSimulating(false);
+    const std::vector<float> pinned = tool_->shownPositions(0);
+    float moved = 0.0f;
+    for (uint32_t v : tool_->scene().garments[0].pins.vertices)
+      moved = std::max(moved, glm::distance(glm::vec3(pinned[3 * v], pinned[3 * v + 1], pinned[3 * v + 2]),
+                                            glm::vec3(onScreen[3 * v], onScreen[3 * v + 1], onScreen[3 * v + 2])));
+    QVERIFY2(moved < 0.01f, qPrintable(QString("a pin moved %1 m from where it was chosen").arg(moved)));
+    const std::vector<float> stretch = tool_->shownStretch(0);
+    QVERIFY2(*std::max_element(stretch.begin(), stretch.end()) < 1.105f,
+             qPrintable(QString("the pins stretch the drape %1 times").arg(*std::max_element(stretch.begin(), stretch.end()))));
+
+    // Undo, step by step: each state comes back with the drape it had.
+    undo()->undo();  // the pins
+    QVERIFY(maxDifference(tool_->shownPositions(0), onScreen) < 1e-4f);
+    undo()->undo();  // the particle distance
+    QCOMPARE(tool_->garmentMesh(0)->vertexCount(), before.vertexCount());
+    QVERIFY(maxDifference(tool_->shownPositions(0), drape) < 1e-4f);
+    undo()->undo();  // the cleared pins
+    QCOMPARE(undo()->index(), undoIndex);
   }
 
   // Trousers added after the T-shirt: the T-shirt on layer 1 is worn over
@@ -524,7 +621,10 @@ class GarmentToolTest : public QObject {
     QCOMPARE(tool_->colliderCount(), 1);
 
     // Put the sphere on the shirt's front, below the pins: the fields as typed, one step each.
+    // From the placed panels: the drape the earlier tests left is reset.
+    tool_->resetDrapes();
     const GarmentMesh& mesh = *tool_->garmentMesh(0);
+    QVERIFY(maxDifference(tool_->shownPositions(0), mesh.positions) < 1e-6f);
     size_t front = 0;
     float lowest = INFINITY;
     glm::vec3 centre(0.0f);

@@ -217,20 +217,29 @@ GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent)
   auto* simButtons = new QHBoxLayout;
   simulate_ = new QPushButton(tr("Simulate"));
   simulate_->setCheckable(true);
+  // Running is obvious at a glance: a red button that says how to stop it.
+  simulate_->setStyleSheet("QPushButton:checked { background-color: #b03a2e; color: white; font-weight: bold; }");
   simulate_->setToolTip(tr("Simulate live while the clip plays (press Space to play)"));
   bake_ = new QPushButton(tr("Bake clip"));
   bake_->setToolTip(tr("Simulate the whole clip; the timeline then scrubs the baked frames"));
   clearBake_ = new QPushButton(tr("Clear bake"));
   exportBake_ = new QPushButton(tr("Export bake as OBJ..."));
   exportBake_->setToolTip(tr("Write the baked frames as OBJ sequences (one file per frame per garment) into a folder"));
+  resetDrapes_ = new QPushButton(tr("Reset drape"));
+  resetDrapes_->setToolTip(tr("Back to the flat placed panels: the next Simulate or Bake sews the garments anew "
+                              "(edits otherwise keep the drape on screen and continue from it)"));
   for (QPushButton* b : {simulate_, bake_, clearBake_}) simButtons->addWidget(b);
   simLayout->addLayout(simButtons);
-  simLayout->addWidget(exportBake_);
+  auto* moreButtons = new QHBoxLayout;
+  moreButtons->addWidget(exportBake_);
+  moreButtons->addWidget(resetDrapes_);
+  simLayout->addLayout(moreButtons);
   connect(simulate_, &QPushButton::toggled, this, [this](bool on) {
     if (!refreshing_) tool_->setSimulating(on);
   });
   connect(bake_, &QPushButton::clicked, this, [this] { tool_->bake(); });
   connect(clearBake_, &QPushButton::clicked, this, [this] { tool_->clearBake(); });
+  connect(resetDrapes_, &QPushButton::clicked, this, [this] { tool_->resetDrapes(); });
   connect(exportBake_, &QPushButton::clicked, this, [this] {
     const QString dir = QFileDialog::getExistingDirectory(this, tr("Export the bake as OBJ sequences into"));
     if (!dir.isEmpty() && !tool_->exportBake(dir))
@@ -581,6 +590,7 @@ void GarmentPanel::refreshStatus() {
   {
     const QSignalBlocker block(simulate_);
     simulate_->setChecked(tool_->simulating());
+    simulate_->setText(tool_->simulating() ? tr("Stop simulating") : tr("Simulate"));
   }
   {
     const QSignalBlocker block(select_);
@@ -593,6 +603,7 @@ void GarmentPanel::refreshStatus() {
   simulate_->setEnabled(any);
   bake_->setEnabled(any);
   clearBake_->setEnabled(tool_->hasBake());
+  resetDrapes_->setEnabled(any);
   exportBake_->setEnabled(tool_->hasBake());
   const size_t selected = tool_->selectedVertices().size();
   const size_t pinned = current >= 0 ? tool_->scene().garments[current].pins.vertices.size() : 0;
@@ -605,9 +616,18 @@ void GarmentPanel::refreshStatus() {
   if (const GarmentMesh* mesh = tool_->garmentMesh(current))
     lines << tr("%1 vertices, %2 triangles").arg(mesh->vertexCount()).arg(mesh->triangleCount());
   if (tool_->hasBake()) lines << tr("Baked: %1 frames (scrub the timeline)").arg(tool_->bakedFrameCount());
+  else if (!tool_->bakeOutOfDate().isEmpty()) lines << tr("Bake out of date: %1").arg(tool_->bakeOutOfDate());
   if (tool_->hasSheet()) lines << tr("Sheet: %1 vertices").arg(tool_->shownSheetPositions().size() / 3);
-  if (tool_->simulating())
+  if (tool_->simulating()) {
     lines << tr("Simulating: %1 steps (%2)").arg(tool_->simulatedSteps()).arg(tool_->simulationPhase());
+    // Whether the cloth keeps up with the clip played in real time.
+    const double rate = tool_->simulatedFramesPerSecond(), wanted = tool_->scene().cloth.fps;
+    if (rate > 0.0)
+      lines << (rate + 0.5 >= wanted ? tr("%1 of %2 frames/s: keeps up with playback")
+                                     : tr("%1 of %2 frames/s: slower than playback (bake for real time)"))
+                   .arg(rate, 0, 'f', 1)
+                   .arg(wanted, 0, 'f', 0);
+  }
   if (current >= 0 && !tool_->shownStretch(current).empty()) {
     float worst = 1.0f;
     for (float s : tool_->shownStretch(current)) worst = std::max(worst, s);

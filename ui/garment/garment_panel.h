@@ -98,7 +98,7 @@ class GarmentPanel : public QWidget {
   QSpinBox* clothFps_;
   QSpinBox* bakeFrames_;
   QFormLayout* simForm_;
-  QPushButton *simulate_, *bake_, *clearBake_, *exportBake_;
+  QPushButton *simulate_, *bake_, *clearBake_, *exportBake_, *resetDrapes_;
   QPushButton *select_, *pin_, *unpin_, *clearPins_;
   QComboBox* attach_;
   QListWidget* colliderList_;

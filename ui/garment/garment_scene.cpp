@@ -55,4 +55,23 @@ bool GarmentScene::operator==(const GarmentScene& other) const {
   return ga == gb && ca == cb && la == lb;
 }
 
+std::string bakeInvalidatedBy(const GarmentScene& before, const GarmentScene& after) {
+  if (before.garments.size() != after.garments.size()) return "garments added or removed";
+  for (size_t i = 0; i < before.garments.size(); ++i) {
+    json a = garmentToJson(before.garments[i]), b = garmentToJson(after.garments[i]);
+    for (const auto& [part, change] : {std::pair{"fabric", "fabric changed"}, {"pins", "pins changed"}, {"layer", "layers changed"}}) {
+      if (a.value(part, json()) != b.value(part, json())) return change;
+      a.erase(part), b.erase(part);
+    }
+    a.erase("name"), b.erase("name");
+    if (a != b) return "pattern changed";
+  }
+  json clothBefore, collidersBefore, clothAfter, collidersAfter;
+  cloth::writeClothScene(before.cloth, clothBefore, collidersBefore);
+  cloth::writeClothScene(after.cloth, clothAfter, collidersAfter);
+  if (collidersBefore != collidersAfter) return "colliders changed";
+  if (clothBefore != clothAfter) return "cloth settings changed";
+  return {};
+}
+
 }  // namespace mq::ui

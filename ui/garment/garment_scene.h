@@ -30,6 +30,11 @@ GarmentScene garmentSceneFromSections(const nlohmann::json& garments, const nloh
 void garmentSceneToSections(const GarmentScene& scene, nlohmann::json& garments, nlohmann::json& cloth,
                             nlohmann::json& colliders);
 
+// What an edit from `before` to `after` changed that a bake of `before`
+// depends on ("fabric changed", "pins changed", ...), for the dock; empty
+// when the bake still holds (a garment renamed).
+std::string bakeInvalidatedBy(const GarmentScene& before, const GarmentScene& after);
+
 // True when the garment uses its preset's values (no values of its own).
 bool fabricIsPreset(const Garment& garment);
 // Sets the garment's fabric values (none of its own when they are the preset's).

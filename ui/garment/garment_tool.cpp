@@ -3,6 +3,7 @@
 #include <QStatusBar>
 
 #include <algorithm>
+#include <optional>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -42,46 +43,13 @@
 #include "ui/garment/collider_drag_tool.h"
 #include "ui/garment/garment_edit_command.h"
 #include "ui/garment/garment_panel.h"
+#include "ui/garment/held_drape.h"
 #include "ui/main_window.h"
 #include "ui/viewport/vtk_viewport_widget.h"
 
 namespace mq::ui {
 
 namespace {
-
-// For each garment vertex, the nearest body vertex (a uniform grid over the
-// body; garments sit a few centimetres off the skin).
-std::vector<uint32_t> nearestBodyVertices(const std::vector<float>& garment, const std::vector<float>& body) {
-  constexpr float kCell = 0.04f;
-  std::unordered_map<int64_t, std::vector<uint32_t>> grid;
-  auto cellOf = [](float x) { return int64_t(std::floor(x / kCell)); };
-  auto key = [](int64_t x, int64_t y, int64_t z) { return (x & 0x1fffff) | ((y & 0x1fffff) << 21) | ((z & 0x1fffff) << 42); };
-  for (size_t v = 0; v < body.size() / 3; ++v)
-    grid[key(cellOf(body[3 * v]), cellOf(body[3 * v + 1]), cellOf(body[3 * v + 2]))].push_back(uint32_t(v));
-  std::vector<uint32_t> nearest(garment.size() / 3, 0);
-  if (body.empty()) return nearest;
-  for (size_t g = 0; g < nearest.size(); ++g) {
-    const glm::vec3 p(garment[3 * g], garment[3 * g + 1], garment[3 * g + 2]);
-    const int64_t cx = cellOf(p.x), cy = cellOf(p.y), cz = cellOf(p.z);
-    float best = INFINITY;
-    for (int64_t ring = 0; ring < 16; ++ring) {
-      for (int64_t x = cx - ring; x <= cx + ring; ++x)
-        for (int64_t y = cy - ring; y <= cy + ring; ++y)
-          for (int64_t z = cz - ring; z <= cz + ring; ++z) {
-            if (std::max({std::abs(x - cx), std::abs(y - cy), std::abs(z - cz)}) != ring) continue;
-            const auto cell = grid.find(key(x, y, z));
-            if (cell == grid.end()) continue;
-            for (uint32_t b : cell->second) {
-              const glm::vec3 d = glm::vec3(body[3 * b], body[3 * b + 1], body[3 * b + 2]) - p;
-              const float d2 = glm::dot(d, d);
-              if (d2 < best) best = d2, nearest[g] = b;
-            }
-          }
-      if (best < (ring * kCell) * (ring * kCell)) break;  // nothing in a further ring can be nearer
-    }
-  }
-  return nearest;
-}
 
 std::unique_ptr<cloth::GarmentSimulation> makeSimulation(const GarmentScene& scene, size_t garment,
                                                          const std::vector<float>& body,
@@ -175,6 +143,11 @@ struct GarmentTool::View {
   }
 
   std::vector<uint32_t> sheetPins;  // the sheet's pinned vertices (garments keep theirs in the scene)
+  // The last drape shown, kept across edits while the cloth does not run.
+  std::optional<HeldDrape> held;
+  // Where `positions` come from: a simulated or baked drape becomes the held
+  // drape at the next edit.
+  enum class Shown { Placed, Held, Simulated, Baked } shown = Shown::Placed;
   std::string sewingKey;     // the kept-state key of the running simulation
   bool sewnKept = false;     // its sewn state is kept (or came from there)
 };
@@ -232,6 +205,8 @@ void GarmentTool::onCharacterReplaced() {
   bodyTriangles_ = concatenatedTriangles(character);
   bodyKey_ = fingerprint(restBody_) + "/" + fingerprint(bodyTriangles_);
   kept_.clear();
+  drapes_.clear();
+  bakeOutOfDate_.clear();
   lastError_.clear();
   selection_.clear();
   views_.clear();
@@ -587,9 +562,13 @@ void GarmentTool::applyScene(const GarmentScene& scene) {
   }
   waitForStep();
   const GarmentScene before = scene_;
+  const std::string bakeChange = bake_ && !loading_ ? bakeInvalidatedBy(before, scene) : std::string();
+  holdShownDrapes();
   scene_ = scene;
   rebuildViews(before);
-  dropDynamics();
+  recallDrapes();
+  dropDynamics(/*keepBake=*/bake_ && !loading_ && bakeChange.empty());
+  if (!bakeChange.empty()) bakeOutOfDate_ = QString::fromStdString(bakeChange);
   if (current_ >= garmentCount()) current_ = garmentCount() - 1;
   if (current_ < 0 && garmentCount() > 0) current_ = 0;
   if (currentCollider_ >= colliderCount()) currentCollider_ = colliderCount() - 1;
@@ -607,7 +586,6 @@ void GarmentTool::applyScene(const GarmentScene& scene) {
 
 // Rebuilds the meshes of the garments whose panels changed; keeps the others.
 void GarmentTool::rebuildViews(const GarmentScene& before) {
-  (void)before;
   std::vector<std::unique_ptr<View>> old = std::move(views_);
   views_.clear();
   bool selectionValid = true;
@@ -627,6 +605,11 @@ void GarmentTool::rebuildViews(const GarmentScene& before) {
         lastError_ = QString::fromStdString(e.what());
       }
       if (int(i) == current_) selectionValid = false;
+      // The same garment rebuilt (a measurement, the particle distance): its drape comes along.
+      const bool sameGarment = i < before.garments.size() && before.garments[i].name == scene_.garments[i].name;
+      if (sameGarment && i < old.size() && old[i] && old[i]->held && old[i]->held->fits(old[i]->mesh) &&
+          view->mesh.vertexCount() > 0)
+        view->held = old[i]->held->rebuiltAs(old[i]->mesh, view->mesh);
     }
     view->actor.setShading(render::clothShadingForFabric(scene_.garments[i].fabric));
     views_.push_back(std::move(view));
@@ -685,6 +668,7 @@ void GarmentTool::showGarments() {
   for (size_t i = 0; i < views.size(); ++i) {
     View& view = *views[i];
     const bool isGarment = i < scene_.garments.size();
+    view.shown = View::Shown::Baked;
     if (bake_ && bake_->clip == window_->document()->clipIndex() && i < bake_->garments.size()) {
       const size_t frame = bake_->frameIndex(time);
       view.positions = bake_->garments[i].frame(frame);
@@ -692,7 +676,14 @@ void GarmentTool::showGarments() {
     } else if (view.simulation) {
       view.positions = view.simulation->positions();
       view.stretch = view.simulation->vertexStretch();
+      view.shown = view.simulation->welded() ? View::Shown::Simulated : View::Shown::Placed;
+    } else if (view.held && view.held->fits(view.mesh)) {
+      if (posed.empty()) posed = posedBody();
+      view.positions = view.held->carriedTo(posed);
+      view.stretch.assign(view.mesh.vertexCount(), 1.0f);
+      view.shown = View::Shown::Held;
     } else {
+      view.shown = View::Shown::Placed;
       // Not simulated: the placed panels, carried by the body's nearest
       // vertices from the rest pose to the pose shown.
       if (posed.empty()) posed = posedBody();
@@ -770,16 +761,41 @@ void GarmentTool::setPinsVisible(bool visible) {
 
 // ---- Live simulation ----
 
-void GarmentTool::dropDynamics() {
+void GarmentTool::dropDynamics(bool keepBake) {
   waitForStep();
   for (View* view : simulatedViews()) view->simulation.reset();
   steps_ = 0;
   simulatedSeconds_ = 0.0f;
-  bake_.reset();
+  if (!keepBake) bake_.reset();
+}
+
+// What each garment shows now, if it is a drape, becomes its held drape,
+// remembered under the garment's state for an undo to find.
+void GarmentTool::holdShownDrapes() {
+  const std::vector<View*> views = simulatedViews();
+  std::vector<float> posed;
+  for (size_t i = 0; i < views.size(); ++i) {
+    View& view = *views[i];
+    const bool drape = view.shown == View::Shown::Simulated || view.shown == View::Shown::Baked;
+    if (drape && view.positions.size() == 3 * view.mesh.vertexCount()) {
+      if (posed.empty()) posed = posedBody();
+      view.held = HeldDrape(view.positions, posed);
+    }
+    if (view.held) drapes_.remember(sewingKey(i), *view.held);
+  }
+}
+
+// A garment back in a state it had (an undo, a redo) takes that state's drape.
+void GarmentTool::recallDrapes() {
+  const std::vector<View*> views = simulatedViews();
+  for (size_t i = 0; i < views.size(); ++i)
+    if (const HeldDrape* drape = drapes_.recall(sewingKey(i)); drape && drape->fits(views[i]->mesh))
+      views[i]->held = *drape;
 }
 
 void GarmentTool::clearBake() {
   if (!bake_) return;
+  holdShownDrapes();  // the frame on screen stays
   bake_.reset();
   showGarments();
   emit simulationChanged();
@@ -815,9 +831,12 @@ std::vector<float> GarmentTool::posedBody() const { return concatenatedPositions
 void GarmentTool::restartSimulation() {
   waitForStep();
   steps_ = 0;
+  framesPerSecond_ = 0.0;
+  stepClock_.invalidate();
   simulatedSeconds_ = 0.0f;
   lastError_.clear();
   const std::vector<View*> views = simulatedViews();
+  const std::vector<float> posed = posedBody();
   try {
     for (size_t i = 0; i < views.size(); ++i) {
       View& view = *views[i];
@@ -825,7 +844,15 @@ void GarmentTool::restartSimulation() {
       view.drape = cloth::DrapeSchedule{};
       view.sewingKey = sewingKey(i);
       view.sewnKept = false;
-      if (const auto* sewn = keptState(view.sewingKey)) {
+      if (view.held && view.held->fits(view.mesh)) {
+        // From the held drape as shown, on the body as posed now: no sewing,
+        // no draping. (Moving the body from the drape's pose instead would
+        // drag body pins re-anchored in that pose through the cloth.)
+        view.simulation->startFromDrape(view.held->carriedTo(posed), posed);
+        view.drape.skipToPose();
+        view.sewnKept = true;  // not a sewn state on the rest body: nothing to keep
+        ++warmStarts_;
+      } else if (const auto* sewn = keptState(view.sewingKey)) {
         view.simulation->restore(*sewn);
         view.drape.skipSewing();
         view.sewnKept = true;
@@ -848,6 +875,7 @@ void GarmentTool::setSimulating(bool on) {
   if (on == simulating_) return;
   simulating_ = on;
   if (on) {
+    holdShownDrapes();  // the run continues from what is on screen
     bake_.reset();
     restartSimulation();
   } else {
@@ -855,6 +883,16 @@ void GarmentTool::setSimulating(bool on) {
     if (sewingShown_) window_->hideProgress(QString());
     sewingShown_ = false;
   }
+  showGarments();
+  emit simulationChanged();
+}
+
+void GarmentTool::resetDrapes() {
+  setSimulating(false);
+  if (bake_) bakeOutOfDate_ = tr("drapes reset");
+  for (View* view : simulatedViews()) view->held.reset();
+  dropDynamics();
+  drapes_.clear();
   showGarments();
   emit simulationChanged();
 }
@@ -890,7 +928,8 @@ void GarmentTool::startStep() {
   cloth::wearInLayers(simulations, layerOrder(),
                       [&](size_t i) { return i < scene_.garments.size() && views[i]->drape.draped(); });
   for (size_t i : layerOrder())
-    if (views[i]->simulation) jobs.push_back({views[i]->simulation.get(), &views[i]->drape});
+    if (views[i]->simulation)
+      jobs.push_back({views[i]->simulation.get(), &views[i]->drape});
   if (jobs.empty()) return;
   const float dt = 1.0f / scene_.cloth.fps;
   stepWatcher_.setFuture(QtConcurrent::run([jobs, dt, rest = restBody_, target = posedBody()]() -> QString {
@@ -918,6 +957,12 @@ void GarmentTool::onStepFinished() {
   }
   if (!simulating_) return;
   ++steps_;
+  // Smoothed over about ten steps; the first step's time includes starting up.
+  if (steps_ > 1 && stepClock_.isValid()) {
+    const double rate = 1000.0 / std::max<qint64>(1, stepClock_.elapsed());
+    framesPerSecond_ = framesPerSecond_ > 0.0 ? 0.9 * framesPerSecond_ + 0.1 * rate : rate;
+  }
+  stepClock_.start();
   simulatedSeconds_ += 1.0f / scene_.cloth.fps;
   // Keep each garment's sewn state (the worker is idle now) for the next run or bake.
   for (View* view : simulatedViews())
@@ -947,6 +992,7 @@ struct GarmentTool::BakeGarment {
   std::unique_ptr<cloth::GarmentSimulation> simulation;
   std::string sewnKey, drapedKey;
   bool sewn = false, draped = false;  // from a kept sewn / draped state (sewn: also once the worker sewed it)
+  bool warm = false;                  // from the held drape carried to the first frame: settles there
   int settleSteps = 0;                // at most this many steps before the first frame
   std::optional<cloth::GarmentSimulation::Snapshot> sewnState, drapedState;  // to keep
 };
@@ -976,6 +1022,9 @@ const std::vector<float>* bodyOrNull(const std::vector<float>& body) { return bo
 // Each garment starts from its kept draped state for this bake's first
 // frame, or its kept sewn state (then drapes), or the placed panels (sews,
 // then drapes). Throws mq::Error.
+// A drape carried to the first frame settles this long on it before the frames.
+constexpr float kWarmSettleSeconds = 0.25f;
+
 std::vector<GarmentTool::BakeGarment> GarmentTool::prepareBake(const std::vector<float>& firstBody, float fps) const {
   const std::string firstFrame = fingerprint(firstBody) + "@" + std::to_string(fps);
   const int fullSettle = cloth::DrapeSchedule{}.maxSteps(1.0f / fps);
@@ -986,9 +1035,14 @@ std::vector<GarmentTool::BakeGarment> GarmentTool::prepareBake(const std::vector
     g.simulation = makeViewSimulation(i);
     g.sewnKey = sewingKey(i);
     g.drapedKey = g.sewnKey + "|draped:" + firstFrame;
+    const View& view = *simulatedViews()[i];
     if (const auto* draped = keptState(g.drapedKey)) {
       g.simulation->restore(*draped);
       g.sewn = g.draped = true;
+    } else if (view.held && view.held->fits(view.mesh)) {
+      g.simulation->startFromDrape(view.held->carriedTo(firstBody), firstBody);
+      g.sewn = g.warm = true;
+      g.settleSteps = int(std::ceil(kWarmSettleSeconds * fps));
     } else if (const auto* sewn = keptState(g.sewnKey)) {
       g.simulation->restore(*sewn);
       g.sewn = true;
@@ -1020,9 +1074,10 @@ bool settle(GarmentTool::BakeGarment& g, const std::vector<float>& rest, const s
             const std::atomic<bool>& cancel, const std::function<void(int)>& stepped, PhaseClock& clock) {
   cloth::GarmentSimulation& simulation = *g.simulation;
   cloth::DrapeSchedule drape;
-  if (g.sewn) drape.skipSewing();
+  if (g.warm) drape.skipToPose();  // on the first frame's body already: it only settles
+  else if (g.sewn) drape.skipSewing();
   std::vector<float> body;
-  for (int step = 0; step < g.settleSteps && !drape.draped(); ++step) {
+  for (int step = 0; step < g.settleSteps && (g.warm || !drape.draped()); ++step) {
     if (cancel) return false;
     if (!g.sewn && simulation.welded() && drape.sewingDone(simulation)) {
       g.sewnState = simulation.snapshot();
@@ -1194,6 +1249,7 @@ bool GarmentTool::bake(float from, float to) {
     return false;
   }
   bake_ = std::move(result);
+  bakeOutOfDate_.clear();
   lastBakeSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   for (int phase = 0; phase < 3; ++phase) lastBakePhases_[phase] = clock.seconds[phase];
   window_->hideProgress(tr("Garments baked: %1 frames in %2 s (sewing %3 s, draping %4 s, frames %5 s)")

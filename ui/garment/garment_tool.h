@@ -45,6 +45,7 @@
 #include <string>
 #include <vector>
 
+#include <QElapsedTimer>
 #include <QFutureWatcher>
 #include <QObject>
 #include <QPoint>
@@ -56,6 +57,7 @@
 #include "sim/cloth/collision/primitive_collider.h"
 #include "sim/garment/garment_simulation.h"
 #include "ui/garment/garment_scene.h"
+#include "ui/garment/held_drape.h"
 
 class QDockWidget;
 class QMouseEvent;
@@ -157,8 +159,15 @@ class GarmentTool : public QObject {
 
   // Live simulation.
   void setSimulating(bool on);
+  // Back to the placed panels: the drapes are dropped (and a bake with
+  // them), and the next Simulate or Bake sews the garments anew.
+  void resetDrapes();
   bool simulating() const { return simulating_; }
   int simulatedSteps() const { return steps_; }
+  // Steps (cloth frames) simulated per second of wall time lately; 0 before
+  // there are a few. Against the cloth fps: whether live simulation keeps up
+  // with the clip played in real time.
+  double simulatedFramesPerSecond() const { return framesPerSecond_; }
   // "Sewing", "Draping", "Following the clip", "Simulating" (no character) or "" while not simulating.
   QString simulationPhase() const;
   // Blocks until the step in flight (if any) is done.
@@ -171,6 +180,9 @@ class GarmentTool : public QObject {
   void cancelBake() { cancelBake_ = true; }
   bool baking() const { return baking_; }
   bool hasBake() const { return bake_ != nullptr; }
+  // Why the last bake was dropped by an edit ("fabric changed"); empty while
+  // a bake holds, after a new bake, or when there was none.
+  QString bakeOutOfDate() const { return bakeOutOfDate_; }
   int bakedFrameCount() const;
   void clearBake();
   // Writes the bake as OBJ sequences into `dir` (created if missing): one file
@@ -182,6 +194,8 @@ class GarmentTool : public QObject {
   // often a kept sewn or draped state was used instead.
   int sewingRuns() const { return sewingRuns_; }
   int reusedSewings() const { return reusedSewings_; }
+  // How often Simulate started from the drape on screen (after an edit, an undo or a stop).
+  int warmStarts() const { return warmStarts_; }
   // Wall time of the last bake that finished, seconds.
   double lastBakeSeconds() const { return lastBakeSeconds_; }
   // Of which the worker spent: 0 sewing, 1 draping onto the first frame, 2 simulating the frames.
@@ -220,7 +234,9 @@ class GarmentTool : public QObject {
   void loadSections();
   void storeSections();
   void rebuildViews(const GarmentScene& before);
-  void dropDynamics();
+  void dropDynamics(bool keepBake = false);
+  void holdShownDrapes();
+  void recallDrapes();
   void showGarments();
   void restartSimulation();
   void startStep();
@@ -266,7 +282,8 @@ class GarmentTool : public QObject {
 
   // Sewn and draped states, newest first (a few garments' worth).
   std::vector<KeptState> kept_;
-  int sewingRuns_ = 0, reusedSewings_ = 0;
+  DrapeMemory drapes_;  // the drapes of recent garment states, for undo
+  int sewingRuns_ = 0, reusedSewings_ = 0, warmStarts_ = 0;
   double lastBakeSeconds_ = 0.0;
   double lastBakePhases_[3] = {0.0, 0.0, 0.0};
 
@@ -275,11 +292,14 @@ class GarmentTool : public QObject {
   bool collidersMoved_ = false;  // the next step gives the simulations the scene's colliders
   int steps_ = 0;
   float simulatedSeconds_ = 0.0f;
+  QElapsedTimer stepClock_;       // since the last step finished
+  double framesPerSecond_ = 0.0;  // smoothed
   bool sewingShown_ = false;  // the status bar shows the sewing progress
   QFutureWatcher<QString> stepWatcher_;
 
   // Bake
   std::unique_ptr<Bake> bake_;  // null: no valid bake
+  QString bakeOutOfDate_;
   std::atomic<bool> cancelBake_{false};
   bool baking_ = false;
 

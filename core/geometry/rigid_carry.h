@@ -1,0 +1,37 @@
+#pragma once
+// Points carried along by a deforming point set: a draped garment by its
+// body when the pose changes without simulating (the editor's preview while
+// scrubbing). Each point follows the best rigid motion (Kabsch) of its k
+// nearest points of the set, so a sleeve turns with the forearm instead of
+// shearing off it as a per-vertex translation would make it.
+//
+//   RigidCarry carry(garmentPositions, bodyInPoseA);
+//   std::vector<float> inPoseB = carry.carry(bodyInPoseB);
+
+#include <cstdint>
+#include <vector>
+
+namespace mq {
+
+class RigidCarry {
+ public:
+  // points and from: 3 floats per point. k is clamped to the set's size.
+  RigidCarry(std::vector<float> points, std::vector<float> from, int k = 8);
+
+  // The points moved as the set moved from `from` to `to` (same point
+  // count); the points unchanged when `to` does not fit or equals `from`.
+  std::vector<float> carry(const std::vector<float>& to) const;
+  const std::vector<float>& points() const { return points_; }
+  const std::vector<float>& from() const { return from_; }
+
+ private:
+  std::vector<float> points_, from_;
+  int k_;
+  std::vector<uint32_t> neighbours_;  // k per point, indices into the set
+};
+
+// The k nearest points of `set` to every point of `queries` (a uniform grid;
+// k per query, nearest first; fewer than k only when the set is smaller).
+std::vector<uint32_t> nearestPoints(const std::vector<float>& queries, const std::vector<float>& set, int k);
+
+}  // namespace mq
