@@ -100,6 +100,8 @@ class MainWindow : public QMainWindow {
 
  signals:
   void loadFinished(bool ok);
+  // The document was written to `path` (tools save what lives beside it).
+  void documentSaved(const QString& path);
   // A load or motion is being read on a worker (true) or has come back (false).
   void busyChanged(bool busy);
   // Relayed from the document for tools that only know the window.

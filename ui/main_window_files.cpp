@@ -250,6 +250,7 @@ bool MainWindow::saveDocument(const QString& path, QString* error) {
   addRecentFile(path);
   updateTitle();
   statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
+  emit documentSaved(document_->documentPath());
   return true;
 }
 

@@ -735,6 +735,64 @@ class GarmentToolTest : public QObject {
     QVERIFY(!window_->isWindowModified());
   }
 
+  // The bake is saved beside the document and reopens without simulating
+  // again, only while it matches the scene; a damaged one is reported.
+  void bakeIsSavedBesideTheDocument() {
+    doc()->setClip(0);
+    const float start = doc()->clipStart();
+    QVERIFY2(tool_->bake(start, start + 0.2f), qPrintable(tool_->lastError()));
+    const int frames = tool_->bakedFrameCount();
+    doc()->setTime(start + 0.1f);
+    const std::vector<float> shown = tool_->shownPositions(0);
+    QTemporaryDir dir;
+    const QString path = dir.filePath("baked.mqscene");
+    const QString cache = dir.filePath("baked.mqbake");
+    QString error;
+    QVERIFY2(window_->saveDocument(path, &error), qPrintable(error));
+    QVERIFY(QFile::exists(cache));
+
+    QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));
+    QVERIFY(!tool_->hasBake());
+    const int runs = tool_->sewingRuns(), reused = tool_->reusedSewings();
+    QVERIFY2(window_->openFileNow(path, &error), qPrintable(error));
+    QVERIFY2(tool_->hasBake(), qPrintable(tool_->lastError() + tool_->bakeOutOfDate()));
+    QCOMPARE(tool_->bakedFrameCount(), frames);
+    QCOMPARE(tool_->sewingRuns(), runs);  // nothing simulated
+    QCOMPARE(tool_->reusedSewings(), reused);
+    doc()->setClip(0);
+    doc()->setTime(start + 0.1f);
+    QCOMPARE(tool_->shownPositions(0), shown);
+
+    // The scene edited outside the editor: the cache is of another state.
+    QFile scene(path);
+    QVERIFY(scene.open(QIODevice::ReadOnly));
+    nlohmann::json json = nlohmann::json::parse(scene.readAll().toStdString());
+    scene.close();
+    json["garments"][0]["fabric"] = "denim";
+    QVERIFY(scene.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    scene.write(QByteArray::fromStdString(json.dump(2)));
+    scene.close();
+    QVERIFY2(window_->openFileNow(path, &error), qPrintable(error));
+    QVERIFY(!tool_->hasBake());
+    QVERIFY(tool_->bakeOutOfDate().contains("another state"));
+
+    // A damaged cache: the document opens, the dock names the problem.
+    QFile damaged(cache);
+    QVERIFY(damaged.open(QIODevice::ReadWrite));
+    QVERIFY(damaged.resize(damaged.size() / 2));
+    damaged.close();
+    QVERIFY2(window_->openFileNow(path, &error), qPrintable(error));
+    QCOMPARE(tool_->garmentCount(), 1);
+    QVERIFY(!tool_->hasBake());
+    QVERIFY2(tool_->lastError().contains("baked.mqbake") && tool_->lastError().contains("truncated"),
+             qPrintable(tool_->lastError()));
+
+    // Saved without a bake: the old cache goes.
+    QVERIFY2(window_->saveDocument(path, &error), qPrintable(error));
+    QVERIFY(!QFile::exists(cache));
+    doc()->setClip(-1);
+  }
+
   // The case: a scene document that is a sheet and colliders, no character.
   void sheetAndCollidersWithoutCharacter() {
     QTemporaryDir dir;

@@ -1,12 +1,11 @@
 #include "ui/garment/garment_tool.h"
 
-#include <QStatusBar>
-
 #include <algorithm>
-#include <optional>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <functional>
+#include <optional>
 #include <string_view>
 #include <unordered_map>
 
@@ -38,6 +37,7 @@
 #include "sim/garment/drape_schedule.h"
 #include "sim/garment/garment_layers.h"
 #include "sim/garment/garment_scene.h"
+#include "sim/cloth/bake_cache.h"
 #include "sim/garment/garment_simulation.h"
 #include "ui/document/editor_document.h"
 #include "ui/garment/collider_drag_tool.h"
@@ -153,6 +153,7 @@ struct GarmentTool::View {
 };
 
 struct GarmentTool::Bake {
+  std::string key;  // bakeKey() when it was baked
   int clip = -1;
   float start = 0.0f;
   std::vector<cloth::BakedCloth> garments;
@@ -177,6 +178,7 @@ GarmentTool::GarmentTool(MainWindow* window) : QObject(window), window_(window) 
   colliderDrag_ = new ColliderDragTool(this, window);  // filters the viewport's events before this tool
   connect(&stepWatcher_, &QFutureWatcher<QString>::finished, this, &GarmentTool::onStepFinished);
   connect(window->document(), &EditorDocument::characterReplaced, this, &GarmentTool::onCharacterReplaced);
+  connect(window, &MainWindow::documentSaved, this, &GarmentTool::saveBakeBeside);
   connect(window->document(), &EditorDocument::poseChanged, this, &GarmentTool::showGarments);
   connect(window->document(), &EditorDocument::clipChanged, this, [this] {
     if (bake_ && bake_->clip != window_->document()->clipIndex()) clearBake();
@@ -214,6 +216,7 @@ void GarmentTool::onCharacterReplaced() {
   currentCollider_ = -1;
   scene_ = GarmentScene{};
   loadSections();
+  loadBakeBeside(window_->document()->documentPath());
   emit selectionChanged();
 }
 
@@ -820,6 +823,75 @@ bool GarmentTool::exportBake(const QString& dir) {
   return true;
 }
 
+// What a bake depends on: every garment's sewing key (garment, fabric,
+// pins, solver settings, colliders, rest body), the layers, the clip and
+// the baked range, and the body at the first, middle and last frames (the
+// pose edits).
+std::string GarmentTool::bakeKey(int clip, float start, int frames) const {
+  std::string key;
+  for (size_t i = 0; i < simulatedViews().size(); ++i) key += sewingKey(i) + "\n";
+  for (const Garment& garment : scene_.garments) key += std::to_string(garment.layer) + ",";
+  EditorDocument* document = window_->document();
+  key += "\nclip " + std::to_string(clip) + " from " + std::to_string(start) + " frames " + std::to_string(frames) +
+         " at " + std::to_string(scene_.cloth.fps);
+  if (clip < 0 || frames <= 0) return key;
+  key += " " + document->character().clips.at(size_t(clip)).name;
+  PosedCharacter posed;
+  for (int frame : {0, frames / 2, frames - 1}) {
+    posed.evaluate(document->character(), clip, start + frame / scene_.cloth.fps, &document->poseEdits(),
+                   &ThreadPool::shared());
+    key += " " + fingerprint(concatenatedPositions(posed.meshes()));
+  }
+  return key;
+}
+
+void GarmentTool::saveBakeBeside(const QString& documentPath) {
+  const std::string path = cloth::bakeCachePath(documentPath.toStdString());
+  try {
+    if (bake_) {
+      cloth::writeBakeCache(path, {bake_->key, bake_->clip, bake_->start, bake_->garments, bake_->stretch});
+    } else {
+      std::error_code ignored;
+      std::filesystem::remove(path, ignored);  // a bake of an older state would only be refused
+    }
+  } catch (const std::exception& e) {
+    lastError_ = tr("The bake was not saved beside the document: %1").arg(e.what());
+    window_->hideProgress(lastError_);
+    emit simulationChanged();
+  }
+}
+
+void GarmentTool::loadBakeBeside(const QString& documentPath) {
+  if (documentPath.isEmpty()) return;
+  const std::string path = cloth::bakeCachePath(documentPath.toStdString());
+  if (!std::filesystem::exists(path)) return;
+  try {
+    cloth::BakeCache cache = cloth::readBakeCache(path);
+    const std::vector<View*> views = simulatedViews();
+    bool fits = cache.garments.size() == views.size() && !cache.garments.empty();
+    for (size_t i = 0; fits && i < views.size(); ++i)
+      fits = cache.garments[i].frameCount() > 0 && cache.garments[i].frame(0).size() == 3 * views[i]->mesh.vertexCount();
+    const int frames = fits ? int(cache.garments[0].frameCount()) : 0;
+    const bool clipExists = cache.clip < int(window_->document()->character().clips.size());
+    if (!fits || !clipExists || cache.key != bakeKey(cache.clip, cache.start, frames)) {
+      bakeOutOfDate_ = tr("the saved bake is of another state of the scene");
+      return;
+    }
+    auto bake = std::make_unique<Bake>();
+    bake->key = std::move(cache.key);
+    bake->clip = cache.clip;
+    bake->start = cache.start;
+    bake->garments = std::move(cache.garments);
+    bake->stretch = std::move(cache.stretch);
+    bake_ = std::move(bake);
+    showGarments();
+    emit simulationChanged();
+  } catch (const std::exception& e) {
+    lastError_ = tr("The saved bake could not be read: %1").arg(e.what());
+    emit simulationChanged();
+  }
+}
+
 int GarmentTool::bakedFrameCount() const {
   return bake_ && !bake_->garments.empty() ? int(bake_->garments[0].frameCount()) : 0;
 }
@@ -1248,6 +1320,7 @@ bool GarmentTool::bake(float from, float to) {
     emit simulationChanged();
     return false;
   }
+  result->key = bakeKey(clip, start, frames);
   bake_ = std::move(result);
   bakeOutOfDate_.clear();
   lastBakeSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

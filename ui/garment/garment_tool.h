@@ -231,6 +231,11 @@ class GarmentTool : public QObject {
   };
 
   void onCharacterReplaced();
+  // The bake beside the document (sim/cloth/bake_cache.h): written with it,
+  // read back when it still matches the scene.
+  void saveBakeBeside(const QString& documentPath);
+  void loadBakeBeside(const QString& documentPath);
+  std::string bakeKey(int clip, float start, int frames) const;
   void loadSections();
   void storeSections();
   void rebuildViews(const GarmentScene& before);
