@@ -1,12 +1,15 @@
 // mannequin-cli info FILE [--json]: what a character file holds.
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
 #include "app/cli/command.h"
 #include "core/scene/open_scene.h"
 #include "core/util/error.h"
+#include "sim/cloth/bake_cache.h"
 
 namespace mq::cli {
 namespace {
@@ -60,6 +63,35 @@ nlohmann::json describe(const Character& c) {
   return j;
 }
 
+// The garment bake the editor saved beside a scene document, if any: what it
+// holds, or why it cannot be read (the editor then reports it and bakes anew).
+std::optional<nlohmann::json> describeSavedBake(const std::string& documentPath) {
+  const std::string path = cloth::bakeCachePath(documentPath);
+  if (!std::filesystem::exists(path)) return std::nullopt;
+  nlohmann::json j = {{"file", path}};
+  try {
+    const cloth::BakeCache cache = cloth::readBakeCache(path);
+    j["clip"] = cache.clip;
+    j["start"] = cache.start;
+    j["garments"] = cache.garments.size();
+    j["frames"] = cache.garments.empty() ? 0 : cache.garments[0].frameCount();
+    j["fps"] = cache.garments.empty() ? 0.0f : cache.garments[0].fps();
+  } catch (const std::exception& e) {
+    j["error"] = e.what();
+  }
+  return j;
+}
+
+void printSavedBake(const nlohmann::json& bake, std::ostream& out) {
+  if (bake.contains("error")) {
+    out << "  garment bake: unreadable (" << bake["error"].get<std::string>() << ")\n";
+    return;
+  }
+  out << "  garment bake: " << bake["frames"] << " frames at " << bake["fps"] << " fps of clip [" << bake["clip"]
+      << "] from " << bake["start"] << " s, " << bake["garments"] << " garment(s), in "
+      << bake["file"].get<std::string>() << "\n";
+}
+
 void printBoneTree(const Skeleton& skeleton, int bone, int depth, std::ostream& out) {
   out << "    " << std::string(2 * depth, ' ') << skeleton.bone(bone).name << "\n";
   for (int child : skeleton.children(bone)) printBoneTree(skeleton, child, depth + 1, out);
@@ -93,15 +125,22 @@ int runInfo(const std::vector<std::string>& argv) {
   printMotionMatch(scene);
   applyScaleOption(args, scene);
   for (const std::string& warning : loadNotices(scene)) std::cerr << "warning: " << warning << "\n";
-  if (args.has("--json"))
-    std::cout << std::setw(2) << describe(scene.character) << "\n";
-  else
+  const std::optional<nlohmann::json> bake =
+      scene.documentPath.empty() ? std::nullopt : describeSavedBake(scene.documentPath);
+  if (args.has("--json")) {
+    nlohmann::json j = describe(scene.character);
+    if (bake) j["garment_bake"] = *bake;
+    std::cout << std::setw(2) << j << "\n";
+  } else {
     printText(scene.character, std::cout);
+    if (bake) printSavedBake(*bake, std::cout);
+  }
   return 0;
 }
 
 static Registration reg({"info", "FILE [--json] [--scale S]",
-                         "meshes (vertices, triangles), bones (name, parent), max influences, materials, clips (name, duration)",
+                         "meshes (vertices, triangles), bones (name, parent), max influences, materials, clips (name, duration),\n"
+                         "and the garment bake the editor saved beside a scene document (NAME.mqbake)",
                          runInfo});
 
 }  // namespace
