@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include <QAction>
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
@@ -33,6 +34,8 @@
 #include "render/scene_view.h"
 #include "ui/document/editor_document.h"
 #include "ui/document/pose_commands.h"
+#include "ui/garment/garment_tool.h"
+#include "ui/hair/hair_tool.h"
 #include "ui/main_window.h"
 #include "test_window.h"
 #include "ui/panels/material_page.h"
@@ -446,6 +449,46 @@ class EditorSmokeTest : public QObject {
     qInfo("%d ticks in %lld ms of reading", ticksWhileReading, readingMs);
     QVERIFY2(ticksWhileReading >= expected,
              qPrintable(QString("%1 ticks in %2 ms of reading").arg(ticksWhileReading).arg(readingMs)));
+  }
+
+  // File > New after a scene with garments, colliders and hair: every dock
+  // starts empty again, with nothing left of the old scene.
+  void newClearsEveryDock() {
+    auto* garments = window_->findChild<GarmentTool*>();
+    auto* hair = window_->findChild<HairTool*>();
+    QVERIFY(garments && hair);
+    QString error;
+    QVERIFY2(window_->openFileNow(MANNEQUIN_SOURCE_DIR "/resources/scenes/garment_tshirt_walk.json", &error),
+             qPrintable(error));
+    QVERIFY(garments->garmentCount() > 0);
+    garments->setSelectedVertices({0, 1, 2});
+    garments->addCollider(cloth::PrimitiveCollider::Shape::Sphere);
+    QVERIFY(garments->colliderCount() > 0);
+    const auto previousConfirm = window_->confirmDiscardChanges;
+    window_->confirmDiscardChanges = [] { return true; };
+    QSignalSpy finished(window_, &MainWindow::loadFinished);
+    QAction* newAction = nullptr;
+    for (QAction* action : window_->findChildren<QAction*>())
+      if (action->shortcut() == QKeySequence(QKeySequence::New)) newAction = action;
+    QVERIFY(newAction != nullptr);
+    newAction->trigger();  // File > New, as the user chooses it
+    QVERIFY(finished.wait(30000));
+    QCOMPARE(garments->garmentCount(), 0);
+    QCOMPARE(garments->colliderCount(), 0);
+    QVERIFY(garments->selectedVertices().empty());
+    QVERIFY(!garments->hasBake() && garments->bakeOutOfDate().isEmpty());
+    QVERIFY(!garments->hasSheet());
+
+    QVERIFY2(window_->openFileNow(MANNEQUIN_SOURCE_DIR "/resources/scenes/hair_bob.json", &error), qPrintable(error));
+    QVERIFY(hair->hasHair());
+    newAction->trigger();
+    QVERIFY(finished.wait(30000));
+    QVERIFY(!hair->hasHair());
+    QVERIFY(!hair->hasBake());
+    QVERIFY(doc()->documentPath().isEmpty());
+    QVERIFY(!doc()->isModified());
+    QVERIFY(doc()->undoStack()->count() == 0);
+    window_->confirmDiscardChanges = previousConfirm;
   }
 
   void saveAndReopenKeepsThePose() {
