@@ -7,7 +7,7 @@ packages=(
   cmake ninja-build g++ pkg-config
   qt6-base-dev libqt6opengl6-dev libxkbcommon-dev
   libvtk9-dev
-  libopenmesh-dev libcgal-dev libglm-dev libceres-dev libeigen3-dev
+  libopenmesh-dev libcgal-dev libglm-dev libceres-dev libeigen3-dev libnanoflann-dev
   libassimp-dev nlohmann-json3-dev libstb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth xdotool libgl1-mesa-dri libglx-mesa0

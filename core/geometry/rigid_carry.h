@@ -20,6 +20,7 @@ class RigidCarry {
 
   // The points moved as the set moved from `from` to `to` (same point
   // count); the points unchanged when `to` does not fit or equals `from`.
+  // The first carry finds the neighbourhoods (not thread-safe then).
   std::vector<float> carry(const std::vector<float>& to) const;
   const std::vector<float>& points() const { return points_; }
   const std::vector<float>& from() const { return from_; }
@@ -27,7 +28,7 @@ class RigidCarry {
  private:
   std::vector<float> points_, from_;
   int k_;
-  std::vector<uint32_t> neighbours_;  // k per point, indices into the set
+  mutable std::vector<uint32_t> neighbours_;  // k per point, indices into the set; found when first needed
 };
 
 // The k nearest points of `set` to every point of `queries` (a uniform grid;

@@ -27,6 +27,7 @@
 #include "core/garment/garment_json.h"
 #include "core/garment/parametric_garments.h"
 #include "core/garment/pin_remap.h"
+#include "core/geometry/rigid_carry.h"
 #include "core/util/error.h"
 #include "core/util/thread_pool.h"
 #include "render/cloth_shading.h"
@@ -125,7 +126,7 @@ struct GarmentTool::View {
 
   void build(const Garment& garment, const std::vector<float>& restBody) {
     mesh = buildGarmentMesh(garment);
-    nearestBody = nearestBodyVertices(mesh.positions, restBody);
+    nearestBody = nearestPoints(mesh.positions, restBody, 1);
     builtFrom = geometryOf(garment);
     actor.setMesh(mesh.positions, mesh.triangles, mesh.restUvs);
     overlay.setTriangles(mesh.triangles);

@@ -13,10 +13,6 @@
 
 namespace mq::ui {
 
-// For each garment vertex, the nearest body vertex (a uniform grid over the
-// body; garments sit a few centimetres off the skin). All zeros without a body.
-std::vector<uint32_t> nearestBodyVertices(const std::vector<float>& garment, const std::vector<float>& body);
-
 class HeldDrape {
  public:
   // positions: 3 per garment-mesh vertex; body: the body they lie on (flat), empty: none.
