@@ -1,4 +1,4 @@
-// mannequin-cli simulate SCENE --frames N [--fps F] [--stats-json OUT] [--export-dir DIR] [--layers on|off]
+// mannequin-cli simulate SCENE --frames N [--fps F] [--stats-json OUT] [--export-dir DIR [--export-format obj|pc2]] [--layers on|off]
 // Runs the cloth of a scene document headless (the "cloth" section's sheet
 // and the "garments", sewn then welded, on the character playing its clip)
 // and reports what the benchmarks compare: wall time, stretch, penetrations,
@@ -83,8 +83,17 @@ struct SceneCloth {
   }
 };
 
+// Where the frames go: one OBJ per frame per cloth, or one point cache per
+// cloth written after the last frame.
+struct FrameExport {
+  std::string dir;  // empty: none
+  bool pointCache = false;
+  cloth::BakedCloth sheet;  // the sheet's frames, for its point cache
+};
+
 RunResult run(SceneCloth& cloth, PosedBody& body, float startTime, bool animateBody, int frames, float fps,
-              const std::string& exportDir) {
+              FrameExport& exported) {
+  const std::string& exportDir = exported.dir;
   RunResult r;
   std::vector<float> bodyPositions;
   for (int f = 0; f < frames; ++f) {
@@ -108,10 +117,22 @@ RunResult run(SceneCloth& cloth, PosedBody& body, float startTime, bool animateB
     r.maxStretch = std::max(r.maxStretch, now.maxStretch);
     r.maxPenetrating = std::max(r.maxPenetrating, now.penetratingVertices);
     if (exportDir.empty()) continue;
+    if (exported.pointCache) {
+      if (cloth.sheet) {
+        if (f == 0) exported.sheet = cloth::BakedCloth(cloth.sheet->triangles(), fps);
+        exported.sheet.addFrame(cloth.sheet->flatPositions());
+      }
+      if (cloth.garments) cloth.garments->recordFrame(fps);
+      continue;
+    }
     if (cloth.sheet)
       cloth::writeObj((std::filesystem::path(exportDir) / cloth::objFrameName("cloth", f + 1)).string(),
                       cloth.sheet->flatPositions(), cloth.sheet->triangles());
     if (cloth.garments) cloth.garments->exportFrame(exportDir, f + 1);
+  }
+  if (exported.pointCache && !exportDir.empty()) {
+    if (cloth.sheet) exported.sheet.exportPointCache(exportDir, "cloth");
+    if (cloth.garments) cloth.garments->exportPointCaches(exportDir);
   }
   return r;
 }
@@ -129,7 +150,10 @@ json phaseProfile(const RunResult& r, const SceneCloth& cloth, int frames) {
 
 int runSimulate(const std::vector<std::string>& argv) {
   const cli::Args args(argv);
-  args.allowOnly({"--frames", "--fps", "--stats-json", "--export-dir", "--layers", "--skinning", "--helper-bones", "--scale"});
+  args.allowOnly({"--frames", "--fps", "--stats-json", "--export-dir", "--export-format", "--layers", "--skinning",
+                  "--helper-bones", "--scale"});
+  const std::string format = args.option("--export-format", "obj");
+  if (format != "obj" && format != "pc2") throw Error("--export-format expects obj or pc2");
   const std::string layers = args.option("--layers", "on");
   if (layers != "on" && layers != "off") throw Error("--layers expects on or off");
   if (args.positional().size() != 1) throw Error("simulate needs exactly one SCENE argument");
@@ -179,7 +203,8 @@ int runSimulate(const std::vector<std::string>& argv) {
     if (ec) throw FileError(exportDir, "cannot create the directory: " + ec.message());
   }
   const int frames = int(framesArg);
-  const RunResult r = run(cloth, body, scene.document.time, spec.animateBody, frames, fps, exportDir);
+  FrameExport exported{exportDir, format == "pc2", {}};
+  const RunResult r = run(cloth, body, scene.document.time, spec.animateBody, frames, fps, exported);
   const cli::ClothNow now = cloth.now();
   json stats = {{"scene", path},
                 {"frames", frames},
@@ -219,9 +244,10 @@ int runSimulate(const std::vector<std::string>& argv) {
   return 0;
 }
 
-const cli::Registration reg({"simulate", "SCENE --frames N [--fps F] [--stats-json OUT] [--export-dir DIR] [--layers on|off]\n"
-                             "         [--skinning lbs|dqs|cones] [--helper-bones] [--scale S]",
-                             "run the scene's cloth (sheet and garments) and hair headless; stats as JSON, frames as OBJ/PLY",
+const cli::Registration reg({"simulate", "SCENE --frames N [--fps F] [--stats-json OUT] [--export-dir DIR [--export-format obj|pc2]]\n"
+                             "         [--layers on|off] [--skinning lbs|dqs|cones] [--helper-bones] [--scale S]",
+                             "run the scene's cloth (sheet and garments) and hair headless; stats as JSON, frames as OBJ/PLY\n"
+                             "(one file per frame), or with --export-format pc2 one Point Cache 2 file per cloth and its mesh",
                              runSimulate});
 
 }  // namespace

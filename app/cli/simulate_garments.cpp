@@ -129,6 +129,17 @@ void SimulatedGarments::exportFrame(const std::string& dir, int frame) const {
                     sims_[i]->positions(), sims_[i]->triangles());
 }
 
+void SimulatedGarments::recordFrame(float fps) {
+  if (recorded_.empty())
+    for (const auto& sim : sims_) recorded_.emplace_back(sim->triangles(), fps);
+  for (size_t i = 0; i < sims_.size(); ++i) recorded_[i].addFrame(sims_[i]->positions());
+}
+
+void SimulatedGarments::exportPointCaches(const std::string& dir) const {
+  for (size_t i = 0; i < recorded_.size(); ++i)
+    recorded_[i].exportPointCache(dir, cloth::garmentFileStem(garments_[i].name, i));
+}
+
 void SimulatedGarments::addTo(ClothNow& now) const {
   for (const auto& sim : sims_) now.add(sim->simulator(), sim->vertexCount());
 }

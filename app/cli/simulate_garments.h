@@ -10,6 +10,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "core/garment/garment.h"
+#include "sim/cloth/baked_cloth.h"
 #include "sim/cloth/cloth_scene_io.h"
 #include "sim/garment/garment_simulation.h"
 
@@ -53,6 +54,10 @@ class SimulatedGarments {
   int maxInsideInnerVertices() const { return maxInsideInnerTotal_; }
   // <dir>/garment<i>_<name>_<frame>.obj, one per garment, in garment-mesh order.
   void exportFrame(const std::string& dir, int frame) const;
+  // Keeps this frame for exportPointCaches.
+  void recordFrame(float fps);
+  // The recorded frames, <dir>/garment<i>_<name>.pc2 and .obj per garment (BakedCloth::exportPointCache).
+  void exportPointCaches(const std::string& dir) const;
   void addTo(ClothNow& now) const;
   // Per garment: name, layer, vertices, welded, sewing_steps, seam_gap, max_stretch,
   // penetrating_vertices, inside_inner_vertices (now and max_: in any measured frame), bbox.
@@ -73,6 +78,7 @@ class SimulatedGarments {
   std::vector<std::vector<float>> residuals_;  // per garment: each step()'s solver residual
   double phaseSeconds_[cloth::kClothPhaseCount] = {};  // all garments, summed over step()
   int frames_ = 0;
+  std::vector<cloth::BakedCloth> recorded_;  // per garment, by recordFrame
 };
 
 }  // namespace mq::cli

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "core/util/error.h"
+#include "sim/cloth/point_cache.h"
 
 namespace mq::cloth {
 
@@ -49,6 +50,18 @@ void BakedCloth::exportObjSequence(const std::string& dir, const std::string& st
   if (ec) throw FileError(dir, "cannot create the directory: " + ec.message());
   for (size_t i = 0; i < frames_.size(); ++i)
     writeObj((std::filesystem::path(dir) / objFrameName(stem, i + 1)).string(), frames_[i], triangles_);
+}
+
+void BakedCloth::exportPointCache(const std::string& dir, const std::string& stem) const {
+  if (frames_.empty()) throw Error("the baked cloth has no frames to export");
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw FileError(dir, "cannot create the directory: " + ec.message());
+  PointCache cache;
+  cache.pointCount = frames_[0].size() / 3;
+  cache.samples = frames_;
+  writePointCache((std::filesystem::path(dir) / (stem + ".pc2")).string(), cache);
+  writeObj((std::filesystem::path(dir) / (stem + ".obj")).string(), frames_[0], triangles_);
 }
 
 }  // namespace mq::cloth

@@ -24,6 +24,11 @@ class BakedCloth {
 
   // Writes <dir>/<stem>_0001.obj ... one per frame; creates dir. Throws FileError.
   void exportObjSequence(const std::string& dir, const std::string& stem = "cloth") const;
+  // Writes every frame as one Point Cache 2 file, <dir>/<stem>.pc2 (frame 1
+  // first, one sample a frame), and the mesh it deforms as <dir>/<stem>.obj
+  // (frame 1): in Blender, import the OBJ and give it a Mesh Cache modifier
+  // reading the PC2. Creates dir. Throws FileError.
+  void exportPointCache(const std::string& dir, const std::string& stem = "cloth") const;
 
  private:
   std::vector<uint32_t> triangles_;

@@ -36,6 +36,7 @@
 #include "core/mesh/mesh.h"
 #include "render/collider_actors.h"
 #include "render/scene_view.h"
+#include "sim/cloth/point_cache.h"
 #include "ui/document/editor_document.h"
 #include "ui/garment/garment_panel.h"
 #include "ui/garment/garment_tool.h"
@@ -414,6 +415,17 @@ class GarmentToolTest : public QObject {
     }
     QCOMPARE(objVertices, tool_->garmentMesh(0)->vertexCount());
     QVERIFY(std::abs(lastY - last[1]) < 1e-4f);  // the last frame as baked
+    // As point caches: one .pc2 per garment with every frame, and its mesh.
+    const QString cacheDir = QDir(QDir::tempPath()).filePath("mannequin_bake_pc2");
+    QDir(cacheDir).removeRecursively();
+    QVERIFY2(tool_->exportBake(cacheDir, true), qPrintable(tool_->lastError()));
+    const QStringList caches = QDir(cacheDir).entryList({"garment0_*.pc2"}, QDir::Files);
+    QCOMPARE(caches.size(), 1);
+    const cloth::PointCache cache = cloth::readPointCache(QDir(cacheDir).filePath(caches[0]).toStdString());
+    QCOMPARE(int(cache.samples.size()), frames);
+    QCOMPARE(cache.samples.back(), last);
+    QVERIFY(QFile::exists(QDir(cacheDir).filePath(QString(caches[0]).replace(".pc2", ".obj"))));
+    QDir(cacheDir).removeRecursively();
     // Into a path that cannot be a folder: refused, naming it.
     QFile blocker(QDir(exportDir).filePath("not_a_folder"));
     QVERIFY(blocker.open(QIODevice::WriteOnly));

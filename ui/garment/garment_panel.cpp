@@ -11,6 +11,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
+#include <QMenu>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QScrollArea>
@@ -223,8 +224,9 @@ GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent)
   bake_ = new QPushButton(tr("Bake clip"));
   bake_->setToolTip(tr("Simulate the whole clip; the timeline then scrubs the baked frames"));
   clearBake_ = new QPushButton(tr("Clear bake"));
-  exportBake_ = new QPushButton(tr("Export bake as OBJ..."));
-  exportBake_->setToolTip(tr("Write the baked frames as OBJ sequences (one file per frame per garment) into a folder"));
+  exportBake_ = new QPushButton(tr("Export bake..."));
+  exportBake_->setToolTip(tr("Write the baked frames into a folder: OBJ sequences (one file per frame per garment) "
+                             "or Point Cache 2 files (one .pc2 per garment and the mesh it deforms)"));
   resetDrapes_ = new QPushButton(tr("Reset drape"));
   resetDrapes_->setToolTip(tr("Back to the flat placed panels: the next Simulate or Bake sews the garments anew "
                               "(edits otherwise keep the drape on screen and continue from it)"));
@@ -240,11 +242,16 @@ GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent)
   connect(bake_, &QPushButton::clicked, this, [this] { tool_->bake(); });
   connect(clearBake_, &QPushButton::clicked, this, [this] { tool_->clearBake(); });
   connect(resetDrapes_, &QPushButton::clicked, this, [this] { tool_->resetDrapes(); });
-  connect(exportBake_, &QPushButton::clicked, this, [this] {
-    const QString dir = QFileDialog::getExistingDirectory(this, tr("Export the bake as OBJ sequences into"));
-    if (!dir.isEmpty() && !tool_->exportBake(dir))
+  auto* exportMenu = new QMenu(exportBake_);
+  const auto exportInto = [this](bool pointCache) {
+    const QString dir = QFileDialog::getExistingDirectory(
+        this, pointCache ? tr("Export the bake as point caches into") : tr("Export the bake as OBJ sequences into"));
+    if (!dir.isEmpty() && !tool_->exportBake(dir, pointCache))
       QMessageBox::warning(this, tr("Export bake"), tool_->lastError());
-  });
+  };
+  exportMenu->addAction(tr("OBJ sequence (one file per frame)..."), this, [exportInto] { exportInto(false); });
+  exportMenu->addAction(tr("Point Cache 2 (.pc2, Blender's Mesh Cache)..."), this, [exportInto] { exportInto(true); });
+  exportBake_->setMenu(exportMenu);
   layout->addWidget(simBox);
 
   // Pins

@@ -805,7 +805,7 @@ void GarmentTool::clearBake() {
   emit simulationChanged();
 }
 
-bool GarmentTool::exportBake(const QString& dir) {
+bool GarmentTool::exportBake(const QString& dir, bool pointCache) {
   if (!bake_) {
     lastError_ = tr("There is no bake to export: bake the clip first");
     return false;
@@ -814,7 +814,8 @@ bool GarmentTool::exportBake(const QString& dir) {
     for (size_t g = 0; g < bake_->garments.size(); ++g) {
       const bool garment = g < scene_.garments.size();
       const std::string stem = garment ? cloth::garmentFileStem(scene_.garments[g].name, g) : "sheet";
-      bake_->garments[g].exportObjSequence(dir.toStdString(), stem);
+      if (pointCache) bake_->garments[g].exportPointCache(dir.toStdString(), stem);
+      else bake_->garments[g].exportObjSequence(dir.toStdString(), stem);
     }
   } catch (const std::exception& e) {
     lastError_ = QString::fromStdString(e.what());

@@ -189,7 +189,9 @@ class GarmentTool : public QObject {
   // per frame per garment, <garment stem>_0001.obj ..., and sheet_0001.obj ...
   // for the sheet; false (lastError names the file and the problem) when it
   // cannot, or when there is no bake.
-  bool exportBake(const QString& dir);
+  // pointCache: one Point Cache 2 file per garment instead (<stem>.pc2 and
+  // the mesh it deforms, <stem>.obj: BakedCloth::exportPointCache).
+  bool exportBake(const QString& dir, bool pointCache = false);
   // How often sewing ran from the placed panels (Simulate or Bake), and how
   // often a kept sewn or draped state was used instead.
   int sewingRuns() const { return sewingRuns_; }

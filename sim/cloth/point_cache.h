@@ -1,0 +1,30 @@
+#pragma once
+// Point Cache 2 (.pc2): every frame's vertex positions of one mesh, the
+// format Blender's Mesh Cache modifier, 3ds Max and Maya read to play a
+// simulated cloth on the mesh it was exported with.
+//
+// Layout, little-endian: "POINTCACHE2\0", int32 version (1), int32 point
+// count, float32 start frame, float32 sample rate (frames between samples),
+// int32 sample count, then sample count x point count x (x, y, z) float32.
+
+#include <string>
+#include <vector>
+
+namespace mq::cloth {
+
+struct PointCache {
+  float startFrame = 1.0f;
+  float sampleRate = 1.0f;
+  size_t pointCount = 0;
+  std::vector<std::vector<float>> samples;  // 3 floats per point each
+};
+
+// Atomic (temporary file, then rename). Throws FileError naming the path,
+// or Error when a sample's size does not fit the point count.
+void writePointCache(const std::string& path, const PointCache& cache);
+// Strict: throws FileError naming the path and the problem (not a PC2 file,
+// another version, counts the file is too short for, non-finite values,
+// trailing bytes).
+PointCache readPointCache(const std::string& path);
+
+}  // namespace mq::cloth
