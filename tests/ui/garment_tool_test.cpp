@@ -354,8 +354,14 @@ class GarmentToolTest : public QObject {
     QVERIFY(tool_->simulating());
     // The event loop keeps running (QTRY spins it) while steps complete on the worker.
     QTRY_VERIFY_WITH_TIMEOUT(tool_->simulatedSteps() >= 3, 60000);
+    // Running is plain to see, and so is whether it keeps up with the clip.
+    QCOMPARE(panel()->simulateButton()->text(), QString("Stop simulating"));
+    QVERIFY(tool_->simulatedFramesPerSecond() > 0.0);
+    QVERIFY2(panel()->statusText().contains(QString("of %1 frames/s").arg(tool_->scene().cloth.fps, 0, 'f', 0)),
+             qPrintable(panel()->statusText()));
     QTest::mouseClick(panel()->simulateButton(), Qt::LeftButton);
     QVERIFY(!tool_->simulating());
+    QCOMPARE(panel()->simulateButton()->text(), QString("Simulate"));
     const std::vector<float>& shown = tool_->shownPositions(0);
     QVERIFY(allFinite(shown));
     QVERIFY2(maxDifference(shown, rest) > 1e-4f, "the live simulation did not move the cloth");

@@ -591,6 +591,8 @@ void GarmentPanel::editCollider(int field) {
   if (!tool_->setCollider(current, c, lastMergeKey_)) refresh();
 }
 
+QString GarmentPanel::statusText() const { return status_->text(); }
+
 void GarmentPanel::refreshStatus() {
   const int current = tool_->currentGarment();
   const bool any = tool_->garmentCount() > 0 || tool_->hasSheet();

@@ -56,6 +56,7 @@ class GarmentPanel : public QWidget {
   QPushButton* simulateButton() const { return simulate_; }
   QPushButton* bakeButton() const { return bake_; }
   QPushButton* exportBakeButton() const { return exportBake_; }
+  QString statusText() const;  // the status lines at the dock's foot
   QPushButton* selectButton() const { return select_; }
   QPushButton* pinButton() const { return pin_; }
   QPushButton* unpinButton() const { return unpin_; }

@@ -1002,8 +1002,7 @@ void GarmentTool::startStep() {
   cloth::wearInLayers(simulations, layerOrder(),
                       [&](size_t i) { return i < scene_.garments.size() && views[i]->drape.draped(); });
   for (size_t i : layerOrder())
-    if (views[i]->simulation)
-      jobs.push_back({views[i]->simulation.get(), &views[i]->drape});
+    if (views[i]->simulation) jobs.push_back({views[i]->simulation.get(), &views[i]->drape});
   if (jobs.empty()) return;
   const float dt = 1.0f / scene_.cloth.fps;
   stepWatcher_.setFuture(QtConcurrent::run([jobs, dt, rest = restBody_, target = posedBody()]() -> QString {
