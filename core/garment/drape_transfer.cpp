@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "core/garment/panel_coordinates.h"
+#include "core/geometry/nearest_points.h"
 #include "core/util/error.h"
 
 namespace mq {
@@ -86,16 +87,6 @@ class PanelLocator {
   std::vector<std::vector<uint32_t>> buckets_;
 };
 
-glm::vec3 nearestDrape(const GarmentMesh& before, const std::vector<float>& drape, glm::vec3 p) {
-  size_t best = 0;
-  float bestDistance = std::numeric_limits<float>::max();
-  for (size_t v = 0; v < before.vertexCount(); ++v) {
-    const glm::vec3 d = before.position(v) - p;
-    if (glm::dot(d, d) < bestDistance) bestDistance = glm::dot(d, d), best = v;
-  }
-  return at(drape, best);
-}
-
 }  // namespace
 
 std::vector<float> transferDrape(const GarmentMesh& before, const std::vector<float>& drape, const GarmentMesh& after) {
@@ -117,13 +108,18 @@ std::vector<float> transferDrape(const GarmentMesh& before, const std::vector<fl
     }
     for (size_t p = 0; p < boundsBefore.size(); ++p) locators.emplace_back(before, panelTriangles[p], boundsBefore[p]);
   }
+  // Without pattern coordinates for it: the drape of the nearest old vertex
+  // in the rest placement (searched for all vertices at once, when first needed).
+  std::vector<uint32_t> nearest;
+  const auto nearestOld = [&](size_t v) {
+    if (nearest.empty()) nearest = nearestPoints(after.positions, before.positions, 1);
+    return nearest[v];
+  };
   for (size_t v = 0; v < after.vertexCount(); ++v) {
     const size_t panel = patterns ? after.panelIds[v] : 0;
-    glm::vec3 p;
-    if (patterns && panel < locators.size() && !locators[panel].empty())
-      p = locators[panel].drapeAt(samePlace(uvOf(after, v), boundsAfter[panel], boundsBefore[panel]), drape);
-    else
-      p = nearestDrape(before, drape, after.position(v));
+    const glm::vec3 p = patterns && panel < locators.size() && !locators[panel].empty()
+                            ? locators[panel].drapeAt(samePlace(uvOf(after, v), boundsAfter[panel], boundsBefore[panel]), drape)
+                            : at(drape, nearestOld(v));
     out[3 * v] = p.x, out[3 * v + 1] = p.y, out[3 * v + 2] = p.z;
   }
   return out;

@@ -31,8 +31,4 @@ class RigidCarry {
   mutable std::vector<uint32_t> neighbours_;  // k per point, indices into the set; found when first needed
 };
 
-// The k nearest points of `set` to every point of `queries` (a uniform grid;
-// k per query, nearest first; fewer than k only when the set is smaller).
-std::vector<uint32_t> nearestPoints(const std::vector<float>& queries, const std::vector<float>& set, int k);
-
 }  // namespace mq

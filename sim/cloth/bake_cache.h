@@ -15,7 +15,6 @@
 //     F frames of 3V floats (x y z per vertex)
 //     F stretch frames of V floats
 
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,12 +51,5 @@ BakeCache readBakeCache(const std::string& path);
 // The cache beside a document: the extension replaced by ".mqbake"
 // ("a/b/shirt.mqscene" -> "a/b/shirt.mqbake"), or appended when there is none.
 std::string bakeCachePath(const std::string& documentPath);
-
-// The cache at `path` if there is one and it was baked from the state `key`;
-// otherwise nullopt, and *whyNot (when given) says "no bake cache" or "the
-// bake cache is of another scene state". A corrupt file still throws, so the
-// caller can report it.
-std::optional<BakeCache> readBakeCacheIfMatching(const std::string& path, const std::string& key,
-                                                 std::string* whyNot = nullptr);
 
 }  // namespace mq::cloth

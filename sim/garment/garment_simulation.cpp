@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/geometry/nearest_points.h"
 #include "core/util/error.h"
 #include "sim/cloth/collision/cloth_surface_collider.h"
 #include "sim/garment/garment_sewing.h"
@@ -285,9 +286,15 @@ void GarmentSimulation::startFromDrape(const std::vector<float>& positions, cons
     m.body = body;
     m.sim->setBody(m.body, m.bodyTriangles);
   }
-  // Pins are re-anchored where the drape has them, before the weld applies them.
+  // Pins are re-anchored where the drape has them, before the weld applies
+  // them: each body pin to the body vertex nearest its draped place.
+  std::vector<float> bodyPinned;
+  for (const Impl::Pin& p : m.pins)
+    if (p.bodyVertex >= 0) bodyPinned.insert(bodyPinned.end(), &positions[3 * p.vertex], &positions[3 * p.vertex] + 3);
+  const std::vector<uint32_t> nearest = nearestPoints(bodyPinned, m.body, 1);
+  size_t next = 0;
   for (Impl::Pin& p : m.pins)
-    if (p.bodyVertex >= 0) p.bodyVertex = int64_t(nearestVertex(m.body, vec3At(positions, p.vertex)));
+    if (p.bodyVertex >= 0) p.bodyVertex = int64_t(nearest[next++]);
   ClothState& state = m.sim->mutableState();
   for (size_t i = 0; i < vertexCount(); ++i) state.x[m.running(uint32_t(i))] = vec3At(positions, i);
   if (!m.welded) {

@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "core/geometry/nearest_points.h"
 #include "core/geometry/rigid_carry.h"
 
 namespace mq {

@@ -346,28 +346,5 @@ TEST(BakeCache, PathIsBesideTheDocument) {
   EXPECT_EQ(bakeCachePath("shirt.mqscene"), "shirt.mqbake");
 }
 
-TEST(BakeCache, IfMatchingReadsOnlyTheSameSceneState) {
-  const fs::path path = scratch("matching.mqbake");
-  fs::remove(path);
-  std::string why;
-  EXPECT_FALSE(readBakeCacheIfMatching(path.string(), "k1", &why));
-  EXPECT_EQ(why, "no bake cache");
-
-  writeBakeCache(path.string(), small());
-  why.clear();
-  EXPECT_FALSE(readBakeCacheIfMatching(path.string(), "k2", &why));
-  EXPECT_EQ(why, "the bake cache is of another scene state");
-
-  const std::optional<BakeCache> same = readBakeCacheIfMatching(path.string(), "k1", &why);
-  ASSERT_TRUE(same);
-  expectSame(*same, small());
-  EXPECT_TRUE(readBakeCacheIfMatching(path.string(), "k1"));  // no reason wanted
-
-  std::vector<uint8_t> bytes = fileBytes(path);
-  bytes.pop_back();
-  writeBytes(path, bytes);
-  EXPECT_THROW(readBakeCacheIfMatching(path.string(), "k1", &why), FileError);  // corrupt: reported, not ignored
-}
-
 }  // namespace
 }  // namespace mq

@@ -27,7 +27,7 @@
 #include "core/garment/garment_json.h"
 #include "core/garment/parametric_garments.h"
 #include "core/garment/pin_remap.h"
-#include "core/geometry/rigid_carry.h"
+#include "core/geometry/nearest_points.h"
 #include "core/util/error.h"
 #include "core/util/thread_pool.h"
 #include "render/cloth_shading.h"
