@@ -14,6 +14,7 @@
 #include "app/cli/command.h"
 #include "app/cli/simulate_garments.h"
 #include "app/cli/simulate_hair.h"
+#include "core/io/json_fields.h"
 #include "core/character/posed_character.h"
 #include "core/scene/open_scene.h"
 #include "core/util/error.h"
@@ -165,7 +166,7 @@ int runSimulate(const std::vector<std::string>& argv) {
   try {
     scene = openScene(path);  // FileError for unreadable, truncated or invalid documents
   } catch (const json::exception& e) {
-    throw FileError(path, std::string("not a valid scene document: ") + e.what());
+    throw FileError(path, "not a valid scene document: " + jsonProblem(e));
   }
   cli::printMotionMatch(scene);
   applyScaleOption(args, scene);

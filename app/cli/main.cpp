@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "app/cli/command.h"
+#include "core/io/json_fields.h"
 #include "core/scene/open_scene.h"
 #include "core/skinning/section_cones.h"
 #include "core/util/error.h"
@@ -142,8 +143,11 @@ int main(int argc, char** argv) {
     } catch (const mq::Error& e) {
       std::cerr << "mannequin-cli " << c.name << ": error: " << e.what() << "\n";
       return 1;
+    } catch (const std::bad_alloc&) {
+      std::cerr << "mannequin-cli " << c.name << ": error: out of memory (the input asks for more than this machine has)\n";
+      return 1;
     } catch (const std::exception& e) {
-      std::cerr << "mannequin-cli " << c.name << ": internal error: " << e.what() << "\n";
+      std::cerr << "mannequin-cli " << c.name << ": internal error: " << mq::jsonProblem(e) << "\n";
       return 3;
     }
   }

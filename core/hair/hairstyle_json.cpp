@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "core/io/json_fields.h"
 #include "core/util/error.h"
 
 namespace mq {
@@ -22,65 +23,52 @@ double tidy(float f) {
 
 json vec(const glm::vec3& v) { return json::array({tidy(v.x), tidy(v.y), tidy(v.z)}); }
 
-glm::vec3 readVec(const json& j, const char* field) {
-  if (!j.is_array() || j.size() != 3 || !j[0].is_number() || !j[1].is_number() || !j[2].is_number())
-    throw Error(std::string("hair: '") + field + "' must be an array of 3 numbers");
-  return {j[0].get<float>(), j[1].get<float>(), j[2].get<float>()};
-}
+// Metres: nothing on a head lies farther than this from the origin.
+constexpr float kMaxDistance = 100.0f;
+// The groom refuses more strands than this (memory: strands x points).
+constexpr long long kMaxStrands = 150000;
 
-// Reads an optional field into `out` (kept when absent).
-template <class T>
-void read(const json& j, const char* field, T& out) {
-  auto it = j.find(field);
-  if (it == j.end()) return;
-  try {
-    if constexpr (std::is_same_v<T, glm::vec3>) out = readVec(*it, field);
-    else out = it->get<T>();
-  } catch (const json::exception&) {
-    throw Error(std::string("hair: field '") + field + "' has the wrong type");
-  }
-}
-
-const json& arrayField(const json& j, const char* field) {
-  static const json empty = json::array();
-  auto it = j.find(field);
-  if (it == j.end()) return empty;
-  if (!it->is_array()) throw Error(std::string("hair: '") + field + "' must be an array");
-  return *it;
-}
-
-void readPrimitives(const json& j, FlowPrimitives& p) {
-  if (j.contains("streams")) {
+void readPrimitives(const JsonFields& f, FlowPrimitives& p) {
+  if (f.has("streams")) {
     p.streams.clear();
-    for (const json& e : arrayField(j, "streams")) {
+    for (size_t i = 0; i < f.array("streams").size(); ++i) {
+      const JsonFields e = f.element("streams", i);
       UniformStream s;
-      read(e, "direction", s.direction);
-      read(e, "strength", s.strength);
+      s.direction = e.vec3("direction", s.direction, 1.0e3f);
+      s.strength = e.number("strength", s.strength, -1.0e3, 1.0e3);
       p.streams.push_back(s);
     }
   }
-  if (j.contains("sources")) {
+  if (f.has("sources")) {
     p.sources.clear();
-    for (const json& e : arrayField(j, "sources")) {
+    for (size_t i = 0; i < f.array("sources").size(); ++i) {
+      const JsonFields e = f.element("sources", i);
       PointSource s;
-      read(e, "position", s.position);
-      read(e, "strength", s.strength);
-      read(e, "radius", s.radius);
+      s.position = e.vec3("position", s.position, kMaxDistance);
+      s.strength = e.number("strength", s.strength, -1.0e3, 1.0e3);
+      s.radius = e.positive("radius", s.radius, kMaxDistance);
       p.sources.push_back(s);
     }
   }
-  if (j.contains("vortices")) {
+  if (f.has("vortices")) {
     p.vortices.clear();
-    for (const json& e : arrayField(j, "vortices")) {
+    for (size_t i = 0; i < f.array("vortices").size(); ++i) {
+      const JsonFields e = f.element("vortices", i);
       Vortex v;
-      read(e, "position", v.position);
-      read(e, "axis", v.axis);
-      read(e, "strength", v.strength);
-      read(e, "radius", v.radius);
-      if (glm::length(v.axis) <= 0.0f) throw Error("hair: a vortex axis must not be zero");
+      v.position = e.vec3("position", v.position, kMaxDistance);
+      v.axis = e.vec3("axis", v.axis, 1.0e3f);
+      v.strength = e.number("strength", v.strength, -1.0e3, 1.0e3);
+      v.radius = e.positive("radius", v.radius, kMaxDistance);
+      if (glm::length(v.axis) <= 0.0f) e.fail("axis", "must not be zero");
       p.vortices.push_back(v);
     }
   }
+}
+
+glm::vec3 color(const JsonFields& f, std::string_view key, glm::vec3 fallback) {
+  const glm::vec3 c = f.vec3(key, fallback, 1.0f);
+  if (c.x < 0.0f || c.y < 0.0f || c.z < 0.0f) f.fail(key, "must hold numbers between 0 and 1");
+  return c;
 }
 
 }  // namespace
@@ -95,17 +83,13 @@ HairShadingModel hairShadingModelFromName(const std::string& name) {
   throw Error("hair: unknown shading model '" + name + "' (kajiya-kay or physical)");
 }
 
-HairShadingParams hairShadingFromJson(const json& j, const HairShadingParams& base) {
-  if (!j.is_object()) throw Error("hair: 'shading' must be an object");
+HairShadingParams hairShadingFromJson(const json& j, const HairShadingParams& base, const std::string& path) {
+  const JsonFields f(j, path);
   HairShadingParams s = base;
-  std::string model = hairShadingModelName(s.model);
-  read(j, "model", model);
-  s.model = hairShadingModelFromName(model);
-  read(j, "melanin", s.melanin);
-  read(j, "pheomelanin", s.pheomelanin);
-  read(j, "roughness", s.roughness);
-  if (!(s.melanin >= 0.0f) || !(s.pheomelanin >= 0.0f)) throw Error("hair: melanin concentrations must be >= 0");
-  if (!(s.roughness >= 0.05f && s.roughness <= 1.0f)) throw Error("hair: shading 'roughness' must be in 0.05..1");
+  s.model = hairShadingModelFromName(f.string("model", hairShadingModelName(s.model)));
+  s.melanin = f.nonNegative("melanin", s.melanin, 50.0);
+  s.pheomelanin = f.nonNegative("pheomelanin", s.pheomelanin, 50.0);
+  s.roughness = f.number("roughness", s.roughness, 0.05, 1.0);
   return s;
 }
 
@@ -116,89 +100,95 @@ json toJson(const HairShadingParams& s) {
           {"roughness", tidy(s.roughness)}};
 }
 
-HairStyle hairStyleFromJson(const json& j) {
+HairStyle hairStyleFromJson(const json& j, const std::string& path) {
   if (j.is_string()) return builtinHairStyle(j.get<std::string>());
-  if (!j.is_object()) throw Error("hair: 'style' must be a built-in style name or an object");
-  HairStyle s = j.contains("preset") ? hairStyleFromJson(j.at("preset")) : HairStyle{};
-  read(j, "name", s.name);
-  readPrimitives(j, s.primitives);
-  read(j, "scalp_outflow", s.scalpOutflow);
-  read(j, "noise_amplitude", s.noiseAmplitude);
-  read(j, "noise_scale", s.noiseScale);
-  read(j, "density", s.density);
-  read(j, "max_strands", s.maxStrands);
-  read(j, "guides", s.guideCount);
-  read(j, "length", s.length);
-  read(j, "length_variation", s.lengthVariation);
-  if (j.contains("length_map")) {
+  if (!j.is_object()) throw Error(path + ": must be a built-in style name or an object");
+  const JsonFields f(j, path);
+  HairStyle s = f.has("preset") ? hairStyleFromJson(f.raw("preset"), f.pathOf("preset")) : HairStyle{};
+  s.name = f.string("name", s.name);
+  readPrimitives(f, s.primitives);
+  s.scalpOutflow = f.number("scalp_outflow", s.scalpOutflow, -1.0e3, 1.0e3);
+  s.noiseAmplitude = f.nonNegative("noise_amplitude", s.noiseAmplitude, 100.0);
+  s.noiseScale = f.positive("noise_scale", s.noiseScale, kMaxDistance);
+  s.density = f.nonNegative("density", s.density, 10000.0);
+  s.maxStrands = int(f.integer("max_strands", s.maxStrands, 0, kMaxStrands));
+  s.guideCount = int(f.integer("guides", s.guideCount, 1, kMaxStrands));
+  s.length = f.positive("length", s.length, 10.0);
+  s.lengthVariation = f.number("length_variation", s.lengthVariation, 0.0, 1.0);
+  if (f.has("length_map")) {
     s.lengthMap.clear();
-    for (const json& e : arrayField(j, "length_map")) {
+    for (size_t i = 0; i < f.array("length_map").size(); ++i) {
+      const JsonFields e = f.element("length_map", i);
       LengthPoint p;
-      read(e, "position", p.position);
-      read(e, "scale", p.scale);
-      read(e, "radius", p.radius);
+      p.position = e.vec3("position", p.position, kMaxDistance);
+      p.scale = e.nonNegative("scale", p.scale, 100.0);
+      p.radius = e.positive("radius", p.radius, kMaxDistance);
       s.lengthMap.push_back(p);
     }
   }
-  read(j, "points_per_strand", s.pointsPerStrand);
-  read(j, "strand_noise", s.strandNoise);
-  read(j, "wave_amplitude", s.waveAmplitude);
-  read(j, "wave_length", s.waveLength);
-  read(j, "curl_radius", s.curlRadius);
-  read(j, "curl_length", s.curlLength);
-  read(j, "clumping", s.clumping);
-  read(j, "clump_shape", s.clumpShape);
-  read(j, "frizz", s.frizz);
-  read(j, "frizz_frequency", s.frizzFrequency);
-  read(j, "root_color", s.rootColor);
-  read(j, "tip_color", s.tipColor);
-  read(j, "seed", s.seed);
-  if (j.contains("shading")) s.shading = hairShadingFromJson(j.at("shading"), s.shading);
-  if (s.pointsPerStrand < 2 || s.pointsPerStrand > 1024) throw Error("hair: 'points_per_strand' must be in 2..1024");
-  if (!(s.length > 0.0f)) throw Error("hair: 'length' must be positive");
-  if (s.density < 0.0f || s.maxStrands < 0 || s.guideCount < 1) throw Error("hair: density and counts must be positive");
+  s.pointsPerStrand = int(f.integer("points_per_strand", s.pointsPerStrand, 2, 1024));
+  s.strandNoise = f.nonNegative("strand_noise", s.strandNoise, 10.0);
+  s.waveAmplitude = f.nonNegative("wave_amplitude", s.waveAmplitude, 10.0);
+  s.waveLength = f.positive("wave_length", s.waveLength, kMaxDistance);
+  s.curlRadius = f.nonNegative("curl_radius", s.curlRadius, 10.0);
+  s.curlLength = f.positive("curl_length", s.curlLength, kMaxDistance);
+  s.clumping = f.number("clumping", s.clumping, 0.0, 1.0);
+  s.clumpShape = f.number("clump_shape", s.clumpShape, 0.01, 100.0);
+  s.frizz = f.nonNegative("frizz", s.frizz, 10.0);
+  s.frizzFrequency = f.nonNegative("frizz_frequency", s.frizzFrequency, 1.0e5);
+  s.rootColor = color(f, "root_color", s.rootColor);
+  s.tipColor = color(f, "tip_color", s.tipColor);
+  s.seed = uint32_t(f.integer("seed", s.seed, 0, 4294967295LL));
+  if (f.has("shading")) s.shading = hairShadingFromJson(f.raw("shading"), s.shading, f.pathOf("shading"));
   return s;
 }
 
-ScalpRegion scalpRegionFromJson(const json& j) {
+ScalpRegion scalpRegionFromJson(const json& j, const std::string& path) {
   ScalpRegion r;
   if (j.is_null()) return r;
-  if (!j.is_object()) throw Error("hair: 'scalp' must be an object");
-  std::string kind = "tagged";
-  read(j, "kind", kind);
+  const JsonFields f(j, path);
+  const std::string kind = f.string("kind", "tagged");
   if (kind == "tagged") {
     r.kind = ScalpRegion::Kind::Tagged;
   } else if (kind == "bone_cone") {
     r.kind = ScalpRegion::Kind::BoneCone;
-    read(j, "bone", r.bone);
-    read(j, "axis", r.axis);
-    read(j, "angle", r.angleDegrees);
-    if (glm::length(r.axis) <= 0.0f) throw Error("hair: the scalp axis must not be zero");
+    r.bone = f.string("bone", r.bone);
+    r.axis = f.vec3("axis", r.axis, 1.0e3f);
+    r.angleDegrees = f.number("angle", r.angleDegrees, 0.0, 180.0);
+    if (glm::length(r.axis) <= 0.0f) f.fail("axis", "must not be zero");
   } else if (kind == "faces") {
     r.kind = ScalpRegion::Kind::Faces;
-    read(j, "mesh", r.mesh);
-    read(j, "faces", r.faces);
+    r.mesh = int(f.integer("mesh", r.mesh, 0, 1 << 20));
+    const json& faces = f.array("faces");
+    r.faces.clear();
+    r.faces.reserve(faces.size());
+    for (size_t i = 0; i < faces.size(); ++i) {
+      if (!faces[i].is_number_unsigned() || faces[i].get<unsigned long long>() > 0x7fffffffULL)
+        f.fail("faces", "must hold face indices (whole numbers from 0)");
+      r.faces.push_back(faces[i].get<uint32_t>());
+    }
   } else {
-    throw Error("hair: unknown scalp kind '" + kind + "' (tagged, bone_cone or faces)");
+    f.fail("kind", "unknown scalp kind '" + kind + "' (tagged, bone_cone or faces)");
   }
   return r;
 }
 
-HairSection hairSectionFromJson(const json& j) {
+HairSection hairSectionFromJson(const json& j, const std::string& path) {
   HairSection section;
   if (j.is_null()) return section;
-  if (!j.is_object()) throw Error("hair: the section must be an object");
-  if (j.contains("style")) {
-    const json& style = j.at("style");
-    section.style = hairStyleFromJson(style);
+  const JsonFields f(j, path);
+  if (f.has("style")) {
+    const json& style = f.raw("style");
+    section.style = hairStyleFromJson(style, f.pathOf("style"));
     section.fitToHead = style.is_string() || style.contains("preset");
   }
-  if (j.contains("scalp")) {
-    section.scalp = scalpRegionFromJson(j.at("scalp"));
+  if (f.has("scalp")) {
+    section.scalp = scalpRegionFromJson(f.raw("scalp"), f.pathOf("scalp"));
     section.scalpGiven = true;
   }
-  read(j, "strands", section.strands);
-  if (j.contains("shading")) section.style.shading = hairShadingFromJson(j.at("shading"), section.style.shading);
+  section.strands = size_t(f.integer("strands", 0, 0, kMaxStrands));
+  if (f.has("shading"))
+    section.style.shading = hairShadingFromJson(f.raw("shading"), section.style.shading, f.pathOf("shading"));
   return section;
 }
 

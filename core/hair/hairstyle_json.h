@@ -41,11 +41,13 @@ struct HairSection {
 };
 
 // Throw mq::Error saying which field is wrong.
-HairStyle hairStyleFromJson(const nlohmann::json& j);
-HairSection hairSectionFromJson(const nlohmann::json& j);
-ScalpRegion scalpRegionFromJson(const nlohmann::json& j);
+HairStyle hairStyleFromJson(const nlohmann::json& j, const std::string& path = "hair.style");
+// Errors name the field by its JSON path under `path`.
+HairSection hairSectionFromJson(const nlohmann::json& j, const std::string& path = "hair");
+ScalpRegion scalpRegionFromJson(const nlohmann::json& j, const std::string& path = "hair.scalp");
 // Fields absent keep `base`'s values.
-HairShadingParams hairShadingFromJson(const nlohmann::json& j, const HairShadingParams& base = {});
+HairShadingParams hairShadingFromJson(const nlohmann::json& j, const HairShadingParams& base = {},
+                                      const std::string& path = "hair.shading");
 nlohmann::json toJson(const HairShadingParams& shading);
 // "kajiya-kay", "physical"; the parser throws mq::Error naming them.
 std::string hairShadingModelName(HairShadingModel model);

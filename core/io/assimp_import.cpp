@@ -1,6 +1,7 @@
 #include "core/io/assimp_import.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -15,6 +16,8 @@
 #include "core/io/collada_clips.h"
 #include "core/io/file_bytes.h"
 #include "core/util/error.h"
+#include "core/util/isolated_run.h"
+#include "core/util/utf8.h"
 
 namespace mq {
 namespace {
@@ -51,27 +54,64 @@ std::string trimTextNodes(const std::string& xml) {
   return out;
 }
 
-// Collada text (whitespace-trimmed) is returned in `colladaText` for the clip reader.
-const aiScene* readScene(Assimp::Importer& importer, const std::string& path, std::string& colladaText) {
+// A Collada element declares its size (count="N") before its data; Assimp
+// reserves that much before reading. No count can exceed the file's bytes.
+void checkColladaCounts(const std::string& text, const std::string& path) {
+  static const std::string attribute = "count=\"";
+  for (size_t at = text.find(attribute); at != std::string::npos; at = text.find(attribute, at + 1)) {
+    const size_t digits = at + attribute.size();
+    double count = 0.0;
+    for (size_t i = digits; i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])); ++i)
+      count = count * 10.0 + (text[i] - '0');
+    if (count > double(text.size())) {
+      const long line = 1 + std::count(text.begin(), text.begin() + long(at), '\n');
+      throw FileError(path, "line " + std::to_string(line) + ": count=\"" +
+                                text.substr(digits, text.find('"', digits) - digits) + "\" is more than the file holds");
+    }
+  }
+}
+
+unsigned importFlags(const std::string& ext) {
+  unsigned flags = aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_ValidateDataStructure;
+  // Assimp expands Collada's indexed vertices per face corner, OBJ indexes
+  // positions, normals and uvs apart and STL repeats every corner: welding
+  // identical corners restores a connected surface.
+  if (ext == "dae" || ext == "obj" || ext == "ply" || ext == "stl") flags |= aiProcess_JoinIdenticalVertices;
+  if (ext == "stl") flags |= aiProcess_DropNormals;  // per-face normals would keep the corners apart
+  return flags;
+}
+
+const aiScene* readWith(Assimp::Importer& importer, const std::string& path, const std::string& colladaText) {
   importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, false);  // no $AssimpFbx$ helper nodes
   importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_USE_COLLADA_NAMES, true);  // "Bone", not "id-bone-3"
-  unsigned flags = aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_ValidateDataStructure;
-  const aiScene* scene = nullptr;
+  const std::string ext = fileExtension(path);
+  if (ext == "dae") return importer.ReadFileFromMemory(colladaText.data(), colladaText.size(), importFlags(ext), "dae");
+  return importer.ReadFile(path, importFlags(ext));
+}
+
+// Assimp asserts (aborting the process) or allocates without bound on some
+// damaged files: a first read in a bounded child process finds those.
+void checkAssimpSurvives(const std::string& path, const std::string& colladaText) {
+  const IsolatedOutcome outcome = runIsolated([&] {
+    Assimp::Importer importer;
+    return readWith(importer, path, colladaText) != nullptr;
+  });
+  if (!outcome.ok && outcome.problem != "failed")
+    throw FileError(path, "cannot import: the importer (Assimp) " + outcome.problem +
+                              " reading this file: it is damaged or not a format Mannequin reads");
+}
+
+// Collada text (whitespace-trimmed) is returned in `colladaText` for the clip reader.
+const aiScene* readScene(Assimp::Importer& importer, const std::string& path, std::string& colladaText) {
   if (fileExtension(path) == "dae") {
-    // Assimp expands Collada's indexed vertices per face corner; welding
-    // identical corners restores the file's own vertices.
-    flags |= aiProcess_JoinIdenticalVertices;
-    colladaText = trimTextNodes(loadFileText(path));
-    scene = importer.ReadFileFromMemory(colladaText.data(), colladaText.size(), flags, "dae");
+    const std::string text = loadFileText(path);
+    checkColladaCounts(text, path);
+    colladaText = trimTextNodes(text);
   } else {
     (void)readFileBytes(path);  // clear message for missing files
-    // OBJ indexes positions, normals and uvs apart and STL repeats every
-    // corner: welding identical corners gives a connected surface.
-    const std::string ext = fileExtension(path);
-    if (ext == "obj" || ext == "ply" || ext == "stl") flags |= aiProcess_JoinIdenticalVertices;
-    if (ext == "stl") flags |= aiProcess_DropNormals;  // per-face normals would keep the corners apart
-    scene = importer.ReadFile(path, flags);
   }
+  checkAssimpSurvives(path, colladaText);
+  const aiScene* scene = readWith(importer, path, colladaText);
   if (!scene || !scene->mRootNode) {
     std::string why = importer.GetErrorString();
     if (why.empty()) why = "unreadable";
@@ -169,7 +209,7 @@ Skeleton buildSkeleton(const aiScene* scene, const std::vector<RawClip>& clips, 
   for (int n = 0; n < static_cast<int>(t.nodes.size()); ++n) {
     if (!boneNodes.count(n)) continue;
     Bone bone;
-    bone.name = t.nodes[n]->mName.C_Str();
+    bone.name = repairedUtf8(t.nodes[n]->mName.C_Str());
     bone.rest = Trs::fromMatrix(t.local[n]);
     bone.parent = nearestBoneAbove(t, n, bone.parentFromOffset);
     t.boneOfNode[n] = skeleton.addBone(std::move(bone));
@@ -198,7 +238,7 @@ void bindSkin(const aiMesh* am, const NodeTable& t, int meshNode, Mesh& mesh, bo
     skin.inverseBind.push_back(inverseBindOf(bone, t, node, meshNode, bindFromNodes));
     for (unsigned w = 0; w < bone->mNumWeights; ++w) {
       const aiVertexWeight& vw = bone->mWeights[w];
-      if (vw.mVertexId < n && vw.mWeight > 0.0f) influences[vw.mVertexId].push_back({static_cast<int>(b), vw.mWeight});
+      if (vw.mVertexId < n && vw.mWeight > 0.0f && std::isfinite(vw.mWeight)) influences[vw.mVertexId].push_back({static_cast<int>(b), vw.mWeight});
     }
   }
   size_t k = 1;
@@ -216,7 +256,7 @@ void bindSkin(const aiMesh* am, const NodeTable& t, int meshNode, Mesh& mesh, bo
 
 Mesh convertMesh(const aiMesh* am, const NodeTable& t, int node, bool bindFromNodes) {
   Mesh mesh;
-  mesh.name = am->mName.length > 0 ? am->mName.C_Str() : t.nodes[node]->mName.C_Str();
+  mesh.name = repairedUtf8(am->mName.length > 0 ? am->mName.C_Str() : t.nodes[node]->mName.C_Str());
   const size_t n = am->mNumVertices;
   mesh.positions.resize(3 * n);
   for (size_t v = 0; v < n; ++v)
@@ -272,7 +312,7 @@ Track keyTrack(const Key* keys, unsigned count, double ticksPerSecond, int compo
 
 RawClip convertAnimation(const aiAnimation* anim, const NodeTable& t, int index, const std::string& path) {
   RawClip clip;
-  clip.name = anim->mName.length > 0 ? anim->mName.C_Str() : "clip" + std::to_string(index);
+  clip.name = anim->mName.length > 0 ? repairedUtf8(anim->mName.C_Str()) : "clip" + std::to_string(index);
   const double tps = anim->mTicksPerSecond > 0.0 ? anim->mTicksPerSecond : 25.0;
   auto vec3 = [](const aiVector3D& v, std::vector<float>& out) { out.insert(out.end(), {v.x, v.y, v.z}); };
   auto quat = [](const aiQuaternion& q, std::vector<float>& out) { out.insert(out.end(), {q.x, q.y, q.z, q.w}); };
@@ -409,7 +449,7 @@ Material convertMaterial(const aiScene* scene, const aiMaterial* m, int index, c
                          std::map<std::string, int>& imageOfPath, Character& character) {
   Material material;
   aiString name;
-  material.name = m->Get(AI_MATKEY_NAME, name) == AI_SUCCESS && name.length > 0 ? name.C_Str()
+  material.name = m->Get(AI_MATKEY_NAME, name) == AI_SUCCESS && name.length > 0 ? repairedUtf8(name.C_Str())
                                                                               : "material" + std::to_string(index);
   aiColor4D diffuse(0.8f, 0.8f, 0.8f, 1.0f);
   m->Get(AI_MATKEY_COLOR_DIFFUSE, diffuse);

@@ -11,6 +11,7 @@
 
 #include "core/io/file_bytes.h"
 #include "core/util/error.h"
+#include "core/util/utf8.h"
 
 namespace mq {
 namespace {
@@ -192,7 +193,14 @@ class BvhParser {
 };
 
 BvhData readBvh(const std::string& path) {
-  return BvhParser(path, loadFileText(path)).parse();
+  const std::string text = loadFileText(path);
+  // Joint names become bone names in documents and JSON: they must be text.
+  const size_t bad = firstInvalidUtf8(text);
+  if (bad != std::string::npos) {
+    const long line = 1 + std::count(text.begin(), text.begin() + long(bad), '\n');
+    throw FileError(path, "line " + std::to_string(line) + ": not UTF-8 text (byte " + std::to_string(bad) + ")");
+  }
+  return BvhParser(path, text).parse();
 }
 
 Skeleton skeletonOf(const BvhData& bvh) {

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "core/io/file_bytes.h"
+#include "core/io/json_fields.h"
 #include "core/util/error.h"
 
 namespace mq::gltf {
@@ -98,11 +99,6 @@ std::string percentDecode(const std::string& uri) {
 
 }  // namespace
 
-std::string jsonProblem(const std::exception& e) {
-  const std::string what = e.what();
-  const size_t bracket = what.find("] ");
-  return bracket == std::string::npos ? what : what.substr(bracket + 2);
-}
 
 struct Document::RawAccessor {
   const uint8_t* data = nullptr;  // null: all zeros (no bufferView)
@@ -129,11 +125,7 @@ Document Document::load(const std::string& path) {
   if (bytes.size() >= 4 && readU32(bytes.data()) == kGlbMagic) {
     doc.parseGlb(bytes);
   } else {
-    try {
-      doc.json_ = nlohmann::json::parse(bytes.begin(), bytes.end());
-    } catch (const nlohmann::json::exception& e) {
-      doc.fail("not valid glTF JSON: " + jsonProblem(e));
-    }
+    doc.json_ = parseJsonText(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), path);
   }
   if (!doc.json_.is_object()) doc.fail("not a glTF document (top level is not a JSON object)");
   try {

@@ -9,10 +9,9 @@
 
 #include <nlohmann/json.hpp>
 
-namespace mq::gltf {
+#include "core/io/json_fields.h"
 
-// nlohmann's message without its "[json.exception.parse_error.101] " prefix.
-std::string jsonProblem(const std::exception& e);
+namespace mq::gltf {
 
 class Document {
  public:

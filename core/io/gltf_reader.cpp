@@ -459,7 +459,7 @@ Character readGltfCharacter(const std::string& path) {
     character = buildCharacter(doc);
     character.validate();
   } catch (const json::exception& e) {
-    doc.fail("malformed glTF: " + gltf::jsonProblem(e));
+    doc.fail("malformed glTF: " + jsonProblem(e));
   } catch (const std::invalid_argument& e) {
     doc.fail(e.what());
   } catch (const FileError&) {

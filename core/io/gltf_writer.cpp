@@ -57,12 +57,12 @@ int GltfWriter::addAccessor(const void* data, size_t count, const char* type, in
 
 void GltfWriter::writeGltf(std::ostream& out) {
   gltf_["buffers"] = {{{"byteLength", buffer_.size()}, {"uri", "data:application/octet-stream;base64," + base64(buffer_)}}};
-  out << gltf_.dump(1) << "\n";
+  out << gltf_.dump(1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
 }
 
 void GltfWriter::writeGlb(std::ostream& out) {
   gltf_["buffers"] = {{{"byteLength", buffer_.size()}}};
-  std::string text = gltf_.dump();
+  std::string text = gltf_.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   while (text.size() % 4) text += ' ';
   const uint32_t total = 12 + 8 + uint32_t(text.size()) + 8 + uint32_t(buffer_.size());
   put(out, uint32_t(0x46546C67));  // "glTF"

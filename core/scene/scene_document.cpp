@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "core/io/json_fields.h"
 #include "core/util/atomic_file.h"
 #include "core/util/error.h"
 
@@ -134,16 +135,11 @@ bool isSceneDocumentPath(const std::string& path) {
 }
 
 SceneDocument parseSceneDocument(const std::string& text, const std::string& pathForErrors) {
-  json root;
-  try {
-    root = json::parse(text);
-  } catch (const json::parse_error& e) {
-    throw FileError(pathForErrors, std::string("not valid JSON: ") + e.what());
-  }
+  const json root = parseJsonText(text, pathForErrors);
   try {
     return fromJson(root);
   } catch (const json::exception& e) {
-    throw FileError(pathForErrors, std::string("bad scene document: ") + e.what());
+    throw FileError(pathForErrors, "bad scene document: " + jsonProblem(e));
   } catch (const Error& e) {
     throw FileError(pathForErrors, e.what());
   }
@@ -183,7 +179,7 @@ json toJson(const SceneDocument& doc) {
 }
 
 void saveSceneDocument(const SceneDocument& document, const std::string& path) {
-  const std::string text = toJson(document).dump(2) + "\n";
+  const std::string text = toJson(document).dump(2, ' ', false, json::error_handler_t::replace) + "\n";
   writeFileAtomically(path, [&](std::ostream& out) { out << text; });
 }
 

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/garment/fabric_json.h"
+#include "core/io/json_fields.h"
 #include "core/util/error.h"
 
 namespace mq::cloth {
@@ -13,83 +14,12 @@ namespace {
 
 using nlohmann::json;
 
-// Reads typed values from one section, naming "<section>.<key>" in errors.
-class SectionReader {
- public:
-  SectionReader(const json& j, std::string section, std::string path)
-      : j_(j), section_(std::move(section)), path_(std::move(path)) {
-    if (!j_.is_object()) fail("", "must be an object");
-  }
-
-  [[noreturn]] void fail(const std::string& key, const std::string& problem) const {
-    throw FileError(path_, section_ + (key.empty() ? "" : "." + key) + ": " + problem);
-  }
-
-  bool has(const std::string& key) const { return j_.contains(key) && !j_[key].is_null(); }
-
-  float number(const std::string& key, float fallback) const {
-    if (!has(key)) return fallback;
-    const json& v = j_[key];
-    if (!v.is_number()) fail(key, "must be a number");
-    const double d = v.get<double>();
-    if (!std::isfinite(d) || std::abs(d) > 3.0e38) fail(key, "must be a finite number");
-    return float(d);
-  }
-
-  float positive(const std::string& key, float fallback) const {
-    const float f = number(key, fallback);
-    if (!(f > 0.0f)) fail(key, "must be positive");
-    return f;
-  }
-
-  float nonNegative(const std::string& key, float fallback) const {
-    const float f = number(key, fallback);
-    if (f < 0.0f) fail(key, "must not be negative");
-    return f;
-  }
-
-  int integer(const std::string& key, int fallback, int minimum) const {
-    if (!has(key)) return fallback;
-    const json& v = j_[key];
-    if (!v.is_number_integer()) fail(key, "must be an integer");
-    const long long i = v.get<long long>();
-    if (i < minimum || i > 1000000000) fail(key, "must be an integer >= " + std::to_string(minimum));
-    return int(i);
-  }
-
-  bool boolean(const std::string& key, bool fallback) const {
-    if (!has(key)) return fallback;
-    if (!j_[key].is_boolean()) fail(key, "must be true or false");
-    return j_[key].get<bool>();
-  }
-
-  std::string string(const std::string& key, const std::string& fallback) const {
-    if (!has(key)) return fallback;
-    if (!j_[key].is_string()) fail(key, "must be a string");
-    return j_[key].get<std::string>();
-  }
-
-  glm::vec3 vec3(const std::string& key, glm::vec3 fallback) const {
-    if (!has(key)) return fallback;
-    const json& v = j_[key];
-    if (!v.is_array() || v.size() != 3) fail(key, "must be an array of 3 numbers");
-    glm::vec3 out;
-    for (int c = 0; c < 3; ++c) {
-      if (!v[c].is_number() || !std::isfinite(v[c].get<double>()) || std::abs(v[c].get<double>()) > 3.0e38)
-        fail(key, "must be an array of 3 finite numbers");
-      out[c] = v[c].get<float>();
-    }
-    return out;
-  }
-
-  const json& raw(const std::string& key) const { return j_[key]; }
-  const std::string& section() const { return section_; }
-  const std::string& path() const { return path_; }
-
- private:
-  const json& j_;
-  std::string section_, path_;
-};
+// Bounds on what a scene may ask for: memory grows with sheet vertices and
+// with frames x vertices of a bake.
+constexpr long long kMaxSheetSide = 4096;
+constexpr long long kMaxSheetVertices = 1000000;
+constexpr long long kMaxFrames = 100000;
+constexpr float kMaxDistance = 1000.0f;  // metres
 
 std::string knownNames(std::initializer_list<const char*> names) {
   std::string s;
@@ -97,36 +27,34 @@ std::string knownNames(std::initializer_list<const char*> names) {
   return "(known: " + s + ")";
 }
 
-SheetGarmentSpec parseGarment(const SectionReader& r) {
+SheetGarmentSpec parseGarment(const JsonFields& r) {
   SheetGarmentSpec g;
   if (!r.has("garment")) return g;
-  const SectionReader s(r.raw("garment"), r.section() + ".garment", r.path());
+  const JsonFields s = r.object("garment");
   const std::string type = s.string("type", "sheet");
   if (type != "sheet") s.fail("type", "unknown garment type '" + type + "' " + knownNames({"sheet"}));
-  g.columns = s.integer("columns", g.columns, 2);
-  g.rows = s.integer("rows", g.rows, 2);
-  g.width = s.positive("width", g.width);
-  g.height = s.positive("height", g.height);
-  g.center = s.vec3("center", g.center);
+  g.columns = int(s.integer("columns", g.columns, 2, kMaxSheetSide));
+  g.rows = int(s.integer("rows", g.rows, 2, kMaxSheetSide));
+  if (static_cast<long long>(g.columns) * g.rows > kMaxSheetVertices)
+    s.fail("rows", "columns x rows must be at most " + std::to_string(kMaxSheetVertices) + " vertices");
+  g.width = s.positive("width", g.width, kMaxDistance);
+  g.height = s.positive("height", g.height, kMaxDistance);
+  g.center = s.vec3("center", g.center, kMaxDistance);
   const std::string orientation = s.string("orientation", "horizontal");
   if (orientation != "horizontal" && orientation != "vertical")
     s.fail("orientation", "must be \"horizontal\" or \"vertical\"");
   g.vertical = orientation == "vertical";
-  g.tiltDegrees = s.number("tilt_degrees", 0.0f);
+  g.tiltDegrees = s.number("tilt_degrees", 0.0f, -360.0, 360.0);
   return g;
 }
 
-void parseFabric(const SectionReader& r, ClothSceneSpec& spec) {
+void parseFabric(const JsonFields& r, ClothSceneSpec& spec) {
   spec.fabric = fabricPreset("cotton");
   if (!r.has("fabric")) return;
-  try {
-    spec.fabric = fabricFromJson(r.raw("fabric"), r.section() + ".fabric", spec.fabricPreset);
-  } catch (const Error& e) {
-    throw FileError(r.path(), e.what());
-  }
+  spec.fabric = fabricFromJson(r.raw("fabric"), r.pathOf("fabric"), spec.fabricPreset);
 }
 
-void parseSettings(const SectionReader& r, ClothSettings& st) {
+void parseSettings(const JsonFields& r, ClothSettings& st) {
   const std::string integrator = r.string("integrator", integratorName(st.integrator));
   if (!parseIntegrator(integrator, st.integrator))
     r.fail("integrator", "unknown integrator '" + integrator + "' " +
@@ -137,35 +65,35 @@ void parseSettings(const SectionReader& r, ClothSettings& st) {
   const std::string limit = r.string("stretch_limit", stretchLimitName(st.stretchLimit));
   if (!parseStretchLimit(limit, st.stretchLimit))
     r.fail("stretch_limit", "unknown stretch limit '" + limit + "' " + knownNames({"position", "velocity", "off"}));
-  st.substeps = r.integer("substeps", st.substeps, 0);
-  st.gravity = r.vec3("gravity", st.gravity);
-  st.wind = r.vec3("wind", st.wind);
-  st.airDamping = r.nonNegative("air_damping", st.airDamping);
-  st.maxStretch = r.number("max_stretch", st.maxStretch);
-  if (st.maxStretch < 1.0f) r.fail("max_stretch", "must be at least 1");
-  st.stretchIterations = r.integer("stretch_iterations", st.stretchIterations, 1);
-  st.maxRefinement = r.integer("max_refinement", st.maxRefinement, 1);
+  st.substeps = int(r.integer("substeps", st.substeps, 0, 1000));
+  st.gravity = r.vec3("gravity", st.gravity, 1000.0f);
+  st.wind = r.vec3("wind", st.wind, 1000.0f);
+  st.airDamping = r.nonNegative("air_damping", st.airDamping, 1000.0);
+  st.maxStretch = r.number("max_stretch", st.maxStretch, 1.0, 10.0);
+  st.stretchIterations = int(r.integer("stretch_iterations", st.stretchIterations, 1, 1000));
+  st.maxRefinement = int(r.integer("max_refinement", st.maxRefinement, 1, 1000));
   st.selfCollisions = r.boolean("self_collisions", st.selfCollisions);
-  st.collisionThickness = r.nonNegative("thickness", st.collisionThickness);
-  st.selfThickness = r.nonNegative("self_thickness", st.selfThickness);
-  st.friction = r.has("friction") ? r.nonNegative("friction", 0.0f) : st.friction;
-  st.cgMaxIterations = r.integer("cg_max_iterations", st.cgMaxIterations, 1);
-  st.cgTolerance = r.positive("cg_tolerance", st.cgTolerance);
+  st.collisionThickness = r.nonNegative("thickness", st.collisionThickness, 1.0);
+  st.selfThickness = r.nonNegative("self_thickness", st.selfThickness, 1.0);
+  st.friction = r.has("friction") ? r.nonNegative("friction", 0.0f, 10.0) : st.friction;
+  st.cgMaxIterations = int(r.integer("cg_max_iterations", st.cgMaxIterations, 1, 100000));
+  st.cgTolerance = r.positive("cg_tolerance", st.cgTolerance, 1.0);
   const std::string preconditioner = r.string("cg_preconditioner", cgPreconditionerName(st.cgPreconditioner));
   if (!parseCgPreconditioner(preconditioner, st.cgPreconditioner))
     r.fail("cg_preconditioner", "unknown preconditioner '" + preconditioner + "' " +
                                     knownNames({"block_jacobi", "two_level"}));
 }
 
-void parsePins(const SectionReader& r, ClothSceneSpec& spec) {
+void parsePins(const JsonFields& r, ClothSceneSpec& spec) {
   if (!r.has("pins")) return;
-  const SectionReader p(r.raw("pins"), r.section() + ".pins", r.path());
+  const JsonFields p = r.object("pins");
   auto indices = [&](const char* key, auto& out) {
     if (!p.has(key)) return;
     const json& a = p.raw(key);
     if (!a.is_array()) p.fail(key, "must be an array of indices");
     for (const json& v : a) {
-      if (!v.is_number_integer() || v.get<long long>() < 0) p.fail(key, "must be an array of non-negative integers");
+      if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() >= kMaxSheetVertices)
+        p.fail(key, "must be an array of indices from 0 to " + std::to_string(kMaxSheetVertices - 1));
       out.push_back(v.get<long long>());
     }
   };
@@ -173,22 +101,23 @@ void parsePins(const SectionReader& r, ClothSceneSpec& spec) {
   indices("vertices", spec.pinnedVertices);
 }
 
-PrimitiveCollider parseCollider(const json& j, size_t index, const std::string& path) {
-  const SectionReader c(j, "colliders[" + std::to_string(index) + "]", path);
+PrimitiveCollider parseCollider(const json& j, size_t index) {
+  const JsonFields c(j, "colliders[" + std::to_string(index) + "]");
   const std::string type = c.string("type", "");
   PrimitiveCollider out;
   if (type == "sphere") {
-    out = PrimitiveCollider::sphere(c.vec3("center", glm::vec3(0.0f)), c.positive("radius", 0.0f));
+    out = PrimitiveCollider::sphere(c.vec3("center", glm::vec3(0.0f), kMaxDistance), c.positive("radius", 0.0f, kMaxDistance));
   } else if (type == "capsule") {
-    out = PrimitiveCollider::capsule(c.vec3("a", glm::vec3(0.0f)), c.vec3("b", glm::vec3(0.0f)), c.positive("radius", 0.0f));
+    out = PrimitiveCollider::capsule(c.vec3("a", glm::vec3(0.0f), kMaxDistance), c.vec3("b", glm::vec3(0.0f), kMaxDistance),
+                                      c.positive("radius", 0.0f, kMaxDistance));
   } else if (type == "plane") {
-    const glm::vec3 n = c.vec3("normal", {0.0f, 1.0f, 0.0f});
+    const glm::vec3 n = c.vec3("normal", {0.0f, 1.0f, 0.0f}, 1000.0f);
     if (!(glm::length(n) > 0.0f)) c.fail("normal", "must not be zero");
-    out = PrimitiveCollider::plane(c.vec3("point", glm::vec3(0.0f)), n);
+    out = PrimitiveCollider::plane(c.vec3("point", glm::vec3(0.0f), kMaxDistance), n);
   } else {
     c.fail("type", "unknown collider type '" + type + "' " + knownNames({"sphere", "capsule", "plane"}));
   }
-  out.friction = c.has("friction") ? c.nonNegative("friction", 0.0f) : -1.0f;
+  out.friction = c.has("friction") ? c.nonNegative("friction", 0.0f, 10.0) : -1.0f;
   return out;
 }
 
@@ -196,28 +125,30 @@ json vec3Json(const glm::vec3& v) { return json::array({v.x, v.y, v.z}); }
 
 }  // namespace
 
-ClothSceneSpec parseClothScene(const json& cloth, const json& colliders, const std::string& path, bool hasGarments) {
+namespace {
+
+ClothSceneSpec readClothScene(const json& cloth, const json& colliders, bool hasGarments) {
   ClothSceneSpec spec;
   if (!colliders.is_null()) {
-    if (!colliders.is_array()) throw FileError(path, "colliders: must be an array");
-    for (size_t i = 0; i < colliders.size(); ++i) spec.colliders.push_back(parseCollider(colliders[i], i, path));
+    if (!colliders.is_array()) throw Error("colliders: must be an array");
+    for (size_t i = 0; i < colliders.size(); ++i) spec.colliders.push_back(parseCollider(colliders[i], i));
   }
   if (cloth.is_null() && hasGarments) {
     spec.hasSheet = false;
     spec.fabric = fabricPreset("cotton");
     return spec;
   }
-  if (cloth.is_null()) throw FileError(path, "the scene has no cloth section (and no garments)");
-  const SectionReader r(cloth, "cloth", path);
+  if (cloth.is_null()) throw Error("the scene has no cloth section (and no garments)");
+  const JsonFields r(cloth, "cloth");
   spec.hasSheet = !hasGarments || r.has("garment");
   spec.sheet = parseGarment(r);
   parseFabric(r, spec);
   try {
     spec.fabric.validate();
   } catch (const Error& e) {
-    throw FileError(path, std::string("cloth.fabric: ") + e.what());
+    throw Error(std::string("cloth.fabric: ") + e.what());
   }
-  spec.massPerVertex = r.has("mass_per_vertex") ? r.positive("mass_per_vertex", 0.0f) : 0.0f;
+  spec.massPerVertex = r.has("mass_per_vertex") ? r.positive("mass_per_vertex", 0.0f, 1000.0) : 0.0f;
   parseSettings(r, spec.settings);
   parsePins(r, spec);
   if (!spec.hasSheet && (!spec.pinnedRows.empty() || !spec.pinnedVertices.empty()))
@@ -227,10 +158,22 @@ ClothSceneSpec parseClothScene(const json& cloth, const json& colliders, const s
   for (uint32_t v : spec.pinnedVertices)
     if (v >= uint32_t(spec.sheet.rows * spec.sheet.columns))
       r.fail("pins.vertices", "vertex " + std::to_string(v) + " is beyond the sheet's vertices");
-  spec.fps = r.positive("fps", spec.fps);
+  spec.fps = r.positive("fps", spec.fps, 1000.0);
   spec.animateBody = r.boolean("animate_body", spec.animateBody);
-  spec.bakeFrames = r.integer("bake_frames", spec.bakeFrames, 1);
+  spec.bakeFrames = int(r.integer("bake_frames", spec.bakeFrames, 1, kMaxFrames));
   return spec;
+}
+
+}  // namespace
+
+ClothSceneSpec parseClothScene(const json& cloth, const json& colliders, const std::string& path, bool hasGarments) {
+  try {
+    return readClothScene(cloth, colliders, hasGarments);
+  } catch (const FileError&) {
+    throw;
+  } catch (const Error& e) {
+    throw FileError(path, e.what());
+  }
 }
 
 void writeClothScene(const ClothSceneSpec& spec, json& cloth, json& colliders) {

@@ -126,5 +126,41 @@ TEST(ImportErrors, TruncatedFbxAndDae) {
   expectFileError(writeTemp("cut.dae", dae.substr(0, dae.size() / 2)));
 }
 
+// One line of the Collada test file changed by `edit`.
+std::string colladaWith(const std::string& from, const std::string& to) {
+  std::string dae = loadFileText(kCharacters + "assimp_collada_library_animation_clips/library_animation_clips.dae");
+  const size_t at = dae.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return dae.replace(at, from.size(), to);
+}
+
+TEST(ImportErrors, ColladaCountsBeyondTheFileAreRefusedBeforeReading) {
+  // Assimp would reserve 720 million weights (14 s of page faults here) first.
+  const std::string message =
+      expectFileError(writeTemp("counts.dae", colladaWith("<vertex_weights count=\"72\">", "<vertex_weights count=\"720000000\">")));
+  EXPECT_NE(message.find("line 170: count=\"720000000\" is more than the file holds"), std::string::npos) << message;
+}
+
+TEST(ImportErrors, ColladaThatMakesAssimpAbortIsRefused) {
+  // An index past its source's values trips an assertion inside Assimp
+  // (Debian builds it with assertions on), which aborts the process.
+  const std::string message = expectFileError(writeTemp("index.dae", colladaWith("<v> 0 0 0 1", "<v> 0 0 0 1999999999")));
+  EXPECT_NE(message.find("the importer (Assimp) crashed"), std::string::npos) << message;
+}
+
+TEST(ImportErrors, ColladaNegativeWeightIsIgnored) {
+  const std::string path = writeTemp("negative.dae", colladaWith("skin_weights-array\" count=\"112\"> 1.0", "skin_weights-array\" count=\"112\"> -1.0"));
+  const Character c = importCharacter(path);
+  ASSERT_FALSE(c.meshes.empty());
+  for (const Mesh& mesh : c.meshes)
+    for (float w : mesh.skin.weights) EXPECT_TRUE(w >= 0.0f && w <= 1.0f) << w;
+}
+
+TEST(ImportErrors, BvhThatIsNotUtf8) {
+  std::string bvh = loadFileText(std::string(MANNEQUIN_SHARED_DIR) + "/assets/motion/cmu_01_01.bvh");
+  bvh.insert(bvh.find("JOINT ") + 6, "\xff\xfe");
+  EXPECT_NE(expectFileError(writeTemp("latin.bvh", bvh)).find("not UTF-8 text"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace mq

@@ -1,0 +1,85 @@
+#include "core/util/isolated_run.h"
+
+#include <chrono>
+#include <csignal>
+#include <cstring>
+#include <new>
+#include <thread>
+
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#if defined(__SANITIZE_ADDRESS__)
+#define MQ_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define MQ_UNDER_ASAN 1
+#endif
+#endif
+
+namespace mq {
+namespace {
+
+enum ChildExit { kSucceeded = 0, kFailed = 1, kOutOfMemory = 2 };
+
+[[noreturn]] void runChild(const std::function<bool()>& work, const IsolationLimits& limits) {
+  // The parent reports what happened; the library's own diagnostics would only repeat it.
+  const int devNull = open("/dev/null", O_WRONLY);
+  if (devNull >= 0) dup2(devNull, STDERR_FILENO);
+#ifndef MQ_UNDER_ASAN
+  const rlimit memory{limits.memoryBytes, limits.memoryBytes};
+  setrlimit(RLIMIT_AS, &memory);
+#else
+  (void)limits;
+#endif
+  int code = kFailed;
+  try {
+    code = work() ? kSucceeded : kFailed;
+  } catch (const std::bad_alloc&) {
+    code = kOutOfMemory;
+  } catch (...) {
+    code = kFailed;
+  }
+  _exit(code);  // no atexit handlers or static destructors of the parent's state
+}
+
+std::string gibibytes(size_t bytes) {
+  return std::to_string(bytes >> 30) + " GiB";
+}
+
+}  // namespace
+
+IsolatedOutcome runIsolated(const std::function<bool()>& work, const IsolationLimits& limits) {
+  const pid_t child = fork();
+  if (child < 0) return {false, std::string("cannot start a process: ") + std::strerror(errno)};
+  if (child == 0) runChild(work, limits);
+
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(limits.seconds);
+  int status = 0;
+  auto pause = std::chrono::microseconds(200);
+  for (;;) {
+    const pid_t done = waitpid(child, &status, WNOHANG);
+    if (done == child) break;
+    if (done < 0 && errno != EINTR) return {false, std::string("lost the reading process: ") + std::strerror(errno)};
+    if (std::chrono::steady_clock::now() > deadline) {
+      kill(child, SIGKILL);
+      waitpid(child, &status, 0);
+      return {false, "took longer than " + std::to_string(int(limits.seconds)) + " s"};
+    }
+    std::this_thread::sleep_for(pause);
+    pause = std::min(pause * 2, std::chrono::microseconds(20000));
+  }
+  if (WIFSIGNALED(status)) {
+    const int signal = WTERMSIG(status);
+    const char* name = sigabbrev_np(signal);
+    return {false, "crashed (signal " + std::to_string(signal) + (name ? std::string(", SIG") + name : "") + ")"};
+  }
+  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : kFailed;
+  if (code == kSucceeded) return {true, ""};
+  if (code == kOutOfMemory) return {false, "ran out of memory (limit " + gibibytes(limits.memoryBytes) + ")"};
+  return {false, "failed"};
+}
+
+}  // namespace mq
