@@ -46,12 +46,22 @@ void Garment::validate() const {
   auto fail = [&](const std::string& problem) { throw Error("garment '" + name + "': " + problem); };
   if (panels.empty()) fail("has no panels");
   if (!(targetEdgeLength > 0.0f)) fail("target edge length must be positive");
+  if (targetEdgeLength > 1.0f) fail("target edge length must be at most 1 m");
   if (layer < 0 || layer > kMaxLayer) fail("layer must be from 0 to " + std::to_string(kMaxLayer));
   std::set<std::string> panelNames;
   for (const Panel& panel : panels) {
     panel.validate();
     if (!panelNames.insert(panel.name).second) fail("two panels are named '" + panel.name + "'");
   }
+  // Refuse before meshing what would exhaust memory: an equilateral
+  // triangle of side d covers 0.433 d^2, and there are about twice as many
+  // triangles as vertices.
+  double area = 0.0;
+  for (const Panel& panel : panels) area += panel.area();
+  const double vertices = area / (0.433 * double(targetEdgeLength) * targetEdgeLength) / 2.0;
+  if (vertices > kMaxClothVertices)
+    fail("would need about " + std::to_string(long(vertices)) + " cloth vertices (at most " +
+         std::to_string(kMaxClothVertices) + "): make the particle distance larger");
   std::set<std::pair<int, int>> sewn;
   for (const Seam& seam : seams) {
     std::string label = "seam " + seam.panelA + ":" + seam.edgeA + " - " + seam.panelB + ":" + seam.edgeB;

@@ -46,6 +46,8 @@ struct Garment {
   // lower layers, and over those of its own layer earlier in the list.
   int layer = 0;
   static constexpr int kMaxLayer = 99;
+  // The largest cloth a garment may mesh into (memory, and minutes a frame).
+  static constexpr long kMaxClothVertices = 400000;
 
   int findPanel(const std::string& panelName) const;  // -1 if absent
   // The fabric the solver uses: customFabric, else the preset (mq::Error if unknown).

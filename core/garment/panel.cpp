@@ -118,19 +118,67 @@ int Panel::addCubic(const std::string& edgeName, glm::vec2 corner, glm::vec2 con
   return edgeCount() - 1;
 }
 
+namespace {
+
+// A panel larger than this is a typing mistake, not a garment (metres).
+constexpr float kMaxPanelExtent = 10.0f;
+constexpr int kMaxPanelEdges = 256;
+constexpr int kSegmentsPerCurve = 16;
+
+bool within(glm::vec2 p, float extent) { return std::abs(p.x) <= extent && std::abs(p.y) <= extent; }
+
+float cross(glm::vec2 a, glm::vec2 b) { return a.x * b.y - a.y * b.x; }
+
+bool segmentsCross(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2 d) {
+  const float d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
+  const float d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+  return ((d1 > 0.0f) != (d2 > 0.0f)) && ((d3 > 0.0f) != (d4 > 0.0f)) && d1 != 0.0f && d2 != 0.0f && d3 != 0.0f &&
+         d4 != 0.0f;
+}
+
+// Whether two non-adjacent segments of the closed polyline cross.
+bool crossesItself(const std::vector<glm::vec2>& ring) {
+  const size_t n = ring.size();
+  for (size_t i = 0; i < n; ++i) {
+    const glm::vec2 a = ring[i], b = ring[(i + 1) % n];
+    const glm::vec2 lo = glm::min(a, b), hi = glm::max(a, b);
+    for (size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;  // neighbours through the closing corner
+      const glm::vec2 c = ring[j], d = ring[(j + 1) % n];
+      if (std::max(c.x, d.x) < lo.x || std::min(c.x, d.x) > hi.x || std::max(c.y, d.y) < lo.y ||
+          std::min(c.y, d.y) > hi.y)
+        continue;
+      if (segmentsCross(a, b, c, d)) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
 void Panel::validate() const {
   auto fail = [&](const std::string& problem) { throw Error("panel '" + name + "': " + problem); };
   if (corners.size() < 3) fail("needs at least 3 corners, has " + std::to_string(corners.size()));
   if (edges.size() != corners.size())
     fail(std::to_string(corners.size()) + " corners but " + std::to_string(edges.size()) + " edges");
+  if (edgeCount() > kMaxPanelEdges) fail("has more than " + std::to_string(kMaxPanelEdges) + " edges");
   std::set<std::string> names;
   for (int e = 0; e < edgeCount(); ++e) {
     if (!finite(corners[e]) || !finite(edges[e].control[0]) || !finite(edges[e].control[1]))
       fail("edge " + std::to_string(e) + " has a non-finite point");
+    if (!within(corners[e], kMaxPanelExtent) || !within(edges[e].control[0], kMaxPanelExtent) ||
+        !within(edges[e].control[1], kMaxPanelExtent))
+      fail("edge " + std::to_string(e) + " has a point more than 10 m from the pattern's origin");
     if (!edges[e].name.empty() && !names.insert(edges[e].name).second)
       fail("two edges are named '" + edges[e].name + "'");
     if (edgeLength(e) <= 1e-6f) fail("edge " + std::to_string(e) + " has zero length");
   }
+  std::vector<glm::vec2> ring;
+  for (int e = 0; e < edgeCount(); ++e) {
+    const std::vector<glm::vec2> points = sampleEdge(e, edges[e].shape == EdgeShape::Line ? 1 : kSegmentsPerCurve);
+    ring.insert(ring.end(), points.begin(), points.end() - 1);
+  }
+  if (crossesItself(ring)) fail("outline crosses itself");
   if (area() <= 0.0f) fail("outline must be counter-clockwise with a positive area");
 }
 

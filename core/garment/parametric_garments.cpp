@@ -129,7 +129,7 @@ Params resolve(const std::string& type, const Params& given, float scale) {
   for (const GarmentParameter& p : declared)
     values[p.name] = scalesWithBody(p.name) ? std::clamp(scale * p.value, p.min, p.max) : p.value;
   for (const auto& [name, value] : given) {
-    auto it = std::find_if(declared.begin(), declared.end(), [&](const GarmentParameter& p) { return p.name == name; });
+    auto it = std::find_if(declared.begin(), declared.end(), [&, &key = name](const GarmentParameter& p) { return p.name == key; });
     if (it == declared.end()) throw Error(type + ": unknown parameter '" + name + "'");
     if (!(value >= it->min && value <= it->max)) {
       std::ostringstream message;

@@ -44,6 +44,9 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
     std::error_code ec;
     std::filesystem::rename(tmp, path, ec);
     if (ec) throw FileError(path, "cannot replace the file: " + ec.message());
+    // The rename itself lives in the folder: sync it too, or a power cut can
+    // bring back the old name.
+    syncFile(std::filesystem::absolute(path).parent_path().string());
   } catch (...) {
     std::error_code ignored;
     std::filesystem::remove(tmp, ignored);

@@ -1,6 +1,6 @@
 #pragma once
 // Saves that never leave a half-written file: write a temporary file beside
-// the target, flush it to disk, then rename it over the target.
+// the target, flush it to disk, rename it over the target, sync the folder.
 
 #include <functional>
 #include <ostream>

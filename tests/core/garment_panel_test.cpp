@@ -63,6 +63,31 @@ TEST(GarmentPanel, ValidateRejectsClockwiseAndDuplicateNames) {
   EXPECT_THROW(dup.validate(), Error);
 }
 
+std::string validationError(const Panel& panel) {
+  try {
+    panel.validate();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Outlines the mesher cannot take (it crashed on a crossing outline, and a
+// corner at 1e37 made the outline sampling run for minutes) are refused first.
+TEST(GarmentPanel, ValidateRejectsCrossingAndFarOutlines) {
+  EXPECT_EQ(validationError(rectangle(0.5f, 0.7f)), "");
+  EXPECT_EQ(validationError(curvedPanel()), "");
+  Panel bowtie = rectangle(1, 1);
+  std::swap(bowtie.corners[2], bowtie.corners[3]);
+  EXPECT_EQ(validationError(bowtie), "panel 'rect': outline crosses itself");
+  Panel curveCrossing = curvedPanel();  // the cubic side bulges across the left edge
+  curveCrossing.edges[3].control[0] = {-1.0f, 0.3f};
+  EXPECT_EQ(validationError(curveCrossing), "panel 'curved': outline crosses itself");
+  Panel far = rectangle(1, 1);
+  far.corners[1].x = 1e37f;
+  EXPECT_EQ(validationError(far), "panel 'rect': edge 1 has a point more than 10 m from the pattern's origin");
+}
+
 void expectMeshRespectsOutline(const Panel& panel, float target) {
   PanelMesh mesh = meshPanel(panel, {target, {}});
   ASSERT_GT(mesh.triangleCount(), 10u);

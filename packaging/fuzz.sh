@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# Fuzzes Mannequin's readers with libFuzzer under AddressSanitizer and
+# UndefinedBehaviorSanitizer (Debian's clang-14), one target after another.
+#   ./packaging/fuzz.sh [--runs N | --seconds S] [--jobs J] [TARGET ...]
+# Targets (tests/fuzz/fuzz_<target>.cpp): gltf bvh scene hairstyle garment
+# motion_map assimp; all of them by default. Each runs N executions (default
+# 1,000,000) or S seconds, starting from its seeds and from what earlier
+# runs kept (build-fuzz/corpus/<target>). A crash, leak, timeout or
+# out-of-memory stops the target and leaves the input in
+# build-fuzz/findings/<target>/; copy it into tests/fuzz/regressions/<target>/
+# once fixed, where ctest replays it in the normal build.
+set -euo pipefail
+top="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${MANNEQUIN_FUZZ_BUILD_DIR:-$top/build-fuzz}"
+limit=(-runs=1000000)
+jobs="$(nproc)"
+targets=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --runs) limit=(-runs="$2"); shift 2 ;;
+    --seconds) limit=(-max_total_time="$2"); shift 2 ;;
+    --jobs) jobs="$2"; shift 2 ;;
+    -h|--help) sed -n '2,12p' "$0"; exit 0 ;;
+    *) targets+=("$1"); shift ;;
+  esac
+done
+[ ${#targets[@]} -gt 0 ] || targets=(gltf bvh scene hairstyle garment motion_map assimp)
+
+"$top/packaging/install-deps.sh"
+flags="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g"
+rm -f "$build/fuzz_seeds.txt"
+CC=clang-14 CXX=clang++-14 cmake -S "$top" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DMANNEQUIN_WITH_GUI=OFF -DMANNEQUIN_WITH_TESTS=OFF -DMANNEQUIN_WITH_BENCH=OFF -DMANNEQUIN_WITH_FUZZERS=ON \
+  "-DCMAKE_CXX_FLAGS=$flags" "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined" >/dev/null
+cmake --build "$build" -j "$jobs" --target $(printf 'fuzz_%s ' "${targets[@]}")
+
+export ASAN_OPTIONS=detect_leaks=1
+export LSAN_OPTIONS="suppressions=$top/packaging/lsan.supp"
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+status=0
+for target in "${targets[@]}"; do
+  corpus="$build/corpus/$target" findings="$build/findings/$target"
+  mkdir -p "$corpus" "$findings"
+  read -r -a seeds <<<"$(grep "^$target " "$build/fuzz_seeds.txt" | cut -d' ' -f2-)"
+  dict="$top/tests/fuzz/$target.dict"
+  [ -f "$dict" ] || dict="$top/tests/fuzz/json.dict"
+  echo "== fuzz_$target"
+  if ! "$build/fuzz_$target" "$corpus" "${seeds[@]}" "${limit[@]}" -dict="$dict" -timeout=10 -rss_limit_mb=3072 \
+      -max_len=600000 -print_final_stats=1 -artifact_prefix="$findings/" 2>"$build/fuzz_$target.log"; then
+    status=1
+    echo "fuzz_$target: FOUND a problem, see $build/fuzz_$target.log and $findings/"
+  fi
+  grep -E "^stat::number_of_executed_units|^Done" "$build/fuzz_$target.log" || tail -5 "$build/fuzz_$target.log"
+done
+exit $status
