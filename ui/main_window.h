@@ -31,8 +31,10 @@ class SceneView;
 
 namespace mq::ui {
 
+class Autosave;
 class EditorDocument;
 class PoseTool;
+struct RecoveryCopy;
 class PropertiesPanel;
 class SceneTreePanel;
 class TimelinePanel;
@@ -76,6 +78,14 @@ class MainWindow : public QMainWindow {
   // Same, on the calling thread (tests, scripts). False and `error` on failure.
   bool openFileNow(const QString& fileOrDefault, QString* error = nullptr);
   bool saveDocument(const QString& path, QString* error = nullptr);
+  // Recovery copies of the modified document in `folder` every `seconds`
+  // (see ui/document/autosave.h); a save or a clean close removes them.
+  void enableAutosave(const QString& folder, int seconds);
+  Autosave* autosave() const { return autosave_; }
+  // When a recovery copy left by a crashed editor exists, asks whether to
+  // restore it (confirmRecovery) and opens it as the document it stood for,
+  // with its changes unsaved. Returns whether a restore started.
+  bool offerRecovery();
   // Where Save As starts: the document itself, unless it is one of the
   // shipped examples (resources/scenes), lives in a folder the user cannot
   // write, or is not a scene document yet; then `documentsDir`.
@@ -97,6 +107,7 @@ class MainWindow : public QMainWindow {
   // tests replace them).
   std::function<void(const QString& title, const QString& message)> reportError;
   std::function<bool()> confirmDiscardChanges;
+  std::function<bool(const RecoveryCopy& copy)> confirmRecovery;
 
  signals:
   void loadFinished(bool ok);
@@ -129,6 +140,9 @@ class MainWindow : public QMainWindow {
   bool saveAs();
   void exportWithDialog();
   bool maybeDiscardChanges();
+  // The document as a scene file at `path`: referenced files relative to
+  // it, or absolute (recovery copies live apart from the document).
+  bool writeSceneTo(const QString& path, bool absolutePaths, QString* error);
   void adoptLoaded(LoadedDocument loaded, double seconds);
   // One undo step: the motion's clip made current and recorded in the scene.
   void adoptMotion(LoadedMotion motion, double seconds);
@@ -165,6 +179,7 @@ class MainWindow : public QMainWindow {
 
   QAction* newAction_ = nullptr;
   QAction* openAction_ = nullptr;
+  Autosave* autosave_ = nullptr;
   QAction* saveAction_ = nullptr;
   QAction* saveAsAction_ = nullptr;
   QAction* exportAction_ = nullptr;

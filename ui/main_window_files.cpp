@@ -14,7 +14,9 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFutureWatcher>
+#include <QLocale>
 #include <QMenu>
+#include <QMessageBox>
 #include <QMimeData>
 #include <QProgressBar>
 #include <QSettings>
@@ -25,6 +27,7 @@
 
 #include "core/io/mesh_export.h"
 #include "render/scene_view.h"
+#include "ui/document/autosave.h"
 #include "ui/document/document_loader.h"
 #include "ui/document/editor_document.h"
 #include "ui/document/motion_commands.h"
@@ -126,7 +129,8 @@ void MainWindow::openFile(const QString& fileOrDefault) {
       emit loadFinished(false);
       return;
     }
-    if (fileOrDefault != "default") addRecentFile(fileOrDefault);
+    const bool isRecoveryCopy = autosave_ && QFileInfo(fileOrDefault).absolutePath() == QDir(autosave_->folder()).absolutePath();
+    if (fileOrDefault != "default" && !isRecoveryCopy) addRecentFile(fileOrDefault);
     adoptLoaded(std::move(std::get<LoadedDocument>(outcome)), clock->elapsed() / 1000.0);
     emit loadFinished(true);
   });
@@ -224,33 +228,78 @@ void MainWindow::adoptLoaded(LoadedDocument loaded, double seconds) {
                            warnings.empty() ? 8000 : 20000);
 }
 
-bool MainWindow::saveDocument(const QString& path, QString* error) {
+bool MainWindow::writeSceneTo(const QString& path, bool absolutePaths, QString* error) {
   storeCamera();
   SceneDocument scene = document_->sceneDocument();
   // Files the document refers to are stored relative to it.
   const QDir folder = QFileInfo(path).absoluteDir();
   const QDir oldFolder = document_->documentPath().isEmpty() ? QDir::current()
                                                               : QFileInfo(document_->documentPath()).absoluteDir();
-  auto relative = [&](std::string& stored) {
+  auto place = [&](std::string& stored) {
     if (stored.empty() || stored == "default") return;
     const QString absolute = oldFolder.absoluteFilePath(QString::fromStdString(stored));
-    stored = folder.relativeFilePath(absolute).toStdString();
+    stored = (absolutePaths ? QDir::cleanPath(absolute) : folder.relativeFilePath(absolute)).toStdString();
   };
-  relative(scene.character);
-  relative(scene.motionFile);
-  relative(scene.motionMapFile);
+  place(scene.character);
+  place(scene.motionFile);
+  place(scene.motionMapFile);
   try {
     saveSceneDocument(scene, path.toStdString());
   } catch (const std::exception& e) {
     if (error) *error = QString::fromUtf8(e.what());
     return false;
   }
+  return true;
+}
+
+bool MainWindow::saveDocument(const QString& path, QString* error) {
+  if (!writeSceneTo(path, false, error)) return false;
   document_->setDocumentPath(QFileInfo(path).absoluteFilePath());
   document_->markSaved();
+  if (autosave_) autosave_->discard();
   addRecentFile(path);
   updateTitle();
   statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
   emit documentSaved(document_->documentPath());
+  return true;
+}
+
+void MainWindow::enableAutosave(const QString& folder, int seconds) {
+  delete autosave_;
+  Autosave::Source source;
+  source.write = [this](const QString& path, QString* error) { return writeSceneTo(path, true, error); };
+  source.modified = [this] { return document_->isModified(); };
+  source.documentPath = [this] { return document_->documentPath(); };
+  autosave_ = new Autosave(folder, std::move(source), this);
+  autosave_->start(seconds);
+}
+
+bool MainWindow::offerRecovery() {
+  if (!autosave_ || busy_) return false;
+  const std::vector<RecoveryCopy> copies = Autosave::leftBehind(autosave_->folder());
+  if (copies.empty()) return false;
+  const RecoveryCopy copy = copies.front();
+  const QString name = copy.documentPath.isEmpty() ? tr("an untitled document") : QFileInfo(copy.documentPath).fileName();
+  const bool restore = confirmRecovery ? confirmRecovery(copy)
+                                       : QMessageBox::question(this, tr("Restore unsaved changes?"),
+                                                               tr("Mannequin did not close properly. Restore the "
+                                                                  "changes to %1 kept at %2?")
+                                                                   .arg(name, QLocale().toString(copy.written, QLocale::ShortFormat)),
+                                                               QMessageBox::Yes | QMessageBox::No) == QMessageBox::Yes;
+  if (!restore) {
+    Autosave::remove(copy);
+    return false;
+  }
+  connect(this, &MainWindow::loadFinished, this, [this, copy](bool ok) {
+    if (!ok) return;  // the copy stays for another try; the error was reported
+    document_->setDocumentPath(copy.documentPath.isEmpty() ? QString() : QFileInfo(copy.documentPath).absoluteFilePath());
+    document_->notifyChanged();  // restored changes are still unsaved
+    Autosave::remove(copy);
+    autosave_->saveNow();  // now this process keeps them
+    updateTitle();
+    statusBar()->showMessage(tr("Restored the unsaved changes to %1").arg(copy.documentPath.isEmpty() ? tr("an untitled document") : copy.documentPath), 8000);
+  }, Qt::SingleShotConnection);
+  openFile(copy.copyPath);
   return true;
 }
 
@@ -340,6 +389,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     event->ignore();
     return;
   }
+  if (autosave_) autosave_->discard();
   QSettings settings;
   settings.setValue("window/geometry", saveGeometry());
   settings.setValue("window/state", saveState());

@@ -21,6 +21,7 @@
 #include "ui/document/editor_document.h"
 #include "ui/garment/garment_tool.h"
 #include "ui/hair/hair_tool.h"
+#include "ui/document/autosave.h"
 #include "ui/main_window.h"
 #include "ui/theme.h"
 #include "ui/viewport/vtk_viewport_widget.h"
@@ -166,6 +167,16 @@ int main(int argc, char** argv) {
         },
         Qt::SingleShotConnection);
   };
+
+  // Interactive sessions keep a recovery copy of unsaved work, and offer the
+  // one a crashed session left once the first file is open.
+  if (!takeScreenshot) {
+    bool isNumber = false;
+    const int seconds = qEnvironmentVariable("MANNEQUIN_AUTOSAVE_SECONDS").toInt(&isNumber);
+    window.enableAutosave(mq::ui::Autosave::defaultFolder(), isNumber && seconds > 0 ? seconds : 60);
+    QObject::connect(&window, &mq::ui::MainWindow::loadFinished, &window, [&window] { window.offerRecovery(); },
+                     Qt::SingleShotConnection);
+  }
 
   if (mq::ui::isMotionFile(file)) {
     // A motion alone is shown on the default mannequin.

@@ -657,6 +657,7 @@ class EditorSmokeTest : public QObject {
 int runHairToolTest(int argc, char** argv);   // hair_tool_test.cpp
 int runApplyMotionTest(int argc, char** argv);  // apply_motion_test.cpp
 int runHairStallTest(int argc, char** argv);  // hair_stall_test.cpp
+int runRecoveryTest(int argc, char** argv);   // recovery_test.cpp
 
 int main(int argc, char** argv) {
   // The viewport bridge needs its GL format before QApplication exists.
@@ -670,6 +671,8 @@ int main(int argc, char** argv) {
   if (argc > 1 && std::string(argv[1]) == "hair-stall") return runHairStallTest(argc - 1, argv + 1);
   // `mannequin_gui_tests motion`: the Apply Motion dialog and its undo.
   if (argc > 1 && std::string(argv[1]) == "motion") return runApplyMotionTest(argc - 1, argv + 1);
+  // `mannequin_gui_tests recovery`: a killed editor's edit restored at the next start.
+  if (argc > 1 && std::string(argv[1]) == "recovery") return runRecoveryTest(argc - 1, argv + 1);
   mq::ui::exitAfter(120, "gui_smoke");  // never hang
   EditorSmokeTest test;
   return QTest::qExec(&test, argc, argv);

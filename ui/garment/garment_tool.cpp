@@ -40,6 +40,7 @@
 #include "sim/garment/garment_scene.h"
 #include "sim/cloth/bake_cache.h"
 #include "sim/garment/garment_simulation.h"
+#include "ui/document/autosave.h"
 #include "ui/document/editor_document.h"
 #include "ui/garment/collider_drag_tool.h"
 #include "ui/garment/garment_edit_command.h"
@@ -1203,6 +1204,8 @@ bool bakeFrames(std::vector<GarmentTool::BakeGarment>& garments, const std::vect
 // The states reached are kept for the next bake or run.
 bool GarmentTool::bake(float from, float to) {
   if (baking_) return false;
+  // A bake runs for minutes: keep the unsaved work first.
+  if (Autosave* autosave = window_->autosave()) autosave->saveNow();
   EditorDocument* document = window_->document();
   if (simulatedViews().empty()) {
     lastError_ = tr("There are no garments to bake");
