@@ -25,6 +25,7 @@
 #include <QUndoStack>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include "core/io/json_fields.h"
 #include "core/io/mesh_export.h"
 #include "render/scene_view.h"
 #include "ui/document/autosave.h"
@@ -48,7 +49,7 @@ Outcome<T> runCatching(Work work) {
   try {
     return work();
   } catch (const std::exception& e) {
-    return QString::fromUtf8(e.what());
+    return QString::fromStdString(jsonProblem(e));  // never a library's exception tag
   }
 }
 

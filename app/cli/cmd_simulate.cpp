@@ -17,6 +17,7 @@
 #include "core/io/json_fields.h"
 #include "core/character/posed_character.h"
 #include "core/scene/open_scene.h"
+#include "core/util/memory_budget.h"
 #include "core/util/error.h"
 #include "core/util/thread_pool.h"
 #include "sim/cloth/baked_cloth.h"
@@ -204,6 +205,10 @@ int runSimulate(const std::vector<std::string>& argv) {
     if (ec) throw FileError(exportDir, "cannot create the directory: " + ec.message());
   }
   const int frames = int(framesArg);
+  // A point cache keeps every frame in memory until it is written.
+  if (!exportDir.empty() && format == "pc2")
+    checkMemoryBudget("a point cache of " + std::to_string(frames) + " frames",
+                      12.0 * double(frames) * double(cloth.now().vertices));
   FrameExport exported{exportDir, format == "pc2", {}};
   const RunResult r = run(cloth, body, scene.document.time, spec.animateBody, frames, fps, exported);
   const cli::ClothNow now = cloth.now();

@@ -8,6 +8,7 @@
 #include "core/hair/strand_tracer.h"
 #include "core/math/perlin_noise.h"
 #include "core/util/thread_pool.h"
+#include "core/util/memory_budget.h"
 
 namespace mq {
 
@@ -253,6 +254,10 @@ void HairGroom::grow(const HairStyle& style, size_t strandCount) {
   size_t total = strandCount;
   if (total == 0) total = rootCountForDensity(scalp_, style.density, size_t(std::max(0, style.maxStrands)));
   total = std::min(total, kMaxStrands);
+  // Positions, rest shape, velocities and the children's frames: about 64
+  // bytes a point over the groom and its dynamics.
+  checkMemoryBudget("hair: " + std::to_string(total) + " strands of " + std::to_string(style.pointsPerStrand) + " points",
+                    64.0 * double(total) * style.pointsPerStrand);
   const size_t guides = std::min(total, size_t(std::max(1, style.guideCount)));
   sampleAllRoots(guides, total - guides, style.seed);
   regrowGuides(style);

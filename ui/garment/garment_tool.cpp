@@ -23,6 +23,7 @@
 #include <vtkMatrix4x4.h>
 #include <vtkRenderer.h>
 
+#include "core/util/memory_budget.h"
 #include "core/character/posed_character.h"
 #include "core/garment/garment_json.h"
 #include "core/garment/parametric_garments.h"
@@ -52,6 +53,9 @@
 namespace mq::ui {
 
 namespace {
+
+// For the bake's memory estimate, made before the garments are meshed.
+constexpr double kTypicalGarmentVertices = 10000.0;
 
 std::unique_ptr<cloth::GarmentSimulation> makeSimulation(const GarmentScene& scene, size_t garment,
                                                          const std::vector<float>& body,
@@ -1227,6 +1231,14 @@ bool GarmentTool::bake(float from, float to) {
   const int frames =
       withoutClip ? scene_.cloth.bakeFrames : std::max(1, int(std::floor((end - start) * fps + 1e-3f)) + 1);
 
+  // Every frame of the body is kept for the worker, and of each garment for the bake.
+  try {
+    checkMemoryBudget("a bake of " + std::to_string(frames) + " frames",
+                      12.0 * frames * double(document->character().vertexCount() + 4 * kTypicalGarmentVertices));
+  } catch (const Error& e) {
+    lastError_ = QString::fromStdString(e.what());
+    return false;
+  }
   // The body at every frame, posed here (the worker only simulates); none without a character.
   std::vector<std::vector<float>> bodies(frames);
   PosedCharacter posed;
