@@ -156,6 +156,11 @@ __attribute__((target("avx2,fma"))) glm::vec3 sumSourcesAvx2(const float* px, co
 
 // Sixteen sources per iteration with AVX-512: rsqrt14 (relative error
 // below 2^-14) is accurate enough without a Newton step.
+// GCC 12 warns inside its own avx512fintrin.h (the undefined start value of
+// _mm512_setzero_ps and the reductions): a false positive.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wuninitialized"
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 __attribute__((target("avx512f"))) glm::vec3 sumSourcesAvx512(const float* px, const float* py, const float* pz,
                                                                const float* w, const float* core2, size_t n,
                                                                const glm::vec3& x) {
@@ -177,6 +182,7 @@ __attribute__((target("avx512f"))) glm::vec3 sumSourcesAvx512(const float* px, c
   if (j < n) v += sumSourcesAvx2(px + j, py + j, pz + j, w + j, core2 + j, n - j, x);
   return v;
 }
+#pragma GCC diagnostic pop
 
 bool hasAvx512() {
   static const bool yes = __builtin_cpu_supports("avx512f");
