@@ -1,26 +1,27 @@
 #!/usr/bin/env bash
 # Fuzzes Mannequin's readers with libFuzzer under AddressSanitizer and
 # UndefinedBehaviorSanitizer (Debian's clang-14), one target after another.
-#   ./packaging/fuzz.sh [--runs N | --seconds S] [--jobs J] [TARGET ...]
+#   ./packaging/fuzz.sh [--runs N] [--seconds S] [--jobs J] [TARGET ...]
 # Targets (tests/fuzz/fuzz_<target>.cpp): gltf bvh scene hairstyle garment
 # motion_map assimp; all of them by default. Each runs N executions (default
-# 1,000,000) or S seconds, starting from its seeds and from what earlier
-# runs kept (build-fuzz/corpus/<target>). A crash, leak, timeout or
+# 1,000,000; stopped after S seconds if given and sooner), starting from its
+# seeds and from what earlier runs kept (build-fuzz/corpus/<target>). A crash, leak, timeout or
 # out-of-memory stops the target and leaves the input in
 # build-fuzz/findings/<target>/; copy it into tests/fuzz/regressions/<target>/
 # once fixed, where ctest replays it in the normal build.
 set -euo pipefail
 top="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${MANNEQUIN_FUZZ_BUILD_DIR:-$top/build-fuzz}"
-limit=(-runs=1000000)
+runs=1000000
+seconds=0
 jobs="$(nproc)"
 targets=()
 while [ $# -gt 0 ]; do
   case "$1" in
-    --runs) limit=(-runs="$2"); shift 2 ;;
-    --seconds) limit=(-max_total_time="$2"); shift 2 ;;
+    --runs) runs="$2"; shift 2 ;;
+    --seconds) seconds="$2"; shift 2 ;;
     --jobs) jobs="$2"; shift 2 ;;
-    -h|--help) sed -n '2,12p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,13p' "$0"; exit 0 ;;
     *) targets+=("$1"); shift ;;
   esac
 done
@@ -45,7 +46,7 @@ for target in "${targets[@]}"; do
   dict="$top/tests/fuzz/$target.dict"
   [ -f "$dict" ] || dict="$top/tests/fuzz/json.dict"
   echo "== fuzz_$target"
-  if ! "$build/fuzz_$target" "$corpus" "${seeds[@]}" "${limit[@]}" -dict="$dict" -timeout=10 -rss_limit_mb=3072 \
+  if ! "$build/tests/fuzz/fuzz_$target" "$corpus" "${seeds[@]}" -runs="$runs" -max_total_time="$seconds" -dict="$dict" -timeout=10 -rss_limit_mb=3072 \
       -max_len=600000 -print_final_stats=1 -artifact_prefix="$findings/" 2>"$build/fuzz_$target.log"; then
     status=1
     echo "fuzz_$target: FOUND a problem, see $build/fuzz_$target.log and $findings/"
