@@ -1,5 +1,7 @@
 #include "core/garment/garment_json.h"
 
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 #include "core/garment/fabric_json.h"
@@ -60,9 +62,15 @@ const json* optionalMember(const json& object, const char* key) {
   return it == object.end() || it->is_null() ? nullptr : &*it;
 }
 
+// Garments are metres across: nothing in a pattern or a placement lies
+// farther than this from its origin.
+constexpr double kMaxCoordinate = 100.0;
+
 float number(const json& value, const std::string& path) {
   if (!value.is_number()) fail(path, "expected a number");
-  return value.get<float>();
+  const double d = value.get<double>();
+  if (!std::isfinite(d) || std::abs(d) > 3.0e38) fail(path, "must be a finite number");
+  return float(d);
 }
 
 std::string text(const json& value, const std::string& path) {
@@ -82,7 +90,9 @@ glm::vec<N, float> vector(const json& value, const std::string& path) {
   glm::vec<N, float> v;
   for (int i = 0; i < N; ++i) {
     if (!value[i].is_number()) fail(path, expected);
-    v[i] = value[i].get<float>();
+    const double d = value[i].get<double>();
+    if (!(std::abs(d) <= kMaxCoordinate)) fail(path, "must hold numbers between -100 and 100 (metres)");
+    v[i] = float(d);
   }
   return v;
 }
@@ -127,7 +137,7 @@ PanelPlacement placementFromJson(const json& j, const std::string& path) {
   if (const json* anchor = optionalMember(j, "anchor")) p.anchor = vector<2>(*anchor, at(path, "anchor"));
   if (p.shape == PanelPlacement::Shape::Cylinder) {
     p.radius = number(member(j, path, "radius"), at(path, "radius"));
-    if (!(p.radius > 0.0f)) fail(at(path, "radius"), "must be positive");
+    if (!(p.radius > 0.0f && p.radius <= kMaxCoordinate)) fail(at(path, "radius"), "must be between 0 and 100 (metres)");
   }
   if (glm::length(p.axis) < 1e-6f || glm::length(p.facing) < 1e-6f) fail(path, "axis and facing must be non-zero");
   p.axis = glm::normalize(p.axis);

@@ -107,7 +107,11 @@ TEST(GarmentJson, MalformedGarmentsGiveErrorsNamingThePlace) {
   EXPECT_EQ(errorOf(j), "garments[0].panels[0].edges: has 3 edges for 4 corners (one edge leaves each corner)");
   j = good;
   j[0]["panels"][0]["placement"]["radius"] = -1;
-  EXPECT_EQ(errorOf(j), "garments[0].panels[0].placement.radius: must be positive");
+  EXPECT_EQ(errorOf(j), "garments[0].panels[0].placement.radius: must be between 0 and 100 (metres)");
+  // A placement two million kilometres away collapsed the mesh's edges to zero length.
+  j = good;
+  j[0]["panels"][0]["placement"]["anchor"] = {2147483648.0, 0.0};
+  EXPECT_EQ(errorOf(j), "garments[0].panels[0].placement.anchor: must hold numbers between -100 and 100 (metres)");
   EXPECT_EQ(errorOf(nlohmann::json::object()), "garments: expected an array");
 }
 

@@ -390,6 +390,14 @@ class GarmentToolTest : public QObject {
     QVERIFY(tool_->hasBake());
     const int frames = tool_->bakedFrameCount();
     QCOMPARE(frames, int(std::floor(0.25f * tool_->scene().cloth.fps + 1e-3f)) + 1);
+    // A cancelled bake leaves the previous one as it was.
+    doc()->setTime(start + 0.2f);
+    const std::vector<float> before = tool_->shownPositions(0);
+    cancelSoon.start(10);
+    QVERIFY(!tool_->bake(start, start + 2.0f));
+    QVERIFY(tool_->hasBake());
+    QCOMPARE(tool_->bakedFrameCount(), frames);
+    QCOMPARE(maxDifference(tool_->shownPositions(0), before), 0.0f);
 
     doc()->setTime(start);
     const std::vector<float> first = tool_->shownPositions(0);

@@ -1223,7 +1223,9 @@ bool GarmentTool::bake(float from, float to) {
     return false;
   }
   setSimulating(false);
-  bake_.reset();
+  // The previous bake comes back if this one fails or is cancelled.
+  std::unique_ptr<Bake> previousBake = std::move(bake_);
+  auto keepPreviousBake = [&] { bake_ = std::move(previousBake); };
   const auto started = std::chrono::steady_clock::now();
   const float fps = scene_.cloth.fps;
   const float start = withoutClip ? 0.0f : from >= 0.0f ? std::max(from, document->clipStart()) : document->clipStart();
@@ -1237,6 +1239,7 @@ bool GarmentTool::bake(float from, float to) {
                       12.0 * frames * double(document->character().vertexCount() + 4 * kTypicalGarmentVertices));
   } catch (const Error& e) {
     lastError_ = QString::fromStdString(e.what());
+    keepPreviousBake();
     return false;
   }
   // The body at every frame, posed here (the worker only simulates); none without a character.
@@ -1251,6 +1254,7 @@ bool GarmentTool::bake(float from, float to) {
     garments = withoutClip ? prepareBakeWithoutClip() : prepareBake(bodies[0], fps);
   } catch (const Error& e) {
     lastError_ = QString::fromStdString(e.what());
+    keepPreviousBake();
     return false;
   }
 
@@ -1325,12 +1329,14 @@ bool GarmentTool::bake(float from, float to) {
   }
 
   if (!error.isEmpty()) {
+    keepPreviousBake();
     lastError_ = tr("The bake stopped: %1").arg(error);
     window_->hideProgress(lastError_);
     emit simulationChanged();
     return false;
   }
   if (cancelBake_) {
+    keepPreviousBake();
     lastError_ = tr("Bake cancelled");
     window_->hideProgress(tr("Garment bake cancelled"));
     emit simulationChanged();
