@@ -18,6 +18,7 @@
 #include "core/character/posed_character.h"
 #include "core/scene/open_scene.h"
 #include "core/util/memory_budget.h"
+#include "core/util/process_memory.h"
 #include "core/util/error.h"
 #include "core/util/thread_pool.h"
 #include "sim/cloth/baked_cloth.h"
@@ -70,6 +71,7 @@ struct RunResult {
   int substeps = 0;
   double poseSeconds = 0.0;  // posing the character (skinning) for the frames
   double phaseSeconds[cloth::kClothPhaseCount] = {};  // the sheet's solver phases (ClothPhase)
+  double rssAfterFirstFrame = 0.0;  // MB: memory must stay flat over long runs
 };
 
 // All cloth of the scene, stepped frame by frame on the (animated) body.
@@ -115,6 +117,7 @@ RunResult run(SceneCloth& cloth, PosedBody& body, float startTime, bool animateB
     r.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     r.cpuSeconds += double(std::clock() - cpu0) / CLOCKS_PER_SEC;
     if (cloth.garments) cloth.garments->measureFrame();
+    if (f == 0) r.rssAfterFirstFrame = residentMegabytes();
     const cli::ClothNow now = cloth.now();
     r.maxStretch = std::max(r.maxStretch, now.maxStretch);
     r.maxPenetrating = std::max(r.maxPenetrating, now.penetratingVertices);
@@ -228,7 +231,10 @@ int runSimulate(const std::vector<std::string>& argv) {
                 {"integrator", cloth::integratorName(spec.settings.integrator)},
                 {"substeps_per_frame", r.substeps},
                 {"cg_iterations_per_frame", double(r.solverIterations) / frames},
-                {"threads", ThreadPool::shared().threadCount()}};
+                {"threads", ThreadPool::shared().threadCount()},
+                {"rss_mb_after_first_frame", r.rssAfterFirstFrame},
+                {"rss_mb_end", residentMegabytes()},
+                {"peak_rss_mb", peakResidentMegabytes()}};
   stats["phase_ms_per_frame"] = phaseProfile(r, cloth, frames);
   if (cloth.garments) {
     stats["garments"] = cloth.garments->stats();

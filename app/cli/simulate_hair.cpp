@@ -12,6 +12,7 @@
 #include "core/util/atomic_file.h"
 #include "core/util/error.h"
 #include "core/util/thread_pool.h"
+#include "core/util/process_memory.h"
 
 namespace mq::cli {
 namespace {
@@ -50,6 +51,7 @@ void simulateSceneHair(const LoadedScene& scene, int frames, float fps, const st
   double guideSeconds = 0.0, childSeconds = 0.0;
   float maxLengthError = 0.0f;
   size_t maxInside = 0, maxRootsInside = 0;
+  double rssAfterFirstFrame = 0.0;  // MB: memory must stay flat over long runs
   for (int f = 0; f < frames; ++f) {
     const auto t0 = std::chrono::steady_clock::now();
     hair.step(start + float(f + 1) / fps, 1.0f / fps);
@@ -58,6 +60,7 @@ void simulateSceneHair(const LoadedScene& scene, int frames, float fps, const st
     guideSeconds += std::chrono::duration<double>(t1 - t0).count();
     childSeconds += secondsSince(t1);
     maxLengthError = std::max(maxLengthError, hair.maxGuideLengthError());
+    if (f == 0) rssAfterFirstFrame = residentMegabytes();
     const SceneHair::InsideCount inside = hair.pointsInsideBody();
     maxInside = std::max(maxInside, inside.points);
     maxRootsInside = std::max(maxRootsInside, inside.roots);
@@ -83,6 +86,8 @@ void simulateSceneHair(const LoadedScene& scene, int frames, float fps, const st
   stats["hair_roots_inside_proxies"] = maxRootsInside;
   stats["hair_bbox_min"] = boundsJson(hair.allStrands(), false);
   stats["hair_bbox_max"] = boundsJson(hair.allStrands(), true);
+  stats["hair_rss_mb_after_first_frame"] = rssAfterFirstFrame;
+  stats["hair_rss_mb_end"] = residentMegabytes();
   std::cout << "simulated hair: " << hair.groom().strands().strandCount() << " strands (" << hair.groom().guideCount()
             << " guides) over " << frames << " frames in " << seconds << " s (" << 1000.0 * seconds / frames
             << " ms/frame), max length error " << maxLengthError << ", points inside the body " << maxInside
