@@ -658,6 +658,7 @@ int runHairToolTest(int argc, char** argv);   // hair_tool_test.cpp
 int runApplyMotionTest(int argc, char** argv);  // apply_motion_test.cpp
 int runHairStallTest(int argc, char** argv);  // hair_stall_test.cpp
 int runRecoveryTest(int argc, char** argv);   // recovery_test.cpp
+int runMonkeyTest(int argc, char** argv);     // monkey_test.cpp
 
 int main(int argc, char** argv) {
   // The viewport bridge needs its GL format before QApplication exists.
@@ -673,6 +674,8 @@ int main(int argc, char** argv) {
   if (argc > 1 && std::string(argv[1]) == "motion") return runApplyMotionTest(argc - 1, argv + 1);
   // `mannequin_gui_tests recovery`: a killed editor's edit restored at the next start.
   if (argc > 1 && std::string(argv[1]) == "recovery") return runRecoveryTest(argc - 1, argv + 1);
+  // `mannequin_gui_tests monkey [ACTIONS [SEED]]`: random user actions, no crash.
+  if (argc > 1 && std::string(argv[1]) == "monkey") return runMonkeyTest(argc - 1, argv + 1);
   mq::ui::exitAfter(120, "gui_smoke");  // never hang
   EditorSmokeTest test;
   return QTest::qExec(&test, argc, argv);
