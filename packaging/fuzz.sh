@@ -42,11 +42,15 @@ status=0
 for target in "${targets[@]}"; do
   corpus="$build/corpus/$target" findings="$build/findings/$target"
   mkdir -p "$corpus" "$findings"
+  # libFuzzer takes folders: the seeds are copied into the corpus.
   read -r -a seeds <<<"$(grep "^$target " "$build/fuzz_seeds.txt" | cut -d' ' -f2-)"
+  for seed in "${seeds[@]}"; do
+    if [ -d "$seed" ]; then cp -n "$seed"/* "$corpus"/; else cp -n "$seed" "$corpus"/; fi
+  done
   dict="$top/tests/fuzz/$target.dict"
   [ -f "$dict" ] || dict="$top/tests/fuzz/json.dict"
   echo "== fuzz_$target"
-  if ! "$build/tests/fuzz/fuzz_$target" "$corpus" "${seeds[@]}" -runs="$runs" -max_total_time="$seconds" -dict="$dict" -timeout=10 -rss_limit_mb=3072 \
+  if ! "$build/tests/fuzz/fuzz_$target" "$corpus" -runs="$runs" -max_total_time="$seconds" -dict="$dict" -timeout=10 -rss_limit_mb=3072 \
       -max_len=600000 -print_final_stats=1 -artifact_prefix="$findings/" 2>"$build/fuzz_$target.log"; then
     status=1
     echo "fuzz_$target: FOUND a problem, see $build/fuzz_$target.log and $findings/"
