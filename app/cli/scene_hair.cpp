@@ -50,7 +50,7 @@ SceneHair::SceneHair(const LoadedScene& scene, const HairSection& section) : sce
   } catch (const FileError&) {
     throw;
   } catch (const Error& e) {
-    throw FileError(scene.documentPath, e.what());
+    throw FileError(scene.documentPath, std::string("hair: ") + e.what());
   }
   groom_->grow(section_.style, section_.strands);
   groomSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -12,30 +12,14 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
-#include <QDockWidget>
-#include <QEventLoop>
 #include <QSurfaceFormat>
-#include <QTimer>
 
-#include "ui/document/document_loader.h"
-#include "ui/document/editor_document.h"
-#include "ui/garment/garment_tool.h"
-#include "ui/hair/hair_tool.h"
 #include "ui/document/autosave.h"
+#include "ui/document/document_loader.h"
 #include "ui/main_window.h"
+#include "ui/scripted_session.h"
 #include "ui/theme.h"
 #include "ui/viewport/vtk_viewport_widget.h"
-
-namespace {
-
-// Saves a picture of the whole window and quits.
-void saveScreenshotAndQuit(mq::ui::MainWindow& window, const QString& path, bool loaded) {
-  const bool saved = window.grab().save(path);
-  if (!saved) std::fprintf(stderr, "mannequin: %s: could not write the screenshot\n", qPrintable(path));
-  QCoreApplication::exit(saved && loaded ? 0 : 1);
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   // The viewport bridge needs this before QApplication exists.
@@ -98,85 +82,23 @@ int main(int argc, char** argv) {
   }
   window.show();
 
-  // Once the file is open: apply the view options, then take the screenshot
-  // after the layout has settled and the viewport has painted.
-  const QString screenshotPath = parser.value(screenshot);
-  const QString selectBone = parser.value(select), clipName = parser.value(clip);
-  const double time = parser.value(timeOption).toDouble();
-  const bool setTime = parser.isSet(timeOption);
-  const QStringList garments = parser.values(addGarment);
-  // Given twice, bakes twice (the second reuses the sewn garments): each bake's time goes to stderr.
-  const int bake = int(parser.optionNames().count("bake-garments"));
-  const bool stretch = parser.isSet(garmentStretch);
-  const int simulateSteps = parser.value(simulateGarments).toInt();
-  const QString savePath = parser.value(saveAs);
-  const QString exportDir = parser.value(exportBake);
-  auto afterLoad = [&window, takeScreenshot, screenshotPath, selectBone, clipName, time, setTime, garments, bake,
-                    stretch, simulateSteps, savePath, exportDir] {
+  // Once the file is open: the scripted actions, then the screenshot.
+  mq::ui::ScriptedSession session;
+  session.clip = parser.value(clip);
+  session.setTime = parser.isSet(timeOption);
+  session.time = parser.value(timeOption).toDouble();
+  session.select = parser.value(select);
+  session.addGarments = parser.values(addGarment);
+  session.bakes = int(parser.optionNames().count("bake-garments"));
+  session.exportBakeDir = parser.value(exportBake);
+  session.simulateSteps = parser.value(simulateGarments).toInt();
+  session.showStretch = parser.isSet(garmentStretch);
+  session.saveAs = parser.value(saveAs);
+  session.screenshot = parser.value(screenshot);
+  auto afterLoad = [&window, session] {
     QObject::connect(&window, &mq::ui::MainWindow::loadFinished, &window,
-        [&window, takeScreenshot, screenshotPath, selectBone, clipName, time, setTime, garments, bake, stretch,
-         simulateSteps, savePath, exportDir](bool ok) {
-          mq::ui::EditorDocument* doc = window.document();
-          if (clipName == "rest") doc->setClip(-1);
-          else if (!clipName.isEmpty()) doc->setClip(doc->character().findClip(clipName.toStdString()));
-          auto* garmentTool = window.findChild<mq::ui::GarmentTool*>();
-          for (const QString& type : garments) garmentTool->addGarment(type.toStdString());
-          if (!garments.isEmpty() || bake || stretch) garmentTool->dock()->raise();
-          if (simulateSteps > 0 || bake) garmentTool->dock()->raise();
-          for (int b = 0; b < bake; ++b) {
-            if (!garmentTool->bake()) {
-              std::fprintf(stderr, "mannequin: bake: %s\n", qPrintable(garmentTool->lastError()));
-              break;
-            }
-            std::fprintf(stderr,
-                         "mannequin: bake %d: %d frames in %.1f s: sewing %.1f s, draping %.1f s, frames %.1f s "
-                         "(sewing ran %d times, reused %d times)\n",
-                         b + 1, garmentTool->bakedFrameCount(), garmentTool->lastBakeSeconds(),
-                         garmentTool->lastBakePhaseSeconds(0), garmentTool->lastBakePhaseSeconds(1),
-                         garmentTool->lastBakePhaseSeconds(2), garmentTool->sewingRuns(), garmentTool->reusedSewings());
-          }
-          if (!exportDir.isEmpty()) {
-            if (garmentTool->exportBake(exportDir))
-              std::fprintf(stderr, "mannequin: exported %d baked frames to %s\n", garmentTool->bakedFrameCount(),
-                           qPrintable(exportDir));
-            else
-              std::fprintf(stderr, "mannequin: export bake: %s\n", qPrintable(garmentTool->lastError()));
-          }
-          if (simulateSteps > 0) {
-            garmentTool->setSimulating(true);
-            while (garmentTool->simulating() && garmentTool->simulatedSteps() < simulateSteps)
-              QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
-            garmentTool->setSimulating(false);
-            if (!garmentTool->lastError().isEmpty())
-              std::fprintf(stderr, "mannequin: simulate: %s\n", qPrintable(garmentTool->lastError()));
-          }
-          if (stretch) garmentTool->setStretchVisible(true);
-          if (setTime) doc->setTime(doc->clipStart() + float(time));
-          if (!selectBone.isEmpty() && !doc->selectByName(selectBone.toStdString()))
-            std::fprintf(stderr, "mannequin: --select: no bone, material or mesh named '%s'\n", qPrintable(selectBone));
-          QString error;
-          if (!savePath.isEmpty() && !window.saveDocument(savePath, &error))
-            std::fprintf(stderr, "mannequin: %s\n", qPrintable(error));
-          if (!takeScreenshot) return;
-          // The hair grows on a worker: the picture shows it grown.
-          if (auto* hairTool = window.findChild<mq::ui::HairTool*>()) {
-            hairTool->finishBackgroundWork();
-            hairTool->setDrawingInParts(false);
-          }
-          QTimer::singleShot(400, &window, [&window, screenshotPath, ok] { saveScreenshotAndQuit(window, screenshotPath, ok); });
-        },
-        Qt::SingleShotConnection);
+                     [&window, session](bool ok) { session.run(window, ok); }, Qt::SingleShotConnection);
   };
-
-  // Interactive sessions keep a recovery copy of unsaved work, and offer the
-  // one a crashed session left once the first file is open.
-  if (!takeScreenshot) {
-    bool isNumber = false;
-    const int seconds = qEnvironmentVariable("MANNEQUIN_AUTOSAVE_SECONDS").toInt(&isNumber);
-    window.enableAutosave(mq::ui::Autosave::defaultFolder(), isNumber && seconds > 0 ? seconds : 60);
-    QObject::connect(&window, &mq::ui::MainWindow::loadFinished, &window, [&window] { window.offerRecovery(); },
-                     Qt::SingleShotConnection);
-  }
 
   if (mq::ui::isMotionFile(file)) {
     // A motion alone is shown on the default mannequin.
@@ -190,5 +112,15 @@ int main(int argc, char** argv) {
     afterLoad();
     window.openFile(file);
   }
+  // Interactive sessions keep a recovery copy of unsaved work, and offer the
+  // one a crashed session left once the first file is open.
+  if (!takeScreenshot) {
+    bool isNumber = false;
+    const int seconds = qEnvironmentVariable("MANNEQUIN_AUTOSAVE_SECONDS").toInt(&isNumber);
+    window.enableAutosave(mq::ui::Autosave::defaultFolder(), isNumber && seconds > 0 ? seconds : 60);
+    QObject::connect(&window, &mq::ui::MainWindow::loadFinished, &window, [&window] { window.offerRecovery(); },
+                     Qt::SingleShotConnection);
+  }
+
   return app.exec();
 }
