@@ -101,7 +101,13 @@ json toJson(const HairShadingParams& s) {
 }
 
 HairStyle hairStyleFromJson(const json& j, const std::string& path) {
-  if (j.is_string()) return builtinHairStyle(j.get<std::string>());
+  if (j.is_string()) {
+    try {
+      return builtinHairStyle(j.get<std::string>());
+    } catch (const Error& e) {
+      throw Error(path + ": " + e.what());
+    }
+  }
   if (!j.is_object()) throw Error(path + ": must be a built-in style name or an object");
   const JsonFields f(j, path);
   HairStyle s = f.has("preset") ? hairStyleFromJson(f.raw("preset"), f.pathOf("preset")) : HairStyle{};
