@@ -8,6 +8,7 @@
 
 #include <unistd.h>
 
+#include "core/character/default_mannequin.h"
 #include "core/util/error.h"
 
 namespace mq::fuzz {
@@ -22,6 +23,11 @@ std::string inputFile(const uint8_t* data, size_t size, const std::string& exten
   const std::string path = (dir / ("input." + extension)).string();
   std::ofstream(path, std::ios::binary | std::ios::trunc).write(reinterpret_cast<const char*>(data), std::streamsize(size));
   return path;
+}
+
+const Character& mannequin() {
+  static const Character character = makeDefaultMannequin();
+  return character;
 }
 
 void expectOnlyErrors(const std::function<void()>& read) {
