@@ -40,7 +40,7 @@ int exportSequence(const LoadedScene& scene, int clip, double fps, const std::st
 
 int runExport(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--out", "--clip", "--fps", "--skinning", "--helper-bones", "--scale", "--rigged"});
+  args.allowOnly({"--out", "--clip", "--fps", "--skinning", "--helper-bones", "--regenerate-weights", "--smooth-weights", "--scale", "--rigged"});
   if (args.positional().size() != 1) throw Error("export needs exactly one FILE");
   const std::string out = args.option("--out");
   if (out.empty() || !isMeshExportPath(out)) throw Error("export needs --out OUT.obj, .ply, .gltf or .glb");
@@ -78,7 +78,7 @@ int runExport(const std::vector<std::string>& argv) {
 }
 
 static Registration reg({"export", "FILE --out OUT.obj|.ply|.gltf|.glb [--clip NAME|INDEX --fps F] [--skinning lbs|dqs|cones]\n"
-                         "         [--helper-bones] [--scale S] [--rigged [--fps F]]",
+                         "         [--helper-bones] [--regenerate-weights] [--smooth-weights] [--scale S] [--rigged [--fps F]]",
                          "write the rest pose, or every frame of a clip (OUT_0000.obj ...), as meshes; --rigged: the\n"
                          "skeleton, skins and every clip (sampled at F fps, 30 by default) as one glTF or GLB", runExport});
 

@@ -48,7 +48,7 @@ void writeJoints(const Skeleton& skeleton, const std::vector<glm::mat4>& worldFr
 
 int runPose(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--time", "--clip", "--motion", "--map", "--in-place", "--out", "--skinning", "--helper-bones",
+  args.allowOnly({"--time", "--clip", "--motion", "--map", "--in-place", "--out", "--skinning", "--helper-bones", "--regenerate-weights", "--smooth-weights",
                   "--joints-out", "--scale"});
   if (args.positional().size() != 1) throw Error("pose needs exactly one FILE");
   const std::string out = args.option("--out");
@@ -77,7 +77,7 @@ int runPose(const std::vector<std::string>& argv) {
 }
 
 static Registration reg({"pose", "FILE --time T [--clip NAME|INDEX|rest] [--motion BVH [--map MAP] [--in-place]]\n"
-                         "         --out OUT.obj|.ply|.gltf|.glb [--skinning lbs|dqs|cones] [--helper-bones]\n"
+                         "         --out OUT.obj|.ply|.gltf|.glb [--skinning lbs|dqs|cones] [--helper-bones] [--regenerate-weights] [--smooth-weights]\n"
                          "         [--scale S] [--joints-out JOINTS.json]",
                          "write the posed mesh at time T in world space (OBJ, PLY, glTF or GLB)", runPose,
                          "--motion applies a BVH to the character: its joints drive the bones of the same name,\n"

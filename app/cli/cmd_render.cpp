@@ -55,7 +55,7 @@ void placeCamera(render::SceneView& view, const ViewSettings& settings, const Im
 
 int runRender(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--out", "--time", "--clip", "--size", "--skeleton", "--look", "--scale", "--hair", "--hair-shadow", "--skinning", "--helper-bones",
+  args.allowOnly({"--out", "--time", "--clip", "--size", "--skeleton", "--look", "--scale", "--hair", "--hair-shadow", "--skinning", "--helper-bones", "--regenerate-weights", "--smooth-weights",
                   "--hair-shader", "--hair-pigment", "--melanin", "--pheomelanin", "--hair-roughness", "--skin-preset"});
   if (args.positional().size() != 1) throw Error("expects one FILE (or 'default'); see mannequin-cli --help");
   const std::string file = args.positional()[0];
@@ -108,7 +108,7 @@ int runRender(const std::vector<std::string>& argv) {
 
 Registration reg({"render", "FILE --out OUT.png [--time T] [--clip NAME|INDEX|rest] [--size WxH] [--skeleton]\n"
                   "         [--look auto|skin|mannequin|plain] [--hair auto|simulate|rigid|off]\n"
-                  "         [--hair-shadow count|maps] [--skinning lbs|dqs|cones] [--helper-bones] [--scale S]\n"
+                  "         [--hair-shadow count|maps] [--skinning lbs|dqs|cones] [--helper-bones] [--regenerate-weights] [--smooth-weights] [--scale S]\n"
                   "         [--skin-preset skin1|skin2|light|medium|tan|dark]\n"
                   "         [--hair-shader kajiya-kay|physical] [--hair-pigment black|brown|blond|red|grey]\n"
                   "         [--melanin M] [--pheomelanin P] [--hair-roughness R]",

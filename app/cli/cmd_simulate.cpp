@@ -156,7 +156,7 @@ json phaseProfile(const RunResult& r, const SceneCloth& cloth, int frames) {
 int runSimulate(const std::vector<std::string>& argv) {
   const cli::Args args(argv);
   args.allowOnly({"--frames", "--fps", "--stats-json", "--export-dir", "--export-format", "--layers", "--skinning",
-                  "--helper-bones", "--scale"});
+                  "--helper-bones", "--regenerate-weights", "--smooth-weights", "--scale"});
   const std::string format = args.option("--export-format", "obj");
   if (format != "obj" && format != "pc2") throw Error("--export-format expects obj or pc2");
   const std::string layers = args.option("--layers", "on");
@@ -257,7 +257,7 @@ int runSimulate(const std::vector<std::string>& argv) {
 }
 
 const cli::Registration reg({"simulate", "SCENE --frames N [--fps F] [--stats-json OUT] [--export-dir DIR [--export-format obj|pc2]]\n"
-                             "         [--layers on|off] [--skinning lbs|dqs|cones] [--helper-bones] [--scale S]",
+                             "         [--layers on|off] [--skinning lbs|dqs|cones] [--helper-bones] [--regenerate-weights] [--smooth-weights] [--scale S]",
                              "run the scene's cloth (sheet and garments) and hair headless; stats as JSON, frames as OBJ/PLY\n"
                              "(one file per frame), or with --export-format pc2 one Point Cache 2 file per cloth and its mesh",
                              runSimulate});

@@ -82,7 +82,7 @@ void printTable(const std::string& file, const SkinReport& r, std::ostream& out)
 
 int runSkinReport(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--skinning", "--helper-bones", "--scale", "--json", "--no-poses", "--no-clips", "--no-intersections", "--clip-fps"});
+  args.allowOnly({"--skinning", "--helper-bones", "--regenerate-weights", "--smooth-weights", "--scale", "--json", "--no-poses", "--no-clips", "--no-intersections", "--clip-fps"});
   if (args.positional().size() != 1) throw Error("skin-report needs exactly one FILE");
   const std::string file = args.positional()[0];
   LoadedScene scene = openScene(file);
@@ -105,7 +105,7 @@ int runSkinReport(const std::vector<std::string>& argv) {
 }
 
 static Registration reg({"skin-report",
-                         "FILE [--skinning lbs|dqs|cones] [--helper-bones] [--scale S] [--json] [--no-poses] [--no-clips] [--no-intersections]\n"
+                         "FILE [--skinning lbs|dqs|cones] [--helper-bones] [--regenerate-weights] [--smooth-weights] [--scale S] [--json] [--no-poses] [--no-clips] [--no-intersections]\n"
                          "         [--clip-fps F]",
                          "skin metrics (outer section M1, twist section M2, local volume M3, self-intersections M4) "
                          "on a humanoid's test poses and over each clip",

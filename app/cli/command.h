@@ -48,6 +48,8 @@ class Args {
 
 // --skinning lbs|dqs|cones: overrides the method the scene (or file) chose.
 // --helper-bones: adds helper bones at the joints (a humanoid's).
+// --regenerate-weights, --smooth-weights: rebuild the skin weights
+// (weight_regeneration.h) before the helper bones are added.
 // Throws mq::Error naming the choices for an unknown method, or why a
 // character cannot have helper bones.
 void applySkinningOption(const Args& args, LoadedScene& scene);

@@ -7,6 +7,8 @@
 #include "core/io/json_fields.h"
 #include "core/scene/open_scene.h"
 #include "core/skinning/section_cones.h"
+#include "core/skinning/weight_regeneration.h"
+#include "core/util/thread_pool.h"
 #include "core/util/error.h"
 #include "core/character/posed_character.h"
 
@@ -21,7 +23,8 @@ Args::Args(const std::vector<std::string>& args) {
   // Flags that take no value; everything else starting with -- takes one.
   static const std::vector<std::string> flags = {"--json", "--help", "--skeleton", "--no-hair",
                                                  "--no-cloth", "--self-collisions", "--no-poses", "--no-clips",
-                                                 "--no-intersections", "--in-place", "--helper-bones", "--rigged"};
+                                                 "--no-intersections", "--in-place", "--helper-bones", "--rigged",
+                                                 "--regenerate-weights", "--smooth-weights", "--regenerate", "--smooth"};
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a.rfind("--", 0) == 0 && a.size() > 2) {
@@ -66,6 +69,14 @@ void Args::allowOnly(const std::vector<std::string>& known) const {
 }
 
 void applySkinningOption(const Args& args, LoadedScene& scene) {
+  WeightSettings weights = scene.document.weights;
+  weights.regenerate |= args.has("--regenerate-weights");
+  weights.smooth |= args.has("--smooth-weights");
+  if (weights != scene.document.weights) {
+    std::cerr << regenerateWeights(scene.character, weights, &ThreadPool::shared()).summary() << "\n";
+    scene.document.weights = weights;
+    prepareSkinning(scene.character);
+  }
   if (args.has("--helper-bones") && scene.character.helperBones.empty()) {
     std::string why;
     if (addHelperBones(scene.character, &why) == 0) throw Error("--helper-bones: " + why);

@@ -16,7 +16,8 @@ std::vector<float> PositionWeld::gather(const std::vector<float>& positions) con
 PositionWeld weldByPosition(const std::vector<float>& positions, const std::vector<uint32_t>& triangles) {
   PositionWeld weld;
   std::map<std::array<uint32_t, 3>, uint32_t> byBits;
-  std::vector<uint32_t> weldedOf(positions.size() / 3);
+  std::vector<uint32_t>& weldedOf = weld.weldedIndex;
+  weldedOf.resize(positions.size() / 3);
   for (size_t v = 0; v < weldedOf.size(); ++v) {
     std::array<uint32_t, 3> bits;
     std::memcpy(bits.data(), &positions[3 * v], sizeof bits);

@@ -12,6 +12,7 @@ namespace mq {
 struct PositionWeld {
   std::vector<uint32_t> representative;  // welded vertex -> its first original vertex
   std::vector<uint32_t> triangles;       // over the welded vertices
+  std::vector<uint32_t> weldedIndex;     // original vertex -> welded vertex
 
   size_t vertexCount() const { return representative.size(); }
   // The welded vertices' positions, read from `positions` (3 floats per

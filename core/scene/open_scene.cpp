@@ -4,7 +4,9 @@
 #include "core/io/bvh_import.h"
 #include "core/io/character_import.h"
 #include "core/skinning/section_cones.h"
+#include "core/skinning/weight_regeneration.h"
 #include "core/util/error.h"
+#include "core/util/thread_pool.h"
 #include "core/character/posed_character.h"
 
 namespace mq {
@@ -58,6 +60,8 @@ LoadedScene resolveSceneDocument(const SceneDocument& document, const std::strin
     scene.clipIndex = 0;
   }
   scene.edits = poseEditsFromNames(document.poseRotations, scene.character.skeleton);
+  for (const Mesh& mesh : scene.character.meshes) scene.fileSkins.push_back(mesh.skin);
+  if (document.weights.active()) regenerateWeights(scene.character, document.weights, &ThreadPool::shared());
   if (document.helperBones) {
     std::string why;
     if (addHelperBones(scene.character, &why) == 0) scene.character.loadWarnings.push_back("skinning.helper_bones: " + why);

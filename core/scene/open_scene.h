@@ -21,6 +21,9 @@ struct LoadedScene {
   // The character file's materials before the document's changes (the
   // editor diffs against them when it saves).
   std::vector<Material> fileMaterials;
+  // The file's skin weights per mesh, before the document rebuilt them
+  // (weight_regeneration.h) or added helper bones.
+  std::vector<SkinBinding> fileSkins;
   // How the document's motion was paired with the character (when it has one).
   std::optional<BoneMatchReport> motionMatch;
 };

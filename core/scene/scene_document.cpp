@@ -107,6 +107,7 @@ SceneDocument fromJson(const json& root) {
       if (!k["helper_bones"].is_boolean()) throw Error("skinning.helper_bones must be true or false");
       doc.helperBones = k["helper_bones"].get<bool>();
     }
+    if (k.contains("weights")) doc.weights = weightSettingsFromJson(k["weights"], "skinning.weights");
   }
   if (root.contains("scale")) {
     if (!root["scale"].is_number()) throw Error("\"scale\" must be a number");
@@ -166,6 +167,7 @@ json toJson(const SceneDocument& doc) {
     root["view"]["camera"] = {{"position", array3(doc.view.cameraPosition)}, {"focus", array3(doc.view.cameraFocus)}};
   root["skinning"] = {{"method", skinningMethodName(doc.skinning)}};
   if (doc.helperBones) root["skinning"]["helper_bones"] = true;
+  if (doc.weights.active()) root["skinning"]["weights"] = toJson(doc.weights);
   if (doc.scale != 1.0f) root["scale"] = doc.scale;
   json materials = json::object();
   for (const auto& [name, changes] : doc.materials)
@@ -187,6 +189,22 @@ std::string resolveDocumentPath(const std::string& documentPath, const std::stri
   const std::filesystem::path p(stored);
   if (p.is_absolute() || documentPath.empty()) return stored;
   return (std::filesystem::path(documentPath).parent_path() / p).lexically_normal().string();
+}
+
+}  // namespace mq
+
+namespace mq {
+
+void rebaseDocumentPaths(SceneDocument& document, const std::string& fromPath, const std::string& toPath) {
+  const std::filesystem::path folder = std::filesystem::absolute(toPath).parent_path();
+  auto rebase = [&](std::string& stored) {
+    if (stored.empty()) return;
+    const std::filesystem::path file = std::filesystem::absolute(resolveDocumentPath(fromPath, stored));
+    stored = file.lexically_normal().lexically_proximate(folder).string();
+  };
+  if (document.character != "default") rebase(document.character);
+  rebase(document.motionFile);
+  rebase(document.motionMapFile);
 }
 
 }  // namespace mq

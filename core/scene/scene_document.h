@@ -12,7 +12,9 @@
 //     "pose": {"upperarm_l": [x, y, z, w], ...},   local rotation edits
 //     "view": {"skeleton": false, "look": "auto", "camera": {"position": [..], "focus": [..]}},
 //     "skinning": {"method": "lbs" | "dqs" | "cones",    (absent: lbs)
-//                  "helper_bones": bool},               (absent: false)
+//                  "helper_bones": bool,                (absent: false)
+//                  "weights": {"regenerate": bool, "smooth": bool, ...}},
+//                                      (weight_regeneration.h; absent: the file's)
 //     "scale": 0.01,   the character file's units to metres (absent: 1)
 //     "materials": {"<name>": {...}},   user changes to the file's materials
 //                                       (core/material/material_override.h)
@@ -27,6 +29,7 @@
 
 #include "core/character/character.h"
 #include "core/material/material_override.h"
+#include "core/skinning/weight_regeneration.h"
 
 namespace mq {
 
@@ -51,6 +54,7 @@ struct SceneDocument {
   ViewSettings view;
   SkinningMethod skinning = SkinningMethod::Lbs;
   bool helperBones = false;  // add helper bones at the joints (helper_bones.h) on open
+  WeightSettings weights;    // regenerate or smooth the file's weights on open
   float scale = 1.0f;  // applied to the character at load (its file's units to metres)
   std::map<std::string, MaterialOverride> materials;  // by material name
   // Sections owned by other modules (null when absent).
@@ -75,5 +79,9 @@ void saveSceneDocument(const SceneDocument& document, const std::string& path);
 
 // Resolves a path stored in a document relative to the document's folder.
 std::string resolveDocumentPath(const std::string& documentPath, const std::string& stored);
+// Rewrites the document's file paths (character, motion, name map), stored
+// relative to `fromPath` (a document, or "" for the working folder), to be
+// relative to `toPath`, where the document is about to be saved.
+void rebaseDocumentPaths(SceneDocument& document, const std::string& fromPath, const std::string& toPath);
 
 }  // namespace mq

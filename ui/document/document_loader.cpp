@@ -22,6 +22,7 @@ LoadedDocument loadDocument(const QString& fileOrDefault) {
   out.edits = std::move(scene.edits);
   out.clipIndex = scene.clipIndex;
   out.fileMaterials = std::move(scene.fileMaterials);
+  out.fileSkins = std::move(scene.fileSkins);
   if (file == "default") {
     out.displayName = "default mannequin";
   } else {

@@ -32,6 +32,12 @@ void EditorDocument::replace(LoadedDocument loaded) {
   selectedMaterial_ = -1;
   fileMaterials_ = std::move(loaded.fileMaterials);
   if (fileMaterials_.size() != character_.materials.size()) fileMaterials_ = character_.materials;
+  fileSkins_ = std::move(loaded.fileSkins);
+  weightReport_ = {};
+  if (fileSkins_.size() != character_.meshes.size()) {
+    fileSkins_.clear();
+    for (const Mesh& mesh : character_.meshes) fileSkins_.push_back(mesh.skin);
+  }
   unsavedSectionChanges_ = false;
   evaluatePose();
   emit characterReplaced();
@@ -127,6 +133,22 @@ std::string EditorDocument::setHelperBones(bool on) {
   emit poseChanged();
   emit documentChanged();
   return {};
+}
+
+WeightReport EditorDocument::setWeightSettings(const WeightSettings& settings) {
+  if (settings == scene_.weights) return {};
+  const bool helpers = helperBones();
+  if (helpers) removeHelperBones(character_);
+  for (size_t m = 0; m < character_.meshes.size(); ++m) character_.meshes[m].skin = fileSkins_[m];
+  const WeightReport report = regenerateWeights(character_, settings, &ThreadPool::shared());
+  weightReport_ = report;
+  if (helpers) addHelperBones(character_);
+  scene_.weights = settings;
+  prepareSkinning(character_);
+  evaluatePose();
+  emit poseChanged();
+  emit documentChanged();
+  return report;
 }
 
 void EditorDocument::evaluatePose() {

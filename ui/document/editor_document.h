@@ -25,6 +25,7 @@ struct LoadedDocument {
   PoseEdits edits;       // scene.poseRotations by bone index
   int clipIndex = -1;    // current clip, -1 for the rest pose
   std::vector<Material> fileMaterials;  // the file's materials before the scene's changes
+  std::vector<SkinBinding> fileSkins;   // the file's weights before the scene rebuilt them
   QString documentPath;  // the scene file, empty for a character file or "default"
   QString displayName;   // for the title bar
 };
@@ -87,6 +88,12 @@ class EditorDocument : public QObject {
   // returns why; removing gives the weights back.
   bool helperBones() const { return !character_.helperBones.empty(); }
   std::string setHelperBones(bool on);
+  // Rebuilt skin weights (weight_regeneration.h), saved in the document;
+  // inactive settings give the file's weights back. Returns the report.
+  const WeightSettings& weightSettings() const { return scene_.weights; }
+  WeightReport setWeightSettings(const WeightSettings& settings);
+  // What the last rebuild did (empty for the file's weights).
+  const WeightReport& weightReport() const { return weightReport_; }
 
   // Materials: the user's changes are saved in the scene document as
   // overrides of the file's material (the file is never modified).
@@ -150,6 +157,8 @@ class EditorDocument : public QObject {
   int selectedMesh_ = -1;
   int selectedMaterial_ = -1;
   std::vector<Material> fileMaterials_;
+  std::vector<SkinBinding> fileSkins_;
+  WeightReport weightReport_;
   bool unsavedSectionChanges_ = false;  // changes outside the undo stack
   QUndoStack* undoStack_ = nullptr;
 };

@@ -52,4 +52,12 @@ SetHelperBonesCommand::SetHelperBonesCommand(EditorDocument* document, bool on) 
 void SetHelperBonesCommand::undo() { document_->setHelperBones(!on_); }
 void SetHelperBonesCommand::redo() { document_->setHelperBones(on_); }
 
+SetWeightSettingsCommand::SetWeightSettingsCommand(EditorDocument* document, const WeightSettings& after)
+    : document_(document), before_(document->weightSettings()), after_(after) {
+  setText(after.active() ? QObject::tr("Rebuild weights") : QObject::tr("File weights"));
+}
+
+void SetWeightSettingsCommand::undo() { document_->setWeightSettings(before_); }
+void SetWeightSettingsCommand::redo() { document_->setWeightSettings(after_); }
+
 }  // namespace mq::ui

@@ -8,6 +8,7 @@
 #include <QUndoCommand>
 
 #include "core/character/character.h"
+#include "core/skinning/weight_regeneration.h"
 
 namespace mq::ui {
 
@@ -73,6 +74,18 @@ class SetHelperBonesCommand : public QUndoCommand {
  private:
   EditorDocument* document_;
   bool on_;
+};
+
+// Rebuilds the skin weights with other settings (or gives the file's back).
+class SetWeightSettingsCommand : public QUndoCommand {
+ public:
+  SetWeightSettingsCommand(EditorDocument* document, const WeightSettings& after);
+  void undo() override;
+  void redo() override;
+
+ private:
+  EditorDocument* document_;
+  WeightSettings before_, after_;
 };
 
 }  // namespace mq::ui

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -107,6 +108,7 @@ QWidget* PropertiesPanel::makeCharacterPage() {
     if (on != document_->helperBones()) document_->undoStack()->push(new SetHelperBonesCommand(document_, on));
   });
   form->addRow(QString(), helperBones_);
+  form->addRow(tr("Weights"), makeWeightsRow());
   crossings_ = new QLabel(tr("-"));
   crossings_->setToolTip(tr("Triangle pairs of the skin that cross each other at this pose (exact predicates): "
                             "what a fold or a limb pressed into the body does to the mesh."));
@@ -167,6 +169,47 @@ void PropertiesPanel::showCharacter() {
   characterEdits_->setText(QString::number(document_->poseEdits().rotations.size()));
   skinning_->setCurrentIndex(skinning_->findData(int(document_->skinning())));
   helperBones_->setChecked(document_->helperBones());
+  regenerateWeights_->setChecked(document_->weightSettings().regenerate);
+  smoothWeights_->setChecked(document_->weightSettings().smooth);
+  const WeightReport& report = document_->weightReport();
+  weightsReport_->setText(!document_->weightSettings().active() ? tr("the file's")
+                          : report.vertices > 0             ? QString::fromStdString(report.summary())
+                                                            : tr("rebuilt when the scene opened"));
+}
+
+QWidget* PropertiesPanel::makeWeightsRow() {
+  auto* row = new QWidget;
+  auto* layout = new QVBoxLayout(row);
+  layout->setContentsMargins(0, 0, 0, 0);
+  auto* boxes = new QHBoxLayout;
+  regenerateWeights_ = new QCheckBox(tr("Regenerate"));
+  regenerateWeights_->setToolTip(tr("Rebuild the skin weights (survey 1.2.5): each vertex goes to the bone whose "
+                                    "cylinder is nearest and which it sees from inside the skin, then the bones "
+                                    "blend over two section radii at each joint. Undo gives the file's weights "
+                                    "back; the setting is saved with the scene."));
+  smoothWeights_ = new QCheckBox(tr("Smooth"));
+  smoothWeights_->setToolTip(tr("Bound how fast a weight may change along the skin, by the section of the bone's "
+                                "cone: fingers switch over a finger's width, the pelvis over the pelvis's."));
+  connect(regenerateWeights_, &QCheckBox::clicked, this, &PropertiesPanel::applyWeightBoxes);
+  connect(smoothWeights_, &QCheckBox::clicked, this, &PropertiesPanel::applyWeightBoxes);
+  boxes->addWidget(regenerateWeights_);
+  boxes->addWidget(smoothWeights_);
+  boxes->addStretch();
+  layout->addLayout(boxes);
+  weightsReport_ = new QLabel(tr("the file's"));
+  weightsReport_->setWordWrap(true);
+  layout->addWidget(weightsReport_);
+  return row;
+}
+
+void PropertiesPanel::applyWeightBoxes() {
+  WeightSettings settings = document_->weightSettings();
+  settings.regenerate = regenerateWeights_->isChecked();
+  settings.smooth = smoothWeights_->isChecked();
+  if (settings == document_->weightSettings()) return;
+  QApplication::setOverrideCursor(Qt::WaitCursor);  // about a second on the mannequin
+  document_->undoStack()->push(new SetWeightSettingsCommand(document_, settings));
+  QApplication::restoreOverrideCursor();
 }
 
 QWidget* PropertiesPanel::makeBonePage() {

@@ -34,6 +34,9 @@ class PropertiesPanel : public QWidget {
   QPushButton* resetButton() const { return resetBone_; }
   QComboBox* skinningBox() const { return skinning_; }
   QCheckBox* helperBonesBox() const { return helperBones_; }
+  QCheckBox* regenerateWeightsBox() const { return regenerateWeights_; }
+  QCheckBox* smoothWeightsBox() const { return smoothWeights_; }
+  QLabel* weightsLabel() const { return weightsReport_; }
   QPushButton* countCrossingsButton() const { return countCrossings_; }
   MaterialPage* materialPage() const { return materialPage_; }
   QLabel* crossingsLabel() const { return crossings_; }
@@ -50,6 +53,9 @@ class PropertiesPanel : public QWidget {
   void resetAllBones();
   // Counts the skin's crossing triangle pairs at the current pose on a worker.
   void countCrossings();
+  QWidget* makeWeightsRow();
+  // Rebuilds the weights as the two boxes say (one undo step).
+  void applyWeightBoxes();
 
   EditorDocument* document_;
   QStackedWidget* pages_;
@@ -67,6 +73,9 @@ class PropertiesPanel : public QWidget {
   QLabel* characterEdits_ = nullptr;
   QComboBox* skinning_ = nullptr;
   QCheckBox* helperBones_ = nullptr;
+  QCheckBox* regenerateWeights_ = nullptr;
+  QCheckBox* smoothWeights_ = nullptr;
+  QLabel* weightsReport_ = nullptr;
   QLabel* crossings_ = nullptr;
   QPushButton* countCrossings_ = nullptr;
   QFutureWatcher<long> crossingsWatcher_;

@@ -1,0 +1,76 @@
+#pragma once
+// Weight regeneration and smoothing (survey 1.2.5, "Filtrage des poids" and
+// "Régénération des poids"):
+//   - regeneration reduces the skin to rigid skinning first: each vertex
+//     goes to the bone with the lowest score: its radial distance to the
+//     bone's cylinder plus `axialWeight` times its distance beyond the
+//     bone's ends, in cylinder radii (the median distance to the bone of the
+//     vertices nearest to it). A bone counts only when the segment from the
+//     vertex to its axis stays inside the skin (the vertex sees the bone).
+//     The section cones were tried as the cylinders and left: a clavicle's
+//     or a thigh's base cut through the torso makes it reach the shins.
+//     A leaf bone that has no vertex of its own in the file (an end marker)
+//     has no length and gets none.
+//   - smoothing then bounds how fast a weight may change along the skin: on
+//     every edge (i, j) and bone b, |w_b(i) - w_b(j)| <= |x_i - x_j| / l_b,
+//     where l_b = `transition` * sqrt(a b) of the bone's memorised section at
+//     its joint (the cone's elliptic base; the cylinder's radius for a bone
+//     whose cone is not a limb's). The survey sets the threshold by
+//     the cone's section and no formula; this one makes the fingers switch
+//     over a finger's width and the pelvis over the pelvis's. An edge that
+//     exceeds it moves both ends' weights towards each other just enough;
+//     passes run until none exceeds it, or `passes` ran. Each move is a
+//     convex combination, so weights stay in [0, 1] and sum to 1.
+// At most four influences per vertex remain. Vertices at the same position
+// (seams) get the same weights. Helper bones are taken out before and put
+// back after, so their weights come from the new ones.
+
+#include <cstddef>
+#include <string>
+
+#include <nlohmann/json_fwd.hpp>
+
+namespace mq {
+
+struct Character;
+struct Mesh;
+class Skeleton;
+class ThreadPool;
+
+struct WeightSettings {
+  bool regenerate = false;  // rigid assignment by cone score first
+  bool smooth = false;      // then the cone-threshold smoothing
+  double axialWeight = 0.5;
+  double transition = 2.0;
+  int passes = 64;
+
+  bool active() const { return regenerate || smooth; }
+  bool operator==(const WeightSettings& other) const;
+  bool operator!=(const WeightSettings& other) const { return !(*this == other); }
+};
+
+// What a run did, over all meshes.
+struct WeightReport {
+  size_t vertices = 0;
+  size_t blendedBefore = 0, blendedAfter = 0;  // vertices with a second weight > 0.05
+  int passes = 0;                              // smoothing passes of the slowest mesh
+  double largestExcess = 0.0;  // the worst edge's |dw| - threshold left, 0 when converged
+
+  std::string summary() const;
+};
+
+// Rewrites `mesh.skin` (which must be non-empty) as the settings say.
+WeightReport regenerateMeshWeights(Mesh& mesh, const Skeleton& skeleton, const WeightSettings& settings,
+                                   ThreadPool* pool);
+// Every skinned mesh of the character; helper bones come back afterwards.
+// The skinning caches are the caller's to rebuild (prepareSkinning).
+WeightReport regenerateWeights(Character& character, const WeightSettings& settings, ThreadPool* pool);
+
+// The "weights" object of a scene document's skinning section:
+//   {"regenerate": bool, "smooth": bool, "axial_weight": 0..100,
+//    "transition": 0.05..20, "passes": 1..10000}
+// `path` names it in errors (skinning.weights).
+WeightSettings weightSettingsFromJson(const nlohmann::json& value, const std::string& path);
+nlohmann::json toJson(const WeightSettings& settings);
+
+}  // namespace mq
