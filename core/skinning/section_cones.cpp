@@ -112,8 +112,10 @@ SectionCone fitCone(const Mesh& mesh, const WeldedSkin& welded, const Skeleton& 
   const glm::dmat4 meshFromBone = glm::inverse(glm::dmat4(skin.inverseBind[joint]));
   cone.head = glm::dvec3(meshFromBone[3]);
   const glm::dvec3 boneY = glm::normalize(glm::dvec3(meshFromBone[1]));
-  // The tail: the child joint the bone points at best, else (a leaf) the
-  // farthest of the bone's own vertices along its +Y.
+  // The tail: the child joint the bone's Y axis points at best, either way
+  // (a mirrored rig's right side points its bones back at their parents),
+  // else (a leaf) the farthest of the bone's own vertices along its Y axis,
+  // on the side where they reach farther.
   glm::dvec3 tail = cone.head;
   double best = 0.0;
   const int bone = skin.jointBones[joint];
@@ -123,15 +125,17 @@ SectionCone fitCone(const Mesh& mesh, const WeldedSkin& welded, const Skeleton& 
     const glm::dvec3 d = head - cone.head;
     const double len = glm::length(d);
     if (len <= 0.0) continue;
-    const double alignment = glm::dot(d / len, boneY);
+    const double alignment = std::abs(glm::dot(d / len, boneY));
     if (alignment > best) best = alignment, tail = head;
   }
   if (best <= 0.0) {
-    double reach = 0.0;
+    double up = 0.0, down = 0.0;
     for (size_t v = 0; v < mesh.vertexCount(); ++v)
-      if (skin.joints[v * skin.influencesPerVertex + dominantSlot(skin, v)] == joint)
-        reach = std::max(reach, glm::dot(glm::dvec3(mesh.position(v)) - cone.head, boneY));
-    tail = cone.head + reach * boneY;
+      if (skin.joints[v * skin.influencesPerVertex + dominantSlot(skin, v)] == joint) {
+        const double along = glm::dot(glm::dvec3(mesh.position(v)) - cone.head, boneY);
+        up = std::max(up, along), down = std::max(down, -along);
+      }
+    tail = cone.head + (up >= down ? up : -down) * boneY;
   }
   cone.length = glm::length(tail - cone.head);
   if (cone.length <= 1e-6) return cone;

@@ -14,6 +14,7 @@
 #include "core/io/json_fields.h"
 #include "core/mesh/mesh.h"
 #include "core/mesh/position_weld.h"
+#include "core/skeleton/skeleton.h"
 #include "core/skinning/section_cones.h"
 #include "core/util/thread_pool.h"
 
@@ -122,8 +123,39 @@ double rigidScore(const SectionCone& cone, double radius, const glm::dvec3& p, d
 }
 
 // Rigid skinning: one bone per vertex, the best-scored one it sees.
+// Each joint's nearest ancestor among the skin's joints (-1: none).
+std::vector<int> parentJoints(const SkinBinding& skin, const Skeleton& skeleton) {
+  std::vector<int> jointOfBone(skeleton.boneCount(), -1);
+  for (size_t j = 0; j < skin.jointBones.size(); ++j)
+    if (skin.jointBones[j] >= 0 && skin.jointBones[j] < skeleton.boneCount()) jointOfBone[skin.jointBones[j]] = int(j);
+  std::vector<int> parents(skin.jointBones.size(), -1);
+  for (size_t j = 0; j < skin.jointBones.size(); ++j) {
+    const int bone = skin.jointBones[j];
+    if (bone < 0 || bone >= skeleton.boneCount()) continue;
+    for (int b = skeleton.bone(bone).parent; b >= 0 && parents[j] < 0; b = skeleton.bone(b).parent) parents[j] = jointOfBone[b];
+  }
+  return parents;
+}
+
+// Scores compare cylinders of different radii, which moves the border
+// between a thick bone and its thinner child off their joint (the elbow's
+// into the forearm). Across a joint, the side of the plane through it,
+// normal to the child, decides instead.
+int sideOfJoint(int chosen, const glm::dvec3& p, const std::vector<SectionCone>& cones,
+                const std::vector<int>& parents) {
+  for (size_t c = 0; c < cones.size(); ++c)
+    if (parents[c] == chosen && cones[c].length > 1e-6 && glm::dot(p - cones[c].head, cones[c].axis) > 0.0 &&
+        glm::dot(p - cones[c].head, cones[c].axis) < cones[c].length)
+      return int(c);
+  const int parent = parents[chosen];
+  if (parent >= 0 && cones[parent].length > 1e-6 && glm::dot(p - cones[chosen].head, cones[chosen].axis) < 0.0)
+    return parent;
+  return chosen;
+}
+
 void assignRigidly(WeldedWeights& w, const std::vector<SectionCone>& cones, const std::vector<double>& radii,
-                   const SurfaceSegmentQuery& surface, double axialWeight, ThreadPool* pool) {
+                   const std::vector<int>& parents, const SurfaceSegmentQuery& surface, double axialWeight,
+                   ThreadPool* pool) {
   auto assign = [&](size_t begin, size_t end) {
     std::vector<std::pair<double, int>> scored;
     for (size_t v = begin; v < end; ++v) {
@@ -145,6 +177,7 @@ void assignRigidly(WeldedWeights& w, const std::vector<SectionCone>& cones, cons
           break;
         }
       }
+      chosen = sideOfJoint(chosen, p, cones, parents);
       std::fill(weights, weights + w.joints, 0.0f);
       weights[chosen] = 1.0f;
     }
@@ -346,7 +379,7 @@ WeightReport regenerateMeshWeights(Mesh& mesh, const Skeleton& skeleton, const W
   const std::vector<double> lengths = transitionLengths(cones, radii, settings.transition);
   if (settings.regenerate) {
     const SurfaceSegmentQuery surface(mesh.positions, mesh.triangles);
-    assignRigidly(w, cones, radii, surface, settings.axialWeight, pool);
+    assignRigidly(w, cones, radii, parentJoints(mesh.skin, skeleton), surface, settings.axialWeight, pool);
     blendRegions(w, edges, lengths);
   }
   if (settings.smooth) {

@@ -7,6 +7,9 @@
 //     bone's ends, in cylinder radii (the median distance to the bone of the
 //     vertices nearest to it). A bone counts only when the segment from the
 //     vertex to its axis stays inside the skin (the vertex sees the bone).
+//     Between a bone and its parent or child, the side of the plane through
+//     their joint, normal to the child, decides: radii alone would move the
+//     border off the joint, into the thinner bone.
 //     The section cones were tried as the cylinders and left: a clavicle's
 //     or a thigh's base cut through the torso makes it reach the shins.
 //     A leaf bone that has no vertex of its own in the file (an end marker)
