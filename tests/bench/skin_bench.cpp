@@ -5,6 +5,8 @@
 // its walk's frame 0.25 s with LBS (0), DQS (1) or cones (2): palette, skin,
 // and for cones the joint creases and the moved vertices' normals.
 // BM_BindSectionCones: fitting the mannequin's cones and creases.
+// BM_RegenerateWeights/<smooth>: rebuilding the mannequin's weights (cones,
+// rigid assignment with visibility, blend; then smoothing when 1).
 #include <benchmark/benchmark.h>
 
 #include <random>
@@ -16,6 +18,7 @@
 #include "core/skinning/dual_quaternion_skinning.h"
 #include "core/skinning/section_cones.h"
 #include "core/skinning/skin_deformer.h"
+#include "core/skinning/weight_regeneration.h"
 #include "core/util/thread_pool.h"
 
 namespace {
@@ -119,6 +122,20 @@ void BM_BindSectionCones(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_BindSectionCones)->UseRealTime()->Unit(benchmark::kMillisecond)->Iterations(3);
+
+void BM_RegenerateWeights(benchmark::State& state) {
+  static const mq::Character mannequin = mq::makeDefaultMannequin();
+  mq::WeightSettings settings;
+  settings.regenerate = true;
+  settings.smooth = state.range(0) != 0;
+  for (auto _ : state) {
+    mq::Character c = mannequin;
+    const mq::WeightReport report = mq::regenerateWeights(c, settings, &mq::ThreadPool::shared());
+    benchmark::DoNotOptimize(report.blendedAfter);
+  }
+  state.SetLabel(settings.smooth ? "regenerate + smooth" : "regenerate");
+}
+BENCHMARK(BM_RegenerateWeights)->Arg(0)->Arg(1)->UseRealTime()->Unit(benchmark::kMillisecond)->Iterations(3);
 
 BENCHMARK(BM_SkinMannequin)->Arg(0)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
 
