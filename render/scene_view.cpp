@@ -15,6 +15,8 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderStepsPass.h>
@@ -30,6 +32,7 @@
 #include "render/material_textures.h"
 #include "render/ground.h"
 #include "render/hair_actor.h"
+#include "render/section_cone_overlay.h"
 #include "render/skeleton_overlay.h"
 #include "render/skin_surface_arrays.h"
 #include "render/studio.h"
@@ -50,7 +53,39 @@ struct MeshActor {
   std::vector<uint32_t> triangles;  // for normals when the posed mesh has none
   glm::vec3 baseColor{0.8f};
   std::shared_ptr<SkinSurfaceArrays> skin;  // curvature, thickness, wrinkles
+  vtkSmartPointer<vtkActor> heat;  // the mesh coloured by per-vertex values, made on first use
+  vtkSmartPointer<vtkUnsignedCharArray> heatColors;
 };
+
+// One actor over the mesh's posed points and normals, coloured per vertex.
+void makeHeatActor(MeshActor& m) {
+  const vtkIdType n = m.positions->GetNumberOfTuples();
+  vtkNew<vtkPoints> points;
+  points->SetData(m.positions);
+  vtkNew<vtkCellArray> cells;
+  for (size_t t = 0; t + 2 < m.triangles.size(); t += 3) {
+    const vtkIdType tri[3] = {m.triangles[t], m.triangles[t + 1], m.triangles[t + 2]};
+    cells->InsertNextCell(3, tri);
+  }
+  m.heatColors = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  m.heatColors->SetName("Heat");
+  m.heatColors->SetNumberOfComponents(3);
+  m.heatColors->SetNumberOfTuples(n);
+  vtkNew<vtkPolyData> polyData;
+  polyData->SetPoints(points);
+  polyData->SetPolys(cells);
+  polyData->GetPointData()->SetNormals(m.normals);
+  polyData->GetPointData()->SetScalars(m.heatColors);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(polyData);
+  mapper->SetColorModeToDirectScalars();
+  mapper->ScalarVisibilityOn();
+  m.heat = vtkSmartPointer<vtkActor>::New();
+  m.heat->SetMapper(mapper);
+  m.heat->GetProperty()->SetAmbient(0.25);
+  m.heat->GetProperty()->SetDiffuse(0.75);
+  m.heat->GetProperty()->SetSpecular(0.05);
+}
 
 // The built-in mannequin, and meshes without a colour of their own (the
 // default grey), get the mannequin's wood (in the mesh's colour if it has
@@ -216,6 +251,8 @@ struct SceneView::Impl {
   float floorHeight = 0.0f;
   std::vector<float> computedNormals, carriedTangents;  // updatePose's scratch, kept between frames
   SkeletonOverlay skeleton;
+  SectionConeOverlay cones{renderer};
+  std::vector<glm::mat4> worldFromBone;  // as last posed
   Ground ground;
   Aabb bounds;
   bool skeletonVisible = false;
@@ -272,7 +309,10 @@ vtkRenderer* SceneView::renderer() { return impl_->renderer; }
 void SceneView::setCharacter(const Character& character) {
   Impl& m = *impl_;
   m.forEachPart([&](MeshActor& mesh, size_t p) { m.renderer->RemoveActor(mesh.parts[p]); });
+  for (MeshActor& mesh : m.meshes)
+    if (mesh.heat) m.renderer->RemoveActor(mesh.heat);
   m.meshes.clear();
+  m.cones.clear();
   m.materials = character.materials;
   m.images = character.images;
   m.textures = std::make_unique<MaterialTextures>(m.images);
@@ -383,11 +423,52 @@ void SceneView::updatePose(const PosedCharacter& posed) {
     }
     mesh.skin->update(posedMeshes[i].positions);  // wrinkles, once a skin look measured the mesh
     for (vtkActor* part : mesh.parts) markModified(part);
+    if (mesh.heat) markModified(mesh.heat);
   }
   m.updateBounds(posed.worldFromBone());
   m.skeleton.update(posed.worldFromBone());
+  m.worldFromBone = posed.worldFromBone();
+  m.cones.update(m.worldFromBone);
   m.ground.placeShadow(footprintOf(m.meshes, m.bounds, m.floorHeight));
 }
+
+void heatColor(float value, unsigned char rgb[3]) {
+  // Blue, cyan, green, yellow, red: the ramp of weight painting in DCC tools.
+  static const float stops[5][3] = {{0.05f, 0.1f, 0.75f}, {0.0f, 0.7f, 0.9f}, {0.1f, 0.85f, 0.2f},
+                                    {0.95f, 0.9f, 0.1f}, {0.9f, 0.1f, 0.05f}};
+  const float t = std::clamp(std::isfinite(value) ? value : 0.0f, 0.0f, 1.0f) * 4.0f;
+  const int i = std::min(int(t), 3);
+  const float f = t - float(i);
+  for (int c = 0; c < 3; ++c)
+    rgb[c] = static_cast<unsigned char>(std::lround(255.0f * ((1.0f - f) * stops[i][c] + f * stops[i + 1][c])));
+}
+
+void SceneView::setVertexHeat(const std::vector<std::vector<float>>& perMesh) {
+  Impl& m = *impl_;
+  for (size_t i = 0; i < m.meshes.size(); ++i) {
+    MeshActor& mesh = m.meshes[i];
+    const bool show = i < perMesh.size() && perMesh[i].size() == size_t(mesh.positions->GetNumberOfTuples());
+    if (show && !mesh.heat) {
+      makeHeatActor(mesh);
+      m.renderer->AddActor(mesh.heat);
+    }
+    if (mesh.heat) mesh.heat->SetVisibility(show);
+    for (vtkActor* part : mesh.parts) part->SetVisibility(!show);
+    if (!show) continue;
+    unsigned char* out = mesh.heatColors->GetPointer(0);
+    for (size_t v = 0; v < perMesh[i].size(); ++v) heatColor(perMesh[i][v], out + 3 * v);
+    mesh.heatColors->Modified();
+  }
+}
+
+void SceneView::showSectionCones(const Character& character) {
+  impl_->cones.build(character);
+  impl_->cones.update(impl_->worldFromBone);
+}
+
+void SceneView::hideSectionCones() { impl_->cones.clear(); }
+
+int SceneView::sectionConeCount() const { return impl_->cones.coneCount(); }
 
 Aabb SceneView::characterBounds() const { return impl_->bounds; }
 

@@ -37,6 +37,8 @@ class HairActor;
 // marked as skin, the mannequin's wood on the built-in mannequin and on
 // meshes without a material. The others force one look on every surface.
 enum class LookMode { Auto, Skin, Mannequin, Plain };
+// The weight-painting ramp: blue at 0, through cyan, green and yellow, to red at 1.
+void heatColor(float value, unsigned char rgb[3]);
 // "auto", "skin", "mannequin", "plain"; false when `name` is none of them.
 bool parseLookMode(const std::string& name, LookMode& mode);
 const char* lookModeName(LookMode mode);
@@ -69,6 +71,15 @@ class SceneView {
   const SurfaceLook& skinLook() const;
   // Shades every surface with `look`, whatever the look mode.
   void setSurfaceLook(const SurfaceLook& look);
+  // Colours each mesh by per-vertex values in [0, 1] (a bone's skin weights:
+  // blue 0, cyan, green, yellow, red 1), drawn instead of its shaded surface;
+  // a mesh without values (or all, for an empty list) is shaded again.
+  void setVertexHeat(const std::vector<std::vector<float>>& perMesh);
+  // The survey's section cones around the limbs, translucent, following the
+  // pose (section_cone_overlay.h); fitting them takes about half a second.
+  void showSectionCones(const Character& character);
+  void hideSectionCones();
+  int sectionConeCount() const;
   // Copies the posed positions and normals into the actors' arrays.
   void updatePose(const PosedCharacter& posed);
   // Height (y) of the floor: the rest pose's lowest point.

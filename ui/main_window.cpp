@@ -161,6 +161,15 @@ void MainWindow::createActions() {
   showSkeletonAction_->setCheckable(true);
   showSkeletonAction_->setShortcut(QKeySequence(tr("Ctrl+K")));
   connect(showSkeletonAction_, &QAction::toggled, this, &MainWindow::setSkeletonVisible);
+  showWeightsAction_ = new QAction(tr("Show Skin &Weights"), this);
+  showWeightsAction_->setCheckable(true);
+  showWeightsAction_->setToolTip(tr("Colour the skin by the selected bone's weights: blue none, red all"));
+  connect(showWeightsAction_, &QAction::toggled, this, [this](bool on) { document_->setWeightsVisible(on); });
+  showConesAction_ = new QAction(tr("Show Section &Cones"), this);
+  showConesAction_->setCheckable(true);
+  showConesAction_->setToolTip(tr("Draw the survey's section cones around the limbs: the memorised sections the "
+                                  "cones skinning keeps, following the pose"));
+  connect(showConesAction_, &QAction::toggled, this, [this](bool on) { document_->setConesVisible(on); });
 
   showGridAction_ = new QAction(tr("Show &Grid"), this);
   showGridAction_->setCheckable(true);
@@ -236,6 +245,8 @@ void MainWindow::createMenus() {
 
   viewMenu_ = menuBar()->addMenu(tr("&View"));
   viewMenu_->addAction(showSkeletonAction_);
+  viewMenu_->addAction(showWeightsAction_);
+  viewMenu_->addAction(showConesAction_);
   viewMenu_->addAction(showGridAction_);
   viewMenu_->addAction(frameAllAction_);
   viewMenu_->addAction(followAction_);
@@ -330,7 +341,11 @@ void MainWindow::connectDocument() {
     const bool visible = document_->viewSettings().showSkeleton;
     showSkeletonAction_->setChecked(visible);
     scene_->setSkeletonVisible(visible);
+    showWeightsAction_->setChecked(document_->viewSettings().showWeights);
+    showConesAction_->setChecked(document_->viewSettings().showCones);
     applyLook();
+    showWeights();
+    showCones();
     viewport_->requestRender();
   });
   connect(document_, &EditorDocument::materialChanged, this, [this](int index) {
@@ -362,6 +377,9 @@ void MainWindow::showCharacter() {
   scene_->updatePose(document_->posed());
   scene_->setSkeletonVisible(document_->viewSettings().showSkeleton);
   scene_->setHighlightedBone(-1);
+  showWeights();
+  conesShown_ = false;  // setCharacter dropped them
+  showCones();
   statsLabel_->setText(document_->summary());
   updateTitle();
   viewport_->requestRender();
@@ -377,6 +395,7 @@ void MainWindow::applyLook() {
 
 void MainWindow::onPoseChanged() {
   scene_->updatePose(document_->posed());
+  showWeights();  // regenerated weights come with a pose change
   followCharacter();
   viewport_->requestRender();
 }
@@ -402,6 +421,7 @@ std::optional<glm::vec3> MainWindow::rootOnGround() const {
 void MainWindow::onSelectionChanged() {
   const int bone = document_->selectedBone();
   scene_->setHighlightedBone(bone);
+  showWeights();
   const Character& c = document_->character();
   if (bone >= 0)
     selectionLabel_->setText(tr("Bone: %1").arg(QString::fromStdString(c.skeleton.bone(bone).name)));
@@ -410,6 +430,27 @@ void MainWindow::onSelectionChanged() {
   else
     selectionLabel_->clear();
   viewport_->requestRender();
+}
+
+void MainWindow::showWeights() {
+  const bool on = document_->viewSettings().showWeights;
+  if (!on && !weightsShown_) return;
+  weightsShown_ = on;
+  scene_->setVertexHeat(on ? boneWeights(document_->character(), document_->selectedBone())
+                           : std::vector<std::vector<float>>());
+}
+
+void MainWindow::showCones() {
+  const bool on = document_->viewSettings().showCones;
+  if (on == conesShown_) return;
+  conesShown_ = on;
+  if (!on) {
+    scene_->hideSectionCones();
+    return;
+  }
+  QApplication::setOverrideCursor(Qt::WaitCursor);  // fitting: about half a second on the mannequin
+  scene_->showSectionCones(document_->character());
+  QApplication::restoreOverrideCursor();
 }
 
 void MainWindow::updateTitle() {

@@ -58,6 +58,8 @@ class MainWindow : public QMainWindow {
   TimelinePanel* timeline() const { return timeline_; }
   // View > Follow Character: the camera travels with the character's root.
   QAction* followAction() const { return followAction_; }
+  QAction* showWeightsAction() const { return showWeightsAction_; }
+  QAction* showConesAction() const { return showConesAction_; }
 
   // Adds a tool's dock (tabbed with the properties on the right by default)
   // and lists it in the View menu.
@@ -160,6 +162,10 @@ class MainWindow : public QMainWindow {
   std::optional<glm::vec3> rootOnGround() const;
   // Shades the scene with the document's surface look and ticks its menu entry.
   void applyLook();
+  // The selected bone's weights as a heat map on the skin, when the view asks.
+  void showWeights();
+  // The section cones around the limbs, when the view asks (fitted on showing).
+  void showCones();
   void onSelectionChanged();
   void updateTitle();
   void storeCamera();
@@ -189,6 +195,10 @@ class MainWindow : public QMainWindow {
   QAction* redoAction_ = nullptr;
   QAction* frameAllAction_ = nullptr;
   QAction* showSkeletonAction_ = nullptr;
+  QAction* showWeightsAction_ = nullptr;
+  bool weightsShown_ = false;  // the scene shows a weight heat map
+  QAction* showConesAction_ = nullptr;
+  bool conesShown_ = false;
   QAction* showGridAction_ = nullptr;
   QAction* followAction_ = nullptr;
   QAction* resetBoneAction_ = nullptr;

@@ -56,7 +56,7 @@ void placeCamera(render::SceneView& view, const ViewSettings& settings, const Im
 int runRender(const std::vector<std::string>& argv) {
   const Args args(argv);
   args.allowOnly({"--out", "--time", "--clip", "--size", "--skeleton", "--look", "--scale", "--hair", "--hair-shadow", "--skinning", "--helper-bones", "--regenerate-weights", "--smooth-weights",
-                  "--hair-shader", "--hair-pigment", "--melanin", "--pheomelanin", "--hair-roughness", "--skin-preset"});
+                  "--hair-shader", "--hair-pigment", "--melanin", "--pheomelanin", "--hair-roughness", "--skin-preset", "--weights", "--cones"});
   if (args.positional().size() != 1) throw Error("expects one FILE (or 'default'); see mannequin-cli --help");
   const std::string file = args.positional()[0];
   const std::string out = args.option("--out");
@@ -81,6 +81,13 @@ int runRender(const std::vector<std::string>& argv) {
   // skin, materials marked as skin); an unknown name lists the presets.
   if (args.has("--skin-preset")) view.setSkinLook(render::SurfaceLook::skinPresetLook(args.option("--skin-preset")));
   view.setLookMode(parseLook(args.option("--look", scene.document.view.look)));
+  if (args.has("--weights")) {
+    const std::string name = args.option("--weights");
+    const int bone = scene.character.skeleton.findBone(name);
+    if (bone < 0) throw Error("--weights: '" + scene.character.name + "' has no bone named '" + name + "'");
+    view.setVertexHeat(boneWeights(scene.character, bone));
+  }
+  if (args.has("--cones") || scene.document.view.showCones) view.showSectionCones(scene.character);
   for (const std::string& warning : loadNotices(scene)) std::cerr << "warning: " << warning << "\n";
   for (const std::string& warning : view.warnings()) std::cerr << "warning: " << warning << "\n";
   // A motion file alone (no meshes) shows its skeleton.
@@ -111,7 +118,7 @@ Registration reg({"render", "FILE --out OUT.png [--time T] [--clip NAME|INDEX|re
                   "         [--hair-shadow count|maps] [--skinning lbs|dqs|cones] [--helper-bones] [--regenerate-weights] [--smooth-weights] [--scale S]\n"
                   "         [--skin-preset skin1|skin2|light|medium|tan|dark]\n"
                   "         [--hair-shader kajiya-kay|physical] [--hair-pigment black|brown|blond|red|grey]\n"
-                  "         [--melanin M] [--pheomelanin P] [--hair-roughness R]",
+                  "         [--melanin M] [--pheomelanin P] [--hair-roughness R] [--weights BONE] [--cones]",
                   "renders an image offscreen (starts a private Xvfb when there is no X display)", runRender});
 
 }  // namespace

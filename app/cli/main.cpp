@@ -24,7 +24,7 @@ Args::Args(const std::vector<std::string>& args) {
   static const std::vector<std::string> flags = {"--json", "--help", "--skeleton", "--no-hair",
                                                  "--no-cloth", "--self-collisions", "--no-poses", "--no-clips",
                                                  "--no-intersections", "--in-place", "--helper-bones", "--rigged",
-                                                 "--regenerate-weights", "--smooth-weights", "--regenerate", "--smooth"};
+                                                 "--regenerate-weights", "--smooth-weights", "--regenerate", "--smooth", "--cones"};
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a.rfind("--", 0) == 0 && a.size() > 2) {

@@ -163,4 +163,10 @@ std::vector<std::vector<float>> sampleMorphWeights(const Character& character, i
   return weights;
 }
 
+std::vector<std::vector<float>> boneWeights(const Character& character, int bone) {
+  std::vector<std::vector<float>> out;
+  for (const Mesh& mesh : character.meshes) out.push_back(mesh.skin.weightsOfBone(bone, mesh.vertexCount()));
+  return out;
+}
+
 }  // namespace mq

@@ -62,6 +62,10 @@ struct PoseEdits {
 // The local pose of `character` at time t of clip `clipIndex` (-1: rest pose),
 // with edits applied.
 Pose samplePose(const Character& character, int clipIndex, float time, const PoseEdits* edits = nullptr);
+// Each mesh's per-vertex skin weight of `bone` (zeros for a mesh without a
+// skin): what a weight view colours.
+std::vector<std::vector<float>> boneWeights(const Character& character, int bone);
+
 // Morph weights per mesh at time t (defaults when the clip does not animate them).
 std::vector<std::vector<float>> sampleMorphWeights(const Character& character, int clipIndex, float time);
 

@@ -56,6 +56,18 @@ void SkinBinding::makeRigid() {
   for (float& w : weights) w = w > 0.0f ? 1.0f : 0.0f;
 }
 
+std::vector<float> SkinBinding::weightsOfBone(int bone, size_t vertices) const {
+  std::vector<float> out(vertices, 0.0f);
+  const int k = influencesPerVertex;
+  if (k == 0 || joints.size() < vertices * k) return out;
+  for (size_t v = 0; v < vertices; ++v)
+    for (int i = 0; i < k; ++i) {
+      const uint16_t joint = joints[v * k + i];
+      if (joint < jointBones.size() && jointBones[joint] == bone) out[v] += weights[v * k + i];
+    }
+  return out;
+}
+
 std::vector<Submesh> Mesh::drawRanges() const {
   if (!submeshes.empty()) return submeshes;
   return {Submesh{0, static_cast<uint32_t>(triangleCount()), material}};

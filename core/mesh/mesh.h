@@ -39,6 +39,8 @@ struct SkinBinding {
   void limitInfluences(int k);
   // Rigid skinning: each vertex follows its heaviest joint alone.
   void makeRigid();
+  // Each vertex's weight of skeleton bone `bone` (0 where it has none).
+  std::vector<float> weightsOfBone(int bone, size_t vertices) const;
 };
 
 struct Submesh {

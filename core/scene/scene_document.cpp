@@ -87,6 +87,12 @@ SceneDocument fromJson(const json& root) {
     const json& v = root["view"];
     if (!v.is_object()) throw Error("\"view\" must be an object");
     doc.view.showSkeleton = v.value("skeleton", false);
+    for (const auto& [key, flag] : {std::pair<const char*, bool*>{"weights", &doc.view.showWeights},
+                                    std::pair<const char*, bool*>{"cones", &doc.view.showCones}})
+      if (v.contains(key)) {
+        if (!v[key].is_boolean()) throw Error(std::string("view.") + key + " must be true or false");
+        *flag = v[key].get<bool>();
+      }
     doc.view.look = readString(v, "look", "auto");
     if (doc.view.look != "auto" && doc.view.look != "skin" && doc.view.look != "mannequin" && doc.view.look != "plain")
       throw Error("view.look: unknown look '" + doc.view.look + "' (expected auto, skin, mannequin or plain)");
@@ -163,6 +169,8 @@ json toJson(const SceneDocument& doc) {
   for (const auto& [bone, q] : doc.poseRotations) pose[bone] = json::array({q.x, q.y, q.z, q.w});
   root["pose"] = pose;
   root["view"] = {{"skeleton", doc.view.showSkeleton}, {"look", doc.view.look}};
+  if (doc.view.showWeights) root["view"]["weights"] = true;
+  if (doc.view.showCones) root["view"]["cones"] = true;
   if (doc.view.hasCamera)
     root["view"]["camera"] = {{"position", array3(doc.view.cameraPosition)}, {"focus", array3(doc.view.cameraFocus)}};
   root["skinning"] = {{"method", skinningMethodName(doc.skinning)}};

@@ -10,7 +10,7 @@
 //     "motion": {"file": "walk.bvh", "map": "names.txt", "inPlace": false},   (optional)
 //     "animation": {"clip": "walk", "time": 0.5},
 //     "pose": {"upperarm_l": [x, y, z, w], ...},   local rotation edits
-//     "view": {"skeleton": false, "look": "auto", "camera": {"position": [..], "focus": [..]}},
+//     "view": {"skeleton": false, "weights": false, "cones": false, "look": "auto", "camera": {"position": [..], "focus": [..]}},
 //     "skinning": {"method": "lbs" | "dqs" | "cones",    (absent: lbs)
 //                  "helper_bones": bool,                (absent: false)
 //                  "weights": {"regenerate": bool, "smooth": bool, ...}},
@@ -35,6 +35,8 @@ namespace mq {
 
 struct ViewSettings {
   bool showSkeleton = false;
+  bool showWeights = false;  // the selected bone's skin weights as a heat map
+  bool showCones = false;    // the section cones around the limbs
   std::string look = "auto";  // surface look: auto, skin, mannequin or plain
   bool hasCamera = false;
   glm::vec3 cameraPosition{0.0f};

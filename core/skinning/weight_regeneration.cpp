@@ -3,11 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <nlohmann/json.hpp>
 #include <limits>
 #include <numeric>
 #include <queue>
 #include <sstream>
+
+#include <nlohmann/json.hpp>
 
 #include "core/character/character.h"
 #include "core/geometry/surface_segment_query.h"
@@ -16,6 +17,7 @@
 #include "core/mesh/position_weld.h"
 #include "core/skeleton/skeleton.h"
 #include "core/skinning/section_cones.h"
+#include "core/util/memory_budget.h"
 #include "core/util/thread_pool.h"
 
 namespace mq {
@@ -43,6 +45,9 @@ WeldedWeights weldWeights(const Mesh& mesh) {
   WeldedWeights w;
   w.weld = weldByPosition(mesh.positions, mesh.triangles);
   w.joints = int(mesh.skin.jointBones.size());
+  // Dense weights, their Jacobi moves and the blend's distances.
+  checkMemoryBudget("rebuilding the weights of '" + mesh.name + "'",
+                    double(w.weld.vertexCount()) * double(w.joints) * (2 * sizeof(float) + sizeof(double)));
   w.positions.resize(w.weld.vertexCount());
   for (size_t v = 0; v < w.positions.size(); ++v) w.positions[v] = glm::dvec3(mesh.position(w.weld.representative[v]));
   w.weights.assign(w.positions.size() * size_t(w.joints), 0.0f);

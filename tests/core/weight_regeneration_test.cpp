@@ -63,8 +63,12 @@ TEST(WeightRegeneration, TubeSplitsAtTheJointAndBlendsOverItsSection) {
     const float child = weightOf(m.skin, v, 1);
     EXPECT_GE(child, previous) << "the child's weight grows along the tube (y = " << y << ")";
     previous = child;
-    if (y < 1.0 - reach - 0.05) EXPECT_EQ(child, 0.0f) << "y = " << y;
-    if (y > 1.0 + reach + 0.05) EXPECT_EQ(child, 1.0f) << "y = " << y;
+    if (y < 1.0 - reach - 0.05) {
+      EXPECT_EQ(child, 0.0f) << "y = " << y;
+    }
+    if (y > 1.0 + reach + 0.05) {
+      EXPECT_EQ(child, 1.0f) << "y = " << y;
+    }
   }
   EXPECT_NEAR(weightOf(m.skin, 20 * 32, 1), 0.5f, 0.2f);  // the ring at y = 1
   EXPECT_EQ(report.blendedBefore, 0u);

@@ -2,6 +2,8 @@
 // and matches its baseline. Needs X: a private Xvfb starts when none answers.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <vtkActor.h>
 #include <vtkRenderer.h>
 
@@ -80,6 +82,55 @@ TEST_F(SceneViewTest, DefaultMannequinIsVisibleAndCentred) {
   EXPECT_GT(f.min.y, 0.02);
   EXPECT_LT(f.max.y, 0.98);
   EXPECT_GT(f.max.y - f.min.y, 0.6);
+}
+
+TEST_F(SceneViewTest, WeightHeatColoursTheSelectedBonesSkin) {
+  const LoadedScene scene = openScene("default");
+  show(scene.character);
+  render::OffscreenRenderer renderer(view, kWidth, kHeight);
+  const render::RgbImage shaded = renderer.capture();
+  const int forearm = scene.character.skeleton.findBone("forearm_l");
+  ASSERT_GE(forearm, 0);
+  view.setVertexHeat(boneWeights(scene.character, forearm));
+  const render::RgbImage heat = renderer.capture();
+  // Red where the forearm has all the weight, blue on the rest of the body.
+  size_t red = 0, blue = 0;
+  for (int y = 0; y < heat.height; ++y)
+    for (int x = 0; x < heat.width; ++x) {
+      const uint8_t* p = heat.at(x, y);
+      red += p[0] > 120 && p[0] > 2 * p[1] && p[0] > 2 * p[2];
+      blue += p[2] > 90 && p[2] > 2 * p[0] && p[2] > p[1] + 30;
+    }
+  EXPECT_GT(red, 40u);
+  EXPECT_GT(blue, 10 * red);
+  // Cleared: the shaded surface again.
+  view.setVertexHeat({});
+  EXPECT_LT(test::compareImages(renderer.capture(), shaded).rms, 0.5);
+  unsigned char rgb[3];
+  render::heatColor(0.0f, rgb);
+  EXPECT_GT(rgb[2], rgb[0]);
+  render::heatColor(1.0f, rgb);
+  EXPECT_GT(rgb[0], rgb[2]);
+  render::heatColor(std::nanf(""), rgb);  // no value: as 0
+  EXPECT_GT(rgb[2], rgb[0]);
+}
+
+TEST_F(SceneViewTest, SectionConesAreDrawnAroundTheLimbsAndFollowThePose) {
+  const LoadedScene scene = openScene("default");
+  show(scene.character);
+  render::OffscreenRenderer renderer(view, kWidth, kHeight);
+  const render::RgbImage plain = renderer.capture();
+  view.showSectionCones(scene.character);
+  EXPECT_EQ(view.sectionConeCount(), 15);  // the head and each arm, hand, leg, foot and toes: the limbs
+  const render::RgbImage cones = renderer.capture();
+  EXPECT_GT(test::compareImages(plain, cones).changedFraction, 0.01);
+  // Raising the arms moves the arms' cones with them.
+  pose(scene.character, scene.character.findClip("arm_raise"), 1.0f);
+  const render::RgbImage raised = renderer.capture();
+  view.hideSectionCones();
+  EXPECT_EQ(view.sectionConeCount(), 0);
+  const render::RgbImage raisedPlain = renderer.capture();
+  EXPECT_GT(test::compareImages(raised, raisedPlain).changedFraction, 0.01);
 }
 
 TEST_F(SceneViewTest, TestFigureMatchesBaseline) {

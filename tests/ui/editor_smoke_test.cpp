@@ -684,6 +684,44 @@ class EditorSmokeTest : public QObject {
     QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));
   }
 
+  void weightViewFollowsTheSelectedBone() {
+    QAction* action = window_->showWeightsAction();
+    QVERIFY(!action->isChecked());
+    vtkActor* surface = window_->sceneView()->meshActor(0);
+    QVERIFY(surface->GetVisibility());
+    action->trigger();
+    QVERIFY(doc()->viewSettings().showWeights);
+    QVERIFY2(!surface->GetVisibility(), "the weight view did not replace the shaded skin");
+    doc()->selectBone(bone("forearm_l"));
+    QTemporaryDir dir;
+    const QString path = dir.filePath("weights-view.mqscene");
+    QString error;
+    QVERIFY2(window_->saveDocument(path, &error), qPrintable(error));
+    action->trigger();
+    QVERIFY(!doc()->viewSettings().showWeights);
+    QVERIFY(window_->sceneView()->meshActor(0)->GetVisibility());
+    QVERIFY2(window_->openFileNow(path, &error), qPrintable(error));
+    QVERIFY(doc()->viewSettings().showWeights);
+    QVERIFY(action->isChecked());
+    QVERIFY(!window_->sceneView()->meshActor(0)->GetVisibility());
+    QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));
+    QVERIFY(window_->sceneView()->meshActor(0)->GetVisibility());
+  }
+
+  void sectionConesShowAndHide() {
+    QAction* action = window_->showConesAction();
+    QVERIFY(!action->isChecked());
+    QCOMPARE(window_->sceneView()->sectionConeCount(), 0);
+    action->trigger();
+    QVERIFY(doc()->viewSettings().showCones);
+    QCOMPARE(window_->sceneView()->sectionConeCount(), 15);
+    window_->properties()->helperBonesBox()->click();  // rebuilds the scene: the cones come back
+    QCOMPARE(window_->sceneView()->sectionConeCount(), 15);
+    doc()->undoStack()->undo();
+    action->trigger();
+    QCOMPARE(window_->sceneView()->sectionConeCount(), 0);
+  }
+
   void exportWritesTheMesh() {
     QTemporaryDir dir;
     const QString path = dir.filePath("posed.obj");

@@ -273,6 +273,18 @@ void EditorDocument::setLook(const std::string& look) {
   emit viewSettingsChanged();
 }
 
+void EditorDocument::setWeightsVisible(bool visible) {
+  if (scene_.view.showWeights == visible) return;
+  scene_.view.showWeights = visible;
+  emit viewSettingsChanged();
+}
+
+void EditorDocument::setConesVisible(bool visible) {
+  if (scene_.view.showCones == visible) return;
+  scene_.view.showCones = visible;
+  emit viewSettingsChanged();
+}
+
 void EditorDocument::setSkeletonVisible(bool visible) {
   if (scene_.view.showSkeleton == visible) return;
   scene_.view.showSkeleton = visible;

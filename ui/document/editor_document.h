@@ -116,6 +116,10 @@ class EditorDocument : public QObject {
   // View settings stored in the document
   const ViewSettings& viewSettings() const { return scene_.view; }
   void setSkeletonVisible(bool visible);
+  // The selected bone's skin weights drawn as a heat map (saved in the view).
+  void setWeightsVisible(bool visible);
+  // The section cones drawn around the limbs (saved in the view).
+  void setConesVisible(bool visible);
 
   // The scene document as it should be saved now (pose edits by bone name,
   // clip, time and the sections other modules own).
