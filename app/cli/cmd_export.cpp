@@ -1,6 +1,7 @@
-// mannequin-cli export FILE --out OUT.obj|.ply|.gltf|.glb [--clip NAME|INDEX --fps F] [--rigged]
+// mannequin-cli export FILE --out OUT.obj|.ply|.gltf|.glb [--clip NAME|INDEX --fps F | --clip rest] [--rigged]
 // Without --fps: the rest (bind) pose. With --fps: every frame of the clip,
 // one file per frame (OUT_0000.obj, OUT_0001.obj, ...), for other tools.
+// --clip rest: the rest pose with the scene's pose edits.
 // --rigged: one glTF with the skeleton, the skins and every clip.
 #include <cmath>
 #include <cstdio>
@@ -61,8 +62,17 @@ int runExport(const std::vector<std::string>& argv) {
               << withHelperBones(scene.character) << ", " << scene.character.clips.size() << " clips sampled at " << fps << " fps)\n";
     return 0;
   }
+  if (args.option("--clip") == "rest") {
+    // The rest pose with the document's pose edits, as render --clip rest shows it.
+    if (args.has("--fps")) throw Error("--clip rest is one pose: it takes no --fps");
+    PosedCharacter posed;
+    posed.evaluate(scene.character, -1, 0.0f, &scene.edits, &ThreadPool::shared());
+    exportPosedCharacter(scene.character, posed, out);
+    std::cout << "wrote " << out << " (rest pose with " << scene.edits.rotations.size() << " pose edits)\n";
+    return 0;
+  }
   if (!args.has("--fps")) {
-    if (args.has("--clip")) throw Error("--clip needs --fps (export writes one file per frame)");
+    if (args.has("--clip")) throw Error("--clip needs --fps (export writes one file per frame), or is rest");
     PosedCharacter posed;
     posed.evaluate(scene.character, -1, 0.0f, nullptr, &ThreadPool::shared());
     exportPosedCharacter(scene.character, posed, out);
@@ -77,7 +87,7 @@ int runExport(const std::vector<std::string>& argv) {
   return exportSequence(scene, clip, fps, out);
 }
 
-static Registration reg({"export", "FILE --out OUT.obj|.ply|.gltf|.glb [--clip NAME|INDEX --fps F] [--skinning lbs|dqs|cones]\n"
+static Registration reg({"export", "FILE --out OUT.obj|.ply|.gltf|.glb [--clip NAME|INDEX --fps F | --clip rest] [--skinning lbs|dqs|cones]\n"
                          "         [--helper-bones] [--regenerate-weights] [--smooth-weights] [--scale S] [--rigged [--fps F]]",
                          "write the rest pose, or every frame of a clip (OUT_0000.obj ...), as meshes; --rigged: the\n"
                          "skeleton, skins and every clip (sampled at F fps, 30 by default) as one glTF or GLB", runExport});
