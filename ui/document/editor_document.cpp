@@ -34,9 +34,11 @@ void EditorDocument::replace(LoadedDocument loaded) {
   if (fileMaterials_.size() != character_.materials.size()) fileMaterials_ = character_.materials;
   fileSkins_ = std::move(loaded.fileSkins);
   weightReport_ = {};
-  if (fileSkins_.size() != character_.meshes.size()) {
+  if (fileSkins_.size() != character_.meshes.size()) {  // the skins before any helper bones
     fileSkins_.clear();
-    for (const Mesh& mesh : character_.meshes) fileSkins_.push_back(mesh.skin);
+    const bool helpers = character_.skinsBeforeHelpers.size() == character_.meshes.size();
+    for (size_t m = 0; m < character_.meshes.size(); ++m)
+      fileSkins_.push_back(helpers ? character_.skinsBeforeHelpers[m] : character_.meshes[m].skin);
   }
   unsavedSectionChanges_ = false;
   evaluatePose();
