@@ -8,6 +8,7 @@
 
 #include "app/cli/command.h"
 #include "core/scene/open_scene.h"
+#include "core/skinning/weight_regeneration.h"
 #include "core/util/error.h"
 #include "sim/cloth/bake_cache.h"
 
@@ -129,6 +130,8 @@ int runInfo(const std::vector<std::string>& argv) {
       scene.documentPath.empty() ? std::nullopt : describeSavedBake(scene.documentPath);
   if (args.has("--json")) {
     nlohmann::json j = describe(scene.character);
+    // The file's weights, or how the scene rebuilt them.
+    j["weights"] = scene.document.weights.active() ? toJson(scene.document.weights) : nlohmann::json("file");
     if (bake) j["garment_bake"] = *bake;
     std::cout << std::setw(2) << j << "\n";
   } else {
