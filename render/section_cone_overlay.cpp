@@ -73,6 +73,7 @@ struct SectionConeOverlay::Impl {
   vtkRenderer* renderer = nullptr;
   struct Drawn {
     vtkSmartPointer<vtkActor> actor;
+    vtkSmartPointer<vtkMatrix4x4> skinning;  // the actor's user matrix, rewritten per pose
     int bone = -1;
     glm::mat4 inverseBind{1.0f};
   };
@@ -95,7 +96,8 @@ void SectionConeOverlay::build(const Character& character) {
     for (size_t j = 0; j < cones.size(); ++j) {
       const int bone = mesh.skin.jointBones[j];
       if (!cones[j].limb || bone < 0 || bone >= int(helper.size()) || helper[bone]) continue;
-      Impl::Drawn drawn{coneActor(cones[j]), mesh.skin.jointBones[j], mesh.skin.inverseBind[j]};
+      Impl::Drawn drawn{coneActor(cones[j]), vtkSmartPointer<vtkMatrix4x4>::New(), bone, mesh.skin.inverseBind[j]};
+      drawn.actor->SetUserMatrix(drawn.skinning);
       impl_->renderer->AddActor(drawn.actor);
       impl_->cones.push_back(drawn);
     }
@@ -113,10 +115,9 @@ void SectionConeOverlay::update(const std::vector<glm::mat4>& worldFromBone) {
   for (Impl::Drawn& drawn : impl_->cones) {
     if (drawn.bone < 0 || drawn.bone >= int(worldFromBone.size())) continue;
     const glm::mat4 skinning = worldFromBone[drawn.bone] * drawn.inverseBind;
-    vtkNew<vtkMatrix4x4> matrix;
     for (int r = 0; r < 4; ++r)
-      for (int c = 0; c < 4; ++c) matrix->SetElement(r, c, skinning[c][r]);  // glm is column-major
-    drawn.actor->SetUserMatrix(matrix);
+      for (int c = 0; c < 4; ++c) drawn.skinning->SetElement(r, c, skinning[c][r]);  // glm is column-major
+    drawn.actor->Modified();
   }
 }
 

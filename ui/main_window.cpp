@@ -337,6 +337,10 @@ void MainWindow::connectDocument() {
   connect(document_, &EditorDocument::skeletonChanged, this, &MainWindow::showCharacter);
   connect(document_, &EditorDocument::poseChanged, this, &MainWindow::onPoseChanged);
   connect(document_, &EditorDocument::selectionChanged, this, &MainWindow::onSelectionChanged);
+  connect(document_, &EditorDocument::weightsChanged, this, [this] {
+    showWeights();
+    viewport_->requestRender();
+  });
   connect(document_, &EditorDocument::viewSettingsChanged, this, [this] {
     const bool visible = document_->viewSettings().showSkeleton;
     showSkeletonAction_->setChecked(visible);
@@ -395,7 +399,6 @@ void MainWindow::applyLook() {
 
 void MainWindow::onPoseChanged() {
   scene_->updatePose(document_->posed());
-  showWeights();  // regenerated weights come with a pose change
   followCharacter();
   viewport_->requestRender();
 }

@@ -23,10 +23,11 @@ WeightSettings settingsFrom(const Args& args, WeightSettings settings) {
   settings.axialWeight = args.number("--axial-weight", settings.axialWeight);
   settings.transition = args.number("--transition", settings.transition);
   const double passes = args.number("--passes", settings.passes);
-  if (!(settings.axialWeight >= 0.0 && settings.axialWeight <= 100.0))
+  if (!(settings.axialWeight >= 0.0 && settings.axialWeight <= WeightSettings::kMaxAxialWeight))
     throw Error("--axial-weight must be between 0 and 100");
-  if (!(settings.transition >= 0.05 && settings.transition <= 20.0)) throw Error("--transition must be between 0.05 and 20");
-  if (!(passes >= 1.0 && passes <= 10000.0) || passes != static_cast<int>(passes))
+  if (!(settings.transition >= WeightSettings::kMinTransition && settings.transition <= WeightSettings::kMaxTransition))
+    throw Error("--transition must be between 0.05 and 20");
+  if (!(passes >= 1.0 && passes <= WeightSettings::kMaxPasses) || passes != static_cast<int>(passes))
     throw Error("--passes must be a whole number between 1 and 10000");
   settings.passes = static_cast<int>(passes);
   return settings;

@@ -8,8 +8,8 @@
 #include "core/scene/open_scene.h"
 #include "core/skinning/section_cones.h"
 #include "core/skinning/weight_regeneration.h"
-#include "core/util/thread_pool.h"
 #include "core/util/error.h"
+#include "core/util/thread_pool.h"
 #include "core/character/posed_character.h"
 
 namespace mq::cli {

@@ -199,10 +199,6 @@ std::string resolveDocumentPath(const std::string& documentPath, const std::stri
   return (std::filesystem::path(documentPath).parent_path() / p).lexically_normal().string();
 }
 
-}  // namespace mq
-
-namespace mq {
-
 void rebaseDocumentPaths(SceneDocument& document, const std::string& fromPath, const std::string& toPath) {
   const std::filesystem::path folder = std::filesystem::absolute(toPath).parent_path();
   auto rebase = [&](std::string& stored) {

@@ -176,17 +176,22 @@ std::vector<SectionCone> fitSectionCones(const Mesh& mesh, const Skeleton& skele
   return cones;
 }
 
+std::vector<int> skinJointParents(const SkinBinding& skin, const Skeleton& skeleton) {
+  const std::vector<int> jointOf = jointOfBone(skin, skeleton.boneCount());
+  std::vector<int> parentOf(skin.jointBones.size(), -1);
+  for (size_t j = 0; j < parentOf.size(); ++j) {
+    const int bone = skin.jointBones[j];
+    if (bone >= 0 && bone < skeleton.boneCount()) parentOf[j] = parentJoint(skeleton, jointOf, bone);
+  }
+  return parentOf;
+}
+
 std::shared_ptr<const SectionCones> bindSectionCones(const Mesh& mesh, const Skeleton& skeleton) {
   auto out = std::make_shared<SectionCones>();
   const SkinBinding& skin = mesh.skin;
   if (skin.empty()) return out;
-  const std::vector<int> jointOf = jointOfBone(skin, skeleton.boneCount());
   const int joints = int(skin.jointBones.size());
-  std::vector<int> parentOf(joints, -1);
-  for (int j = 0; j < joints; ++j) {
-    const int bone = skin.jointBones[j];
-    if (bone >= 0 && bone < skeleton.boneCount()) parentOf[j] = parentJoint(skeleton, jointOf, bone);
-  }
+  const std::vector<int> parentOf = skinJointParents(skin, skeleton);
   out->cones = fitSectionCones(mesh, skeleton);
 
   const size_t n = mesh.vertexCount();

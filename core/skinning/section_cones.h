@@ -76,6 +76,8 @@ struct SectionCones {
 std::shared_ptr<const SectionCones> bindSectionCones(const Mesh& mesh, const Skeleton& skeleton);
 // The cones alone, one per skin joint (the torso's too, marked not limb).
 std::vector<SectionCone> fitSectionCones(const Mesh& mesh, const Skeleton& skeleton);
+// Each skin joint's nearest ancestor among the skin's joints (-1: none).
+std::vector<int> skinJointParents(const SkinBinding& skin, const Skeleton& skeleton);
 
 
 // Applies the creases to dual-quaternion-skinned positions (and recomputes

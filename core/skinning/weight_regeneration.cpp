@@ -15,7 +15,6 @@
 #include "core/io/json_fields.h"
 #include "core/mesh/mesh.h"
 #include "core/mesh/position_weld.h"
-#include "core/skeleton/skeleton.h"
 #include "core/skinning/section_cones.h"
 #include "core/util/memory_budget.h"
 #include "core/util/thread_pool.h"
@@ -77,9 +76,12 @@ size_t countBlended(const WeldedWeights& w) {
   return blended;
 }
 
-double distanceToSegment(const SectionCone& cone, const glm::dvec3& p) {
-  const double along = std::clamp(glm::dot(p - cone.head, cone.axis), 0.0, cone.length);
-  return glm::length(p - (cone.head + along * cone.axis));
+// A bone with a segment to measure against (a leaf with no vertex of its own has none).
+bool hasSegment(const SectionCone& cone) { return cone.length > 1e-6; }
+
+// The point of the bone's segment nearest to p.
+glm::dvec3 closestOnAxis(const SectionCone& cone, const glm::dvec3& p) {
+  return cone.head + std::clamp(glm::dot(p - cone.head, cone.axis), 0.0, cone.length) * cone.axis;
 }
 
 // Whether a joint's cone describes its limb: fitted, a limb, and with bases
@@ -99,8 +101,8 @@ std::vector<double> cylinderRadii(const std::vector<SectionCone>& cones, const W
     int best = -1;
     double bestDistance = 0.0;
     for (size_t j = 0; j < cones.size(); ++j) {
-      if (cones[j].length <= 1e-6) continue;
-      const double d = distanceToSegment(cones[j], p);
+      if (!hasSegment(cones[j])) continue;
+      const double d = glm::length(p - closestOnAxis(cones[j], p));
       if (best < 0 || d < bestDistance) best = int(j), bestDistance = d;
     }
     if (best >= 0) nearest[best].push_back(bestDistance);
@@ -127,37 +129,24 @@ double rigidScore(const SectionCone& cone, double radius, const glm::dvec3& p, d
   return (radial + axialWeight * beyond) / radius;
 }
 
-// Rigid skinning: one bone per vertex, the best-scored one it sees.
-// Each joint's nearest ancestor among the skin's joints (-1: none).
-std::vector<int> parentJoints(const SkinBinding& skin, const Skeleton& skeleton) {
-  std::vector<int> jointOfBone(skeleton.boneCount(), -1);
-  for (size_t j = 0; j < skin.jointBones.size(); ++j)
-    if (skin.jointBones[j] >= 0 && skin.jointBones[j] < skeleton.boneCount()) jointOfBone[skin.jointBones[j]] = int(j);
-  std::vector<int> parents(skin.jointBones.size(), -1);
-  for (size_t j = 0; j < skin.jointBones.size(); ++j) {
-    const int bone = skin.jointBones[j];
-    if (bone < 0 || bone >= skeleton.boneCount()) continue;
-    for (int b = skeleton.bone(bone).parent; b >= 0 && parents[j] < 0; b = skeleton.bone(b).parent) parents[j] = jointOfBone[b];
-  }
-  return parents;
-}
-
 // Scores compare cylinders of different radii, which moves the border
 // between a thick bone and its thinner child off their joint (the elbow's
 // into the forearm). Across a joint, the side of the plane through it,
 // normal to the child, decides instead.
 int sideOfJoint(int chosen, const glm::dvec3& p, const std::vector<SectionCone>& cones,
                 const std::vector<int>& parents) {
-  for (size_t c = 0; c < cones.size(); ++c)
-    if (parents[c] == chosen && cones[c].length > 1e-6 && glm::dot(p - cones[c].head, cones[c].axis) > 0.0 &&
-        glm::dot(p - cones[c].head, cones[c].axis) < cones[c].length)
-      return int(c);
+  for (size_t c = 0; c < cones.size(); ++c) {
+    if (parents[c] != chosen || !hasSegment(cones[c])) continue;
+    const double along = glm::dot(p - cones[c].head, cones[c].axis);
+    if (along > 0.0 && along < cones[c].length) return int(c);
+  }
   const int parent = parents[chosen];
-  if (parent >= 0 && cones[parent].length > 1e-6 && glm::dot(p - cones[chosen].head, cones[chosen].axis) < 0.0)
+  if (parent >= 0 && hasSegment(cones[parent]) && glm::dot(p - cones[chosen].head, cones[chosen].axis) < 0.0)
     return parent;
   return chosen;
 }
 
+// Rigid skinning: one bone per vertex, the best-scored one it sees.
 void assignRigidly(WeldedWeights& w, const std::vector<SectionCone>& cones, const std::vector<double>& radii,
                    const std::vector<int>& parents, const SurfaceSegmentQuery& surface, double axialWeight,
                    ThreadPool* pool) {
@@ -167,16 +156,14 @@ void assignRigidly(WeldedWeights& w, const std::vector<SectionCone>& cones, cons
       const glm::dvec3& p = w.positions[v];
       scored.clear();
       for (size_t j = 0; j < cones.size(); ++j)
-        if (cones[j].length > 1e-6) scored.emplace_back(rigidScore(cones[j], radii[j], p, axialWeight), int(j));
+        if (hasSegment(cones[j])) scored.emplace_back(rigidScore(cones[j], radii[j], p, axialWeight), int(j));
       float* weights = w.of(v);
       if (scored.empty()) continue;  // no bone with a segment: keep the file's weights
       const size_t tried = std::min<size_t>(kVisibleCandidates, scored.size());
       std::partial_sort(scored.begin(), scored.begin() + tried, scored.end());
       int chosen = scored[0].second;
       for (size_t c = 0; c < tried; ++c) {
-        const SectionCone& cone = cones[scored[c].second];
-        const double along = std::clamp(glm::dot(p - cone.head, cone.axis), 0.0, cone.length);
-        const glm::dvec3 axisPoint = cone.head + along * cone.axis;
+        const glm::dvec3 axisPoint = closestOnAxis(cones[scored[c].second], p);
         if (!surface.hits(p + kInsideStart * (axisPoint - p), axisPoint)) {
           chosen = scored[c].second;
           break;
@@ -384,7 +371,7 @@ WeightReport regenerateMeshWeights(Mesh& mesh, const Skeleton& skeleton, const W
   const std::vector<double> lengths = transitionLengths(cones, radii, settings.transition);
   if (settings.regenerate) {
     const SurfaceSegmentQuery surface(mesh.positions, mesh.triangles);
-    assignRigidly(w, cones, radii, parentJoints(mesh.skin, skeleton), surface, settings.axialWeight, pool);
+    assignRigidly(w, cones, radii, skinJointParents(mesh.skin, skeleton), surface, settings.axialWeight, pool);
     blendRegions(w, edges, lengths);
   }
   if (settings.smooth) {
@@ -420,9 +407,10 @@ WeightSettings weightSettingsFromJson(const nlohmann::json& value, const std::st
   WeightSettings s;
   s.regenerate = f.boolean("regenerate", s.regenerate);
   s.smooth = f.boolean("smooth", s.smooth);
-  s.axialWeight = f.number("axial_weight", float(s.axialWeight), 0.0, 100.0);
-  s.transition = f.number("transition", float(s.transition), 0.05, 20.0);
-  s.passes = int(f.integer("passes", s.passes, 1, 10000));
+  s.axialWeight = f.number("axial_weight", float(s.axialWeight), 0.0, WeightSettings::kMaxAxialWeight);
+  s.transition =
+      f.number("transition", float(s.transition), WeightSettings::kMinTransition, WeightSettings::kMaxTransition);
+  s.passes = int(f.integer("passes", s.passes, 1, WeightSettings::kMaxPasses));
   return s;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // Weight regeneration and smoothing (survey 1.2.5, "Filtrage des poids" and
 // "Régénération des poids"):
-//   - regeneration reduces the skin to rigid skinning first: each vertex
+//   - regeneration reduces the skin to rigid skinning, then blends it: each vertex
 //     goes to the bone with the lowest score: its radial distance to the
 //     bone's cylinder plus `axialWeight` times its distance beyond the
 //     bone's ends, in cylinder radii (the median distance to the bone of the
@@ -13,7 +13,9 @@
 //     The section cones were tried as the cylinders and left: a clavicle's
 //     or a thigh's base cut through the torso makes it reach the shins.
 //     A leaf bone that has no vertex of its own in the file (an end marker)
-//     has no length and gets none.
+//     has no length and gets none. Each bone's weight then fades over
+//     `transition` section radii along the skin on both sides of its
+//     region's border (a smoothstep of the edge-path distance).
 //   - smoothing then bounds how fast a weight may change along the skin: on
 //     every edge (i, j) and bone b, |w_b(i) - w_b(j)| <= |x_i - x_j| / l_b,
 //     where l_b = `transition` * sqrt(a b) of the bone's memorised section at
@@ -41,11 +43,15 @@ class Skeleton;
 class ThreadPool;
 
 struct WeightSettings {
-  bool regenerate = false;  // rigid assignment by cone score first
+  // The ranges a document or the CLI may ask for.
+  static constexpr double kMaxAxialWeight = 100.0, kMinTransition = 0.05, kMaxTransition = 20.0;
+  static constexpr int kMaxPasses = 10000;
+
+  bool regenerate = false;  // rigid assignment by cylinder score, then the blend
   bool smooth = false;      // then the cone-threshold smoothing
-  double axialWeight = 0.5;
-  double transition = 2.0;
-  int passes = 64;
+  double axialWeight = 0.5;  // of the distance past a bone's ends, against the radial
+  double transition = 2.0;   // the blend's and the smoothing's length, in section radii
+  int passes = 64;           // smoothing passes at most
 
   bool active() const { return regenerate || smooth; }
   bool operator==(const WeightSettings& other) const;
@@ -62,7 +68,7 @@ struct WeightReport {
   std::string summary() const;
 };
 
-// Rewrites `mesh.skin` (which must be non-empty) as the settings say.
+// Rewrites `mesh.skin` as the settings say (a mesh without a skin is left).
 WeightReport regenerateMeshWeights(Mesh& mesh, const Skeleton& skeleton, const WeightSettings& settings,
                                    ThreadPool* pool);
 // Every skinned mesh of the character; helper bones come back afterwards.

@@ -137,20 +137,19 @@ std::string EditorDocument::setHelperBones(bool on) {
   return {};
 }
 
-WeightReport EditorDocument::setWeightSettings(const WeightSettings& settings) {
-  if (settings == scene_.weights) return {};
+void EditorDocument::setWeightSettings(const WeightSettings& settings) {
+  if (settings == scene_.weights) return;
   const bool helpers = helperBones();
   if (helpers) removeHelperBones(character_);
   for (size_t m = 0; m < character_.meshes.size(); ++m) character_.meshes[m].skin = fileSkins_[m];
-  const WeightReport report = regenerateWeights(character_, settings, &ThreadPool::shared());
-  weightReport_ = report;
+  weightReport_ = regenerateWeights(character_, settings, &ThreadPool::shared());
   if (helpers) addHelperBones(character_);
   scene_.weights = settings;
   prepareSkinning(character_);
   evaluatePose();
+  emit weightsChanged();
   emit poseChanged();
   emit documentChanged();
-  return report;
 }
 
 void EditorDocument::evaluatePose() {

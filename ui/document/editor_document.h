@@ -89,9 +89,9 @@ class EditorDocument : public QObject {
   bool helperBones() const { return !character_.helperBones.empty(); }
   std::string setHelperBones(bool on);
   // Rebuilt skin weights (weight_regeneration.h), saved in the document;
-  // inactive settings give the file's weights back. Returns the report.
+  // inactive settings give the file's weights back.
   const WeightSettings& weightSettings() const { return scene_.weights; }
-  WeightReport setWeightSettings(const WeightSettings& settings);
+  void setWeightSettings(const WeightSettings& settings);
   // What the last rebuild did (empty for the file's weights).
   const WeightReport& weightReport() const { return weightReport_; }
 
@@ -133,6 +133,7 @@ class EditorDocument : public QObject {
   void characterReplaced();
   void skeletonChanged();  // bones added or removed on the same character (helper bones)
   void poseChanged();  // the posed meshes changed (edit, clip or time)
+  void weightsChanged();  // the skin weights were rebuilt or given back
   void timeChanged(float seconds);
   void clipChanged(int clipIndex);
   void clipsChanged();  // the list of clips changed
