@@ -20,6 +20,7 @@
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QListWidget>
+#include <QMessageBox>
 #include <QMouseEvent>
 #include <QPushButton>
 #include <QSurfaceFormat>
@@ -40,6 +41,7 @@
 #include "ui/document/editor_document.h"
 #include "ui/garment/garment_panel.h"
 #include "ui/garment/garment_tool.h"
+#include "ui/jobs/long_job.h"
 #include "ui/main_window.h"
 #include "test_window.h"
 #include "ui/viewport/vtk_viewport_widget.h"
@@ -869,6 +871,74 @@ class GarmentToolTest : public QObject {
     QVERIFY(!doc()->sceneSections().garments.is_array());
     renderNow();
     keepShot("garment_sheet_colliders");
+  }
+
+  // A bake estimated at minutes asks first. Cancel leaves everything as it
+  // was; "Do not ask again" is remembered; a short bake does not ask.
+  void longBakeAsksFirst() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("big_sheet.mqscene");
+    const nlohmann::json scene = {
+        {"format", "mannequin-scene"}, {"version", 1}, {"character", nullptr},
+        {"cloth", {{"garment", {{"type", "sheet"}, {"columns", 64}, {"rows", 64}, {"width", 0.8}, {"height", 0.8},
+                                {"center", {0.0, 0.6, 0.0}}}},
+                   {"fps", 24}, {"bake_frames", 100000}}}};
+    {
+      QFile file(path);
+      QVERIFY(file.open(QIODevice::WriteOnly));
+      file.write(QByteArray::fromStdString(scene.dump()));
+    }
+    QString error;
+    QVERIFY2(window_->openFileNow(path, &error), qPrintable(error));
+    QVERIFY(tool_->hasSheet());
+    setAskBeforeLongJobs(true);
+
+    // The question, answered as a user would, whenever it shows.
+    QString asked;
+    bool start = false, dontAsk = false;
+    QTimer answer;
+    connect(&answer, &QTimer::timeout, this, [&] {
+      auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+      if (!box || box->objectName() != "longJobQuestion") return;
+      if (asked.isEmpty() && !qEnvironmentVariable("MANNEQUIN_TEST_SHOTS").isEmpty())
+        box->grab().save(qEnvironmentVariable("MANNEQUIN_TEST_SHOTS") + "/long_bake_question.png");
+      asked = box->text();
+      box->checkBox()->setChecked(dontAsk);
+      for (QAbstractButton* button : box->buttons())
+        if ((box->buttonRole(button) == QMessageBox::AcceptRole) == start) button->click();
+    });
+    answer.start(20);
+    QTimer cancelSoon;
+    connect(&cancelSoon, &QTimer::timeout, tool_, [&] {
+      if (tool_->baking()) tool_->cancelBake();
+    });
+
+    panel()->bakeButton()->click();
+    QVERIFY2(asked.contains("100000 frames"), qPrintable(asked));
+    QVERIFY(tool_->lastBakeEstimate() > kLongJobSeconds);
+    QVERIFY(!tool_->baking() && !tool_->hasBake());
+    QCOMPARE(tool_->lastError(), QString("Bake not started"));
+
+    asked.clear();
+    start = dontAsk = true;
+    cancelSoon.start(10);
+    panel()->bakeButton()->click();
+    QVERIFY(!asked.isEmpty());
+    QCOMPARE(tool_->lastError(), QString("Bake cancelled"));
+    QVERIFY(!askBeforeLongJobs());
+
+    asked.clear();
+    panel()->bakeButton()->click();  // not asked again
+    QVERIFY(asked.isEmpty());
+    QCOMPARE(tool_->lastError(), QString("Bake cancelled"));
+    cancelSoon.stop();
+
+    setAskBeforeLongJobs(true);
+    tool_->setBakeFrames(3);
+    panel()->bakeButton()->click();
+    QVERIFY(asked.isEmpty());
+    QVERIFY2(tool_->hasBake(), qPrintable(tool_->lastError()));
+    QCOMPARE(tool_->bakedFrameCount(), 3);
   }
 };
 

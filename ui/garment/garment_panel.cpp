@@ -239,7 +239,7 @@ GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent)
   connect(simulate_, &QPushButton::toggled, this, [this](bool on) {
     if (!refreshing_) tool_->setSimulating(on);
   });
-  connect(bake_, &QPushButton::clicked, this, [this] { tool_->bake(); });
+  connect(bake_, &QPushButton::clicked, this, [this] { tool_->bake(-1.0f, -1.0f, /*askIfLong=*/true); });
   connect(clearBake_, &QPushButton::clicked, this, [this] { tool_->clearBake(); });
   connect(resetDrapes_, &QPushButton::clicked, this, [this] { tool_->resetDrapes(); });
   auto* exportMenu = new QMenu(exportBake_);

@@ -47,15 +47,13 @@
 #include "ui/garment/garment_edit_command.h"
 #include "ui/garment/garment_panel.h"
 #include "ui/garment/held_drape.h"
+#include "ui/jobs/long_job.h"
 #include "ui/main_window.h"
 #include "ui/viewport/vtk_viewport_widget.h"
 
 namespace mq::ui {
 
 namespace {
-
-// For the bake's memory estimate, made before the garments are meshed.
-constexpr double kTypicalGarmentVertices = 10000.0;
 
 std::unique_ptr<cloth::GarmentSimulation> makeSimulation(const GarmentScene& scene, size_t garment,
                                                          const std::vector<float>& body,
@@ -1203,10 +1201,20 @@ bool bakeFrames(std::vector<GarmentTool::BakeGarment>& garments, const std::vect
   return true;
 }
 
+// A bake's work: each garment's vertices stepped while it settles, then
+// through every frame (and the layers' settling).
+double bakeVertexSteps(const std::vector<GarmentTool::BakeGarment>& garments, int frames, float fps) {
+  double steps = 0.0;
+  const int layerSettle = garments.size() > 1 ? int(std::ceil(kLayerSettleSeconds * fps)) : 0;
+  for (const GarmentTool::BakeGarment& g : garments)
+    steps += double(g.simulation->vertexCount()) * (g.settleSteps + layerSettle + frames);
+  return steps;
+}
+
 }  // namespace
 
 // The states reached are kept for the next bake or run.
-bool GarmentTool::bake(float from, float to) {
+bool GarmentTool::bake(float from, float to, bool askIfLong) {
   if (baking_) return false;
   // A bake runs for minutes: keep the unsaved work first.
   if (Autosave* autosave = window_->autosave()) autosave->saveNow();
@@ -1233,10 +1241,13 @@ bool GarmentTool::bake(float from, float to) {
   const int frames =
       withoutClip ? scene_.cloth.bakeFrames : std::max(1, int(std::floor((end - start) * fps + 1e-3f)) + 1);
 
-  // Every frame of the body is kept for the worker, and of each garment for the bake.
+  // Every frame of the body is kept for the worker, and of each garment for
+  // the bake (its positions and stretch).
+  double clothVertices = 0.0;
+  for (const View* view : simulatedViews()) clothVertices += view->mesh.positions.size() / 3.0;
   try {
     checkMemoryBudget("a bake of " + std::to_string(frames) + " frames",
-                      12.0 * frames * double(document->character().vertexCount() + 4 * kTypicalGarmentVertices));
+                      frames * (12.0 * document->character().vertexCount() + 16.0 * clothVertices));
   } catch (const Error& e) {
     lastError_ = QString::fromStdString(e.what());
     keepPreviousBake();
@@ -1245,10 +1256,11 @@ bool GarmentTool::bake(float from, float to) {
   // The body at every frame, posed here (the worker only simulates); none without a character.
   std::vector<std::vector<float>> bodies(frames);
   PosedCharacter posed;
-  for (int f = 0; f < frames && !withoutClip; ++f) {
+  auto poseFrame = [&](int f) {
     posed.evaluate(document->character(), clip, start + f / fps, &document->poseEdits(), &ThreadPool::shared());
     bodies[f] = concatenatedPositions(posed.meshes());
-  }
+  };
+  if (!withoutClip) poseFrame(0);
   std::vector<BakeGarment> garments;
   try {
     garments = withoutClip ? prepareBakeWithoutClip() : prepareBake(bodies[0], fps);
@@ -1257,6 +1269,15 @@ bool GarmentTool::bake(float from, float to) {
     keepPreviousBake();
     return false;
   }
+  const double vertexSteps = bakeVertexSteps(garments, frames, fps);
+  lastBakeEstimate_ = bakeRate_.seconds(vertexSteps);
+  const QString what = tr("Baking %1 frames of %2 cloth vertices").arg(frames).arg(std::llround(clothVertices));
+  if (askIfLong && !confirmLongJob(window_, what, lastBakeEstimate_)) {
+    keepPreviousBake();
+    lastError_ = tr("Bake not started");
+    return false;
+  }
+  for (int f = 1; f < frames && !withoutClip; ++f) poseFrame(f);
 
   int total = 0;
   std::vector<int> base;  // progress before each garment
@@ -1346,6 +1367,7 @@ bool GarmentTool::bake(float from, float to) {
   bake_ = std::move(result);
   bakeOutOfDate_.clear();
   lastBakeSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  bakeRate_.measured(vertexSteps, clock.seconds[0] + clock.seconds[1] + clock.seconds[2]);
   for (int phase = 0; phase < 3; ++phase) lastBakePhases_[phase] = clock.seconds[phase];
   window_->hideProgress(tr("Garments baked: %1 frames in %2 s (sewing %3 s, draping %4 s, frames %5 s)")
                             .arg(frames)

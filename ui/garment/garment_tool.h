@@ -58,6 +58,7 @@
 #include "sim/garment/garment_simulation.h"
 #include "ui/garment/garment_scene.h"
 #include "ui/garment/held_drape.h"
+#include "ui/jobs/long_job.h"
 
 class QDockWidget;
 class QMouseEvent;
@@ -176,7 +177,11 @@ class GarmentTool : public QObject {
   // Bake: simulates the current clip (or its part from `from` to `to`
   // seconds, when given), or with no character bake_frames from the placed
   // cloth; false when cancelled or impossible (lastError says why).
-  bool bake(float from = -1.0f, float to = -1.0f);
+  // With `askIfLong`, a bake estimated at over a minute (ui/jobs/long_job.h)
+  // first asks the user; refused, it does not start (false, lastError()).
+  bool bake(float from = -1.0f, float to = -1.0f, bool askIfLong = false);
+  // The seconds the last bake that got as far as its estimate was expected to take.
+  double lastBakeEstimate() const { return lastBakeEstimate_; }
   void cancelBake() { cancelBake_ = true; }
   bool baking() const { return baking_; }
   bool hasBake() const { return bake_ != nullptr; }
@@ -292,6 +297,11 @@ class GarmentTool : public QObject {
   DrapeMemory drapes_;  // the drapes of recent garment states, for undo
   int sewingRuns_ = 0, reusedSewings_ = 0, warmStarts_ = 0;
   double lastBakeSeconds_ = 0.0;
+  double lastBakeEstimate_ = 0.0;
+  // Seconds per garment vertex stepped once: before the first bake, the
+  // outfit's figure (`simulate garment_outfit_walk.json`) on a 2-core machine.
+  static constexpr double kPriorSecondsPerVertexStep = 2e-5;
+  JobRate bakeRate_{kPriorSecondsPerVertexStep};
   double lastBakePhases_[3] = {0.0, 0.0, 0.0};
 
   // Live simulation
