@@ -2,18 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 
 #include <vtkActor.h>
-#include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
-#include <vtkLight.h>
-#include <vtkLightCollection.h>
-#include <vtkMatrix4x4.h>
-#include <vtkObjectFactory.h>
-#include <vtkOpenGLPolyDataMapper.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -25,12 +18,11 @@
 #include <vtkUnsignedCharArray.h>
 
 #include "core/mesh/mesh.h"
+#include "render/surface_mapper.h"
 
 namespace mq::render {
 
 namespace {
-
-constexpr int kMaxLights = 4;
 
 // ---- Shader replacements ----
 
@@ -78,8 +70,8 @@ const char* kFragmentImpl = R"(//VTK::Light::Impl
 #endif
     float NV = max(dot(N, V), 0.05);
     vec3 color = clothAmbient * base;
-    for (int i = 0; i < clothLightCount; ++i) {
-      vec3 L = clothLightDirVC[i];
+    for (int i = 0; i < mqLightCount; ++i) {
+      vec3 L = mqLightDirVC[i];
       float NL = dot(N, L);
       if (NL <= 0.0) continue;
       vec3 lit;
@@ -97,62 +89,13 @@ const char* kFragmentImpl = R"(//VTK::Light::Impl
         float sheen = D / (4.0 * (NL + NV - NL * NV));
         lit = base * NL + 3.14159265 * clothSheen * sheen * NL * clothSheenColor;
       }
-      color += clothLightColor[i] * lit;
+      color += mqLightColour[i] * lit;
     }
     gl_FragData[0] = vec4(color, 1.0);
   }
 )";
 
-// ---- Lights (as the hair shader reads them: directions toward each light in
-// view coordinates, colours times intensities) ----
-
-struct LightSet {
-  int count = 0;
-  float directionVC[kMaxLights][3] = {};
-  float color[kMaxLights][3] = {};
-};
-
-glm::vec3 toGlm(const double v[3]) { return {float(v[0]), float(v[1]), float(v[2])}; }
-
-LightSet gatherLights(vtkRenderer* renderer) {
-  LightSet set;
-  vtkMatrix4x4* view = renderer->GetActiveCamera()->GetViewTransformMatrix();
-  glm::mat3 viewFromWorld(1.0f);
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) viewFromWorld[c][r] = float(view->GetElement(r, c));
-  vtkLightCollection* lights = renderer->GetLights();
-  lights->InitTraversal();
-  while (vtkLight* light = lights->GetNextItem()) {
-    if (!light->GetSwitch() || set.count >= kMaxLights) continue;
-    glm::vec3 toward;
-    if (light->LightTypeIsHeadlight()) toward = {0.0f, 0.0f, 1.0f};
-    else if (light->LightTypeIsCameraLight()) toward = toGlm(light->GetPosition()) - toGlm(light->GetFocalPoint());
-    else toward = viewFromWorld * (toGlm(light->GetPosition()) - toGlm(light->GetFocalPoint()));
-    if (glm::length(toward) < 1e-9f) continue;
-    toward = glm::normalize(toward);
-    glm::vec3 color = toGlm(light->GetDiffuseColor()) * float(light->GetIntensity());
-    for (int k = 0; k < 3; ++k) set.directionVC[set.count][k] = toward[k], set.color[set.count][k] = color[k];
-    ++set.count;
-  }
-  return set;
-}
-
 }  // namespace
-
-// ---- The mapper: the lights into uniforms before each render ----
-
-class ClothMapper : public vtkOpenGLPolyDataMapper {
- public:
-  static ClothMapper* New();
-  vtkTypeMacro(ClothMapper, vtkOpenGLPolyDataMapper);
-  std::function<void(vtkRenderer*)> beforeRender;
-
-  void RenderPiece(vtkRenderer* renderer, vtkActor* actor) override {
-    if (beforeRender) beforeRender(renderer);
-    vtkOpenGLPolyDataMapper::RenderPiece(renderer, actor);
-  }
-};
-vtkStandardNewMacro(ClothMapper);
 
 // ---- ClothShading presets ----
 
@@ -194,7 +137,7 @@ struct ClothActor::Impl {
   vtkNew<vtkPolyData> polyData;
   vtkNew<vtkPoints> points;
   vtkNew<vtkFloatArray> normals, uvs;
-  vtkNew<ClothMapper> mapper;
+  vtkNew<SurfaceMapper> mapper;
   vtkNew<vtkActor> actor;
   vtkNew<vtkTexture> print;
   std::vector<uint32_t> triangles;
@@ -217,13 +160,6 @@ ClothActor::Impl::Impl() {
   mapper->SetInputData(polyData);
   mapper->ScalarVisibilityOff();
   mapper->MapDataArrayToVertexAttribute("clothUVMC", "clothUV", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
-  mapper->beforeRender = [this](vtkRenderer* renderer) {
-    const LightSet lights = gatherLights(renderer);
-    vtkUniforms* u = actor->GetShaderProperty()->GetFragmentCustomUniforms();
-    u->SetUniformi("clothLightCount", lights.count);
-    u->SetUniform3fv("clothLightDirVC", kMaxLights, lights.directionVC);
-    u->SetUniform3fv("clothLightColor", kMaxLights, lights.color);
-  };
   print->InterpolateOn();
   print->RepeatOn();
   print->MipmapOn();
@@ -264,10 +200,7 @@ void ClothActor::Impl::updateUniforms() {
   u->SetUniformf("clothRibSpacing", std::max(shading.ribSpacing, 1e-4f));
   u->SetUniformf("clothRibDepth", shading.ribDepth);
   u->SetUniformf("clothPrintRepeat", shading.printRepeatPerMetre);
-  const float zeros[kMaxLights][3] = {};
-  u->SetUniformi("clothLightCount", 0);
-  u->SetUniform3fv("clothLightDirVC", kMaxLights, zeros);
-  u->SetUniform3fv("clothLightColor", kMaxLights, zeros);
+  declareViewLightUniforms(u);
 }
 
 ClothActor::ClothActor() : impl_(std::make_unique<Impl>()) {}

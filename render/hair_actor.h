@@ -8,12 +8,8 @@
 //    (optional);
 //  - colour blended from root to tip with a small per-strand variation;
 //  - transparency at the tips (screen-door, so it needs no sorting);
-//  - self-shadowing: a per-vertex term computed on the CPU, light falling off
-//    exponentially with the hair between a vertex and the key light, counted
-//    either exactly per light-aligned column (deep-opacity style, the
-//    default) or with opacity shadow maps (Kim and Neumann 2001: a stack of
-//    opacity maps at regular depths along the light, each holding the hair
-//    in front of it, interpolated between the two maps around a vertex).
+//  - self-shadowing: a per-vertex term computed on the CPU
+//    (core/optics/hair_self_shadow.h) for the view's key light.
 // Tangents and the shadow term are custom vertex attributes; the scene's
 // lights (camera, head or scene lights) are read every frame.
 //
@@ -49,16 +45,14 @@
 
 #include "core/hair/hairstyle.h"
 #include "core/hair/strands.h"
+#include "core/optics/hair_self_shadow.h"
 
 class vtkActor;
 class vtkRenderer;
 
 namespace mq::render {
 
-enum class HairShadowMethod {
-  PointCount,   // exact: the points ahead of each vertex in its light column
-  OpacityMaps,  // opacity shadow maps: opacityMapCount slices, linear in depth
-};
+using HairShadowMethod = optics::HairShadowMethod;  // core/optics/hair_self_shadow.h
 
 struct HairShading {
   glm::vec3 rootColor{0.10f, 0.06f, 0.035f};
@@ -83,6 +77,10 @@ struct HairShading {
   int opacityMapCount = 32;          // OpacityMaps: slices from the hair's front to its back
   HairShadingParams fibre;           // the model; pigments and roughness for Physical
   unsigned physicalLobes = 31u;      // Physical: R 1, TT 2, TRT 4, residual 8, volume 16 (pictures of one lobe)
+
+  optics::HairShadowSettings shadowSettings() const {
+    return {shadowMethod, shadowPerStrand, shadowCellSize, minShadow, opacityMapCount};
+  }
 };
 
 // The arrays for one set of strands (points, lines, tangents, volume normals,
@@ -149,15 +147,6 @@ class HairActor {
   void setShading(const HairShading& shading);
   const HairShading& shading() const;
   void setVisible(bool visible);
-
-  // The per-vertex shadow term (1 lit .. minShadow) for a light coming from
-  // `towardLight` (world), as the actor uses it; exposed for tests.
-  // Uses shading.shadowMethod.
-  static std::vector<float> computeSelfShadow(const Strands& strands, const glm::vec3& towardLight,
-                                              const HairShading& shading);
-  // The OpacityMaps method alone (same units and floor as the exact count).
-  static std::vector<float> computeOpacityMapShadow(const Strands& strands, const glm::vec3& towardLight,
-                                                    const HairShading& shading);
 
  private:
   struct Impl;

@@ -29,14 +29,6 @@ void setUniform3(vtkUniforms* u, const char* name, const glm::vec3& v) {
   u->SetUniform3f(name, values);
 }
 
-void declareViewLightUniforms(vtkUniforms* u) {
-  const ViewLights none;
-  u->SetUniformi("mqLightCount", 0);
-  u->SetUniform3fv("mqLightDirVC", ViewLights::kMax, none.towardLightVC);
-  u->SetUniform3fv("mqLightColour", ViewLights::kMax, none.colour);
-  u->SetUniform3f("mqUpVC", none.upVC);
-}
-
 vtkStandardNewMacro(SurfaceMapper);
 
 float pixelAngle(vtkRenderer* renderer) {
@@ -53,12 +45,8 @@ void SurfaceMapper::setSamplers(std::vector<std::pair<std::string, vtkSmartPoint
 }
 
 void SurfaceMapper::RenderPiece(vtkRenderer* renderer, vtkActor* actor) {
-  const ViewLights lights = gatherViewLights(renderer);
   vtkUniforms* u = actor->GetShaderProperty()->GetFragmentCustomUniforms();
-  u->SetUniformi("mqLightCount", lights.count);
-  u->SetUniform3fv("mqLightDirVC", ViewLights::kMax, lights.towardLightVC);
-  u->SetUniform3fv("mqLightColour", ViewLights::kMax, lights.colour);
-  u->SetUniform3f("mqUpVC", lights.upVC);
+  setViewLightUniforms(u, gatherViewLights(renderer));
   if (!samplers_.empty()) u->SetUniformf("mqPixelAngle", pixelAngle(renderer));
   for (auto& [name, texture] : samplers_) texture->Render(renderer);  // loads once, then activates a unit
   vtkOpenGLPolyDataMapper::RenderPiece(renderer, actor);

@@ -1,8 +1,8 @@
 #pragma once
-// The polydata mapper of the character's surfaces: feeds the view's lights to
-// the surface shaders each frame and binds extra textures (the skin's
-// pre-integrated table, its albedo map) to sampler uniforms the shader
-// replacements declare themselves. VTK 9.1 binds only the property's own
+// The polydata mapper of the character's surfaces and the cloth: feeds the
+// view's lights (view_lights.h) to their shaders each frame, and binds extra
+// textures (the skin's pre-integrated table, its albedo map) to sampler
+// uniforms the shader replacements declare themselves. VTK 9.1 binds only the property's own
 // textures; these ride along through RenderPiece (activate, draw,
 // deactivate) and SetMapperShaderParameters (the sampler's texture unit).
 // With samplers bound it also sets mqPixelAngle (pixelAngle below).
@@ -14,6 +14,8 @@
 #include <glm/glm.hpp>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkSmartPointer.h>
+
+#include "render/view_lights.h"
 
 class vtkRenderer;
 class vtkTexture;
@@ -27,9 +29,6 @@ float pixelAngle(vtkRenderer* renderer);
 
 // Shared by the surface shaders (the mannequin's wood, the skin).
 void setUniform3(vtkUniforms* u, const char* name, const glm::vec3& v);
-// Declares the uniforms the mapper feeds each frame (the view's lights), so
-// that the first shader compiles with them.
-void declareViewLightUniforms(vtkUniforms* u);
 // GLSL ending a surface shader's light replacement: the survey's rim term,
 // (1 - N.V)^k times the light from behind (rimLight), then exposure and
 // sRGB encoding of `colour`. Reads mqRim, mqRimPower, mqExposure, NdV,

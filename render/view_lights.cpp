@@ -1,10 +1,13 @@
 #include "render/view_lights.h"
 
+#include <algorithm>
+
 #include <vtkCamera.h>
 #include <vtkLight.h>
 #include <vtkLightCollection.h>
 #include <vtkMatrix4x4.h>
 #include <vtkRenderer.h>
+#include <vtkUniforms.h>
 
 namespace mq::render {
 namespace {
@@ -23,8 +26,10 @@ ViewLights gatherViewLights(vtkRenderer* renderer) {
   glm::mat3 viewFromWorld(1.0f);
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) viewFromWorld[c][r] = float(view->GetElement(r, c));
+  const glm::mat3 worldFromView = glm::transpose(viewFromWorld);
   store(glm::normalize(viewFromWorld * glm::vec3(0.0f, 1.0f, 0.0f)), set.upVC);
 
+  float strongestKey = -1.0f;
   vtkLightCollection* lights = renderer->GetLights();
   lights->InitTraversal();
   while (vtkLight* light = lights->GetNextItem()) {
@@ -37,11 +42,25 @@ ViewLights gatherViewLights(vtkRenderer* renderer) {
     else
       toward = viewFromWorld * (toGlm(light->GetPosition()) - toGlm(light->GetFocalPoint()));
     if (glm::length(toward) < 1e-9f) continue;
-    store(glm::normalize(toward), set.towardLightVC[set.count]);
-    store(toGlm(light->GetDiffuseColor()) * float(light->GetIntensity()), set.colour[set.count]);
+    toward = glm::normalize(toward);
+    const float intensity = float(light->GetIntensity());
+    store(toward, set.towardLightVC[set.count]);
+    store(toGlm(light->GetDiffuseColor()) * intensity, set.colour[set.count]);
     ++set.count;
+    const float keyScore = intensity * (0.2f + std::max(toward.z, 0.0f));
+    if (keyScore > strongestKey) {
+      strongestKey = keyScore;
+      set.keyTowardLightWorld = glm::normalize(worldFromView * toward);
+    }
   }
   return set;
+}
+
+void setViewLightUniforms(vtkUniforms* u, const ViewLights& lights) {
+  u->SetUniformi("mqLightCount", lights.count);
+  u->SetUniform3fv("mqLightDirVC", ViewLights::kMax, lights.towardLightVC);
+  u->SetUniform3fv("mqLightColour", ViewLights::kMax, lights.colour);
+  u->SetUniform3f("mqUpVC", lights.upVC);
 }
 
 }  // namespace mq::render

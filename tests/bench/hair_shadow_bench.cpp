@@ -5,7 +5,7 @@
 
 #include "core/character/default_mannequin.h"
 #include "core/hair/character_groom.h"
-#include "render/hair_actor.h"
+#include "core/optics/hair_self_shadow.h"
 
 namespace {
 
@@ -22,13 +22,13 @@ const mq::Strands& groomedStrands() {
 // arg 0: exact count; n > 0: n opacity maps.
 void BM_HairSelfShadow(benchmark::State& state) {
   const mq::Strands& strands = groomedStrands();
-  mq::render::HairShading shading;
+  mq::optics::HairShadowSettings settings;
   if (state.range(0) > 0) {
-    shading.shadowMethod = mq::render::HairShadowMethod::OpacityMaps;
-    shading.opacityMapCount = int(state.range(0));
+    settings.method = mq::optics::HairShadowMethod::OpacityMaps;
+    settings.opacityMapCount = int(state.range(0));
   }
   const glm::vec3 light = glm::normalize(glm::vec3(0.4f, 1.0f, 0.6f));
-  for (auto _ : state) benchmark::DoNotOptimize(mq::render::HairActor::computeSelfShadow(strands, light, shading));
+  for (auto _ : state) benchmark::DoNotOptimize(mq::optics::hairSelfShadow(strands, light, settings));
   state.counters["points"] = double(strands.points.size() / 3);
 }
 BENCHMARK(BM_HairSelfShadow)->Arg(0)->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMillisecond);

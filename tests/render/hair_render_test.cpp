@@ -22,6 +22,7 @@
 #include "core/hair/head_fit.h"
 #include "core/io/character_import.h"
 #include "core/optics/hair_bsdf.h"
+#include "core/hair_test_util.h"
 #include "render/hair_actor.h"
 #include "render/image_checks.h"
 #include "render/offscreen.h"
@@ -31,43 +32,9 @@ namespace mq {
 namespace {
 
 constexpr int kWidth = 320, kHeight = 320;
-const glm::vec3 kHeadCenter(0.0f, 1.6f, 0.0f);
-constexpr float kHeadRadius = 0.1f;
-
-// A synthetic groom: roots on the top and back of a sphere; each strand
-// combs down over the sphere (gravity projected on the tangent plane, a
-// little further out per strand for volume) and falls straight below it.
-Strands combedStrands(int count, int points, float length) {
-  Strands strands;
-  strands.pointsPerStrand = points;
-  std::mt19937 rng(12111);
-  std::uniform_real_distribution<float> uniform(-1.0f, 1.0f);
-  const glm::vec3 down(0.0f, -1.0f, 0.0f);
-  while (int(strands.strandCount()) < count) {
-    glm::vec3 n(uniform(rng), uniform(rng), uniform(rng));
-    const float len = glm::length(n);
-    if (len > 1.0f || len < 0.1f) continue;
-    n /= len;
-    if (n.y < 0.1f && !(n.z < -0.3f && n.y > -0.5f)) continue;  // scalp: top and back
-    if (n.z > 0.45f && n.y < 0.8f) continue;                    // keep the face clear
-    const float lift = kHeadRadius * (0.02f + 0.12f * (0.5f + 0.5f * uniform(rng)));
-    const float segment = length * (0.9f + 0.1f * uniform(rng)) / float(points - 1);
-    const glm::vec3 wander = 0.15f * glm::vec3(uniform(rng), 0.0f, uniform(rng));
-    glm::vec3 p = kHeadCenter + n * (kHeadRadius * 1.01f);
-    for (int i = 0; i < points; ++i) {
-      strands.points.insert(strands.points.end(), {p.x, p.y, p.z});
-      const glm::vec3 out = glm::normalize(p - kHeadCenter);
-      const float radius = kHeadRadius + lift * std::min(1.0f, 3.0f * float(i) / float(points));
-      glm::vec3 along = down - glm::dot(down, out) * out;  // comb over the sphere
-      if (p.y < kHeadCenter.y - 0.02f || glm::length(along) < 0.2f) along = down + wander;
-      p += segment * glm::normalize(along);
-      const glm::vec3 d = p - kHeadCenter;
-      if (glm::length(d) < radius) p = kHeadCenter + glm::normalize(d) * radius;  // stay outside, with volume
-    }
-    strands.rootNormals.insert(strands.rootNormals.end(), {n.x, n.y, n.z});
-  }
-  return strands;
-}
+using test::kHeadCenter;
+using test::kHeadRadius;
+using test::combedStrands;
 
 class HairRenderTest : public ::testing::Test {
  protected:
@@ -298,68 +265,6 @@ TEST(HairRenderDefault, DefaultMannequinWithDefaultHairstyle) {
     const std::string why = test::checkAgainstBaseline(image, std::string("hair_default_") + name);
     EXPECT_TRUE(why.empty()) << why;
   }
-}
-
-// A slab of parallel horizontal strands stacked along y, lit from above: the
-// top layer is lit, each layer below gets less light; lit from below, the
-// order reverses. Both self-shadowing methods must behave so.
-void expectSlabDarkensWithDepth(render::HairShadowMethod method) {
-  Strands strands;
-  strands.pointsPerStrand = 16;
-  for (int layer = 0; layer < 10; ++layer)
-    for (int row = 0; row < 20; ++row)
-      for (int i = 0; i < 16; ++i)
-        strands.points.insert(strands.points.end(),
-                              {0.01f * float(i), -0.005f * float(layer), 0.002f * float(row)});
-  render::HairShading shading;
-  shading.minShadow = 0.0f;
-  shading.shadowPerStrand = 0.04f;  // weak, so the deepest layers do not all saturate near 0
-  shading.shadowMethod = method;
-  const std::vector<float> shadow = render::HairActor::computeSelfShadow(strands, {0.0f, 1.0f, 0.0f}, shading);
-  auto layerMean = [&](int layer) {
-    double sum = 0.0;
-    for (int row = 0; row < 20; ++row)
-      for (int i = 2; i < 14; ++i) sum += shadow[(layer * 20 + row) * 16 + i];
-    return sum / (20 * 12);
-  };
-  EXPECT_GT(layerMean(0), 0.95);
-  for (int layer = 1; layer < 10; ++layer) EXPECT_LT(layerMean(layer), layerMean(layer - 1) - 0.02) << layer;
-  EXPECT_LT(layerMean(9), 0.5);
-  const std::vector<float> fromBelow = render::HairActor::computeSelfShadow(strands, {0.0f, -1.0f, 0.0f}, shading);
-  EXPECT_GT(fromBelow[(9 * 20 + 10) * 16 + 8], 0.95f);
-  EXPECT_LT(fromBelow[(0 * 20 + 10) * 16 + 8], 0.5f);
-}
-
-TEST(HairSelfShadow, DarkensWithDepthIntoTheHair) { expectSlabDarkensWithDepth(render::HairShadowMethod::PointCount); }
-
-// Opacity shadow maps: the same layered slab, the same darkening with depth.
-TEST(HairSelfShadow, OpacityMapsDarkenWithDepthLikeTheExactCount) {
-  expectSlabDarkensWithDepth(render::HairShadowMethod::OpacityMaps);
-}
-
-// On a real groom the maps approach the exact count, closer with more maps.
-TEST(HairSelfShadow, OpacityMapsConvergeToTheExactCount) {
-  const Strands strands = combedStrands(6000, 24, 0.3f);
-  const glm::vec3 light = glm::normalize(glm::vec3(0.3f, 1.0f, 0.4f));
-  render::HairShading exact;
-  const std::vector<float> reference = render::HairActor::computeSelfShadow(strands, light, exact);
-  auto meanError = [&](int maps) {
-    render::HairShading osm = exact;
-    osm.shadowMethod = render::HairShadowMethod::OpacityMaps;
-    osm.opacityMapCount = maps;
-    const std::vector<float> s = render::HairActor::computeSelfShadow(strands, light, osm);
-    double sum = 0.0;
-    for (size_t k = 0; k < s.size(); ++k) sum += std::abs(s[k] - reference[k]);
-    return sum / double(s.size());
-  };
-  double spread = 0.0;  // how much the exact term varies: the errors must be small against it
-  double mean = 0.0;
-  for (float r : reference) mean += r / double(reference.size());
-  for (float r : reference) spread += std::abs(r - mean) / double(reference.size());
-  ASSERT_GT(spread, 0.05);
-  const double coarse = meanError(4), fine = meanError(64);
-  EXPECT_LT(fine, 0.25 * spread);
-  EXPECT_LT(fine, coarse);
 }
 
 TEST_F(HairRenderTest, OpacityShadowMapsShadeInnerStrands) {
