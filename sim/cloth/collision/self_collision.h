@@ -94,13 +94,22 @@ class SelfCollision {
     glm::vec2 params;    // closest points at x0
     glm::vec3 normal0;   // direction from edge 1 to edge 0 at x0
   };
+  // The candidate search, as stages (self_collision.cpp lists them; each is
+  // in its file under self_collision/). Step: one step's shared state.
+  struct Step;
   void findCandidates(const ClothState& s, const std::vector<glm::vec3>& x0, float thickness);
+  void measureMoves(Step& step) const;                  // element_boxes.cpp
+  void findElementBoxes(Step& step) const;              // element_boxes.cpp
+  void updateTrees(Step& step);                         // tree_update.cpp
+  void findConnectedPatches();                          // tree_update.cpp, after a build
+  void findVertexPlaces();                              // tree_update.cpp
+  void findVertexGroups();                              // tree_update.cpp
+  void findMotionBounds(Step& step);                    // motion_bounds.cpp
+  void findFlatPatches(const ClothState& s, const std::vector<glm::vec3>& x0);  // flat_patches.cpp
+  void findVertexTriangleCandidates(const Step& step);  // vertex_triangle_candidates.cpp
+  void findEdgeEdgeCandidates(const Step& step);        // edge_edge_candidates.cpp
   int applyVertexTriangle(ClothState& s, const VertexTriangle& c, float thickness) const;
   int applyEdgeEdge(ClothState& s, const EdgeEdge& c, float thickness) const;
-  void findConnectedPatches();
-  void findVertexPlaces();
-  void findVertexGroups();
-  void findFlatPatches(const ClothState& s, const std::vector<glm::vec3>& x0);
 
   std::vector<uint32_t> triangles_;
   std::vector<std::pair<uint32_t, uint32_t>> edges_;
