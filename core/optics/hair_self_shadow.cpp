@@ -23,6 +23,32 @@ LightFrame lightFrame(const glm::vec3& towardLight) {
   return {u, glm::cross(w, u), w};
 }
 
+// The strand points in the light's frame: (u, v) across its rays and z the
+// depth along it (`depthSign` +1: toward the light; -1: away from it), their
+// bounds, and the strands' mean segment length.
+struct LightView {
+  std::vector<glm::vec3> projected;
+  glm::vec3 lo{1e30f}, hi{-1e30f};
+  float segment = 0.0f;
+};
+LightView viewFromLight(const Strands& strands, const glm::vec3& towardLight, float depthSign) {
+  const size_t count = strands.points.size() / 3;
+  const int n = strands.pointsPerStrand;
+  const auto [u, v, w] = lightFrame(towardLight);
+  LightView view;
+  view.projected.resize(count);
+  double segmentSum = 0.0;
+  for (size_t k = 0; k < count; ++k) {
+    const glm::vec3 p = load(strands.points, k);
+    view.projected[k] = {glm::dot(p, u), glm::dot(p, v), depthSign * glm::dot(p, w)};
+    view.lo = glm::min(view.lo, view.projected[k]);
+    view.hi = glm::max(view.hi, view.projected[k]);
+    if (k % n != 0) segmentSum += glm::length(p - load(strands.points, k - 1));
+  }
+  view.segment = float(segmentSum / double(count - count / n));
+  return view;
+}
+
 }  // namespace
 
 std::vector<float> hairSelfShadow(const Strands& strands, const glm::vec3& towardLight,
@@ -37,19 +63,10 @@ std::vector<float> hairShadowByPointCount(const Strands& strands, const glm::vec
   std::vector<float> shadow(count, 1.0f);
   const int n = strands.pointsPerStrand;
   if (count == 0 || n < 2) return shadow;
-  const auto [u, v, w] = lightFrame(towardLight);
-
-  std::vector<glm::vec3> projected(count);  // (u, v, depth toward the light)
-  glm::vec2 lo(1e30f), hi(-1e30f);
-  double segmentSum = 0.0;
-  for (size_t k = 0; k < count; ++k) {
-    const glm::vec3 p = load(strands.points, k);
-    projected[k] = {glm::dot(p, u), glm::dot(p, v), glm::dot(p, w)};
-    lo = glm::min(lo, glm::vec2(projected[k]));
-    hi = glm::max(hi, glm::vec2(projected[k]));
-    if (k % n != 0) segmentSum += glm::length(p - load(strands.points, k - 1));
-  }
-  const float segment = float(segmentSum / double(count - count / n));
+  const LightView view = viewFromLight(strands, towardLight, 1.0f);  // z: depth toward the light
+  const std::vector<glm::vec3>& projected = view.projected;
+  const glm::vec2 lo(view.lo), hi(view.hi);
+  const float segment = view.segment;
   float cell = std::max(settings.cellSize, 1e-4f);
   const glm::vec2 extent = hi - lo;
   cell = std::max(cell, std::max(extent.x, extent.y) / 1024.0f);  // at most 1024 x 1024 columns
@@ -108,20 +125,10 @@ std::vector<float> hairShadowByOpacityMaps(const Strands& strands, const glm::ve
   std::vector<float> shadow(count, 1.0f);
   const int n = strands.pointsPerStrand;
   if (count == 0 || n < 2) return shadow;
-  const auto [u, v, w] = lightFrame(towardLight);
-
-  // (u, v, distance from the hair's front along the light).
-  std::vector<glm::vec3> projected(count);
-  glm::vec3 lo(1e30f), hi(-1e30f);
-  double segmentSum = 0.0;
-  for (size_t k = 0; k < count; ++k) {
-    const glm::vec3 p = load(strands.points, k);
-    projected[k] = {glm::dot(p, u), glm::dot(p, v), -glm::dot(p, w)};
-    lo = glm::min(lo, projected[k]);
-    hi = glm::max(hi, projected[k]);
-    if (k % n != 0) segmentSum += glm::length(p - load(strands.points, k - 1));
-  }
-  const float segment = float(segmentSum / double(count - count / n));
+  const LightView view = viewFromLight(strands, towardLight, -1.0f);  // z: away from the light
+  const std::vector<glm::vec3>& projected = view.projected;
+  const glm::vec3 lo = view.lo, hi = view.hi;
+  const float segment = view.segment;
   const glm::vec2 extent = glm::vec2(hi) - glm::vec2(lo);
   const float cell = std::max({settings.cellSize, 1e-4f, std::max(extent.x, extent.y) / 384.0f});
   const int columns = int(extent.x / cell) + 2, rows = int(extent.y / cell) + 2;
