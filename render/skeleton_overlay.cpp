@@ -84,7 +84,6 @@ struct SkeletonOverlay::Impl {
   float jointRadius = 0.02f;
   int highlighted = -1;
 
-  int sphereVertexCount() const { return static_cast<int>(sphereTemplate().directions.size()); }
   float* pointData() { return static_cast<vtkFloatArray*>(points->GetData())->GetPointer(0); }
 
   void buildTopology() {

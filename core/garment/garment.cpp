@@ -113,13 +113,4 @@ GarmentMesh buildGarmentMesh(const Garment& garment) {
   return out;
 }
 
-Mesh GarmentMesh::toMesh() const {
-  Mesh mesh;
-  mesh.positions = positions;
-  mesh.triangles = triangles;
-  mesh.uvs = restUvs;
-  computeVertexNormals(mesh.positions, mesh.triangles, mesh.normals);
-  return mesh;
-}
-
 }  // namespace mq

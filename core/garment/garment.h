@@ -71,7 +71,6 @@ struct GarmentMesh {
   size_t triangleCount() const { return triangles.size() / 3; }
   glm::vec3 position(size_t v) const { return {positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]}; }
   // A renderable mesh: positions, normals, and the rest UVs as texture coordinates.
-  Mesh toMesh() const;
 };
 
 // Throws mq::Error (from validate or the mesher) when the garment is invalid.

@@ -25,19 +25,6 @@ SeamWeld computeSeamWeld(size_t vertexCount, const std::vector<VertexPair>& pair
 std::vector<float> weldAverage(const SeamWeld& weld, const std::vector<float>& values, int components);
 // Per-vertex values summed over each group (masses).
 std::vector<float> weldSum(const SeamWeld& weld, const std::vector<float>& values);
-// Per-vertex values taken from the group's first old vertex (panel ids, pattern UVs).
-template <typename T>
-std::vector<T> weldFirst(const SeamWeld& weld, const std::vector<T>& values, int components) {
-  std::vector<T> out(weld.newVertexCount() * components);
-  std::vector<bool> done(weld.newVertexCount(), false);
-  for (size_t v = 0; v < weld.newIndex.size(); ++v) {
-    uint32_t n = weld.newIndex[v];
-    if (done[n]) continue;
-    done[n] = true;
-    for (int c = 0; c < components; ++c) out[n * components + c] = values[v * components + c];
-  }
-  return out;
-}
 // Remaps triangles and drops those that collapse (two corners welded together).
 std::vector<uint32_t> weldTriangles(const SeamWeld& weld, const std::vector<uint32_t>& triangles);
 

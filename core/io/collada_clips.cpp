@@ -168,7 +168,7 @@ void indexIds(const XmlNode& node, Library& lib) {
 
 // One <channel> of an <animation> as a whole-matrix node track; false if the
 // channel is of a kind this reader does not handle.
-bool readChannel(const Library& lib, const XmlNode& animation, const XmlNode& channel, ColladaNodeTrack& track) {
+bool readChannel(const Library& lib, const XmlNode& channel, ColladaNodeTrack& track) {
   const std::string target = channel.attribute("target");
   const size_t slash = target.find('/');
   if (slash == std::string::npos || target.find_first_of(".(", slash) != std::string::npos) return false;
@@ -200,7 +200,6 @@ bool readChannel(const Library& lib, const XmlNode& animation, const XmlNode& ch
   auto name = lib.nodeNames.find(track.nodeId);
   if (name == lib.nodeNames.end()) return false;
   track.nodeName = name->second;
-  (void)animation;
   return true;
 }
 
@@ -218,7 +217,7 @@ std::vector<ColladaClip> readClips(const XmlNode& root, const Library& lib) {
       if (!animation) return {};
       for (const XmlNode* channel : animation->all("channel")) {
         ColladaNodeTrack track;
-        if (!readChannel(lib, *animation, *channel, track)) return {};
+        if (!readChannel(lib, *channel, track)) return {};
         clip.tracks.push_back(std::move(track));
       }
     }

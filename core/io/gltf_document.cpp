@@ -330,12 +330,4 @@ std::vector<uint32_t> Document::readUints(int accessor, int* components) const {
   return out;
 }
 
-size_t Document::accessorCount(int accessor) const {
-  try {
-    return element("accessors", accessor).at("count").get<size_t>();
-  } catch (const nlohmann::json::exception& e) {
-    fail("malformed accessor " + std::to_string(accessor) + ": " + jsonProblem(e));
-  }
-}
-
 }  // namespace mq::gltf

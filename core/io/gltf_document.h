@@ -27,7 +27,6 @@ class Document {
   std::vector<float> readFloats(int accessor, int* components = nullptr) const;
   // Integer accessor elements (indices, joint indices) widened to 32 bits.
   std::vector<uint32_t> readUints(int accessor, int* components = nullptr) const;
-  size_t accessorCount(int accessor) const;
   // The bytes of a bufferView (an image embedded in a GLB).
   std::vector<uint8_t> bufferViewBytes(int view) const;
   // The bytes of a data: URI; throws FileError when it is not base64.

@@ -54,15 +54,4 @@ glm::vec3 PerlinNoise::noise3(const glm::vec3& p) const {
           noise(p + glm::vec3(-23.112f, 19.871f, -55.309f))};
 }
 
-float PerlinNoise::fractal(const glm::vec3& p, int octaves) const {
-  float sum = 0.0f, amplitude = 1.0f;
-  glm::vec3 q = p;
-  for (int i = 0; i < octaves; ++i) {
-    sum += amplitude * noise(q);
-    q *= 2.0f;
-    amplitude *= 0.5f;
-  }
-  return sum;
-}
-
 }  // namespace mq

@@ -20,7 +20,6 @@ class PerlinNoise {
   // Three decorrelated noise values (the field sampled at offset points).
   glm::vec3 noise3(const glm::vec3& p) const;
   // Sum of `octaves` noises, each at twice the frequency and half the amplitude.
-  float fractal(const glm::vec3& p, int octaves) const;
 
  private:
   std::array<uint8_t, 512> perm_;

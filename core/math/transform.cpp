@@ -66,11 +66,4 @@ glm::vec3 eulerDegreesFromQuat(const glm::quat& q) {
   return glm::degrees(glm::vec3(x, y, z));
 }
 
-bool isFinite(const glm::mat4& m) {
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r)
-      if (!std::isfinite(m[c][r])) return false;
-  return true;
-}
-
 }  // namespace mq

@@ -26,6 +26,4 @@ glm::quat slerpShortest(glm::quat a, glm::quat b, float t);
 glm::quat quatFromEulerDegrees(const glm::vec3& degrees);
 glm::vec3 eulerDegreesFromQuat(const glm::quat& q);
 
-bool isFinite(const glm::mat4& m);
-
 }  // namespace mq

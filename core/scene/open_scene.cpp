@@ -28,12 +28,6 @@ PoseEdits poseEditsFromNames(const std::map<std::string, glm::quat>& rotations, 
   return edits;
 }
 
-std::map<std::string, glm::quat> poseEditsToNames(const PoseEdits& edits, const Skeleton& skeleton) {
-  std::map<std::string, glm::quat> named;
-  for (const auto& [bone, rotation] : edits.rotations) named[skeleton.bone(bone).name] = rotation;
-  return named;
-}
-
 LoadedScene resolveSceneDocument(const SceneDocument& document, const std::string& documentPath) {
   LoadedScene scene;
   scene.document = document;

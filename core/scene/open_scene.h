@@ -48,8 +48,7 @@ LoadedScene resolveSceneDocument(const SceneDocument& document, const std::strin
 int addMotion(Character& character, const std::string& bvhPath, const MotionOptions& options = {},
               BoneMatchReport* match = nullptr);
 
-// Pose rotations keyed by bone name <-> bone index (unknown names throw Error).
+// Pose rotations keyed by bone name -> bone index (unknown names throw Error).
 PoseEdits poseEditsFromNames(const std::map<std::string, glm::quat>& rotations, const Skeleton& skeleton);
-std::map<std::string, glm::quat> poseEditsToNames(const PoseEdits& edits, const Skeleton& skeleton);
 
 }  // namespace mq

@@ -64,8 +64,6 @@ void ViewportGizmo::attach(vtkRenderWindow* window, vtkRenderer* sceneRenderer) 
   observer_ = sceneRenderer->AddObserver(vtkCommand::StartEvent, beforeRender);
 }
 
-vtkRenderer* ViewportGizmo::overlayRenderer() const { return overlay_; }
-
 void ViewportGizmo::setVisible(bool visible) {
   visible_ = visible;
   showHandles();

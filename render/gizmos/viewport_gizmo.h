@@ -31,7 +31,6 @@ class ViewportGizmo {
   // Puts the overlay renderer on layer 1 of `window`, sharing the camera of
   // `sceneRenderer` (re-read before every frame).
   void attach(vtkRenderWindow* window, vtkRenderer* sceneRenderer);
-  vtkRenderer* overlayRenderer() const;
 
   void setVisible(bool visible);
   bool visible() const { return visible_; }

@@ -146,15 +146,6 @@ void ClothSimulator::pinToBodyVertex(uint32_t vertex, uint32_t bodyVertex) {
   p->offset = state_.x[vertex] - body_.positions()[bodyVertex];
 }
 
-void ClothSimulator::setPinTarget(uint32_t vertex, glm::vec3 target) {
-  if (Pin* p = findPin(vertex)) p->target = target;
-}
-
-void ClothSimulator::unpin(uint32_t vertex) {
-  pins_.erase(std::remove_if(pins_.begin(), pins_.end(), [&](const Pin& p) { return p.vertex == vertex; }), pins_.end());
-  if (vertex < state_.size()) state_.invMass[vertex] = freeInvMass_[vertex];
-}
-
 // Stepping ------------------------------------------------------------------
 
 int ClothSimulator::substepsFor(float dt) const {
@@ -266,7 +257,7 @@ void ClothSimulator::substep(float h, float bodyFraction, bool firstOfStep) {
   integrate(h);
   {
     const PhaseTimer timer(stats_, ClothPhase::Collide);
-    collideWithColliders(h);
+    collideWithColliders();
   }
   bool held = limitStretch(h);
   if (selfCollision_) {
@@ -275,7 +266,7 @@ void ClothSimulator::substep(float h, float bodyFraction, bool firstOfStep) {
   }
   {
     const PhaseTimer timer(stats_, ClothPhase::Collide);
-    collideWithColliders(h);
+    collideWithColliders();
     if (innerSurface_) collideWithInnerSurface(bodyFraction);
   }
   pushOffBodyVertices();
@@ -495,7 +486,7 @@ void ClothSimulator::placePins() {
   for (const Pin& p : pins_) state_.x[p.vertex] = p.bodyVertex >= 0 ? body_.positions()[p.bodyVertex] + p.offset : p.target;
 }
 
-void ClothSimulator::collideWithColliders(float h) {
+void ClothSimulator::collideWithColliders() {
   const float thickness = settings_.collisionThickness;
   forRange(state_.size(), [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) {
@@ -526,7 +517,6 @@ void ClothSimulator::collideWithColliders(float h) {
       }
     }
   });
-  (void)h;
 }
 
 void ClothSimulator::checkFinite(const char* where) const {

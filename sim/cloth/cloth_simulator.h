@@ -129,9 +129,6 @@ class ClothSimulator {
   void pinVertex(uint32_t vertex);                      // where it is now
   void pinVertex(uint32_t vertex, glm::vec3 target);
   void pinToBodyVertex(uint32_t vertex, uint32_t bodyVertex);  // keeps today's offset
-  void setPinTarget(uint32_t vertex, glm::vec3 target);        // e.g. from a bone each frame
-  void unpin(uint32_t vertex);
-  size_t pinCount() const { return pins_.size(); }
 
   // Sewing: the distance of each pair shrinks by at most closingSpeed * h per
   // solver step, solved together with the elongation limit in the position
@@ -142,7 +139,6 @@ class ClothSimulator {
   // bent around the body may need a little more before the seams meet).
   void sewSeams(const std::vector<std::pair<uint32_t, uint32_t>>& seams, float closingSpeed,
                 float stretchRelief = 1.0f);
-  void stopSewing() { sewing_.stop(); }
 
   // Stepping; throws ClothDiverged when the state is not finite.
   void step(float dt);
@@ -195,7 +191,7 @@ class ClothSimulator {
   bool nearestBodyContact(size_t i, float radius, BodyContact& contact);
   std::pair<long long, long long> bodyQueryCounts() const;  // summed over bodyQueries_: queries, searches
   void applyRestingFriction(float h);
-  void collideWithColliders(float h);
+  void collideWithColliders();
   void collideWithInnerSurface(float fraction);  // cloth_simulator_layers.cpp
   bool limitStretchAfterContacts(float h);
   void checkFinite(const char* where) const;

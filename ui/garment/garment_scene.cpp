@@ -1,5 +1,7 @@
 #include "ui/garment/garment_scene.h"
 
+#include <nlohmann/json.hpp>
+
 #include "core/garment/fabric_json.h"
 #include "core/garment/garment_json.h"
 

@@ -136,10 +136,9 @@ struct GarmentTool::View {
     simulation.reset();
   }
 
-  void buildSheet(const cloth::ClothSceneSpec& spec, const std::vector<float>& restBody) {
+  void buildSheet(const cloth::ClothSceneSpec& spec) {
     mesh = cloth::sheetGarmentMesh(spec);
     nearestBody.clear();  // a sheet does not follow the body before it is simulated
-    (void)restBody;
     cloth::buildClothMesh(spec, sheetPins);
     actor.setMesh(mesh.positions, mesh.triangles, mesh.restUvs);
     overlay.setTriangles(mesh.triangles);
@@ -640,7 +639,7 @@ void GarmentTool::rebuildSheet() {
   if (sheet_ && sheet_->builtFrom == wanted) return;
   sheet_ = std::make_unique<View>(window_->sceneView());
   try {
-    sheet_->buildSheet(scene_.cloth, restBody_);
+    sheet_->buildSheet(scene_.cloth);
   } catch (const Error& e) {
     lastError_ = QString::fromStdString(e.what());
   }

@@ -35,7 +35,6 @@ class HairPanel : public QWidget {
 
   // For tests and scripts.
   QListWidget* primitiveList() const { return list_; }
-  QComboBox* styleCombo() const { return styleCombo_; }
   QPushButton* addSourceButton() const { return addSource_; }
   QPushButton* addVortexButton() const { return addVortex_; }
   QDoubleSpinBox* strengthBox() const { return strength_; }

@@ -94,12 +94,6 @@ void VtkViewportWidget::addRenderer(vtkRenderer* renderer) {
   requestRender();
 }
 
-void VtkViewportWidget::removeRenderer(vtkRenderer* renderer) {
-  renderWindow_->RemoveRenderer(renderer);
-  requestRender();
-}
-
-QImage VtkViewportWidget::grabImage() { return grabFramebuffer(); }
 
 void VtkViewportWidget::requestRender() {
   fullFramePending_ = true;

@@ -34,7 +34,6 @@ class VtkViewportWidget : public QOpenGLWidget {
   vtkGenericRenderWindowInteractor* interactor() const;
   // Adds a renderer to the window (the scene's, usually).
   void addRenderer(vtkRenderer* renderer);
-  void removeRenderer(vtkRenderer* renderer);
   // Schedules a repaint; the only way the scene should be redrawn.
   void requestRender();
   // Schedules a paint that draws `prop` alone over the last frame (nothing
@@ -43,7 +42,6 @@ class VtkViewportWidget : public QOpenGLWidget {
   // itself in parts over several frames (the hair, see render::HairActor).
   void requestContinuation(vtkProp* prop);
   // The last rendered image (renders first if needed).
-  QImage grabImage();
 
  signals:
   // Emitted after each frame has been drawn.

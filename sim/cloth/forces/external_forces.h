@@ -13,8 +13,6 @@ class ExternalForces : public ForceTerm {
  public:
   ExternalForces(glm::vec3 gravity, glm::vec3 wind, float airDamping, std::vector<float> vertexArea);
 
-  void setWind(glm::vec3 wind) { wind_ = wind; }
-
   void addForces(const ClothState& s, std::vector<glm::vec3>& f) const override;
   double potentialEnergy(const ClothState& s) const override;  // gravity only
   void prepareImplicit(const ClothState& s, float h, std::vector<glm::vec3>& hKv,
