@@ -250,7 +250,7 @@ void GarmentTool::storeSections() {
 // ---- Editing ----
 
 void GarmentTool::edit(const GarmentScene& after, const QString& text, int mergeKey) {
-  window_->document()->undoStack()->push(new GarmentEditCommand(this, scene_, after, text, mergeKey));
+  window_->document()->undoStack()->push(new GarmentEditCommand([this](const GarmentScene& scene) { applyScene(scene); }, scene_, after, text, mergeKey));
 }
 
 void GarmentTool::addGarment(const std::string& type) {

@@ -167,7 +167,7 @@ void HairTool::storeSection() {
 // ---- Editing ----
 
 void HairTool::editStyle(const HairStyle& after, const QString& text, int mergeKey, bool live) {
-  window_->document()->undoStack()->push(new HairStyleCommand(this, style_, after, text, mergeKey, live));
+  window_->document()->undoStack()->push(new HairStyleCommand(applyStyleSnapshot(), {style_, false}, {after, live}, text, mergeKey));
 }
 
 void HairTool::useBuiltinStyle(const QString& name) {
@@ -176,14 +176,14 @@ void HairTool::useBuiltinStyle(const QString& name) {
     // Built-ins are made for the default mannequin's head.
     if (groom_ || makeGroom()) style = fitHairStyleToHead(style, groom_->proxy());
     window_->document()->undoStack()->push(
-        new HairStyleCommand(this, style_, style, tr("Hairstyle %1").arg(name)));
+        new HairStyleCommand(applyStyleSnapshot(), {style_, false}, {style, false}, tr("Hairstyle %1").arg(name)));
   } catch (const Error& e) {
     lastError_ = QString::fromStdString(e.what());
   }
 }
 
 void HairTool::removeHair() {
-  if (style_) window_->document()->undoStack()->push(new HairStyleCommand(this, style_, std::nullopt, tr("Remove hair")));
+  if (style_) window_->document()->undoStack()->push(new HairStyleCommand(applyStyleSnapshot(), {style_, false}, {std::nullopt, false}, tr("Remove hair")));
 }
 
 bool HairTool::makeGroom() {
@@ -196,6 +196,10 @@ bool HairTool::makeGroom() {
     groom_.reset();
     return false;
   }
+}
+
+HairStyleCommand::Apply HairTool::applyStyleSnapshot() {
+  return [this](const HairStyleSnapshot& snapshot) { applyStyle(snapshot.style, snapshot.live); };
 }
 
 void HairTool::applyStyle(const std::optional<HairStyle>& style, bool live) {
@@ -305,7 +309,7 @@ bool HairTool::editScalp(const ScalpRegion& after, const QString& text, int merg
     return false;
   }
   lastError_.clear();
-  window_->document()->undoStack()->push(new HairScalpCommand(this, scalp_, after, text, mergeKey));
+  window_->document()->undoStack()->push(new HairScalpCommand([this](const ScalpRegion& region) { applyScalp(region); }, scalp_, after, text, mergeKey));
   return true;
 }
 

@@ -29,6 +29,7 @@
 #include "core/hair/scalp.h"
 #include "sim/hair/hair_bake.h"
 #include "render/hair_handles.h"
+#include "ui/hair/hair_style_command.h"
 #include "ui/hair/hair_worker.h"
 
 class QDockWidget;
@@ -146,6 +147,8 @@ class HairTool : public QObject {
   bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
+  // What a HairStyleCommand applies: applyStyle.
+  HairStyleCommand::Apply applyStyleSnapshot();
   void onCharacterReplaced();
   void onPoseChanged();
   void loadSection();
