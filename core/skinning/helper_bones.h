@@ -13,8 +13,8 @@
 // two weights (a 50/50 vertex follows the half angle alone), and the
 // forearm's weight spreads over its twist bones by the vertex's place along
 // the forearm. A half-angle bone at the wrist is not added: measured, it
-// rounds a bent wrist (wrist 90 M3 0.58 -> 0.88) but adds crossings (M4
-// 9 -> 40) and thins the wrist twist (M2 0.75 -> 0.53). The helpers are
+// rounds a bent wrist but adds crossings and thins the wrist twist
+// (docs/performance.md). The helpers are
 // ordinary bones driven by their drivers' local transforms, so any LBS
 // engine plays them once their motion is baked.
 

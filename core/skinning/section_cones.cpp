@@ -206,8 +206,7 @@ std::shared_ptr<const SectionCones> bindSectionCones(const Mesh& mesh, const Ske
     // The nearest joint between the dominant bone and its parent or one of
     // its children, when the vertex lies within its reach and both bones are
     // limbs. (Creases at the shoulder and hip, where the parent is the
-    // torso, lowered the DQS bulge there but added folds on the walk: worst
-    // frame 69 -> 87 pairs.)
+    // torso, lowered the DQS bulge there but added folds on the walk.)
     const glm::dvec3 p(mesh.position(v));
     const int dominant = skin.joints[v * skin.influencesPerVertex + dominantSlot(skin, v)];
     int nearest = -1;

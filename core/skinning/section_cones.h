@@ -17,10 +17,10 @@
 // crease on that plane instead of crossing itself. Creases join two limbs
 // (elbow, knee, wrist, ankle), not a limb and the torso.
 //
-// Tried and measured worse on the mannequin (skin-report): clamping each
-// blend vertex's radial distance in its bones' cones to [0.95, 1.05] of rest
-// (elbow 120 M4 47 -> 123, hip 90 3 -> 345), and pushing vertices out of the
-// neighbour bone's enclosing cone (hip 120 3 -> 784).
+// Tried and measured worse on the mannequin (skin-report: more crossings;
+// docs/performance.md): clamping each blend vertex's radial distance in its
+// bones' cones to a band around rest, and pushing vertices out of the
+// neighbour bone's enclosing cone.
 
 #include <cstdint>
 #include <memory>

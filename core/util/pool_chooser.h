@@ -4,11 +4,9 @@
 // by timing both. Whether the pool pays depends on the machine at the time:
 // a solver iteration's phases meet at barriers, and when the pool's other
 // core is busy or slow to wake (another process, a virtual machine's host)
-// the caller waits at each of them. On a 2-core virtual machine the 10k
-// T-shirt walk's solve took 8 ms a step on the pool and 12 ms alone while
-// both cores were free, but 14.8 ms on the pool and 11.8 ms alone while the
-// second core was slow. The jobs that use it give the same results either
-// way, so the choice changes only the time.
+// the caller waits at each of them, and the pool can lose to the caller
+// alone (docs/performance.md has the figures). The jobs that use it give the
+// same results either way, so the choice changes only the time.
 //
 // The first two runs time one way each; from then on the faster way is used,
 // and every kProbeInterval-th run times the other way again, so a change in

@@ -36,15 +36,12 @@ struct ClothSettings {
   float friction = -1.0f;             // < 0: the fabric's friction
   int cgMaxIterations = 100;          // implicit integrator: conjugate-gradient iterations at most
   float cgTolerance = 1e-3f;          // relative residual (preconditioned norm)
-  // Two-level: far fewer iterations on stiff sheets (bench drape and pinned
-  // scenes: 35 -> 22, 40 -> 17 to their tolerance), nearer the exact motion,
-  // and on the walking T-shirt it holds the cloth out of the body at a cap of
-  // 50 (block Jacobi needs 100). Its converged solve carries more of the
-  // cloth's momentum: a trouser leg overshoots a swinging leg that stops, and
-  // the elongation limit after the contacts then pulled the touched vertices
-  // back into the leg (10 of 45 frames with cloth inside in
-  // cloth_collision_test) until that limit kept them out (ClothSimulator::
-  // limitStretchKeepingContactsOut). Resting contacts hold on downward-facing
+  // Two-level: far fewer iterations on stiff sheets, nearer the exact motion,
+  // and on the walking T-shirt it holds the cloth out of the body at half
+  // block Jacobi's iteration cap. Its converged solve carries more of the
+  // cloth's momentum: a trouser leg overshoots a swinging leg that stops, so
+  // the elongation limit after the contacts keeps the touched vertices out
+  // of the leg (ClothSimulator::limitStretchKeepingContactsOut). Resting contacts hold on downward-facing
   // surfaces too, or the converged solve squeezes a tight waistband up into
   // the body. Garment sewing always uses block Jacobi (GarmentSimulation).
   CgPreconditioner cgPreconditioner = CgPreconditioner::TwoLevel;

@@ -167,8 +167,7 @@ int ClothSimulator::substepsForBodySpeed(float dt) {
   // the first substep's findApproachingBody()): a vertex's last query bounds
   // its clearance (BodyQuery), so a far one's search ends at once. (Shorter
   // reaches away from fast body parts, from a tree of the body's speeds, gave
-  // the same contacts for more work: 0.2 ms a frame on the walking T-shirt,
-  // 0.9 ms on the trousers.)
+  // the same contacts for more work.)
   findNearestBody(approachReach_, stepStartContacts_, stepStartFound_);
   float fastest = 0.0f;
   for (size_t i = 0; i < state_.size(); ++i)

@@ -153,7 +153,7 @@ GarmentSimulation::GarmentSimulation(const GarmentMesh& garment, const GarmentSi
   unsewn.seams.clear();
   // Gentle sewing is tuned to the block-Jacobi solve, which leaves the panels'
   // large slow motions out at its iteration cap (sewn with the two-level one,
-  // the walking T-shirt ends with 170 vertices in the body).
+  // the walking T-shirt ends with vertices in the body).
   ClothSettings sewingCloth = settings.cloth;
   sewingCloth.cgPreconditioner = CgPreconditioner::BlockJacobi;
   m.sim = std::make_unique<ClothSimulator>(unsewn, buildClothTopology(unsewn), settings.fabric, sewingCloth);

@@ -125,9 +125,9 @@ SewnGarment sewOnMannequin(const std::string& type, float edge, int settleFrames
   return sewOn(makeDefaultMannequin(), type, edge, settleFrames);
 }
 
-// Stiff zero-length seam springs used to close the 0.4 m shoulder gap in one
-// or two implicit steps; body contact pushed the shoulder seams up and the
-// elongation limit dragged the shirt after them, up to the head.
+// Seams that close too fast (stiff zero-length springs close the shoulder
+// gap in one or two implicit steps) let body contact push the shoulder seams
+// up and the elongation limit drag the shirt after them, up to the head.
 TEST(GarmentSewing, TShirtOnMannequinClosesSeamsWeldsAndSettlesOutsideTheBody) {
   const SewnGarment shirt = sewOnMannequin("tshirt", 0.035f, 60);
   EXPECT_GT(shirt.initialGap, 0.05f);  // the panels really started apart

@@ -1,9 +1,10 @@
 // The built-in trousers on the walking default mannequin (the app test's
 // scene), dressed and played the way `mannequin-cli render` does: the front
 // of the forward knee must stay under the cloth. In frames 21-25 the trousers
-// are stretched at the elongation limit over the bent knee, and the limit
-// after the contacts used to pull them back through it: up to about 100 knee
-// vertices in front of the cloth's triangles, speckles of skin in the render.
+// are stretched at the elongation limit over the bent knee, where a limit
+// after the contacts that ignores them pulls the cloth back through the knee
+// (knee vertices in front of the cloth's triangles: speckles of skin in the
+// render).
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -129,8 +129,8 @@ class SelfCollision {
   // The trees are refitted every step and rebuilt when the sum of their
   // nodes' half-perimeters has grown by this factor since they were built
   // (the edge tree's, the triangle tree's): a cloth keeps its neighbours, so
-  // a refitted tree stays good for long (rebuilt every 16 steps instead, the
-  // walking T-shirt's trees cost 0.9 ms a step more to build than they saved).
+  // a refitted tree stays good for long (a rebuild every few steps cost more
+  // to build than it saved).
   static constexpr float kRebuildGrowth = 1.25f;
   float builtSizes_[2] = {0.0f, 0.0f};
   // Per node of the edge and triangle trees: its primitives are connected
