@@ -9,7 +9,7 @@ packages=(
   libvtk9-dev
   libopenmesh-dev libcgal-dev libglm-dev libceres-dev libeigen3-dev libnanoflann-dev
   libassimp-dev nlohmann-json3-dev libstb-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libgtest-dev libgmock-dev libbenchmark-dev clang-format-14
   xvfb xauth xdotool libgl1-mesa-dri libglx-mesa0
 )
 

@@ -32,15 +32,15 @@ struct ClothShading {
   ClothModel model = ClothModel::Minnaert;
   glm::vec3 color{0.75f, 0.75f, 0.75f};
   float ambient = 0.12f;
-  float minnaertK = 1.0f;         // Minnaert exponent
-  glm::vec3 sheenColor{1.0f};     // Ashikhmin sheen
+  float minnaertK = 1.0f;      // Minnaert exponent
+  glm::vec3 sheenColor{1.0f};  // Ashikhmin sheen
   float sheen = 0.6f;
-  float sheenRoughness = 0.35f;   // sigma of the velvet distribution
-  bool printed = false;           // multiply by the print texture
+  float sheenRoughness = 0.35f;  // sigma of the velvet distribution
+  bool printed = false;          // multiply by the print texture
   float printRepeatPerMetre = 4.0f;
   bool ribbed = false;
-  float ribSpacing = 0.006f;      // metres between ribs, across pattern u
-  float ribDepth = 0.6f;          // normal tilt at the steepest point of a rib
+  float ribSpacing = 0.006f;  // metres between ribs, across pattern u
+  float ribDepth = 0.6f;      // normal tilt at the steepest point of a rib
 };
 
 // Shading that suits a fabric preset name (cotton, silk, denim, wool, leather,

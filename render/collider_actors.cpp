@@ -5,13 +5,13 @@
 #include <vtkActor.h>
 #include <vtkCellArray.h>
 #include <vtkCellPicker.h>
-#include <vtkRenderer.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkPolyDataNormals.h>
 #include <vtkProperty.h>
+#include <vtkRenderer.h>
 
 #include "render/scene_view.h"
 
@@ -47,8 +47,8 @@ vtkSmartPointer<vtkPolyData> capsuleSurface(glm::dvec3 a, glm::dvec3 b, double r
     const glm::dvec3 centre = upper ? b : a;
     for (int s = 0; s < kSegments; ++s) {
       const double longitude = 2.0 * kPi * s / kSegments;
-      const glm::dvec3 dir = std::cos(latitude) * (std::cos(longitude) * u + std::sin(longitude) * v) +
-                             std::sin(latitude) * axis;
+      const glm::dvec3 dir =
+          std::cos(latitude) * (std::cos(longitude) * u + std::sin(longitude) * v) + std::sin(latitude) * axis;
       const glm::dvec3 p = centre + radius * dir;
       points->InsertNextPoint(p.x, p.y, p.z);
     }
@@ -99,9 +99,12 @@ vtkSmartPointer<vtkPolyData> planeSurface(glm::dvec3 point, glm::dvec3 normal, d
 
 vtkSmartPointer<vtkPolyData> colliderSurface(const SolidPrimitive& c, double planeSize) {
   switch (c.shape) {
-    case SolidPrimitive::Shape::Sphere: return capsuleSurface(c.a, c.a, c.radius);
-    case SolidPrimitive::Shape::Capsule: return capsuleSurface(c.a, c.b, c.radius);
-    case SolidPrimitive::Shape::Plane: return planeSurface(c.a, c.b, planeSize);
+    case SolidPrimitive::Shape::Sphere:
+      return capsuleSurface(c.a, c.a, c.radius);
+    case SolidPrimitive::Shape::Capsule:
+      return capsuleSurface(c.a, c.b, c.radius);
+    case SolidPrimitive::Shape::Plane:
+      return planeSurface(c.a, c.b, planeSize);
   }
   return vtkSmartPointer<vtkPolyData>::New();
 }
@@ -126,8 +129,10 @@ void ColliderActors::set(const std::vector<SolidPrimitive>& colliders, int selec
     vtkProperty* property = actor->GetProperty();
     const bool isSelected = int(i) == selected;
     // Teal, translucent: the cloth stays visible through it; the selected one warmer and more opaque.
-    if (isSelected) property->SetColor(0.95, 0.62, 0.25);
-    else property->SetColor(0.25, 0.7, 0.75);
+    if (isSelected)
+      property->SetColor(0.95, 0.62, 0.25);
+    else
+      property->SetColor(0.25, 0.7, 0.75);
     property->SetOpacity(isSelected ? 0.5 : 0.32);
     property->SetSpecular(0.2);
     property->BackfaceCullingOff();

@@ -54,8 +54,8 @@ struct Dots {
     actor->GetProperty()->LightingOff();
     actor->PickableOff();
     // Always on top: squeeze the dots' depth towards the near plane.
-    actor->GetShaderProperty()->AddFragmentShaderReplacement(
-        "//VTK::Depth::Impl", true, "gl_FragDepth = 0.02 * gl_FragCoord.z;\n", false);
+    actor->GetShaderProperty()->AddFragmentShaderReplacement("//VTK::Depth::Impl", true,
+                                                             "gl_FragDepth = 0.02 * gl_FragCoord.z;\n", false);
     actor->GetShaderProperty()->AddFragmentShaderReplacement("//VTK::Coincident::Impl", true, "", false);
   }
 
@@ -139,7 +139,8 @@ void GarmentOverlay::setPositions(const std::vector<float>& positions) {
   vtkNew<vtkPoints> points;
   const vtkIdType count = vtkIdType(positions.size() / 3);
   points->SetNumberOfPoints(count);
-  for (vtkIdType v = 0; v < count; ++v) points->SetPoint(v, positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]);
+  for (vtkIdType v = 0; v < count; ++v)
+    points->SetPoint(v, positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]);
   m.mesh->SetPoints(points);
   m.paint();
   m.mesh->Modified();

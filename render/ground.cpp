@@ -60,7 +60,7 @@ vtkSmartPointer<vtkPolyData> makeGrid(double half, double spacing) {
 // A disc (triangle fan of rings) in the plane y = height with colour
 // `centre` fading to `rim`; the ellipse radii are rx, rz.
 vtkSmartPointer<vtkPolyData> makeDisc(double cx, double cz, double rx, double rz, double height, const Rgba& centre,
-                             const Rgba& rim, double falloffPower) {
+                                      const Rgba& rim, double falloffPower) {
   constexpr int kRings = 12, kSegments = 48;
   vtkNew<vtkPoints> points;
   vtkNew<vtkCellArray> triangles;
@@ -147,8 +147,8 @@ void Ground::fit(const Aabb& bounds, const Aabb& footprint) {
 
   // The floor disc: slightly below the grid so the lines stay crisp on it.
   const double below = -1e-3 * extent;
-  impl_->floorMapper->SetInputData(makeDisc(0.0, 0.0, 1.15 * half, 1.15 * half, below, Rgba{70, 76, 86, 150},
-                                            Rgba{70, 76, 86, 0}, 2.0));
+  impl_->floorMapper->SetInputData(
+      makeDisc(0.0, 0.0, 1.15 * half, 1.15 * half, below, Rgba{70, 76, 86, 150}, Rgba{70, 76, 86, 0}, 2.0));
 
   impl_->extent = extent;
   placeShadow(footprint);
@@ -163,8 +163,8 @@ void Ground::placeShadow(const Aabb& footprint) {
   const glm::vec3 centre = footprint.center();
   const double rx = 0.5 * (footprint.max.x - footprint.min.x) + 0.08 * extent;
   const double rz = 0.5 * (footprint.max.z - footprint.min.z) + 0.08 * extent;
-  impl_->shadowMapper->SetInputData(makeDisc(centre.x, centre.z, rx, rz, 1e-3 * extent, Rgba{8, 8, 10, 170},
-                                             Rgba{8, 8, 10, 0}, 1.4));
+  impl_->shadowMapper->SetInputData(
+      makeDisc(centre.x, centre.z, rx, rz, 1e-3 * extent, Rgba{8, 8, 10, 170}, Rgba{8, 8, 10, 0}, 1.4));
 }
 
 void Ground::setHeight(double y) {

@@ -268,7 +268,7 @@ class HairMapper : public vtkOpenGLPolyDataMapper {
   // geometry, have an empty input).
   std::vector<vtkSmartPointer<vtkOpenGLPolyDataMapper>> chunkMappers;
   size_t chunkCount = 0;
-  size_t nextChunk = 0;       // the first chunk not drawn in this frame yet
+  size_t nextChunk = 0;  // the first chunk not drawn in this frame yet
   size_t framesDrawn = 0;
   double frameBudgetMs = 0.0;  // 0: every chunk in every frame
 
@@ -415,7 +415,8 @@ void HairActor::Impl::updatePhysicalUniforms() {
   const float volumeF[3] = {float(volume[0]), float(volume[1]), float(volume[2])};
   vtkUniforms* u = actor->GetShaderProperty()->GetFragmentCustomUniforms();
   u->SetUniform3fv("hairAzimuthalTable", int(table.lobes.size()), reinterpret_cast<const float(*)[3]>(lobes.data()));
-  u->SetUniform3fv("hairResidualTable", int(table.residual.size()), reinterpret_cast<const float(*)[3]>(residual.data()));
+  u->SetUniform3fv("hairResidualTable", int(table.residual.size()),
+                   reinterpret_cast<const float(*)[3]>(residual.data()));
   u->SetUniform3f("hairShiftSin", shiftSin);
   u->SetUniform3f("hairShiftCos", shiftCos);
   u->SetUniform4f("hairVariance", variance);

@@ -57,26 +57,26 @@ using HairShadowMethod = optics::HairShadowMethod;  // core/optics/hair_self_sha
 struct HairShading {
   glm::vec3 rootColor{0.10f, 0.06f, 0.035f};
   glm::vec3 tipColor{0.25f, 0.16f, 0.09f};
-  float colorVariation = 0.15f;      // per-strand brightness variation (share)
+  float colorVariation = 0.15f;  // per-strand brightness variation (share)
   float diffuse = 0.9f;
   float ambient = 0.18f;
-  float primarySpecular = 0.5f;      // white highlight
+  float primarySpecular = 0.5f;  // white highlight
   float primaryExponent = 60.0f;
-  float primaryShift = 0.08f;        // tangent shift toward the tip
-  bool secondaryHighlight = true;    // the tinted, shifted second highlight
+  float primaryShift = 0.08f;      // tangent shift toward the tip
+  bool secondaryHighlight = true;  // the tinted, shifted second highlight
   float secondarySpecular = 0.5f;
   float secondaryExponent = 25.0f;
   float secondaryShift = -0.12f;
-  float tipOpacity = 0.3f;           // opacity at the tip (1 at the root)
-  float tipFadeStart = 0.7f;         // share of the strand where the fade starts
+  float tipOpacity = 0.3f;    // opacity at the tip (1 at the root)
+  float tipFadeStart = 0.7f;  // share of the strand where the fade starts
   bool selfShadowing = true;
-  float shadowPerStrand = 0.05f;     // light lost per strand crossing (Beer-Lambert)
-  float shadowCellSize = 0.004f;     // metres: light-aligned grid cell
-  float minShadow = 0.25f;           // floor: light scattered in from around
+  float shadowPerStrand = 0.05f;  // light lost per strand crossing (Beer-Lambert)
+  float shadowCellSize = 0.004f;  // metres: light-aligned grid cell
+  float minShadow = 0.25f;        // floor: light scattered in from around
   HairShadowMethod shadowMethod = HairShadowMethod::PointCount;
-  int opacityMapCount = 32;          // OpacityMaps: slices from the hair's front to its back
-  HairShadingParams fibre;           // the model; pigments and roughness for Physical
-  unsigned physicalLobes = 31u;      // Physical: R 1, TT 2, TRT 4, residual 8, volume 16 (pictures of one lobe)
+  int opacityMapCount = 32;      // OpacityMaps: slices from the hair's front to its back
+  HairShadingParams fibre;       // the model; pigments and roughness for Physical
+  unsigned physicalLobes = 31u;  // Physical: R 1, TT 2, TRT 4, residual 8, volume 16 (pictures of one lobe)
 
   optics::HairShadowSettings shadowSettings() const {
     return {shadowMethod, shadowPerStrand, shadowCellSize, minShadow, opacityMapCount};

@@ -12,8 +12,10 @@ std::string physicalHairFragmentDec() {
   return std::string(R"(//VTK::Normal::Dec
 in vec3 hairTangentVC;
 in vec3 hairParams;  // x: 0 root .. 1 tip, y: self-shadow, z: per-strand random
-const int kHairPhi = )") + std::to_string(kTablePhi) + R"(;
-const int kHairTheta = )" + std::to_string(kTableTheta) + R"(;
+const int kHairPhi = )") +
+         std::to_string(kTablePhi) + R"(;
+const int kHairTheta = )" +
+         std::to_string(kTableTheta) + R"(;
 // log I0(x): the series below 12, the asymptotic series above.
 float hairLogI0(float x) {
   if (x > 12.0) {

@@ -17,9 +17,12 @@ constexpr float kLineLength = 0.06f;
 
 glm::vec3 kindColor(PrimitiveRef::Kind kind) {
   switch (kind) {
-    case PrimitiveRef::Stream: return {0.3f, 0.6f, 1.0f};
-    case PrimitiveRef::Source: return {0.35f, 0.9f, 0.4f};
-    default: return {1.0f, 0.55f, 0.15f};
+    case PrimitiveRef::Stream:
+      return {0.3f, 0.6f, 1.0f};
+    case PrimitiveRef::Source:
+      return {0.35f, 0.9f, 0.4f};
+    default:
+      return {1.0f, 0.55f, 0.15f};
   }
 }
 
@@ -60,8 +63,10 @@ glm::vec3 handlePosition(const HairStyle& style, const PrimitiveRef& ref) {
       const glm::vec3 d = style.primitives.streams[ref.index].direction;
       return glm::length(d) > 1e-6f ? glm::normalize(d) * kStreamHandleDistance : glm::vec3(0.0f);
     }
-    case PrimitiveRef::Source: return style.primitives.sources[ref.index].position;
-    default: return style.primitives.vortices[ref.index].position;
+    case PrimitiveRef::Source:
+      return style.primitives.sources[ref.index].position;
+    default:
+      return style.primitives.vortices[ref.index].position;
   }
 }
 
@@ -71,8 +76,12 @@ void moveHandle(HairStyle& style, const PrimitiveRef& ref, const glm::vec3& head
       if (glm::length(headSpace) > 1e-4f)
         style.primitives.streams[ref.index].direction = roundedForTheDocument(glm::normalize(headSpace));
       break;
-    case PrimitiveRef::Source: style.primitives.sources[ref.index].position = roundedForTheDocument(headSpace); break;
-    default: style.primitives.vortices[ref.index].position = roundedForTheDocument(headSpace); break;
+    case PrimitiveRef::Source:
+      style.primitives.sources[ref.index].position = roundedForTheDocument(headSpace);
+      break;
+    default:
+      style.primitives.vortices[ref.index].position = roundedForTheDocument(headSpace);
+      break;
   }
 }
 

@@ -8,9 +8,9 @@
 
 #include <vector>
 
-#include <glm/glm.hpp>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
+#include <glm/glm.hpp>
 
 #include "core/hair/hairstyle.h"
 

@@ -50,9 +50,12 @@ vtkSmartPointer<vtkImageData> decode(const std::vector<uint8_t>& bytes, std::str
 
 int vtkWrap(TextureWrap wrap) {
   switch (wrap) {
-    case TextureWrap::ClampToEdge: return vtkTexture::ClampToEdge;
-    case TextureWrap::MirroredRepeat: return vtkTexture::MirroredRepeat;
-    case TextureWrap::Repeat: break;
+    case TextureWrap::ClampToEdge:
+      return vtkTexture::ClampToEdge;
+    case TextureWrap::MirroredRepeat:
+      return vtkTexture::MirroredRepeat;
+    case TextureWrap::Repeat:
+      break;
   }
   return vtkTexture::Repeat;
 }

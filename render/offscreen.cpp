@@ -101,8 +101,7 @@ OffscreenRenderer::OffscreenRenderer(SceneView& view, int width, int height) : i
   if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
     throw Error("image size " + std::to_string(width) + "x" + std::to_string(height) + " is out of range");
   impl_->renderer = view.renderer();
-  if (impl_->renderer->GetRenderWindow())
-    throw Error("the scene view is already shown in a window; render it there");
+  if (impl_->renderer->GetRenderWindow()) throw Error("the scene view is already shown in a window; render it there");
   ensureDisplay();
   // Multisampling varies between drivers; without it images are reproducible.
   // The global is read when a window is made: restore it for the editor's windows.
@@ -132,9 +131,7 @@ void renderToPng(SceneView& view, const std::string& path, int width, int height
   OffscreenRenderer(view, width, height).writePng(path);
 }
 
-void writePng(const RgbImage& image, const std::string& path) {
-  writeImageDataAtomically(toImageData(image), path);
-}
+void writePng(const RgbImage& image, const std::string& path) { writeImageDataAtomically(toImageData(image), path); }
 
 RgbImage readPng(const std::string& path) {
   if (!std::filesystem::is_regular_file(path)) throw FileError(path, "no such file");

@@ -16,22 +16,22 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
-#include <vtkUnsignedCharArray.h>
 #include <vtkProperty.h>
-#include <vtkRenderWindow.h>
 #include <vtkRenderStepsPass.h>
+#include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkSSAOPass.h>
 #include <vtkSmartPointer.h>
+#include <vtkUnsignedCharArray.h>
 
 #include "core/character/character.h"
 #include "core/character/posed_character.h"
 #include "core/mesh/tangents.h"
 #include "render/cloth_shading.h"
-#include "render/material_look.h"
-#include "render/material_textures.h"
 #include "render/ground.h"
 #include "render/hair_actor.h"
+#include "render/material_look.h"
+#include "render/material_textures.h"
 #include "render/section_cone_overlay.h"
 #include "render/skeleton_overlay.h"
 #include "render/skin_surface_arrays.h"
@@ -48,12 +48,12 @@ struct MeshActor {
   std::vector<int> partMaterials;  // index into the character's materials, -1: none
   vtkSmartPointer<vtkFloatArray> positions;
   vtkSmartPointer<vtkFloatArray> normals;
-  vtkSmartPointer<vtkFloatArray> tangents;  // null without a normal map
+  vtkSmartPointer<vtkFloatArray> tangents;       // null without a normal map
   std::vector<float> restNormals, restTangents;  // tangents follow the normals' turn
-  std::vector<uint32_t> triangles;  // for normals when the posed mesh has none
+  std::vector<uint32_t> triangles;               // for normals when the posed mesh has none
   glm::vec3 baseColor{0.8f};
   std::shared_ptr<SkinSurfaceArrays> skin;  // curvature, thickness, wrinkles
-  vtkSmartPointer<vtkActor> heat;  // the mesh coloured by per-vertex values, made on first use
+  vtkSmartPointer<vtkActor> heat;           // the mesh coloured by per-vertex values, made on first use
   vtkSmartPointer<vtkUnsignedCharArray> heatColors;
 };
 
@@ -126,8 +126,8 @@ vtkSmartPointer<vtkFloatArray> textureCoordinates(const Mesh& mesh, const Textur
   return tcoords;
 }
 
-vtkSmartPointer<vtkActor> makePart(const Mesh& mesh, const Submesh& range, const Material* material,
-                                   vtkPoints* points, const MeshActor& m, vtkFloatArray* rest) {
+vtkSmartPointer<vtkActor> makePart(const Mesh& mesh, const Submesh& range, const Material* material, vtkPoints* points,
+                                   const MeshActor& m, vtkFloatArray* rest) {
   vtkNew<vtkCellArray> cells;
   for (uint32_t t = range.firstTriangle; t < range.firstTriangle + range.triangleCount; ++t) {
     const vtkIdType tri[3] = {mesh.triangles[3 * t], mesh.triangles[3 * t + 1], mesh.triangles[3 * t + 2]};
@@ -285,10 +285,14 @@ bool parseLookMode(const std::string& name, LookMode& mode) {
 
 const char* lookModeName(LookMode mode) {
   switch (mode) {
-    case LookMode::Skin: return "skin";
-    case LookMode::Mannequin: return "mannequin";
-    case LookMode::Plain: return "plain";
-    case LookMode::Auto: break;
+    case LookMode::Skin:
+      return "skin";
+    case LookMode::Mannequin:
+      return "mannequin";
+    case LookMode::Plain:
+      return "plain";
+    case LookMode::Auto:
+      break;
   }
   return "auto";
 }
@@ -349,10 +353,17 @@ void SceneView::Impl::applyLooks() {
       applySurfaceLook(actor, look, material ? textures->colour(material->baseColorTexture) : nullptr);
     };
     switch (lookMode) {
-      case LookMode::Mannequin: applySurfaceLook(actor, SurfaceLook::mannequin()); return;
-      case LookMode::Plain: applySurfaceLook(actor, SurfaceLook::plain(colour)); return;
-      case LookMode::Skin: applySkin(); return;
-      case LookMode::Auto: break;
+      case LookMode::Mannequin:
+        applySurfaceLook(actor, SurfaceLook::mannequin());
+        return;
+      case LookMode::Plain:
+        applySurfaceLook(actor, SurfaceLook::plain(colour));
+        return;
+      case LookMode::Skin:
+        applySkin();
+        return;
+      case LookMode::Auto:
+        break;
     }
     if (!material) {
       applySurfaceLook(actor, defaultLookFor(colour, builtInMannequin));
@@ -417,7 +428,8 @@ void SceneView::updatePose(const PosedCharacter& posed) {
       copyInto(mesh.normals, posedMeshes[i].normals);
     }
     if (mesh.tangents) {
-      const std::vector<float>& posedNormals = posedMeshes[i].normals.empty() ? computedNormals : posedMeshes[i].normals;
+      const std::vector<float>& posedNormals =
+          posedMeshes[i].normals.empty() ? computedNormals : posedMeshes[i].normals;
       carryTangents(mesh.restNormals, mesh.restTangents, posedNormals, carriedTangents);
       copyTangentsInto(mesh.tangents, carriedTangents);
     }
@@ -434,8 +446,8 @@ void SceneView::updatePose(const PosedCharacter& posed) {
 
 void heatColor(float value, unsigned char rgb[3]) {
   // Blue, cyan, green, yellow, red: the ramp of weight painting in DCC tools.
-  static const float stops[5][3] = {{0.05f, 0.1f, 0.75f}, {0.0f, 0.7f, 0.9f}, {0.1f, 0.85f, 0.2f},
-                                    {0.95f, 0.9f, 0.1f}, {0.9f, 0.1f, 0.05f}};
+  static const float stops[5][3] = {
+      {0.05f, 0.1f, 0.75f}, {0.0f, 0.7f, 0.9f}, {0.1f, 0.85f, 0.2f}, {0.95f, 0.9f, 0.1f}, {0.9f, 0.1f, 0.05f}};
   const float t = std::clamp(std::isfinite(value) ? value : 0.0f, 0.0f, 1.0f) * 4.0f;
   const int i = std::min(int(t), 3);
   const float f = t - float(i);

@@ -27,7 +27,8 @@ constexpr double kColour[3] = {0.25, 0.75, 1.0};
 // The cone's memorised section at s along the bone (0 head, 1 tail), as the
 // cones interpolate it between their bases (held beyond them).
 glm::dvec3 sectionPoint(const SectionCone& cone, double s, double angle) {
-  const double t = std::clamp((s - SectionCone::kBaseNear) / (SectionCone::kBaseFar - SectionCone::kBaseNear), 0.0, 1.0);
+  const double t =
+      std::clamp((s - SectionCone::kBaseNear) / (SectionCone::kBaseFar - SectionCone::kBaseNear), 0.0, 1.0);
   const glm::dvec2 direction(std::cos(angle), std::sin(angle));
   const glm::dvec2 centre = (1.0 - t) * cone.minimum[0].center + t * cone.minimum[1].center;
   const double radius = (1.0 - t) * cone.minimum[0].radius(direction) + t * cone.minimum[1].radius(direction);

@@ -178,8 +178,8 @@ SkeletonOverlay::SkeletonOverlay() : impl_(std::make_unique<Impl>()) {
   m.mapper->ScalarVisibilityOn();
   // Always on top: squeeze the overlay's depth towards the near plane (order
   // among its own fragments is kept, so joints still hide sticks behind them).
-  m.actor->GetShaderProperty()->AddFragmentShaderReplacement(
-      "//VTK::Depth::Impl", true, "gl_FragDepth = 0.02 * gl_FragCoord.z;\n", false);
+  m.actor->GetShaderProperty()->AddFragmentShaderReplacement("//VTK::Depth::Impl", true,
+                                                             "gl_FragDepth = 0.02 * gl_FragCoord.z;\n", false);
   m.actor->GetShaderProperty()->AddFragmentShaderReplacement("//VTK::Coincident::Impl", true, "", false);
   m.actor->SetMapper(m.mapper);
   m.actor->GetProperty()->SetAmbient(0.5);

@@ -188,12 +188,16 @@ void applySkinShading(vtkActor* actor, const SurfaceLook& look, vtkTexture* albe
   vtkShaderProperty* sp = actor->GetShaderProperty();
   sp->ClearAllShaderReplacements();
   const std::string furrow = "#define MQ_FURROW " + std::to_string(kReliefFurrowWidth) + "\n";
-  sp->AddVertexShaderReplacement("//VTK::Normal::Dec", true, std::string(kVertexDec) + (albedoMap ? kVertexAlbedoDec : ""), false);
-  sp->AddVertexShaderReplacement("//VTK::Normal::Impl", true, std::string(kVertexImpl) + (albedoMap ? kVertexAlbedoImpl : ""), false);
+  sp->AddVertexShaderReplacement("//VTK::Normal::Dec", true,
+                                 std::string(kVertexDec) + (albedoMap ? kVertexAlbedoDec : ""), false);
+  sp->AddVertexShaderReplacement("//VTK::Normal::Impl", true,
+                                 std::string(kVertexImpl) + (albedoMap ? kVertexAlbedoImpl : ""), false);
   sp->AddFragmentShaderReplacement("//VTK::Normal::Dec", true,
                                    furrow + kFragmentDec + (albedoMap ? kFragmentAlbedoDec : ""), false);
   sp->AddFragmentShaderReplacement("//VTK::Light::Impl", true,
-                                   std::string(kSkinLightBegin) + (albedoMap ? kAlbedoMapped : kAlbedoConstant) + kSkinLightEnd + kRimLightAndOutputGlsl, false);
+                                   std::string(kSkinLightBegin) + (albedoMap ? kAlbedoMapped : kAlbedoConstant) +
+                                       kSkinLightEnd + kRimLightAndOutputGlsl,
+                                   false);
   vtkUniforms* u = sp->GetFragmentCustomUniforms();
   u->RemoveAllUniforms();  // the wood's, when switching looks
   setUniform3(u, "mqAlbedo", look.albedo);

@@ -15,7 +15,7 @@ namespace {
 
 constexpr float kMillimetresPerMetre = 1000.0f;
 constexpr float kThickMillimetres = 1000.0f;  // where an inward ray finds no way out
-constexpr int kCurvatureSmoothing = 2;         // ring averages after the median (see mean_curvature.h)
+constexpr int kCurvatureSmoothing = 2;        // ring averages after the median (see mean_curvature.h)
 
 vtkSmartPointer<vtkFloatArray> filledArray(const char* name, int components, size_t tuples, float value) {
   auto array = vtkSmartPointer<vtkFloatArray>::New();
@@ -51,7 +51,8 @@ void SkinSurfaceArrays::measure() {
   measured_ = true;
   if (restNormals_.size() != restPositions_.size()) computeVertexNormals(restPositions_, triangles_, restNormals_);
   const std::vector<float> h = vertexMeanCurvature(restPositions_, restNormals_, triangles_, kCurvatureSmoothing);
-  const std::vector<float> d = inwardThickness(restPositions_, restNormals_, triangles_, kThickMillimetres / kMillimetresPerMetre);
+  const std::vector<float> d =
+      inwardThickness(restPositions_, restNormals_, triangles_, kThickMillimetres / kMillimetresPerMetre);
   float* curvature = curvature_->GetPointer(0);
   float* thickness = thickness_->GetPointer(0);
   for (size_t v = 0; v < h.size(); ++v) {

@@ -57,7 +57,8 @@ vtkSmartPointer<vtkTexture> makeStudioEnvironment() {
   radiance->SetNumberOfTuples(kWidth * kHeight);
   for (int row = 0; row < kHeight; ++row) {
     // VTK's equirectangular images: row 0 at the bottom (down), u around +y.
-    const float latitude = (static_cast<float>(row) + 0.5f) / kHeight * static_cast<float>(M_PI) - static_cast<float>(M_PI_2);
+    const float latitude =
+        (static_cast<float>(row) + 0.5f) / kHeight * static_cast<float>(M_PI) - static_cast<float>(M_PI_2);
     for (int column = 0; column < kWidth; ++column) {
       const float longitude = (static_cast<float>(column) + 0.5f) / kWidth * 2.0f * static_cast<float>(M_PI);
       const glm::vec3 d(std::cos(latitude) * std::sin(longitude), std::sin(latitude),
@@ -96,10 +97,10 @@ void useStudioEnvironment(vtkRenderer* renderer, bool enabled) {
 void addThreePointLights(vtkRenderer* renderer) {
   renderer->AutomaticLightCreationOff();
   renderer->RemoveAllLights();
-  addCameraLight(renderer, -0.9, 0.8, 0.8, 1.00, 0.95, 0.88, 1.00);  // key: warm, upper left
-  addCameraLight(renderer, 1.0, 0.0, 0.7, 0.80, 0.88, 1.00, 0.22);   // fill: cool, right, low
-  addCameraLight(renderer, 1.0, 0.5, -0.6, 1.00, 1.00, 1.00, 1.00);  // rim: behind, upper right
-  addCameraLight(renderer, -1.0, 0.3, -0.6, 0.85, 0.90, 1.00, 0.60); // second rim, left
+  addCameraLight(renderer, -0.9, 0.8, 0.8, 1.00, 0.95, 0.88, 1.00);   // key: warm, upper left
+  addCameraLight(renderer, 1.0, 0.0, 0.7, 0.80, 0.88, 1.00, 0.22);    // fill: cool, right, low
+  addCameraLight(renderer, 1.0, 0.5, -0.6, 1.00, 1.00, 1.00, 1.00);   // rim: behind, upper right
+  addCameraLight(renderer, -1.0, 0.3, -0.6, 0.85, 0.90, 1.00, 0.60);  // second rim, left
 }
 
 void setStudioBackground(vtkRenderer* renderer) {

@@ -11,9 +11,9 @@
 #include <utility>
 #include <vector>
 
-#include <glm/glm.hpp>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkSmartPointer.h>
+#include <glm/glm.hpp>
 
 #include "render/view_lights.h"
 

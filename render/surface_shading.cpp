@@ -128,7 +128,8 @@ vtkOpenGLPolyDataMapper* newSurfaceMapper() {
   mapper->MapDataArrayToVertexAttribute("mqCurvatureMC", kCurvatureArray, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
   mapper->MapDataArrayToVertexAttribute("mqThicknessMC", kThicknessArray, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
   mapper->MapDataArrayToVertexAttribute("mqWrinkleMC", kWrinkleArray, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
-  mapper->MapDataArrayToVertexAttribute("mqWrinklePhaseMC", kWrinklePhaseArray, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+  mapper->MapDataArrayToVertexAttribute("mqWrinklePhaseMC", kWrinklePhaseArray, vtkDataObject::FIELD_ASSOCIATION_POINTS,
+                                        -1);
   return mapper;
 }
 
@@ -151,7 +152,8 @@ void applySurfaceLook(vtkActor* actor, const SurfaceLook& look, vtkTexture* albe
   sp->AddVertexShaderReplacement("//VTK::Normal::Dec", true, kVertexDec, false);
   sp->AddVertexShaderReplacement("//VTK::Normal::Impl", true, kVertexImpl, false);
   sp->AddFragmentShaderReplacement("//VTK::Normal::Dec", true, kFragmentDec, false);
-  sp->AddFragmentShaderReplacement("//VTK::Light::Impl", true, std::string(kSurfaceLight) + kRimLightAndOutputGlsl, false);
+  sp->AddFragmentShaderReplacement("//VTK::Light::Impl", true, std::string(kSurfaceLight) + kRimLightAndOutputGlsl,
+                                   false);
   vtkUniforms* u = sp->GetFragmentCustomUniforms();
   setUniform3(u, "mqAlbedo", look.albedo);
   setUniform3(u, "mqScatterColour", look.scatterColour);

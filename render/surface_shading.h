@@ -23,19 +23,19 @@ class vtkTexture;
 namespace mq::render {
 
 struct SurfaceLook {
-  glm::vec3 albedo{0.80f, 0.70f, 0.58f};  // sRGB
-  float ambient = 0.35f;       // hemisphere ambient strength
-  float wrap = 0.25f;          // 0 = Lambert; 0.5 = light reaches 60 degrees past the terminator
+  glm::vec3 albedo{0.80f, 0.70f, 0.58f};        // sRGB
+  float ambient = 0.35f;                        // hemisphere ambient strength
+  float wrap = 0.25f;                           // 0 = Lambert; 0.5 = light reaches 60 degrees past the terminator
   glm::vec3 scatterColour{1.0f, 0.55f, 0.35f};  // tint of light that went under the surface
-  float scatter = 0.5f;        // strength of the wrapped, tinted light
-  float translucency = 0.0f;   // back light shining through thin parts
-  float specular = 0.25f;      // gloss strength
-  float glossiness = 28.0f;    // Blinn-Phong exponent
-  float rim = 2.0f;            // rim light strength
-  float rimPower = 3.5f;       // higher: a thinner rim
-  float exposure = 0.75f;      // scales the linear result before sRGB encoding
-  float grain = 0.14f;         // wood grain: how much it darkens the albedo (0 = none)
-  float grainScale = 60.0f;    // streaks per metre, about
+  float scatter = 0.5f;                         // strength of the wrapped, tinted light
+  float translucency = 0.0f;                    // back light shining through thin parts
+  float specular = 0.25f;                       // gloss strength
+  float glossiness = 28.0f;                     // Blinn-Phong exponent
+  float rim = 2.0f;                             // rim light strength
+  float rimPower = 3.5f;                        // higher: a thinner rim
+  float exposure = 0.75f;                       // scales the linear result before sRGB encoding
+  float grain = 0.14f;                          // wood grain: how much it darkens the albedo (0 = none)
+  float grainScale = 60.0f;                     // streaks per metre, about
 
   // Skin: physically based (render/skin_shader.cpp). Above, `albedo`,
   // `ambient`, `translucency`, `specular` (the specular reflectance rho_s),
@@ -63,8 +63,8 @@ struct SurfaceLook {
   float wrinkleLambda = 1.0f;  // 1: none at rest
   float wrinkleSpacing = 9.0f;
 
-  static SurfaceLook mannequin();                     // satin, light warm wood
-  static SurfaceLook skin(const glm::vec3& albedo);   // physically based skin in this colour (sRGB)
+  static SurfaceLook mannequin();                    // satin, light warm wood
+  static SurfaceLook skin(const glm::vec3& albedo);  // physically based skin in this colour (sRGB)
   // Skin coloured by its own preset's total diffuse reflectance R_d.
   static SurfaceLook skinPresetLook(const std::string& preset);
   static SurfaceLook plain(const glm::vec3& albedo);  // no scattering (imported materials)

@@ -28,7 +28,11 @@ void draw(QPainter& p, Icon icon, const QColor& ink) {
   switch (icon) {
     case Icon::New: {
       QPainterPath page;
-      page.moveTo(6, 3); page.lineTo(14, 3); page.lineTo(19, 8); page.lineTo(19, 21); page.lineTo(6, 21);
+      page.moveTo(6, 3);
+      page.lineTo(14, 3);
+      page.lineTo(19, 8);
+      page.lineTo(19, 21);
+      page.lineTo(6, 21);
       page.closeSubpath();
       p.drawPath(page);
       p.drawPolyline(QPolygonF({{14, 3}, {14, 8}, {19, 8}}));
@@ -48,7 +52,10 @@ void draw(QPainter& p, Icon icon, const QColor& ink) {
     case Icon::Undo:
     case Icon::Redo: {
       p.save();
-      if (icon == Icon::Redo) { p.translate(24, 0); p.scale(-1, 1); }
+      if (icon == Icon::Redo) {
+        p.translate(24, 0);
+        p.scale(-1, 1);
+      }
       QPainterPath arc;
       arc.moveTo(6, 10);
       arc.lineTo(15, 10);
@@ -70,13 +77,14 @@ void draw(QPainter& p, Icon icon, const QColor& ink) {
       break;
     }
     case Icon::Skeleton: {
-      p.drawLine(QPointF(12, 6), QPointF(12, 14));   // spine
-      p.drawLine(QPointF(6, 9), QPointF(18, 9));     // shoulders
-      p.drawLine(QPointF(12, 14), QPointF(8, 21));   // legs
+      p.drawLine(QPointF(12, 6), QPointF(12, 14));  // spine
+      p.drawLine(QPointF(6, 9), QPointF(18, 9));    // shoulders
+      p.drawLine(QPointF(12, 14), QPointF(8, 21));  // legs
       p.drawLine(QPointF(12, 14), QPointF(16, 21));
       p.setBrush(kAccent);
       p.setPen(Qt::NoPen);
-      for (QPointF j : {QPointF(12, 4), QPointF(6, 9), QPointF(18, 9), QPointF(12, 14), QPointF(8, 21), QPointF(16, 21)})
+      for (QPointF j :
+           {QPointF(12, 4), QPointF(6, 9), QPointF(18, 9), QPointF(12, 14), QPointF(8, 21), QPointF(16, 21)})
         p.drawEllipse(j, 2.2, 2.2);
       break;
     }
@@ -92,7 +100,10 @@ void draw(QPainter& p, Icon icon, const QColor& ink) {
     case Icon::ToStart:
     case Icon::ToEnd: {
       p.save();
-      if (icon == Icon::ToEnd) { p.translate(24, 0); p.scale(-1, 1); }
+      if (icon == Icon::ToEnd) {
+        p.translate(24, 0);
+        p.scale(-1, 1);
+      }
       p.setBrush(ink);
       p.drawRect(QRectF(5, 5, 2, 14));
       p.drawPath(triangle({19, 5}, {9, 12}, {19, 19}));
@@ -102,7 +113,10 @@ void draw(QPainter& p, Icon icon, const QColor& ink) {
     case Icon::StepBack:
     case Icon::StepForward: {
       p.save();
-      if (icon == Icon::StepForward) { p.translate(24, 0); p.scale(-1, 1); }
+      if (icon == Icon::StepForward) {
+        p.translate(24, 0);
+        p.scale(-1, 1);
+      }
       p.setBrush(ink);
       p.drawPath(triangle({12, 6}, {4, 12}, {12, 18}));
       p.drawPath(triangle({20, 6}, {12, 12}, {20, 18}));

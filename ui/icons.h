@@ -6,10 +6,7 @@
 
 namespace mq::ui {
 
-enum class Icon {
-  New, Open, Save, Undo, Redo, FrameAll, Skeleton,
-  Play, Pause, ToStart, ToEnd, StepBack, StepForward
-};
+enum class Icon { New, Open, Save, Undo, Redo, FrameAll, Skeleton, Play, Pause, ToStart, ToEnd, StepBack, StepForward };
 
 QIcon makeIcon(Icon icon);
 

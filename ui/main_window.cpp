@@ -1,6 +1,7 @@
 #include "ui/main_window.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
 #include <QDockWidget>
 #include <QFileInfo>
@@ -13,18 +14,17 @@
 #include <QStyle>
 #include <QToolBar>
 #include <QUndoStack>
-#include <QActionGroup>
 #include <QUndoView>
 
 #include "render/scene_view.h"
 #include "ui/document/editor_document.h"
 #include "ui/document/pose_commands.h"
+#include "ui/garment/garment_tool.h"
+#include "ui/hair/hair_tool.h"
 #include "ui/icons.h"
 #include "ui/panels/properties_panel.h"
 #include "ui/panels/scene_tree_panel.h"
 #include "ui/panels/timeline_panel.h"
-#include "ui/garment/garment_tool.h"
-#include "ui/hair/hair_tool.h"
 #include "ui/viewport/pose_tool.h"
 #include "ui/viewport/vtk_viewport_widget.h"
 
@@ -42,13 +42,11 @@ MainWindow::MainWindow(QWidget* parent)
   viewport_->addRenderer(scene_->renderer());
   poseTool_ = new PoseTool(document_, scene_.get(), viewport_, this);
 
-  reportError = [this](const QString& title, const QString& message) {
-    QMessageBox::critical(this, title, message);
-  };
+  reportError = [this](const QString& title, const QString& message) { QMessageBox::critical(this, title, message); };
   confirmDiscardChanges = [this] {
-    const auto answer = QMessageBox::question(
-        this, tr("Unsaved changes"), tr("The document has unsaved changes. Save them first?"),
-        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    const auto answer =
+        QMessageBox::question(this, tr("Unsaved changes"), tr("The document has unsaved changes. Save them first?"),
+                              QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
     if (answer == QMessageBox::Save) return save();
     return answer == QMessageBox::Discard;
   };
@@ -59,7 +57,7 @@ MainWindow::MainWindow(QWidget* parent)
   createToolBar();
   createStatusBar();
   connectDocument();
-  new HairTool(this);  // the hair dock and viewport handles (ui/hair)
+  new HairTool(this);     // the hair dock and viewport handles (ui/hair)
   new GarmentTool(this);  // the garments dock, pins and cloth (ui/garment)
   restoreLayout();
   updateTitle();
@@ -167,8 +165,9 @@ void MainWindow::createActions() {
   connect(showWeightsAction_, &QAction::toggled, this, [this](bool on) { document_->setWeightsVisible(on); });
   showConesAction_ = new QAction(tr("Show Section &Cones"), this);
   showConesAction_->setCheckable(true);
-  showConesAction_->setToolTip(tr("Draw the survey's section cones around the limbs: the memorised sections the "
-                                  "cones skinning keeps, following the pose"));
+  showConesAction_->setToolTip(
+      tr("Draw the survey's section cones around the limbs: the memorised sections the "
+         "cones skinning keeps, following the pose"));
   connect(showConesAction_, &QAction::toggled, this, [this](bool on) { document_->setConesVisible(on); });
 
   showGridAction_ = new QAction(tr("Show &Grid"), this);
@@ -182,7 +181,8 @@ void MainWindow::createActions() {
   followAction_ = new QAction(tr("F&ollow Character"), this);
   followAction_->setCheckable(true);
   followAction_->setStatusTip(tr("Move the camera with the character when a motion carries it away"));
-  connect(followAction_, &QAction::toggled, this, [this](bool on) { followedRoot_ = on ? rootOnGround() : std::nullopt; });
+  connect(followAction_, &QAction::toggled, this,
+          [this](bool on) { followedRoot_ = on ? rootOnGround() : std::nullopt; });
 
   resetBoneAction_ = new QAction(tr("Reset &Bone Rotation"), this);
   resetBoneAction_->setShortcut(QKeySequence(tr("Alt+R")));
@@ -216,9 +216,8 @@ void MainWindow::createActions() {
   playAction_ = new QAction(makeIcon(Icon::Play), tr("&Play / Pause"), this);
   playAction_->setShortcut(QKeySequence(tr("Space")));
   connect(playAction_, &QAction::triggered, timeline_, &TimelinePanel::togglePlaying);
-  connect(timeline_, &TimelinePanel::playingChanged, this, [this](bool playing) {
-    playAction_->setIcon(makeIcon(playing ? Icon::Pause : Icon::Play));
-  });
+  connect(timeline_, &TimelinePanel::playingChanged, this,
+          [this](bool playing) { playAction_->setIcon(makeIcon(playing ? Icon::Pause : Icon::Play)); });
 }
 
 void MainWindow::createMenus() {
@@ -253,7 +252,8 @@ void MainWindow::createMenus() {
   lookMenu_ = viewMenu_->addMenu(tr("Surface &Look"));
   auto* looks = new QActionGroup(this);
   for (const auto& [mode, label, tip] :
-       {std::tuple{render::LookMode::Auto, tr("&Auto"), tr("Each surface by its file's material; the mannequin in wood")},
+       {std::tuple{render::LookMode::Auto, tr("&Auto"),
+                   tr("Each surface by its file's material; the mannequin in wood")},
         std::tuple{render::LookMode::Skin, tr("&Skin"), tr("Every surface shaded as skin")},
         std::tuple{render::LookMode::Mannequin, tr("&Mannequin"), tr("Every surface in the mannequin's wood")},
         std::tuple{render::LookMode::Plain, tr("&Plain"), tr("Every surface in its flat colour, no texture")}}) {
@@ -357,8 +357,7 @@ void MainWindow::connectDocument() {
     viewport_->requestRender();
   });
   connect(document_, &EditorDocument::modifiedChanged, this, &MainWindow::updateTitle);
-  connect(document_, &EditorDocument::clipsChanged, this,
-          [this] { statsLabel_->setText(document_->summary()); });
+  connect(document_, &EditorDocument::clipsChanged, this, [this] { statsLabel_->setText(document_->summary()); });
   connect(document_, &EditorDocument::documentChanged, this, &MainWindow::documentChanged);
   connect(document_, &EditorDocument::timeChanged, this, &MainWindow::timeChanged);
   connect(poseTool_, &PoseTool::bonePicked, this, [this](int bone) {
@@ -478,8 +477,10 @@ void MainWindow::storeCamera() {
 
 void MainWindow::restoreCamera() {
   const ViewSettings& view = document_->viewSettings();
-  if (view.hasCamera) scene_->setCamera(view.cameraPosition, view.cameraFocus);
-  else scene_->frameAll();
+  if (view.hasCamera)
+    scene_->setCamera(view.cameraPosition, view.cameraFocus);
+  else
+    scene_->frameAll();
 }
 
 }  // namespace mq::ui

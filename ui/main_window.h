@@ -91,8 +91,7 @@ class MainWindow : public QMainWindow {
   // Where Save As starts: the document itself, unless it is one of the
   // shipped examples (resources/scenes), lives in a folder the user cannot
   // write, or is not a scene document yet; then `documentsDir`.
-  static QString saveAsProposal(const QString& documentPath, const QString& characterName,
-                                const QString& documentsDir);
+  static QString saveAsProposal(const QString& documentPath, const QString& characterName, const QString& documentsDir);
   bool exportPosedMesh(const QString& path, QString* error = nullptr);
   void frameAll();
   void setSkeletonVisible(bool visible);

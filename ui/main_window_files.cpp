@@ -79,14 +79,17 @@ void MainWindow::setBusy(bool busy, const QString& message) {
   for (QAction* a : {newAction_, openAction_, applyMotionAction_, saveAction_, saveAsAction_, exportAction_})
     a->setEnabled(!busy);
   recentMenu_->setEnabled(!busy);
-  if (busy) QApplication::setOverrideCursor(Qt::BusyCursor);
-  else QApplication::restoreOverrideCursor();
+  if (busy)
+    QApplication::setOverrideCursor(Qt::BusyCursor);
+  else
+    QApplication::restoreOverrideCursor();
   statusBar()->showMessage(message, busy ? 0 : 8000);
   emit busyChanged(busy);
 }
 
 void MainWindow::showProgress(const QString& message, int percent) {
-  if (percent < 0) progress_->setRange(0, 0);
+  if (percent < 0)
+    progress_->setRange(0, 0);
   else {
     progress_->setRange(0, 100);
     progress_->setValue(percent);
@@ -97,8 +100,10 @@ void MainWindow::showProgress(const QString& message, int percent) {
 
 void MainWindow::hideProgress(const QString& message) {
   progress_->setVisible(busy_);
-  if (message.isEmpty()) statusBar()->clearMessage();
-  else statusBar()->showMessage(message, 8000);
+  if (message.isEmpty())
+    statusBar()->clearMessage();
+  else
+    statusBar()->showMessage(message, 8000);
 }
 
 void MainWindow::openFile(const QString& fileOrDefault) {
@@ -130,14 +135,14 @@ void MainWindow::openFile(const QString& fileOrDefault) {
       emit loadFinished(false);
       return;
     }
-    const bool isRecoveryCopy = autosave_ && QFileInfo(fileOrDefault).absolutePath() == QDir(autosave_->folder()).absolutePath();
+    const bool isRecoveryCopy =
+        autosave_ && QFileInfo(fileOrDefault).absolutePath() == QDir(autosave_->folder()).absolutePath();
     if (fileOrDefault != "default" && !isRecoveryCopy) addRecentFile(fileOrDefault);
     adoptLoaded(std::move(std::get<LoadedDocument>(outcome)), clock->elapsed() / 1000.0);
     emit loadFinished(true);
   });
-  watcher->setFuture(QtConcurrent::run([fileOrDefault] {
-    return runCatching<LoadedDocument>([&] { return loadDocument(fileOrDefault); });
-  }));
+  watcher->setFuture(QtConcurrent::run(
+      [fileOrDefault] { return runCatching<LoadedDocument>([&] { return loadDocument(fileOrDefault); }); }));
 }
 
 void MainWindow::applyMotion(const QString& bvhPath, const QString& nameMapPath, bool inPlace) {
@@ -169,9 +174,8 @@ void MainWindow::applyMotion(const QString& bvhPath, const QString& nameMapPath,
 void MainWindow::applyMotionWithDialog() {
   auto* dialog = new ApplyMotionDialog(document_->character(), this);
   dialog->setAttribute(Qt::WA_DeleteOnClose);
-  connect(dialog, &QDialog::accepted, this, [this, dialog] {
-    applyMotion(dialog->motionFile(), dialog->nameMapFile(), dialog->inPlace());
-  });
+  connect(dialog, &QDialog::accepted, this,
+          [this, dialog] { applyMotion(dialog->motionFile(), dialog->nameMapFile(), dialog->inPlace()); });
   dialog->open();
 }
 
@@ -219,14 +223,14 @@ void MainWindow::adoptLoaded(LoadedDocument loaded, double seconds) {
     warnings.push_back(document_->character().unitNotice);
   for (const std::string& w : scene_->warnings()) warnings.push_back(w);
   for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
-  const QString more = warnings.empty() ? QString()
-                                        : tr("; warning: %1%2").arg(QString::fromStdString(warnings.front()),
-                                                                    warnings.size() > 1 ? tr(" (and %1 more)").arg(warnings.size() - 1) : QString());
-  statusBar()->showMessage(tr("Opened %1: %2 (%3 s)%4")
-                               .arg(name, document_->summary())
-                               .arg(seconds, 0, 'f', 2)
-                               .arg(more),
-                           warnings.empty() ? 8000 : 20000);
+  const QString more = warnings.empty()
+                           ? QString()
+                           : tr("; warning: %1%2")
+                                 .arg(QString::fromStdString(warnings.front()),
+                                      warnings.size() > 1 ? tr(" (and %1 more)").arg(warnings.size() - 1) : QString());
+  statusBar()->showMessage(
+      tr("Opened %1: %2 (%3 s)%4").arg(name, document_->summary()).arg(seconds, 0, 'f', 2).arg(more),
+      warnings.empty() ? 8000 : 20000);
 }
 
 bool MainWindow::writeSceneTo(const QString& path, bool absolutePaths, QString* error) {
@@ -234,8 +238,8 @@ bool MainWindow::writeSceneTo(const QString& path, bool absolutePaths, QString* 
   SceneDocument scene = document_->sceneDocument();
   // Files the document refers to are stored relative to it.
   const QDir folder = QFileInfo(path).absoluteDir();
-  const QDir oldFolder = document_->documentPath().isEmpty() ? QDir::current()
-                                                              : QFileInfo(document_->documentPath()).absoluteDir();
+  const QDir oldFolder =
+      document_->documentPath().isEmpty() ? QDir::current() : QFileInfo(document_->documentPath()).absoluteDir();
   auto place = [&](std::string& stored) {
     if (stored.empty() || stored == "default") return;
     const QString absolute = oldFolder.absoluteFilePath(QString::fromStdString(stored));
@@ -280,26 +284,34 @@ bool MainWindow::offerRecovery() {
   const std::vector<RecoveryCopy> copies = Autosave::leftBehind(autosave_->folder());
   if (copies.empty()) return false;
   const RecoveryCopy copy = copies.front();
-  const QString name = copy.documentPath.isEmpty() ? tr("an untitled document") : QFileInfo(copy.documentPath).fileName();
-  const bool restore = confirmRecovery ? confirmRecovery(copy)
-                                       : QMessageBox::question(this, tr("Restore unsaved changes?"),
-                                                               tr("Mannequin did not close properly. Restore the "
-                                                                  "changes to %1 kept at %2?")
-                                                                   .arg(name, QLocale().toString(copy.written, QLocale::ShortFormat)),
-                                                               QMessageBox::Yes | QMessageBox::No) == QMessageBox::Yes;
+  const QString name =
+      copy.documentPath.isEmpty() ? tr("an untitled document") : QFileInfo(copy.documentPath).fileName();
+  const bool restore =
+      confirmRecovery ? confirmRecovery(copy)
+                      : QMessageBox::question(this, tr("Restore unsaved changes?"),
+                                              tr("Mannequin did not close properly. Restore the "
+                                                 "changes to %1 kept at %2?")
+                                                  .arg(name, QLocale().toString(copy.written, QLocale::ShortFormat)),
+                                              QMessageBox::Yes | QMessageBox::No) == QMessageBox::Yes;
   if (!restore) {
     Autosave::remove(copy);
     return false;
   }
-  connect(this, &MainWindow::loadFinished, this, [this, copy](bool ok) {
-    if (!ok) return;  // the copy stays for another try; the error was reported
-    document_->setDocumentPath(copy.documentPath.isEmpty() ? QString() : QFileInfo(copy.documentPath).absoluteFilePath());
-    document_->notifyChanged();  // restored changes are still unsaved
-    Autosave::remove(copy);
-    autosave_->saveNow();  // now this process keeps them
-    updateTitle();
-    statusBar()->showMessage(tr("Restored the unsaved changes to %1").arg(copy.documentPath.isEmpty() ? tr("an untitled document") : copy.documentPath), 8000);
-  }, Qt::SingleShotConnection);
+  connect(
+      this, &MainWindow::loadFinished, this,
+      [this, copy](bool ok) {
+        if (!ok) return;  // the copy stays for another try; the error was reported
+        document_->setDocumentPath(copy.documentPath.isEmpty() ? QString()
+                                                               : QFileInfo(copy.documentPath).absoluteFilePath());
+        document_->notifyChanged();  // restored changes are still unsaved
+        Autosave::remove(copy);
+        autosave_->saveNow();  // now this process keeps them
+        updateTitle();
+        statusBar()->showMessage(tr("Restored the unsaved changes to %1")
+                                     .arg(copy.documentPath.isEmpty() ? tr("an untitled document") : copy.documentPath),
+                                 8000);
+      },
+      Qt::SingleShotConnection);
   openFile(copy.copyPath);
   return true;
 }
@@ -324,9 +336,8 @@ QString MainWindow::saveAsProposal(const QString& documentPath, const QString& c
 }
 
 bool MainWindow::saveAs() {
-  const QString start =
-      saveAsProposal(document_->documentPath(), QString::fromStdString(document_->character().name),
-                     QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation));
+  const QString start = saveAsProposal(document_->documentPath(), QString::fromStdString(document_->character().name),
+                                       QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation));
   QString path = QFileDialog::getSaveFileName(this, tr("Save Scene"), start, saveSceneFilter());
   if (path.isEmpty()) return false;
   if (QFileInfo(path).suffix().isEmpty()) path += ".mqscene";
@@ -376,9 +387,7 @@ void MainWindow::rebuildRecentMenu() {
   for (const QString& file : files) {
     QAction* action = recentMenu_->addAction(QFileInfo(file).fileName());
     action->setToolTip(file);
-    connect(action, &QAction::triggered, this, [this, file] {
-      openFile(file);
-    });
+    connect(action, &QAction::triggered, this, [this, file] { openFile(file); });
   }
   recentMenu_->setEnabled(!files.isEmpty() && !busy_);
 }

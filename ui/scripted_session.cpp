@@ -48,8 +48,10 @@ void simulate(GarmentTool& tool, int steps) {
 
 void ScriptedSession::run(MainWindow& window, bool loaded) const {
   EditorDocument* doc = window.document();
-  if (clip == "rest") doc->setClip(-1);
-  else if (!clip.isEmpty()) doc->setClip(doc->character().findClip(clip.toStdString()));
+  if (clip == "rest")
+    doc->setClip(-1);
+  else if (!clip.isEmpty())
+    doc->setClip(doc->character().findClip(clip.toStdString()));
   auto* garments = window.findChild<GarmentTool*>();
   for (const QString& type : addGarments) garments->addGarment(type.toStdString());
   if (!addGarments.isEmpty() || bakes > 0 || showStretch || simulateSteps > 0) garments->dock()->raise();
@@ -67,7 +69,8 @@ void ScriptedSession::run(MainWindow& window, bool loaded) const {
   if (!select.isEmpty() && !doc->selectByName(select.toStdString()))
     std::fprintf(stderr, "mannequin: --select: no bone, material or mesh named '%s'\n", qPrintable(select));
   QString error;
-  if (!saveAs.isEmpty() && !window.saveDocument(saveAs, &error)) std::fprintf(stderr, "mannequin: %s\n", qPrintable(error));
+  if (!saveAs.isEmpty() && !window.saveDocument(saveAs, &error))
+    std::fprintf(stderr, "mannequin: %s\n", qPrintable(error));
   if (!takesScreenshot()) return;
   // The hair grows on a worker: the picture shows it grown.
   if (auto* hair = window.findChild<HairTool*>()) {

@@ -12,12 +12,12 @@ namespace mq::ui {
 class MainWindow;
 
 struct ScriptedSession {
-  QString clip;        // a clip name, or "rest"
+  QString clip;  // a clip name, or "rest"
   bool setTime = false;
-  double time = 0.0;   // seconds into the clip
-  QString select;      // a bone, material or mesh
+  double time = 0.0;        // seconds into the clip
+  QString select;           // a bone, material or mesh
   QStringList addGarments;  // "tshirt", "skirt", "trousers"
-  int bakes = 0;       // each --bake-garments bakes once more
+  int bakes = 0;            // each --bake-garments bakes once more
   QString exportBakeDir;
   int simulateSteps = 0;
   bool showStretch = false;

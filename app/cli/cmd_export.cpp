@@ -41,7 +41,8 @@ int exportSequence(const LoadedScene& scene, int clip, double fps, const std::st
 
 int runExport(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--out", "--clip", "--fps", "--skinning", "--helper-bones", "--regenerate-weights", "--smooth-weights", "--scale", "--rigged"});
+  args.allowOnly({"--out", "--clip", "--fps", "--skinning", "--helper-bones", "--regenerate-weights",
+                  "--smooth-weights", "--scale", "--rigged"});
   if (args.positional().size() != 1) throw Error("export needs exactly one FILE");
   const std::string out = args.option("--out");
   if (out.empty() || !isMeshExportPath(out)) throw Error("export needs --out OUT.obj, .ply, .gltf or .glb");
@@ -50,7 +51,8 @@ int runExport(const std::vector<std::string>& argv) {
   applyScaleOption(args, scene);
   applySkinningOption(args, scene);
   if (scene.character.meshes.empty())
-    throw Error("'" + scene.character.name + "' has no meshes to write (a BVH holds a skeleton and motion only: "
+    throw Error("'" + scene.character.name +
+                "' has no meshes to write (a BVH holds a skeleton and motion only: "
                 "apply it to a character with pose FILE --motion BVH)");
 
   if (args.has("--rigged")) {
@@ -59,7 +61,8 @@ int runExport(const std::vector<std::string>& argv) {
     const double fps = args.number("--fps", 30.0);
     exportRiggedCharacter(scene.character, out, static_cast<float>(fps));
     std::cout << "wrote " << out << " (rigged: " << scene.character.skeleton.boneCount() << " bones"
-              << withHelperBones(scene.character) << ", " << scene.character.clips.size() << " clips sampled at " << fps << " fps)\n";
+              << withHelperBones(scene.character) << ", " << scene.character.clips.size() << " clips sampled at " << fps
+              << " fps)\n";
     return 0;
   }
   if (args.option("--clip") == "rest") {
@@ -87,10 +90,13 @@ int runExport(const std::vector<std::string>& argv) {
   return exportSequence(scene, clip, fps, out);
 }
 
-static Registration reg({"export", "FILE --out OUT.obj|.ply|.gltf|.glb [--clip NAME|INDEX --fps F | --clip rest] [--skinning lbs|dqs|cones]\n"
-                         "         [--helper-bones] [--regenerate-weights] [--smooth-weights] [--scale S] [--rigged [--fps F]]",
-                         "write the rest pose, or every frame of a clip (OUT_0000.obj ...), as meshes; --rigged: the\n"
-                         "skeleton, skins and every clip (sampled at F fps, 30 by default) as one glTF or GLB", runExport});
+static Registration reg(
+    {"export",
+     "FILE --out OUT.obj|.ply|.gltf|.glb [--clip NAME|INDEX --fps F | --clip rest] [--skinning lbs|dqs|cones]\n"
+     "         [--helper-bones] [--regenerate-weights] [--smooth-weights] [--scale S] [--rigged [--fps F]]",
+     "write the rest pose, or every frame of a clip (OUT_0000.obj ...), as meshes; --rigged: the\n"
+     "skeleton, skins and every clip (sampled at F fps, 30 by default) as one glTF or GLB",
+     runExport});
 
 }  // namespace
 }  // namespace mq::cli

@@ -67,7 +67,8 @@ int runGroom(const std::vector<std::string>& argv) {
   }
   if (args.has("--points")) section.style.pointsPerStrand = countOption(args, "--points", 32, 2, 1024);
   if (args.has("--seed")) section.style.seed = uint32_t(countOption(args, "--seed", 1, 0, 2147483647));
-  if (args.has("--strands")) section.strands = size_t(countOption(args, "--strands", 0, 1, double(HairGroom::kMaxStrands)));
+  if (args.has("--strands"))
+    section.strands = size_t(countOption(args, "--strands", 0, 1, double(HairGroom::kMaxStrands)));
 
   const auto groomStart = std::chrono::steady_clock::now();
   const float unfittedLength = section.style.length;
@@ -89,27 +90,27 @@ int runGroom(const std::vector<std::string>& argv) {
   const std::string out = args.option("--out");
   if (!out.empty()) writeStrandsPly(strands, out);
 
-  nlohmann::json stats{{"style", section.style.name},
-                       {"strands", strands.strandCount()},
-                       {"guides", groom->guideCount()},
-                       {"points_per_strand", strands.pointsPerStrand},
-                       {"seconds", growSeconds},
-                       {"roots_seconds", groom->timings().roots},
-                       {"guides_seconds", groom->timings().guides},
-                       {"children_seconds", groom->timings().children},
-                       {"setup_seconds", setupSeconds},
-                       {"total_seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()},
-                       {"panels", groom->flow().panels().size()},
-                       {"scalp_area_cm2", groom->scalp().area() * 1e4},
-                       {"min_root_distance_mm", groom->childRoots().size() ? groom->childRoots().minDistance * 1e3 : 0.0f},
-                       {"head_size_m", headSize(groom->proxy())},
-                       {"style_scale", section.style.length / unfittedLength},
-                       {"bbox_min", bounds(strands.points, false)},
-                       {"bbox_max", bounds(strands.points, true)},
-                       {"points_inside_body", inside}};
+  nlohmann::json stats{
+      {"style", section.style.name},
+      {"strands", strands.strandCount()},
+      {"guides", groom->guideCount()},
+      {"points_per_strand", strands.pointsPerStrand},
+      {"seconds", growSeconds},
+      {"roots_seconds", groom->timings().roots},
+      {"guides_seconds", groom->timings().guides},
+      {"children_seconds", groom->timings().children},
+      {"setup_seconds", setupSeconds},
+      {"total_seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()},
+      {"panels", groom->flow().panels().size()},
+      {"scalp_area_cm2", groom->scalp().area() * 1e4},
+      {"min_root_distance_mm", groom->childRoots().size() ? groom->childRoots().minDistance * 1e3 : 0.0f},
+      {"head_size_m", headSize(groom->proxy())},
+      {"style_scale", section.style.length / unfittedLength},
+      {"bbox_min", bounds(strands.points, false)},
+      {"bbox_max", bounds(strands.points, true)},
+      {"points_inside_body", inside}};
   const std::string statsPath = args.option("--stats-json");
-  if (!statsPath.empty())
-    writeFileAtomically(statsPath, [&](std::ostream& o) { o << std::setw(2) << stats << "\n"; });
+  if (!statsPath.empty()) writeFileAtomically(statsPath, [&](std::ostream& o) { o << std::setw(2) << stats << "\n"; });
   std::cout << "groomed " << strands.strandCount() << " strands (" << groom->guideCount() << " guides) x "
             << strands.pointsPerStrand << " points, style " << section.style.name << ", in " << growSeconds
             << " s (guides " << groom->timings().guides << " s, children " << groom->timings().children
@@ -117,9 +118,10 @@ int runGroom(const std::vector<std::string>& argv) {
   return inside == 0 ? 0 : 4;
 }
 
-static Registration reg({"groom", "SCENE|default [--strands N] [--points P] [--style NAME] [--seed S] [--out strands.ply] [--stats-json OUT]",
-                         "grows the hairstyle (flow-field styling, guides and children); stats and PLY polylines",
-                         runGroom});
+static Registration reg(
+    {"groom",
+     "SCENE|default [--strands N] [--points P] [--style NAME] [--seed S] [--out strands.ply] [--stats-json OUT]",
+     "grows the hairstyle (flow-field styling, guides and children); stats and PLY polylines", runGroom});
 
 }  // namespace
 }  // namespace mq::cli

@@ -46,7 +46,8 @@ int runHairColor(const std::vector<std::string>& argv) {
   return 0;
 }
 
-Registration reg({"hair-color", "[--preset black|brown|blond|red|grey] [--melanin M] [--pheomelanin P] [--roughness R] [--json]",
+Registration reg({"hair-color",
+                  "[--preset black|brown|blond|red|grey] [--melanin M] [--pheomelanin P] [--roughness R] [--json]",
                   "hair absorption sigma_a per RGB channel from melanin concentrations (Chiang et al. 2016), "
                   "and the fibre's mean albedo",
                   runHairColor});

@@ -141,10 +141,11 @@ int runInfo(const std::vector<std::string>& argv) {
   return 0;
 }
 
-static Registration reg({"info", "FILE [--json] [--scale S]",
-                         "meshes (vertices, triangles), bones (name, parent), max influences, materials, clips (name, duration),\n"
-                         "and the garment bake the editor saved beside a scene document (NAME.mqbake)",
-                         runInfo});
+static Registration reg(
+    {"info", "FILE [--json] [--scale S]",
+     "meshes (vertices, triangles), bones (name, parent), max influences, materials, clips (name, duration),\n"
+     "and the garment bake the editor saved beside a scene document (NAME.mqbake)",
+     runInfo});
 
 }  // namespace
 }  // namespace mq::cli

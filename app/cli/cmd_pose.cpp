@@ -1,6 +1,6 @@
-// mannequin-cli pose FILE --time T [--clip NAME|INDEX] [--motion BVH [--map MAP] [--in-place]] --out OUT.obj|.ply|.gltf|.glb
-// Writes the character posed at time T (on the clip's own key-time axis) in
-// world space. A motion prints how its joints were paired with the bones.
+// mannequin-cli pose FILE --time T [--clip NAME|INDEX] [--motion BVH [--map MAP] [--in-place]] --out
+// OUT.obj|.ply|.gltf|.glb Writes the character posed at time T (on the clip's own key-time axis) in world space. A
+// motion prints how its joints were paired with the bones.
 #include <iostream>
 
 #include <nlohmann/json.hpp>
@@ -48,8 +48,8 @@ void writeJoints(const Skeleton& skeleton, const std::vector<glm::mat4>& worldFr
 
 int runPose(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--time", "--clip", "--motion", "--map", "--in-place", "--out", "--skinning", "--helper-bones", "--regenerate-weights", "--smooth-weights",
-                  "--joints-out", "--scale"});
+  args.allowOnly({"--time", "--clip", "--motion", "--map", "--in-place", "--out", "--skinning", "--helper-bones",
+                  "--regenerate-weights", "--smooth-weights", "--joints-out", "--scale"});
   if (args.positional().size() != 1) throw Error("pose needs exactly one FILE");
   const std::string out = args.option("--out");
   if (out.empty()) throw Error("pose needs --out OUT.obj, .ply, .gltf or .glb");
@@ -60,14 +60,16 @@ int runPose(const std::vector<std::string>& argv) {
   applyScaleOption(args, scene);
   applySkinningOption(args, scene);
   if (scene.character.meshes.empty())
-    throw Error("'" + scene.character.name + "' has no meshes to write (a BVH holds a skeleton and motion only: "
+    throw Error("'" + scene.character.name +
+                "' has no meshes to write (a BVH holds a skeleton and motion only: "
                 "apply it to a character with pose FILE --motion BVH)");
   const int clip = chooseClip(args, scene);
   const float time = static_cast<float>(args.number("--time", scene.document.time));
   PosedCharacter posed;
   posed.evaluate(scene.character, clip, time, &scene.edits, &ThreadPool::shared());
   exportPosedCharacter(scene.character, posed, out);
-  if (args.has("--joints-out")) writeJoints(scene.character.skeleton, posed.worldFromBone(), args.option("--joints-out"));
+  if (args.has("--joints-out"))
+    writeJoints(scene.character.skeleton, posed.worldFromBone(), args.option("--joints-out"));
   std::cout << "wrote " << out << ": " << scene.character.vertexCount() << " vertices, "
             << scene.character.triangleCount() << " triangles, clip "
             << (clip >= 0 ? "'" + scene.character.clips[clip].name + "'" : std::string("none (rest pose)"))
@@ -76,8 +78,10 @@ int runPose(const std::vector<std::string>& argv) {
   return 0;
 }
 
-static Registration reg({"pose", "FILE --time T [--clip NAME|INDEX|rest] [--motion BVH [--map MAP] [--in-place]]\n"
-                         "         --out OUT.obj|.ply|.gltf|.glb [--skinning lbs|dqs|cones] [--helper-bones] [--regenerate-weights] [--smooth-weights]\n"
+static Registration reg({"pose",
+                         "FILE --time T [--clip NAME|INDEX|rest] [--motion BVH [--map MAP] [--in-place]]\n"
+                         "         --out OUT.obj|.ply|.gltf|.glb [--skinning lbs|dqs|cones] [--helper-bones] "
+                         "[--regenerate-weights] [--smooth-weights]\n"
                          "         [--scale S] [--joints-out JOINTS.json]",
                          "write the posed mesh at time T in world space (OBJ, PLY, glTF or GLB)", runPose,
                          "--motion applies a BVH to the character: its joints drive the bones of the same name,\n"

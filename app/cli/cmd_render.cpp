@@ -33,7 +33,8 @@ ImageSize parseSize(const std::string& text) {
 
 render::LookMode parseLook(const std::string& name) {
   render::LookMode mode = render::LookMode::Auto;
-  if (!render::parseLookMode(name, mode)) throw Error("--look expects auto, skin, mannequin or plain, got '" + name + "'");
+  if (!render::parseLookMode(name, mode))
+    throw Error("--look expects auto, skin, mannequin or plain, got '" + name + "'");
   return mode;
 }
 
@@ -55,8 +56,27 @@ void placeCamera(render::SceneView& view, const ViewSettings& settings, const Im
 
 int runRender(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--out", "--time", "--clip", "--size", "--skeleton", "--look", "--scale", "--hair", "--hair-shadow", "--skinning", "--helper-bones", "--regenerate-weights", "--smooth-weights",
-                  "--hair-shader", "--hair-pigment", "--melanin", "--pheomelanin", "--hair-roughness", "--skin-preset", "--weights", "--cones"});
+  args.allowOnly({"--out",
+                  "--time",
+                  "--clip",
+                  "--size",
+                  "--skeleton",
+                  "--look",
+                  "--scale",
+                  "--hair",
+                  "--hair-shadow",
+                  "--skinning",
+                  "--helper-bones",
+                  "--regenerate-weights",
+                  "--smooth-weights",
+                  "--hair-shader",
+                  "--hair-pigment",
+                  "--melanin",
+                  "--pheomelanin",
+                  "--hair-roughness",
+                  "--skin-preset",
+                  "--weights",
+                  "--cones"});
   if (args.positional().size() != 1) throw Error("expects one FILE (or 'default'); see mannequin-cli --help");
   const std::string file = args.positional()[0];
   const std::string out = args.option("--out");
@@ -91,13 +111,13 @@ int runRender(const std::vector<std::string>& argv) {
   for (const std::string& warning : loadNotices(scene)) std::cerr << "warning: " << warning << "\n";
   for (const std::string& warning : view.warnings()) std::cerr << "warning: " << warning << "\n";
   // A motion file alone (no meshes) shows its skeleton.
-  view.setSkeletonVisible(args.has("--skeleton") || scene.document.view.showSkeleton ||
-                          scene.character.meshes.empty());
+  view.setSkeletonVisible(args.has("--skeleton") || scene.document.view.showSkeleton || scene.character.meshes.empty());
   const RenderedGarments garments = addSceneGarments(view, scene, clip, time, file);
   view.setAmbientOcclusion(true);
   placeCamera(view, scene.document.view, size);
   std::string hairSummary;
-  HairRenderOptions hairOptions = parseHairRenderOptions(args.option("--hair", "auto"), args.option("--hair-shadow", "count"));
+  HairRenderOptions hairOptions =
+      parseHairRenderOptions(args.option("--hair", "auto"), args.option("--hair-shadow", "count"));
   if (args.has("--hair-shader")) hairOptions.model = hairShadingModelFromName(args.option("--hair-shader"));
   if (args.has("--hair-pigment")) hairOptions.pigment = args.option("--hair-pigment");
   if (args.has("--melanin")) hairOptions.melanin = float(args.number("--melanin", 0.0));
@@ -113,9 +133,11 @@ int runRender(const std::vector<std::string>& argv) {
   return 0;
 }
 
-Registration reg({"render", "FILE --out OUT.png [--time T] [--clip NAME|INDEX|rest] [--size WxH] [--skeleton]\n"
+Registration reg({"render",
+                  "FILE --out OUT.png [--time T] [--clip NAME|INDEX|rest] [--size WxH] [--skeleton]\n"
                   "         [--look auto|skin|mannequin|plain] [--hair auto|simulate|rigid|off]\n"
-                  "         [--hair-shadow count|maps] [--skinning lbs|dqs|cones] [--helper-bones] [--regenerate-weights] [--smooth-weights] [--scale S]\n"
+                  "         [--hair-shadow count|maps] [--skinning lbs|dqs|cones] [--helper-bones] "
+                  "[--regenerate-weights] [--smooth-weights] [--scale S]\n"
                   "         [--skin-preset skin1|skin2|light|medium|tan|dark]\n"
                   "         [--hair-shader kajiya-kay|physical] [--hair-pigment black|brown|blond|red|grey]\n"
                   "         [--melanin M] [--pheomelanin P] [--hair-roughness R] [--weights BONE] [--cones]",

@@ -1,8 +1,7 @@
-// mannequin-cli simulate SCENE --frames N [--fps F] [--stats-json OUT] [--export-dir DIR [--export-format obj|pc2]] [--layers on|off]
-// Runs the cloth of a scene document headless (the "cloth" section's sheet
-// and the "garments", sewn then welded, on the character playing its clip)
-// and reports what the benchmarks compare: wall time, stretch, penetrations,
-// bounds over all cloth, and per garment in "garments".
+// mannequin-cli simulate SCENE --frames N [--fps F] [--stats-json OUT] [--export-dir DIR [--export-format obj|pc2]]
+// [--layers on|off] Runs the cloth of a scene document headless (the "cloth" section's sheet and the "garments", sewn
+// then welded, on the character playing its clip) and reports what the benchmarks compare: wall time, stretch,
+// penetrations, bounds over all cloth, and per garment in "garments".
 #include <chrono>
 #include <ctime>
 #include <filesystem>
@@ -14,12 +13,12 @@
 #include "app/cli/command.h"
 #include "app/cli/simulate_garments.h"
 #include "app/cli/simulate_hair.h"
-#include "core/io/json_fields.h"
 #include "core/character/posed_character.h"
+#include "core/io/json_fields.h"
 #include "core/scene/open_scene.h"
+#include "core/util/error.h"
 #include "core/util/memory_budget.h"
 #include "core/util/process_memory.h"
-#include "core/util/error.h"
 #include "core/util/thread_pool.h"
 #include "sim/cloth/baked_cloth.h"
 #include "sim/cloth/cloth_scene_io.h"
@@ -69,9 +68,9 @@ struct RunResult {
   int maxPenetrating = 0;  // the most cloth vertices inside the body in any frame
   long long solverIterations = 0;
   int substeps = 0;
-  double poseSeconds = 0.0;  // posing the character (skinning) for the frames
+  double poseSeconds = 0.0;                           // posing the character (skinning) for the frames
   double phaseSeconds[cloth::kClothPhaseCount] = {};  // the sheet's solver phases (ClothPhase)
-  double rssAfterFirstFrame = 0.0;  // MB: memory must stay flat over long runs
+  double rssAfterFirstFrame = 0.0;                    // MB: memory must stay flat over long runs
 };
 
 // All cloth of the scene, stepped frame by frame on the (animated) body.
@@ -250,16 +249,19 @@ int runSimulate(const std::vector<std::string>& argv) {
     if (!out) throw FileError(statsPath, "cannot open for writing");
     out << stats.dump(2) << "\n";
   }
-  std::cout << "simulated " << frames << " frames of " << now.vertices << " cloth vertices in " << r.seconds
-            << " s (" << 1000.0 * r.seconds / frames << " ms/frame), max stretch " << r.maxStretch
-            << ", penetrating vertices " << now.penetratingVertices << "\n";
+  std::cout << "simulated " << frames << " frames of " << now.vertices << " cloth vertices in " << r.seconds << " s ("
+            << 1000.0 * r.seconds / frames << " ms/frame), max stretch " << r.maxStretch << ", penetrating vertices "
+            << now.penetratingVertices << "\n";
   return 0;
 }
 
-const cli::Registration reg({"simulate", "SCENE --frames N [--fps F] [--stats-json OUT] [--export-dir DIR [--export-format obj|pc2]]\n"
-                             "         [--layers on|off] [--skinning lbs|dqs|cones] [--helper-bones] [--regenerate-weights] [--smooth-weights] [--scale S]",
-                             "run the scene's cloth (sheet and garments) and hair headless; stats as JSON, frames as OBJ/PLY\n"
-                             "(one file per frame), or with --export-format pc2 one Point Cache 2 file per cloth and its mesh",
-                             runSimulate});
+const cli::Registration reg(
+    {"simulate",
+     "SCENE --frames N [--fps F] [--stats-json OUT] [--export-dir DIR [--export-format obj|pc2]]\n"
+     "         [--layers on|off] [--skinning lbs|dqs|cones] [--helper-bones] [--regenerate-weights] [--smooth-weights] "
+     "[--scale S]",
+     "run the scene's cloth (sheet and garments) and hair headless; stats as JSON, frames as OBJ/PLY\n"
+     "(one file per frame), or with --export-format pc2 one Point Cache 2 file per cloth and its mesh",
+     runSimulate});
 
 }  // namespace

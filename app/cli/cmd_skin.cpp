@@ -101,7 +101,8 @@ std::string presetList() {
 
 static Registration reg({"skin", "(--preset NAME | --melanin M --hemoglobin H) [--json]",
                          "skin optics per RGB channel: sigma_a, sigma_s', eta, reduced albedo, diffuse reflectance, "
-                         "mean free path, and Blender Principled BSDF settings; presets: " + presetList(),
+                         "mean free path, and Blender Principled BSDF settings; presets: " +
+                             presetList(),
                          runSkin});
 
 }  // namespace

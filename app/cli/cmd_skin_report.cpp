@@ -32,14 +32,15 @@ json toJson(const SkinReport& r) {
   j["rest_error"] = r.restError;
   j["poses"] = json::array();
   for (const PoseMeasure& p : r.poses)
-    j["poses"].push_back({{"pose", p.name},
-                          {"thickness", measured(p.thickness)},
-                          {"half_area", measured(p.halfArea)},
-                          {"twist_section", measured(p.twistSection)},
-                          {"local_volume", measured(p.localVolume)},
-                          {"intersections", measured(p.intersections)},
-                          {"body_deviation_rms_mm", p.deviationRms < 0.0 ? json() : measured(1e3 * p.deviationRms)},
-                          {"body_deviation_mean_mm", p.deviationRms < 0.0 ? json() : json(std::round(1e7 * p.deviationMean) / 1e4)}});
+    j["poses"].push_back(
+        {{"pose", p.name},
+         {"thickness", measured(p.thickness)},
+         {"half_area", measured(p.halfArea)},
+         {"twist_section", measured(p.twistSection)},
+         {"local_volume", measured(p.localVolume)},
+         {"intersections", measured(p.intersections)},
+         {"body_deviation_rms_mm", p.deviationRms < 0.0 ? json() : measured(1e3 * p.deviationRms)},
+         {"body_deviation_mean_mm", p.deviationRms < 0.0 ? json() : json(std::round(1e7 * p.deviationMean) / 1e4)}});
   j["clips"] = json::array();
   for (const ClipMeasure& c : r.clips)
     j["clips"].push_back({{"clip", c.name},
@@ -74,15 +75,17 @@ void printTable(const std::string& file, const SkinReport& r, std::ostream& out)
   }
   for (const ClipMeasure& c : r.clips)
     out << "  clip '" << c.name << "', " << c.frames << " frames: M4 worst "
-        << (c.worstIntersections < 0 ? "-" : std::to_string(c.worstIntersections) + " at t = " + cell(c.worstTime, 3) +
-                                                 " s, mean " + cell(c.meanIntersections, 1))
+        << (c.worstIntersections < 0 ? "-"
+                                     : std::to_string(c.worstIntersections) + " at t = " + cell(c.worstTime, 3) +
+                                           " s, mean " + cell(c.meanIntersections, 1))
         << "; M3' volume " << cell(c.minVolume, 4) << " to " << cell(c.maxVolume, 4) << "\n";
   for (const std::string& note : r.notes) out << "  note: " << note << "\n";
 }
 
 int runSkinReport(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--skinning", "--helper-bones", "--regenerate-weights", "--smooth-weights", "--scale", "--json", "--no-poses", "--no-clips", "--no-intersections", "--clip-fps"});
+  args.allowOnly({"--skinning", "--helper-bones", "--regenerate-weights", "--smooth-weights", "--scale", "--json",
+                  "--no-poses", "--no-clips", "--no-intersections", "--clip-fps"});
   if (args.positional().size() != 1) throw Error("skin-report needs exactly one FILE");
   const std::string file = args.positional()[0];
   LoadedScene scene = openScene(file);
@@ -105,7 +108,8 @@ int runSkinReport(const std::vector<std::string>& argv) {
 }
 
 static Registration reg({"skin-report",
-                         "FILE [--skinning lbs|dqs|cones] [--helper-bones] [--regenerate-weights] [--smooth-weights] [--scale S] [--json] [--no-poses] [--no-clips] [--no-intersections]\n"
+                         "FILE [--skinning lbs|dqs|cones] [--helper-bones] [--regenerate-weights] [--smooth-weights] "
+                         "[--scale S] [--json] [--no-poses] [--no-clips] [--no-intersections]\n"
                          "         [--clip-fps F]",
                          "skin metrics (outer section M1, twist section M2, local volume M3, self-intersections M4) "
                          "on a humanoid's test poses and over each clip",

@@ -10,7 +10,7 @@ namespace mq {
 struct Character;
 struct LoadedScene;
 struct BoneMatchReport;
-}
+}  // namespace mq
 
 namespace mq::cli {
 

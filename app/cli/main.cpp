@@ -4,13 +4,13 @@
 #include <iostream>
 
 #include "app/cli/command.h"
+#include "core/character/posed_character.h"
 #include "core/io/json_fields.h"
 #include "core/scene/open_scene.h"
 #include "core/skinning/section_cones.h"
 #include "core/skinning/weight_regeneration.h"
 #include "core/util/error.h"
 #include "core/util/thread_pool.h"
-#include "core/character/posed_character.h"
 
 namespace mq::cli {
 
@@ -21,10 +21,23 @@ std::vector<Command>& commands() {
 
 Args::Args(const std::vector<std::string>& args) {
   // Flags that take no value; everything else starting with -- takes one.
-  static const std::vector<std::string> flags = {"--json", "--help", "--skeleton", "--no-hair",
-                                                 "--no-cloth", "--self-collisions", "--no-poses", "--no-clips",
-                                                 "--no-intersections", "--in-place", "--helper-bones", "--rigged",
-                                                 "--regenerate-weights", "--smooth-weights", "--regenerate", "--smooth", "--cones"};
+  static const std::vector<std::string> flags = {"--json",
+                                                 "--help",
+                                                 "--skeleton",
+                                                 "--no-hair",
+                                                 "--no-cloth",
+                                                 "--self-collisions",
+                                                 "--no-poses",
+                                                 "--no-clips",
+                                                 "--no-intersections",
+                                                 "--in-place",
+                                                 "--helper-bones",
+                                                 "--rigged",
+                                                 "--regenerate-weights",
+                                                 "--smooth-weights",
+                                                 "--regenerate",
+                                                 "--smooth",
+                                                 "--cones"};
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a.rfind("--", 0) == 0 && a.size() > 2) {
@@ -155,7 +168,8 @@ int main(int argc, char** argv) {
       std::cerr << "mannequin-cli " << c.name << ": error: " << e.what() << "\n";
       return 1;
     } catch (const std::bad_alloc&) {
-      std::cerr << "mannequin-cli " << c.name << ": error: out of memory (the input asks for more than this machine has)\n";
+      std::cerr << "mannequin-cli " << c.name
+                << ": error: out of memory (the input asks for more than this machine has)\n";
       return 1;
     } catch (const std::exception& e) {
       std::cerr << "mannequin-cli " << c.name << ": internal error: " << mq::jsonProblem(e) << "\n";

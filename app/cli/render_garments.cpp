@@ -99,8 +99,8 @@ RenderedGarments addSceneGarments(render::SceneView& view, const LoadedScene& sc
     view.add(*actor);
     rendered.actors.push_back(std::move(actor));
     rendered.summary += (rendered.summary.empty() ? "" : ", ") + garments[g].name + " (" +
-                        std::to_string(simulation.vertexCount()) + " vertices, " + std::to_string(steps[g]) +
-                        " steps" + (simulation.welded() ? "" : ", seams not welded") + ")";
+                        std::to_string(simulation.vertexCount()) + " vertices, " + std::to_string(steps[g]) + " steps" +
+                        (simulation.welded() ? "" : ", seams not welded") + ")";
   }
   return rendered;
 }

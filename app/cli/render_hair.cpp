@@ -20,7 +20,8 @@ const std::vector<float>& simulateTo(SceneHair& hair, float clipStart, float tim
   const float start = std::min(clipStart, time);
   hair.settle(start, kSettleSeconds, kRenderFps);
   const int steps = int(std::lround((time - start) * kRenderFps));
-  for (int i = 1; i <= steps; ++i) hair.step(start + (time - start) * float(i) / float(steps), (time - start) / float(steps));
+  for (int i = 1; i <= steps; ++i)
+    hair.step(start + (time - start) * float(i) / float(steps), (time - start) / float(steps));
   if (steps == 0) hair.step(time, 1.0f / kRenderFps);
   return hair.updateAllStrands();
 }
@@ -59,8 +60,8 @@ HairShadingParams HairRenderOptions::shadingFor(HairShadingParams style) const {
   return style;
 }
 
-std::unique_ptr<render::HairActor> addSceneHair(render::SceneView& view, const LoadedScene& scene, int clip,
-                                                float time, const HairRenderOptions& options, std::string& summary) {
+std::unique_ptr<render::HairActor> addSceneHair(render::SceneView& view, const LoadedScene& scene, int clip, float time,
+                                                const HairRenderOptions& options, std::string& summary) {
   HairRenderMode mode = options.mode;
   if (mode == HairRenderMode::Off || !sceneHasHair(scene)) return nullptr;
   const bool hasClip = clip >= 0 && clip < int(scene.character.clips.size());

@@ -44,8 +44,7 @@ HairRenderOptions parseHairRenderOptions(const std::string& mode, const std::str
 // Adds the hair of `scene` (none without a "hair" section) to `view` for
 // clip `clip` at `time`. Returns the actor, which must outlive the
 // rendering, or null; `summary` gets a short description for the user.
-std::unique_ptr<render::HairActor> addSceneHair(render::SceneView& view, const LoadedScene& scene, int clip,
-                                                float time, const HairRenderOptions& options,
-                                                std::string& summary);
+std::unique_ptr<render::HairActor> addSceneHair(render::SceneView& view, const LoadedScene& scene, int clip, float time,
+                                                const HairRenderOptions& options, std::string& summary);
 
 }  // namespace mq::cli

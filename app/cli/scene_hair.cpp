@@ -43,7 +43,8 @@ HairSection sceneHairSection(const LoadedScene& scene) {
   }
 }
 
-SceneHair::SceneHair(const LoadedScene& scene, const HairSection& section) : scene_(scene), clip_(scene.clipIndex), section_(section) {
+SceneHair::SceneHair(const LoadedScene& scene, const HairSection& section)
+    : scene_(scene), clip_(scene.clipIndex), section_(section) {
   const auto start = std::chrono::steady_clock::now();
   try {
     groom_ = makeSectionGroom(scene.character, section_);
@@ -92,7 +93,8 @@ void SceneHair::anchorRoots() {
     const auto& tris = scene_.character.meshes[m].triangles;
     const auto& pos = rest.meshes()[m].positions;
     for (uint32_t t = 0; t < tris.size() / 3; ++t) {
-      const glm::vec3 a = vertexOf(pos, tris[3 * t]), b = vertexOf(pos, tris[3 * t + 1]), c = vertexOf(pos, tris[3 * t + 2]);
+      const glm::vec3 a = vertexOf(pos, tris[3 * t]), b = vertexOf(pos, tris[3 * t + 1]),
+                      c = vertexOf(pos, tris[3 * t + 2]);
       const glm::vec3 tlo = glm::min(a, glm::min(b, c)), thi = glm::max(a, glm::max(b, c));
       if (glm::all(glm::lessThanEqual(tlo, hi)) && glm::all(glm::greaterThanEqual(thi, lo)) && !degenerate(a, b, c))
         candidates.push_back({int(m), t});
@@ -144,20 +146,22 @@ void SceneHair::updateRootTargets() {
   for (size_t s = 0; s < anchors_.size(); ++s) {
     const RootAnchor& anchor = anchors_[s];
     if (anchor.mesh < 0) {
-      rootPositions_[s] = glm::vec3(headMotion * glm::vec4(vertexOf(guides.points, uint32_t(s * guides.pointsPerStrand)), 1.0f));
+      rootPositions_[s] =
+          glm::vec3(headMotion * glm::vec4(vertexOf(guides.points, uint32_t(s * guides.pointsPerStrand)), 1.0f));
       rootRotations_[s] = headRotation;
       continue;
     }
     const auto& pos = posed_.meshes()[anchor.mesh].positions;
-    const glm::vec3 a = vertexOf(pos, anchor.corner[0]), b = vertexOf(pos, anchor.corner[1]), c = vertexOf(pos, anchor.corner[2]);
+    const glm::vec3 a = vertexOf(pos, anchor.corner[0]), b = vertexOf(pos, anchor.corner[1]),
+                    c = vertexOf(pos, anchor.corner[2]);
     if (degenerate(a, b, c)) {
       rootRotations_[s] = headRotation;
       rootPositions_[s] = anchor.barycentric.x * a + anchor.barycentric.y * b + anchor.barycentric.z * c;
       continue;
     }
     const glm::mat3 frame = triangleFrame(a, b, c);
-    rootPositions_[s] = anchor.barycentric.x * a + anchor.barycentric.y * b + anchor.barycentric.z * c +
-                        frame * anchor.localOffset;
+    rootPositions_[s] =
+        anchor.barycentric.x * a + anchor.barycentric.y * b + anchor.barycentric.z * c + frame * anchor.localOffset;
     rootRotations_[s] = glm::normalize(glm::quat_cast(frame * glm::transpose(anchor.restFrame)));
   }
 }
@@ -197,8 +201,10 @@ SceneHair::InsideCount SceneHair::pointsInsideBody() const {
   InsideCount count;
   for (size_t k = 0; k + 2 < all_.size(); k += 3) {
     if (!exact.contains({all_[k], all_[k + 1], all_[k + 2]})) continue;
-    if ((k / 3) % perStrand == 0) ++count.roots;
-    else ++count.points;
+    if ((k / 3) % perStrand == 0)
+      ++count.roots;
+    else
+      ++count.points;
   }
   return count;
 }

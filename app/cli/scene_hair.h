@@ -25,7 +25,6 @@ namespace mq::cli {
 
 bool sceneHasHair(const LoadedScene& scene);
 
-
 // The document's hair section; FileError naming the document when invalid.
 HairSection sceneHairSection(const LoadedScene& scene);
 

@@ -64,7 +64,7 @@ SimulatedGarments::SimulatedGarments(const nlohmann::json& section, const cloth:
 SimulatedGarments::~SimulatedGarments() = default;
 
 DressingResult SimulatedGarments::dress(const std::vector<float>& restBody, const std::vector<float>& startBody,
-                                       float dt) {
+                                        float dt) {
   const auto t0 = std::chrono::steady_clock::now();
   DressingResult r;
   auto allWelded = [&] {
@@ -125,8 +125,10 @@ void SimulatedGarments::measureFrame() {
 
 void SimulatedGarments::exportFrame(const std::string& dir, int frame) const {
   for (size_t i = 0; i < sims_.size(); ++i)
-    cloth::writeObj((std::filesystem::path(dir) / cloth::objFrameName(cloth::garmentFileStem(garments_[i].name, i), size_t(frame))).string(),
-                    sims_[i]->positions(), sims_[i]->triangles());
+    cloth::writeObj(
+        (std::filesystem::path(dir) / cloth::objFrameName(cloth::garmentFileStem(garments_[i].name, i), size_t(frame)))
+            .string(),
+        sims_[i]->positions(), sims_[i]->triangles());
 }
 
 void SimulatedGarments::recordFrame(float fps) {
@@ -161,7 +163,8 @@ nlohmann::json SimulatedGarments::stats() const {
                    {"stretch_passes_per_frame", frames_ ? double(stretchPasses_[i]) / frames_ : 0.0},
                    {"cg_iterations_per_frame", frames_ ? double(solverIterations_[i]) / frames_ : 0.0},
                    {"cg_residual_median", median(residuals_[i])},
-                   {"cg_residual_max", residuals_[i].empty() ? 0.0f : *std::max_element(residuals_[i].begin(), residuals_[i].end())},
+                   {"cg_residual_max",
+                    residuals_[i].empty() ? 0.0f : *std::max_element(residuals_[i].begin(), residuals_[i].end())},
                    {"seam_gap", sim.seamGap()},
                    {"max_stretch", st.maxStretch},
                    {"penetrating_vertices", sim.simulator().penetratingVertices()},

@@ -69,14 +69,14 @@ class SimulatedGarments {
   std::vector<Garment> garments_;
   std::vector<std::unique_ptr<cloth::GarmentSimulation>> sims_;
   int insideInner(size_t garment) const;
-  std::vector<size_t> order_;     // inner to outer (garment_layers.h)
+  std::vector<size_t> order_;  // inner to outer (garment_layers.h)
   bool layered_ = true;
   std::vector<int> maxInsideInner_;  // per garment, over measureFrame()
   int maxInsideInnerTotal_ = 0;
   std::vector<int> sewingSteps_;  // per garment: steps until the weld (in dress())
   std::vector<long long> substeps_, stretchPasses_, solverIterations_;  // per garment, summed over step()
-  std::vector<std::vector<float>> residuals_;  // per garment: each step()'s solver residual
-  double phaseSeconds_[cloth::kClothPhaseCount] = {};  // all garments, summed over step()
+  std::vector<std::vector<float>> residuals_;                           // per garment: each step()'s solver residual
+  double phaseSeconds_[cloth::kClothPhaseCount] = {};                   // all garments, summed over step()
   int frames_ = 0;
   std::vector<cloth::BakedCloth> recorded_;  // per garment, by recordFrame
 };

@@ -11,8 +11,8 @@
 #include "core/hair/strands_io.h"
 #include "core/util/atomic_file.h"
 #include "core/util/error.h"
-#include "core/util/thread_pool.h"
 #include "core/util/process_memory.h"
+#include "core/util/thread_pool.h"
 
 namespace mq::cli {
 namespace {
@@ -103,8 +103,8 @@ int simulateHairOnly(const LoadedScene& scene, const std::string& path, int fram
     std::filesystem::create_directories(exportDir, ec);
     if (ec) throw FileError(exportDir, "cannot create the directory: " + ec.message());
   }
-  nlohmann::json stats = {{"scene", path}, {"frames", frames}, {"fps", fps},
-                          {"threads", ThreadPool::shared().threadCount()}};
+  nlohmann::json stats = {
+      {"scene", path}, {"frames", frames}, {"fps", fps}, {"threads", ThreadPool::shared().threadCount()}};
   simulateSceneHair(scene, frames, fps, exportDir, stats);
   const std::string statsPath = args.option("--stats-json");
   if (!statsPath.empty()) writeFileAtomically(statsPath, [&](std::ostream& o) { o << stats.dump(2) << "\n"; });

@@ -34,12 +34,13 @@ int main(int argc, char** argv) {
   parser.setApplicationDescription("Mannequin: pose, animate, groom and dress virtual humans.");
   parser.addHelpOption();
   parser.addVersionOption();
-  parser.addPositionalArgument("FILE", "default, a character (.gltf .glb .fbx .dae), a motion (.bvh) "
-                                       "or a scene document (.mqscene)");
+  parser.addPositionalArgument("FILE",
+                               "default, a character (.gltf .glb .fbx .dae), a motion (.bvh) "
+                               "or a scene document (.mqscene)");
   const QCommandLineOption screenshot("screenshot", "Save a picture of the window to OUT.png and quit.", "OUT.png");
   const QCommandLineOption size("size", "Window size, WIDTHxHEIGHT (default 1600x1000).", "WxH", "1600x1000");
-  const QCommandLineOption select("select", "Select a bone (shows the rotation gizmo on it), a material or a mesh by NAME.",
-                                  "NAME");
+  const QCommandLineOption select(
+      "select", "Select a bone (shows the rotation gizmo on it), a material or a mesh by NAME.", "NAME");
   const QCommandLineOption clip("clip", "Show clip NAME (or index; rest: the rest pose).", "NAME");
   const QCommandLineOption timeOption("time", "Go to SECONDS into the clip.", "SECONDS");
   const QCommandLineOption map("map", "Bone-name map for a BVH FILE (see core/io/bvh_import.h).", "MAP");
@@ -50,8 +51,8 @@ int main(int argc, char** argv) {
   const QCommandLineOption saveAs("save-as", "Save the scene document to FILE once set up.", "FILE");
   parser.addOption(addGarment);
   parser.addOption(bakeGarments);
-  const QCommandLineOption simulateGarments("simulate-garments",
-                                            "Simulate the garments (and the sheet) live for N steps before the screenshot.", "N");
+  const QCommandLineOption simulateGarments(
+      "simulate-garments", "Simulate the garments (and the sheet) live for N steps before the screenshot.", "N");
   parser.addOption(simulateGarments);
   const QCommandLineOption exportBake("export-bake", "After --bake-garments, write the bake as OBJ sequences into DIR.",
                                       "DIR");
@@ -70,7 +71,8 @@ int main(int argc, char** argv) {
 
   mq::ui::MainWindow window;
   const QStringList wh = parser.value(size).split('x');
-  window.resize(wh.value(0).toInt() > 0 ? wh.value(0).toInt() : 1600, wh.value(1).toInt() > 0 ? wh.value(1).toInt() : 1000);
+  window.resize(wh.value(0).toInt() > 0 ? wh.value(0).toInt() : 1600,
+                wh.value(1).toInt() > 0 ? wh.value(1).toInt() : 1000);
   const bool takeScreenshot = parser.isSet(screenshot);
   // Screenshots use the default layout, so they look the same everywhere.
   if (!takeScreenshot && !parser.isSet(size)) window.restoreWindowState();
@@ -96,17 +98,21 @@ int main(int argc, char** argv) {
   session.saveAs = parser.value(saveAs);
   session.screenshot = parser.value(screenshot);
   auto afterLoad = [&window, session] {
-    QObject::connect(&window, &mq::ui::MainWindow::loadFinished, &window,
-                     [&window, session](bool ok) { session.run(window, ok); }, Qt::SingleShotConnection);
+    QObject::connect(
+        &window, &mq::ui::MainWindow::loadFinished, &window, [&window, session](bool ok) { session.run(window, ok); },
+        Qt::SingleShotConnection);
   };
 
   if (mq::ui::isMotionFile(file)) {
     // A motion alone is shown on the default mannequin.
     const QString mapPath = parser.value(map);
-    QObject::connect(&window, &mq::ui::MainWindow::loadFinished, &window, [&window, file, mapPath, afterLoad](bool) {
-      afterLoad();
-      window.applyMotion(file, mapPath);
-    }, Qt::SingleShotConnection);
+    QObject::connect(
+        &window, &mq::ui::MainWindow::loadFinished, &window,
+        [&window, file, mapPath, afterLoad](bool) {
+          afterLoad();
+          window.applyMotion(file, mapPath);
+        },
+        Qt::SingleShotConnection);
     window.openFile("default");
   } else {
     afterLoad();
@@ -118,8 +124,9 @@ int main(int argc, char** argv) {
     bool isNumber = false;
     const int seconds = qEnvironmentVariable("MANNEQUIN_AUTOSAVE_SECONDS").toInt(&isNumber);
     window.enableAutosave(mq::ui::Autosave::defaultFolder(), isNumber && seconds > 0 ? seconds : 60);
-    QObject::connect(&window, &mq::ui::MainWindow::loadFinished, &window, [&window] { window.offerRecovery(); },
-                     Qt::SingleShotConnection);
+    QObject::connect(
+        &window, &mq::ui::MainWindow::loadFinished, &window, [&window] { window.offerRecovery(); },
+        Qt::SingleShotConnection);
   }
 
   return app.exec();

@@ -10,9 +10,7 @@
 namespace mq {
 namespace {
 
-bool hasTangents(Interpolation i) {
-  return i == Interpolation::CubicSpline || i == Interpolation::Bezier;
-}
+bool hasTangents(Interpolation i) { return i == Interpolation::CubicSpline || i == Interpolation::Bezier; }
 
 void normaliseQuat(float* q) {
   const float n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
@@ -37,8 +35,7 @@ void Track::validate() const {
                                 std::to_string(times.size()) + " keys");
   for (size_t i = 0; i < times.size(); ++i) {
     if (!std::isfinite(times[i])) throw std::invalid_argument("track key time is not finite");
-    if (i > 0 && times[i] < times[i - 1])
-      throw std::invalid_argument("track key times decrease");
+    if (i > 0 && times[i] < times[i - 1]) throw std::invalid_argument("track key times decrease");
   }
   for (float v : values)
     if (!std::isfinite(v)) throw std::invalid_argument("track value is not finite");
@@ -87,8 +84,7 @@ void Track::sample(float t, float* out) const {
       const float* handleIn1 = v1 - components;
       const float u = 1.0f - s;
       const float b0 = u * u * u, b1 = 3 * u * u * s, b2 = 3 * u * s * s, b3 = s * s * s;
-      for (int c = 0; c < components; ++c)
-        out[c] = b0 * v0[c] + b1 * handleOut0[c] + b2 * handleIn1[c] + b3 * v1[c];
+      for (int c = 0; c < components; ++c) out[c] = b0 * v0[c] + b1 * handleOut0[c] + b2 * handleIn1[c] + b3 * v1[c];
       break;
     }
   }

@@ -41,9 +41,12 @@ namespace {
 // Texture coordinates, tangents and material ranges of one mesh.
 void validateSurface(const Mesh& m, size_t materialCount, const std::string& where) {
   const size_t n = m.vertexCount();
-  if (!m.uvs.empty() && m.uvs.size() != 2 * n) throw std::runtime_error(where + "texture coordinate count differs from vertex count");
-  if (!m.uvs1.empty() && m.uvs1.size() != 2 * n) throw std::runtime_error(where + "second texture coordinate count differs from vertex count");
-  if (!m.tangents.empty() && m.tangents.size() != 4 * n) throw std::runtime_error(where + "tangent count differs from vertex count");
+  if (!m.uvs.empty() && m.uvs.size() != 2 * n)
+    throw std::runtime_error(where + "texture coordinate count differs from vertex count");
+  if (!m.uvs1.empty() && m.uvs1.size() != 2 * n)
+    throw std::runtime_error(where + "second texture coordinate count differs from vertex count");
+  if (!m.tangents.empty() && m.tangents.size() != 4 * n)
+    throw std::runtime_error(where + "tangent count differs from vertex count");
   for (const Submesh& r : m.drawRanges()) {
     if (r.material < -1 || r.material >= static_cast<int>(materialCount))
       throw std::runtime_error(where + "material index " + std::to_string(r.material) + " out of range");
@@ -110,13 +113,15 @@ void Character::validate() const {
     const size_t n = m.vertexCount();
     const std::string where = "mesh '" + m.name + "': ";
     if (m.positions.size() != 3 * n) throw std::runtime_error(where + "position array is not a multiple of 3");
-    if (!m.normals.empty() && m.normals.size() != 3 * n) throw std::runtime_error(where + "normal count differs from vertex count");
+    if (!m.normals.empty() && m.normals.size() != 3 * n)
+      throw std::runtime_error(where + "normal count differs from vertex count");
     for (uint32_t i : m.triangles)
       if (i >= n) throw std::runtime_error(where + "triangle index " + std::to_string(i) + " out of range");
     for (float p : m.positions)
       if (!std::isfinite(p)) throw std::runtime_error(where + "non-finite vertex position");
     for (const MorphTarget& t : m.morphTargets)
-      if (t.positionDeltas.size() != 3 * n) throw std::runtime_error(where + "morph target size differs from vertex count");
+      if (t.positionDeltas.size() != 3 * n)
+        throw std::runtime_error(where + "morph target size differs from vertex count");
     validateSurface(m, materials.size(), where);
     const SkinBinding& s = m.skin;
     if (s.empty()) continue;

@@ -147,11 +147,13 @@ class BodyBuilder {
     const glm::vec3 wide(1, 0, 0);
     constexpr int kTrunk = 0;
     constexpr float kWide = 1.8f, kDeep = 1.2f;  // section: half-width 1.8 r, half-depth 1.2 r
-    const glm::vec3 spinePath[] = {{0, 0.87f, -0.01f}, {0, 1.0f, -0.005f}, {0, 1.12f, 0.0f}, {0, 1.28f, -0.01f}, {0, 1.37f, -0.02f}};
+    const glm::vec3 spinePath[] = {
+        {0, 0.87f, -0.01f}, {0, 1.0f, -0.005f}, {0, 1.12f, 0.0f}, {0, 1.28f, -0.01f}, {0, 1.37f, -0.02f}};
     const float radius[] = {0.09f, 0.08f, 0.076f, 0.089f, 0.072f};
     const int segmentBone[] = {pelvis, spine, chest, chest};
     for (int i = 0; i < 4; ++i)
-      cone(spinePath[i], spinePath[i + 1], radius[i], radius[i + 1], segmentBone[i], 0.014f, wide, kWide, kDeep, kTrunk);
+      cone(spinePath[i], spinePath[i + 1], radius[i], radius[i + 1], segmentBone[i], 0.014f, wide, kWide, kDeep,
+           kTrunk);
     for (bool left : {true, false})
       ellipsoid(onSide({0.068f, 0.885f, -0.05f}, left), {0.075f, 0.085f, 0.065f}, pelvis, 0.012f);
     cone({0, 1.42f, -0.025f}, {0, 1.6f, -0.005f}, 0.06f, 0.054f, neck, 0.012f);
@@ -167,7 +169,8 @@ class BodyBuilder {
   void addArm(bool left) {
     const int clavicle = side("clavicle", left), upper = side("upperarm", left);
     const int fore = side("forearm", left), hand = side("hand", left);
-    cone(onSide({0.04f, 1.43f, -0.035f}, left), onSide({0.16f, 1.415f, -0.025f}, left), 0.045f, 0.042f, clavicle, 0.012f);
+    cone(onSide({0.04f, 1.43f, -0.035f}, left), onSide({0.16f, 1.415f, -0.025f}, left), 0.045f, 0.042f, clavicle,
+         0.012f);
     const glm::vec3 shoulder = head(upper), elbow = head(fore), wrist = head(hand), tip = tail(hand);
     const glm::vec3 upperDir = glm::normalize(elbow - shoulder), foreDir = glm::normalize(wrist - elbow);
     ellipsoid(shoulder + 0.01f * upperDir, {0.055f, 0.058f, 0.055f}, upper, 0.01f);
@@ -263,7 +266,8 @@ std::vector<float> potentialWeights(const Mesh& mesh, const ImplicitBody& body, 
         if (distance[i] < distance[nearest]) nearest = i;
       }
       std::fill(perBone.begin(), perBone.end(), 0.0f);
-      for (size_t i = 0; i < prims.size(); ++i) perBone[prims[i].bone] += std::exp(-std::max(distance[i], 0.0f) / falloff(prims[i].bone));
+      for (size_t i = 0; i < prims.size(); ++i)
+        perBone[prims[i].bone] += std::exp(-std::max(distance[i], 0.0f) / falloff(prims[i].bone));
       for (int b : allowed[prims[nearest].bone]) dense[v * bones + b] = perBone[b];
     }
   });
@@ -353,7 +357,9 @@ struct Motion {
   glm::vec3 restDirection(int bone) const { return glm::normalize(worldRest[bone][1]); }
 };
 
-glm::quat about(const glm::vec3& axis, float degrees) { return glm::angleAxis(glm::radians(degrees), glm::normalize(axis)); }
+glm::quat about(const glm::vec3& axis, float degrees) {
+  return glm::angleAxis(glm::radians(degrees), glm::normalize(axis));
+}
 
 // Samples f(phase) at evenly spaced keys over [0, duration]; the last key
 // repeats the first when the motion loops.
@@ -413,8 +419,8 @@ Clip makeWalk(const Skeleton& s) {
   });
   clip.boneChannels.push_back(std::move(root));
   addRotation(clip, s.findBone("chest"), rotationTrack(kKeys, kDuration, true, [&](float u) {
-    return m.local(s.findBone("chest"), about(yAxis, -9.0f * wave(u)));
-  }));
+                return m.local(s.findBone("chest"), about(yAxis, -9.0f * wave(u)));
+              }));
   for (bool left : {true, false}) {
     const std::string suffix = left ? "_l" : "_r";
     const float shift = left ? 0.0f : 0.5f;
@@ -422,23 +428,24 @@ Clip makeWalk(const Skeleton& s) {
     const int foot = s.findBone("foot" + suffix), upper = s.findBone("upperarm" + suffix);
     const int fore = s.findBone("forearm" + suffix);
     addRotation(clip, thigh, rotationTrack(kKeys, kDuration, true, [&](float u) {
-      return m.local(thigh, about(xAxis, -25.0f * wave(u, shift)));
-    }));
+                  return m.local(thigh, about(xAxis, -25.0f * wave(u, shift)));
+                }));
     addRotation(clip, shin, rotationTrack(kKeys, kDuration, true, [&](float u) {
-      const float swing = std::max(0.0f, wave(u, shift + 0.25f));  // knee folds while the leg swings forward
-      return m.local(shin, about(xAxis, 8.0f + 50.0f * swing * swing));
-    }));
+                  const float swing =
+                      std::max(0.0f, wave(u, shift + 0.25f));  // knee folds while the leg swings forward
+                  return m.local(shin, about(xAxis, 8.0f + 50.0f * swing * swing));
+                }));
     addRotation(clip, foot, rotationTrack(kKeys, kDuration, true, [&](float u) {
-      return m.local(foot, about(xAxis, 10.0f * wave(u, shift + 0.1f)));
-    }));
+                  return m.local(foot, about(xAxis, 10.0f * wave(u, shift + 0.1f)));
+                }));
     const float toBody = left ? -1.0f : 1.0f;  // brings the A-pose arm down beside the body
     addRotation(clip, upper, rotationTrack(kKeys, kDuration, true, [&](float u) {
-      return m.local(upper, about(xAxis, 18.0f * wave(u, shift)) * about({0, 0, 1}, toBody * 32.0f));
-    }));
+                  return m.local(upper, about(xAxis, 18.0f * wave(u, shift)) * about({0, 0, 1}, toBody * 32.0f));
+                }));
     addRotation(clip, fore, rotationTrack(kKeys, kDuration, true, [&](float u) {
-      const glm::vec3 hinge = glm::cross(m.restDirection(fore), glm::vec3(0, 0, 1));
-      return m.local(fore, about(hinge, 20.0f - 12.0f * wave(u, shift)));
-    }));
+                  const glm::vec3 hinge = glm::cross(m.restDirection(fore), glm::vec3(0, 0, 1));
+                  return m.local(fore, about(hinge, 20.0f - 12.0f * wave(u, shift)));
+                }));
   }
   return clip;
 }
@@ -451,17 +458,20 @@ Clip makeArmRaise(const Skeleton& s) {
   Clip clip;
   clip.name = "arm_raise";
   clip.wrap = WrapMode::Clamp;
-  auto lift = [](float u) { const float x = std::sin(float(M_PI) * u); return x * x; };  // 0 -> 1 -> 0, eased
+  auto lift = [](float u) {
+    const float x = std::sin(float(M_PI) * u);
+    return x * x;
+  };  // 0 -> 1 -> 0, eased
   for (bool left : {true, false}) {
     const std::string suffix = left ? "_l" : "_r";
     const float sign = left ? 1.0f : -1.0f;
     const int clavicle = s.findBone("clavicle" + suffix), upper = s.findBone("upperarm" + suffix);
     addRotation(clip, clavicle, rotationTrack(kKeys, kDuration, false, [&](float u) {
-      return m.local(clavicle, about({0, 0, 1}, sign * 15.0f * lift(u)));
-    }));
+                  return m.local(clavicle, about({0, 0, 1}, sign * 15.0f * lift(u)));
+                }));
     addRotation(clip, upper, rotationTrack(kKeys, kDuration, false, [&](float u) {
-      return m.local(upper, about({0, 0, 1}, sign * 95.0f * lift(u)));
-    }));
+                  return m.local(upper, about({0, 0, 1}, sign * 95.0f * lift(u)));
+                }));
   }
   return clip;
 }

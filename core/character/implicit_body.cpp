@@ -82,9 +82,8 @@ Aabb movedBox(const Aabb& box, const glm::mat3& rotation, const glm::vec3& trans
 
 }  // namespace
 
-ImplicitPrimitive ImplicitPrimitive::roundCone(const glm::vec3& a, const glm::vec3& b, float r0, float r1,
-                                               int bone, float blend, const glm::vec3& wide, float wideScale,
-                                               float thickScale) {
+ImplicitPrimitive ImplicitPrimitive::roundCone(const glm::vec3& a, const glm::vec3& b, float r0, float r1, int bone,
+                                               float blend, const glm::vec3& wide, float wideScale, float thickScale) {
   ImplicitPrimitive p;
   p.shape = Shape::RoundCone;
   p.bone = bone;
@@ -104,8 +103,7 @@ ImplicitPrimitive ImplicitPrimitive::roundCone(const glm::vec3& a, const glm::ve
   return p;
 }
 
-ImplicitPrimitive ImplicitPrimitive::ellipsoid(const glm::vec3& center, const glm::vec3& radii, int bone,
-                                               float blend) {
+ImplicitPrimitive ImplicitPrimitive::ellipsoid(const glm::vec3& center, const glm::vec3& radii, int bone, float blend) {
   ImplicitPrimitive p;
   p.shape = Shape::Ellipsoid;
   p.bone = bone;

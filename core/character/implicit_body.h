@@ -24,27 +24,27 @@ struct ImplicitPrimitive {
   enum class Shape { RoundCone, Ellipsoid };
 
   Shape shape = Shape::Ellipsoid;
-  int bone = -1;       // skeleton bone the primitive belongs to
+  int bone = -1;  // skeleton bone the primitive belongs to
   // Primitives of one group (>= 0) act as one: the union (a smooth min with
   // rounding 0.3 blend) of their distances gets one potential, so a chain of
   // segments does not bulge where two meet. Members share their blend.
   int group = -1;
-  float blend = 0.01f; // falloff k of the potential, metres
+  float blend = 0.01f;  // falloff k of the potential, metres
   // Local frame: q = localFromWorld * (p - origin), then divided by stretch.
   glm::vec3 origin{0.0f};
   glm::mat3 localFromWorld{1.0f};
   glm::vec3 stretch{1.0f};
-  float length = 0.0f;            // round cone: along local +Y from the origin
+  float length = 0.0f;  // round cone: along local +Y from the origin
   float radius0 = 0.0f, radius1 = 0.0f;
-  glm::vec3 radii{0.0f};          // ellipsoid
-  Aabb extent;                    // the primitive itself
-  Aabb support;                   // where the potential is not negligible
+  glm::vec3 radii{0.0f};  // ellipsoid
+  Aabb extent;            // the primitive itself
+  Aabb support;           // where the potential is not negligible
 
   // A cone from a (radius r0) to b (radius r1) with round ends. The cross
   // section can be an ellipse: `wide` (world direction, made perpendicular to
   // the axis) is stretched by wideScale and the third axis by thickScale.
-  static ImplicitPrimitive roundCone(const glm::vec3& a, const glm::vec3& b, float r0, float r1, int bone,
-                                     float blend, const glm::vec3& wide = {0, 0, 0}, float wideScale = 1.0f,
+  static ImplicitPrimitive roundCone(const glm::vec3& a, const glm::vec3& b, float r0, float r1, int bone, float blend,
+                                     const glm::vec3& wide = {0, 0, 0}, float wideScale = 1.0f,
                                      float thickScale = 1.0f);
   static ImplicitPrimitive ellipsoid(const glm::vec3& center, const glm::vec3& radii, int bone, float blend);
 
@@ -59,7 +59,9 @@ class ImplicitBody {
   static constexpr int kMaxGroups = 8;
 
   void add(const ImplicitPrimitive& primitive);
-  void setGround(float height, float rounding) { groundHeight_ = height, groundRounding_ = rounding, hasGround_ = true; }
+  void setGround(float height, float rounding) {
+    groundHeight_ = height, groundRounding_ = rounding, hasGround_ = true;
+  }
   void setReferenceBlend(float k) { referenceBlend_ = k; }
 
   const std::vector<ImplicitPrimitive>& primitives() const { return primitives_; }

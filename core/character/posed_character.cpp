@@ -46,14 +46,15 @@ void applyMorphTargets(const Mesh& mesh, const std::vector<float>& weights, std:
   }
   // Dual quaternion skinning rotates normals without rescaling them.
   for (size_t i = 0; i + 2 < normals.size(); i += 3) {
-    const float len = std::sqrt(normals[i] * normals[i] + normals[i + 1] * normals[i + 1] + normals[i + 2] * normals[i + 2]);
+    const float len =
+        std::sqrt(normals[i] * normals[i] + normals[i + 1] * normals[i + 1] + normals[i + 2] * normals[i + 2]);
     if (len > 0.0f)
       for (int d = 0; d < 3; ++d) normals[i + d] /= len;
   }
 }
 
-void transformRigid(const glm::mat4& m, const float* positions, const float* normals, size_t count,
-                    float* outPositions, float* outNormals) {
+void transformRigid(const glm::mat4& m, const float* positions, const float* normals, size_t count, float* outPositions,
+                    float* outNormals) {
   const glm::mat3 r(m);
   for (size_t v = 0; v < count; ++v) {
     const glm::vec3 p = glm::vec3(m * glm::vec4(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2], 1.0f));
@@ -138,8 +139,8 @@ void PosedCharacter::evaluate(const Character& character, const Pose& pose,
 
 void PosedCharacter::evaluate(const Character& character, int clipIndex, float time, const PoseEdits* edits,
                               ThreadPool* pool) {
-  evaluate(character, samplePose(character, clipIndex, time, edits),
-           sampleMorphWeights(character, clipIndex, time), pool);
+  evaluate(character, samplePose(character, clipIndex, time, edits), sampleMorphWeights(character, clipIndex, time),
+           pool);
 }
 
 }  // namespace mq

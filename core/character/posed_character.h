@@ -30,11 +30,10 @@ class PosedCharacter {
  public:
   // Poses `character` with local bone transforms `pose` and per-mesh morph
   // weights (empty: the meshes' defaults).
-  void evaluate(const Character& character, const Pose& pose,
-                const std::vector<std::vector<float>>& morphWeights, ThreadPool* pool);
-  // Convenience: clip + time + edits.
-  void evaluate(const Character& character, int clipIndex, float time, const PoseEdits* edits,
+  void evaluate(const Character& character, const Pose& pose, const std::vector<std::vector<float>>& morphWeights,
                 ThreadPool* pool);
+  // Convenience: clip + time + edits.
+  void evaluate(const Character& character, int clipIndex, float time, const PoseEdits* edits, ThreadPool* pool);
 
   const std::vector<PosedMesh>& meshes() const { return meshes_; }
   const std::vector<glm::mat4>& worldFromBone() const { return worldFromBone_; }

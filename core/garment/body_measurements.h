@@ -1,8 +1,8 @@
 #pragma once
 // What a tailor measures, read from a character in its rest pose: joint
 // positions (skeleton rest world transforms, bones found by findHumanoidBones:
-// names with common aliases, else the skeleton's structure), girths (ellipses fitted to thin slices of the skin) and the
-// bounding capsules of the body. Index 0 of a pair is the character's left (+X).
+// names with common aliases, else the skeleton's structure), girths (ellipses fitted to thin slices of the skin) and
+// the bounding capsules of the body. Index 0 of a pair is the character's left (+X).
 
 #include <string>
 #include <vector>

@@ -90,7 +90,8 @@ class PanelLocator {
 }  // namespace
 
 std::vector<float> transferDrape(const GarmentMesh& before, const std::vector<float>& drape, const GarmentMesh& after) {
-  if (drape.size() != 3 * before.vertexCount()) throw Error("the drape does not fit the garment mesh it is carried from");
+  if (drape.size() != 3 * before.vertexCount())
+    throw Error("the drape does not fit the garment mesh it is carried from");
   std::vector<float> out(3 * after.vertexCount());
   if (before.vertexCount() == 0) return out;
   const bool patterns = hasPatterns(before) && hasPatterns(after);
@@ -117,9 +118,10 @@ std::vector<float> transferDrape(const GarmentMesh& before, const std::vector<fl
   };
   for (size_t v = 0; v < after.vertexCount(); ++v) {
     const size_t panel = patterns ? after.panelIds[v] : 0;
-    const glm::vec3 p = patterns && panel < locators.size() && !locators[panel].empty()
-                            ? locators[panel].drapeAt(samePlace(uvOf(after, v), boundsAfter[panel], boundsBefore[panel]), drape)
-                            : at(drape, nearestOld(v));
+    const glm::vec3 p =
+        patterns && panel < locators.size() && !locators[panel].empty()
+            ? locators[panel].drapeAt(samePlace(uvOf(after, v), boundsAfter[panel], boundsBefore[panel]), drape)
+            : at(drape, nearestOld(v));
     out[3 * v] = p.x, out[3 * v + 1] = p.y, out[3 * v + 2] = p.z;
   }
   return out;

@@ -54,7 +54,8 @@ Fabric fabricFromJson(const json& j, const std::string& path, std::string& prese
     fabric = fabricPreset(preset);
   }
   for (auto entry = j.begin(); entry != j.end(); ++entry) {
-    static const char* known[] = {"preset", "mass_per_area", "stretch", "shear", "bend", "damping", "friction", "thickness"};
+    static const char* known[] = {"preset", "mass_per_area", "stretch",  "shear",
+                                  "bend",   "damping",       "friction", "thickness"};
     bool isKnown = false;
     for (const char* k : known) isKnown = isKnown || entry.key() == k;
     if (!isKnown) throw Error(path + "." + entry.key() + ": unknown fabric key");

@@ -35,12 +35,12 @@ struct Garment {
   std::string name;
   std::vector<Panel> panels;
   std::vector<Seam> seams;
-  std::string fabric = "cotton";    // the fabric preset ("" = custom: customFabric alone)
+  std::string fabric = "cotton";  // the fabric preset ("" = custom: customFabric alone)
   // Values of a document's own fabric ("fabric": {"preset": .., "stretch": ..});
   // none: the preset's.
   std::optional<Fabric> customFabric;
   GarmentPins pins;
-  float targetEdgeLength = 0.02f;   // metres
+  float targetEdgeLength = 0.02f;  // metres
   ParametricRecipe recipe;
   // Layering (sim/garment/garment_layers.h): a garment is worn over those of
   // lower layers, and over those of its own layer earlier in the list.
@@ -60,11 +60,11 @@ struct Garment {
 
 // The meshed, placed garment: one triangle mesh over all panels.
 struct GarmentMesh {
-  std::vector<float> positions;      // 3 per vertex: world space around the rest-pose body
-  std::vector<float> restUvs;        // 2 per vertex: pattern coordinates in metres
-  std::vector<uint32_t> triangles;   // 3 per triangle, facing outwards
-  std::vector<uint16_t> panelIds;    // per vertex: index into Garment::panels
-  std::vector<VertexPair> seamPairs; // vertices to sew together
+  std::vector<float> positions;            // 3 per vertex: world space around the rest-pose body
+  std::vector<float> restUvs;              // 2 per vertex: pattern coordinates in metres
+  std::vector<uint32_t> triangles;         // 3 per triangle, facing outwards
+  std::vector<uint16_t> panelIds;          // per vertex: index into Garment::panels
+  std::vector<VertexPair> seamPairs;       // vertices to sew together
   std::vector<uint32_t> panelFirstVertex;  // per panel: its first vertex (panels are contiguous)
 
   size_t vertexCount() const { return positions.size() / 3; }

@@ -17,9 +17,12 @@ json vec(glm::vec3 v) { return json::array({v.x, v.y, v.z}); }
 
 const char* shapeName(EdgeShape shape) {
   switch (shape) {
-    case EdgeShape::Line: return "line";
-    case EdgeShape::Quadratic: return "quadratic";
-    case EdgeShape::Cubic: return "cubic";
+    case EdgeShape::Line:
+      return "line";
+    case EdgeShape::Quadratic:
+      return "quadratic";
+    case EdgeShape::Cubic:
+      return "cubic";
   }
   return "line";
 }
@@ -43,7 +46,8 @@ json panelToJson(const Panel& panel) {
     if (e.shape == EdgeShape::Cubic) edge["controls"] = json::array({vec(e.control[0]), vec(e.control[1])});
     edges.push_back(edge);
   }
-  return {{"name", panel.name}, {"corners", corners}, {"edges", edges}, {"placement", placementToJson(panel.placement)}};
+  return {
+      {"name", panel.name}, {"corners", corners}, {"edges", edges}, {"placement", placementToJson(panel.placement)}};
 }
 
 // ---- Reading, with the JSON path in every error ------------------------------
@@ -128,8 +132,10 @@ PanelEdge edgeFromJson(const json& j, const std::string& path) {
 PanelPlacement placementFromJson(const json& j, const std::string& path) {
   PanelPlacement p;
   std::string shape = text(member(j, path, "shape"), at(path, "shape"));
-  if (shape == "cylinder") p.shape = PanelPlacement::Shape::Cylinder;
-  else if (shape != "plane") fail(at(path, "shape"), "unknown placement '" + shape + "' (plane or cylinder)");
+  if (shape == "cylinder")
+    p.shape = PanelPlacement::Shape::Cylinder;
+  else if (shape != "plane")
+    fail(at(path, "shape"), "unknown placement '" + shape + "' (plane or cylinder)");
   if (const json* bone = optionalMember(j, "bone")) p.bone = text(*bone, at(path, "bone"));
   p.center = vector<3>(member(j, path, "center"), at(path, "center"));
   p.axis = vector<3>(member(j, path, "axis"), at(path, "axis"));
@@ -137,7 +143,8 @@ PanelPlacement placementFromJson(const json& j, const std::string& path) {
   if (const json* anchor = optionalMember(j, "anchor")) p.anchor = vector<2>(*anchor, at(path, "anchor"));
   if (p.shape == PanelPlacement::Shape::Cylinder) {
     p.radius = number(member(j, path, "radius"), at(path, "radius"));
-    if (!(p.radius > 0.0f && p.radius <= kMaxCoordinate)) fail(at(path, "radius"), "must be between 0 and 100 (metres)");
+    if (!(p.radius > 0.0f && p.radius <= kMaxCoordinate))
+      fail(at(path, "radius"), "must be between 0 and 100 (metres)");
   }
   if (glm::length(p.axis) < 1e-6f || glm::length(p.facing) < 1e-6f) fail(path, "axis and facing must be non-zero");
   p.axis = glm::normalize(p.axis);
@@ -151,7 +158,8 @@ Panel panelFromJson(const json& j, const std::string& path) {
   Panel panel;
   panel.name = text(member(j, path, "name"), at(path, "name"));
   const json& corners = array(member(j, path, "corners"), at(path, "corners"));
-  for (size_t i = 0; i < corners.size(); ++i) panel.corners.push_back(vector<2>(corners[i], at(at(path, "corners"), i)));
+  for (size_t i = 0; i < corners.size(); ++i)
+    panel.corners.push_back(vector<2>(corners[i], at(at(path, "corners"), i)));
   const json& edges = array(member(j, path, "edges"), at(path, "edges"));
   if (edges.size() != corners.size())
     fail(at(path, "edges"), "has " + std::to_string(edges.size()) + " edges for " + std::to_string(corners.size()) +
@@ -187,9 +195,12 @@ GarmentPins pinsFromJson(const json& j, const std::string& path) {
   }
   if (const json* attach = optionalMember(j, "attach")) {
     const std::string name = text(*attach, at(path, "attach"));
-    if (name == "body") pins.attach = GarmentPins::Attach::Body;
-    else if (name == "space") pins.attach = GarmentPins::Attach::Space;
-    else fail(at(path, "attach"), "unknown attach '" + name + "' (body or space)");
+    if (name == "body")
+      pins.attach = GarmentPins::Attach::Body;
+    else if (name == "space")
+      pins.attach = GarmentPins::Attach::Space;
+    else
+      fail(at(path, "attach"), "unknown attach '" + name + "' (body or space)");
   }
   return pins;
 }
@@ -201,11 +212,12 @@ json garmentToJson(const Garment& garment) {
   for (const Panel& panel : garment.panels) panels.push_back(panelToJson(panel));
   for (const Seam& s : garment.seams)
     seams.push_back({{"a", {s.panelA, s.edgeA}}, {"b", {s.panelB, s.edgeB}}, {"reversed", s.reversed}});
-  json out = {{"name", garment.name},
-              {"fabric", garment.customFabric ? fabricToJson(*garment.customFabric, garment.fabric) : json(garment.fabric)},
-              {"targetEdgeLength", garment.targetEdgeLength},
-              {"panels", panels},
-              {"seams", seams}};
+  json out = {
+      {"name", garment.name},
+      {"fabric", garment.customFabric ? fabricToJson(*garment.customFabric, garment.fabric) : json(garment.fabric)},
+      {"targetEdgeLength", garment.targetEdgeLength},
+      {"panels", panels},
+      {"seams", seams}};
   if (!garment.pins.vertices.empty())
     out["pins"] = {{"vertices", garment.pins.vertices},
                    {"attach", garment.pins.attach == GarmentPins::Attach::Body ? "body" : "space"}};

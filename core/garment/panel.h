@@ -16,16 +16,16 @@ namespace mq {
 enum class EdgeShape { Line, Quadratic, Cubic };
 
 struct PanelEdge {
-  std::string name;                 // seams refer to edges by name
+  std::string name;  // seams refer to edges by name
   EdgeShape shape = EdgeShape::Line;
-  glm::vec2 control[2]{};           // Bezier control points (Quadratic uses control[0])
+  glm::vec2 control[2]{};  // Bezier control points (Quadratic uses control[0])
 };
 
 struct Panel {
   std::string name;
-  std::vector<glm::vec2> corners;   // counter-clockwise
-  std::vector<PanelEdge> edges;     // edges[i] runs from corners[i] to corners[i + 1 mod n]
-  PanelPlacement placement;         // where the panel sits around the body
+  std::vector<glm::vec2> corners;  // counter-clockwise
+  std::vector<PanelEdge> edges;    // edges[i] runs from corners[i] to corners[i + 1 mod n]
+  PanelPlacement placement;        // where the panel sits around the body
 
   int edgeCount() const { return static_cast<int>(edges.size()); }
   glm::vec2 edgeStart(int edge) const { return corners[edge]; }

@@ -55,7 +55,8 @@ std::string nearestBone(const std::vector<BodyCapsule>& capsules, const std::vec
   for (const Panel* panel : panels)
     for (glm::vec2 p : coverPoints(*panel, kCoverSpacing))
       for (const BodyCapsule& c : capsules)
-        if (float d = c.distance(panel->placement.place(p)); d < nearest) nearest = d, bone = "bone '" + c.boneName + "'";
+        if (float d = c.distance(panel->placement.place(p)); d < nearest)
+          nearest = d, bone = "bone '" + c.boneName + "'";
   return bone;
 }
 
@@ -129,7 +130,8 @@ Params resolve(const std::string& type, const Params& given, float scale) {
   for (const GarmentParameter& p : declared)
     values[p.name] = scalesWithBody(p.name) ? std::clamp(scale * p.value, p.min, p.max) : p.value;
   for (const auto& [name, value] : given) {
-    auto it = std::find_if(declared.begin(), declared.end(), [&, &key = name](const GarmentParameter& p) { return p.name == key; });
+    auto it = std::find_if(declared.begin(), declared.end(),
+                           [&, &key = name](const GarmentParameter& p) { return p.name == key; });
     if (it == declared.end()) throw Error(type + ": unknown parameter '" + name + "'");
     if (!(value >= it->min && value <= it->max)) {
       std::ostringstream message;
@@ -165,7 +167,8 @@ Panel shirtBody(const std::string& name, const std::string& plusSide, const std:
   p.addLine("shoulder_" + plusSide, {shoulderHalf, length - slope});
   p.addCubic("neck", {neckHalf, length}, {0.5f * neckHalf, length - neckDrop}, {-0.5f * neckHalf, length - neckDrop});
   p.addLine("shoulder_" + minusSide, {-neckHalf, length});
-  p.addQuadratic("armhole_" + minusSide, {-shoulderHalf, length - slope}, {-shoulderHalf, armpit + 0.25f * armholeDepth});
+  p.addQuadratic("armhole_" + minusSide, {-shoulderHalf, length - slope},
+                 {-shoulderHalf, armpit + 0.25f * armholeDepth});
   p.addLine("side_" + minusSide, {-halfWidth, armpit});
   return p;
 }
@@ -257,7 +260,8 @@ Garment makeTShirt(const BodyMeasurements& body, const Params& p) {
     glm::vec3 axis = glm::normalize(body.shoulder[s] - body.wrist[s]);
     const BodyCapsule* arm = findCapsule(armCapsules, body.upperArmBone[s]);
     float radius = std::max(circumference / (2.0f * kPi), (arm ? arm->radius : 0.05f) + offset + 2.0f * kCoverSpacing);
-    sleeve.placement = cylinder(body.upperArmBone[s], body.shoulder[s], axis, kUp, radius, {0.0f, p.at("sleeveLength")});
+    sleeve.placement =
+        cylinder(body.upperArmBone[s], body.shoulder[s], axis, kUp, radius, {0.0f, p.at("sleeveLength")});
     glm::vec3 shoulder = body.shoulder[s];
     // Starts a little down the arm: a sleeve tube closing right at the
     // shoulder joint would have to pass where the arm meets the torso. (A
@@ -271,10 +275,10 @@ Garment makeTShirt(const BodyMeasurements& body, const Params& p) {
     g.panels.push_back(sleeve);
   }
   // Sleeve u runs axis x up: towards the back on the left arm, the front on the right.
-  g.seams = {seam("front", "side_l", "back", "side_l"),           seam("front", "side_r", "back", "side_r"),
-             seam("front", "shoulder_l", "back", "shoulder_l"),   seam("front", "shoulder_r", "back", "shoulder_r"),
-             seam("front", "armhole_l", "sleeve_l", "cap_b"),     seam("back", "armhole_l", "sleeve_l", "cap_a"),
-             seam("front", "armhole_r", "sleeve_r", "cap_a"),     seam("back", "armhole_r", "sleeve_r", "cap_b"),
+  g.seams = {seam("front", "side_l", "back", "side_l"),          seam("front", "side_r", "back", "side_r"),
+             seam("front", "shoulder_l", "back", "shoulder_l"),  seam("front", "shoulder_r", "back", "shoulder_r"),
+             seam("front", "armhole_l", "sleeve_l", "cap_b"),    seam("back", "armhole_l", "sleeve_l", "cap_a"),
+             seam("front", "armhole_r", "sleeve_r", "cap_a"),    seam("back", "armhole_r", "sleeve_r", "cap_b"),
              seam("sleeve_l", "under_a", "sleeve_l", "under_b"), seam("sleeve_r", "under_a", "sleeve_r", "under_b")};
   return g;
 }
@@ -319,8 +323,8 @@ Garment makeSkirt(const BodyMeasurements& body, const Params& p) {
 
 // One panel over both legs: hems at v = 0, the crotch at v = length - rise,
 // the waist at v = length. Legs are centred at u = +-legCentre.
-Panel trouserPanel(const std::string& name, const std::string& plusSide, const std::string& minusSide,
-                   float waistHalf, float length, float rise, float legCentre, float legHalf) {
+Panel trouserPanel(const std::string& name, const std::string& plusSide, const std::string& minusSide, float waistHalf,
+                   float length, float rise, float legCentre, float legHalf) {
   Panel p;
   p.name = name;
   float crotch = length - rise, inner = legCentre - legHalf, outer = legCentre + legHalf;
@@ -385,7 +389,7 @@ std::vector<GarmentParameter> garmentParameters(const std::string& type) {
 Garment makeParametricGarment(const std::string& type, const Character& body, const Params& parameters) {
   BodyMeasurements measurements = measureBody(body);
   Params values = resolve(type, parameters, bodyScale(measurements));
-  Garment g = type == "tshirt" ? makeTShirt(measurements, values)
+  Garment g = type == "tshirt"  ? makeTShirt(measurements, values)
               : type == "skirt" ? makeSkirt(measurements, values)
                                 : makeTrousers(measurements, values);
   g.recipe = {type, values};

@@ -18,7 +18,6 @@ namespace mq {
 
 // Sorted, without duplicates (two pins may land on one vertex of a coarser
 // mesh). Pins beyond `before`'s vertices are dropped.
-std::vector<uint32_t> remapPins(const GarmentMesh& before, const std::vector<uint32_t>& pins,
-                                const GarmentMesh& after);
+std::vector<uint32_t> remapPins(const GarmentMesh& before, const std::vector<uint32_t>& pins, const GarmentMesh& after);
 
 }  // namespace mq

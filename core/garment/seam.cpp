@@ -46,8 +46,10 @@ std::vector<VertexPair> pairSeamVertices(PanelMesh& meshA, int edgeA, PanelMesh&
     float ta = a.t(i), tb = b.t(j);
     bool aEnd = i + 1 == a.size(), bEnd = j + 1 == b.size();  // end corners pair only with each other
     if (aEnd != bEnd) {
-      if (aEnd) pairs.push_back({a.insertBefore(i++, tb), b.vertex(j++)});
-      else pairs.push_back({a.vertex(i++), b.insertBefore(j++, ta)});
+      if (aEnd)
+        pairs.push_back({a.insertBefore(i++, tb), b.vertex(j++)});
+      else
+        pairs.push_back({a.vertex(i++), b.insertBefore(j++, ta)});
     } else if (aEnd || std::abs(ta - tb) <= tolerance) {
       pairs.push_back({a.vertex(i++), b.vertex(j++)});
     } else if (ta < tb) {

@@ -22,7 +22,7 @@ namespace mq {
 inline constexpr float kReliefFurrowWidth = 0.35f;  // of a cell
 
 struct ReliefSample {
-  float height = 0.0f;     // in [0, 1]
+  float height = 0.0f;       // in [0, 1]
   glm::vec3 gradient{0.0f};  // d height / d p, per cell unit
 };
 

@@ -14,10 +14,13 @@ struct FlatPoints {
   size_t kdtree_get_point_count() const { return xyz.size() / 3; }
   float kdtree_get_pt(size_t i, size_t dim) const { return xyz[3 * i + dim]; }
   template <class Box>
-  bool kdtree_get_bbox(Box&) const { return false; }
+  bool kdtree_get_bbox(Box&) const {
+    return false;
+  }
 };
 
-using KdTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, FlatPoints>, FlatPoints, 3, uint32_t>;
+using KdTree =
+    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, FlatPoints>, FlatPoints, 3, uint32_t>;
 
 }  // namespace
 

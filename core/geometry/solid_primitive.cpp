@@ -29,7 +29,8 @@ SolidPrimitive SolidPrimitive::plane(glm::vec3 point, glm::vec3 normal) {
 
 float SolidPrimitive::signedDistance(const glm::vec3& p, glm::vec3& normal) const {
   switch (shape) {
-    case Shape::Sphere: return distanceToPoint(p, a, radius, normal);
+    case Shape::Sphere:
+      return distanceToPoint(p, a, radius, normal);
     case Shape::Capsule: {
       const glm::vec3 axis = b - a;
       const float len2 = glm::dot(axis, axis);
@@ -45,9 +46,12 @@ float SolidPrimitive::signedDistance(const glm::vec3& p, glm::vec3& normal) cons
 
 const char* shapeName(SolidPrimitive::Shape shape) {
   switch (shape) {
-    case SolidPrimitive::Shape::Sphere: return "sphere";
-    case SolidPrimitive::Shape::Capsule: return "capsule";
-    case SolidPrimitive::Shape::Plane: return "plane";
+    case SolidPrimitive::Shape::Sphere:
+      return "sphere";
+    case SolidPrimitive::Shape::Capsule:
+      return "capsule";
+    case SolidPrimitive::Shape::Plane:
+      return "plane";
   }
   return "?";
 }

@@ -233,7 +233,8 @@ SurfacePanels BodyProxy::makePanels(int targetCount) const {
   if (hasHead) addEllipsoidPanels(ellipsoids[0], std::max(12, headPanels), all);
   const float spacing = std::sqrt(restArea / float(std::max(1, targetCount - headPanels)));
   for (size_t i = 1; i < ellipsoids.size(); ++i)
-    addEllipsoidPanels(ellipsoids[i], std::max(12, int(std::round(ellipsoidArea(ellipsoids[i].radii) / (spacing * spacing)))), all);
+    addEllipsoidPanels(ellipsoids[i],
+                       std::max(12, int(std::round(ellipsoidArea(ellipsoids[i].radii) / (spacing * spacing)))), all);
   for (const Capsule& c : capsules) addCapsulePanels(c, spacing, all);
 
   // Keep the panels on the union's boundary.
@@ -325,7 +326,8 @@ bool boneCapsule(const DrivenVertices& verts, int b, const glm::vec3& start, con
   Capsule c{start, end, 0.0f};
   std::vector<float> distances;
   for (size_t v = 0; v < verts.positions.size(); ++v)
-    if (verts.bones[v] == b) distances.push_back(glm::length(verts.positions[v] - closestOnSegment(c, verts.positions[v])));
+    if (verts.bones[v] == b)
+      distances.push_back(glm::length(verts.positions[v] - closestOnSegment(c, verts.positions[v])));
   if (distances.size() < 8) return false;
   std::nth_element(distances.begin(), distances.begin() + distances.size() / 2, distances.end());
   c.radius = 0.95f * distances[distances.size() / 2];
@@ -339,7 +341,8 @@ void addBodyCapsules(const Character& character, int head, const DrivenVertices&
   const Skeleton& skeleton = character.skeleton;
   auto addFromTo = [&](int bone, int tip) {
     Capsule c;
-    if (boneCapsule(verts, bone, origin(worldFromBone[bone]), origin(worldFromBone[tip]), c)) proxy.capsules.push_back(c);
+    if (boneCapsule(verts, bone, origin(worldFromBone[bone]), origin(worldFromBone[tip]), c))
+      proxy.capsules.push_back(c);
   };
   const int neck = skeleton.bone(head).parent;
   if (neck < 0) return;

@@ -21,7 +21,6 @@ std::unique_ptr<HairGroom> makeCharacterGroom(const Character& character, const 
 // the section names none, and a built-in style (fitToHead) fitted to the
 // head (fitHairStyleToHead); afterwards section.style is the style to grow
 // and fitToHead is false.
-std::unique_ptr<HairGroom> makeSectionGroom(const Character& character, HairSection& section,
-                                            int panelCount = 320);
+std::unique_ptr<HairGroom> makeSectionGroom(const Character& character, HairSection& section, int panelCount = 320);
 
 }  // namespace mq

@@ -136,7 +136,8 @@ __attribute__((target("avx2,fma"))) glm::vec3 sumSourcesAvx2(const float* px, co
     const __m256 dx = _mm256_sub_ps(qx, _mm256_loadu_ps(px + j));
     const __m256 dy = _mm256_sub_ps(qy, _mm256_loadu_ps(py + j));
     const __m256 dz = _mm256_sub_ps(qz, _mm256_loadu_ps(pz + j));
-    const __m256 r2 = _mm256_fmadd_ps(dx, dx, _mm256_fmadd_ps(dy, dy, _mm256_fmadd_ps(dz, dz, _mm256_loadu_ps(core2 + j))));
+    const __m256 r2 =
+        _mm256_fmadd_ps(dx, dx, _mm256_fmadd_ps(dy, dy, _mm256_fmadd_ps(dz, dz, _mm256_loadu_ps(core2 + j))));
     __m256 inv = _mm256_rsqrt_ps(r2);
     inv = _mm256_mul_ps(_mm256_mul_ps(half, inv), _mm256_fnmadd_ps(r2, _mm256_mul_ps(inv, inv), three));
     const __m256 s = _mm256_mul_ps(_mm256_loadu_ps(w + j), _mm256_mul_ps(inv, _mm256_mul_ps(inv, inv)));
@@ -162,8 +163,8 @@ __attribute__((target("avx2,fma"))) glm::vec3 sumSourcesAvx2(const float* px, co
 #pragma GCC diagnostic ignored "-Wuninitialized"
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 __attribute__((target("avx512f"))) glm::vec3 sumSourcesAvx512(const float* px, const float* py, const float* pz,
-                                                               const float* w, const float* core2, size_t n,
-                                                               const glm::vec3& x) {
+                                                              const float* w, const float* core2, size_t n,
+                                                              const glm::vec3& x) {
   __m512 ax = _mm512_setzero_ps(), ay = _mm512_setzero_ps(), az = _mm512_setzero_ps();
   const __m512 qx = _mm512_set1_ps(x.x), qy = _mm512_set1_ps(x.y), qz = _mm512_set1_ps(x.z);
   size_t j = 0;
@@ -171,7 +172,8 @@ __attribute__((target("avx512f"))) glm::vec3 sumSourcesAvx512(const float* px, c
     const __m512 dx = _mm512_sub_ps(qx, _mm512_loadu_ps(px + j));
     const __m512 dy = _mm512_sub_ps(qy, _mm512_loadu_ps(py + j));
     const __m512 dz = _mm512_sub_ps(qz, _mm512_loadu_ps(pz + j));
-    const __m512 r2 = _mm512_fmadd_ps(dx, dx, _mm512_fmadd_ps(dy, dy, _mm512_fmadd_ps(dz, dz, _mm512_loadu_ps(core2 + j))));
+    const __m512 r2 =
+        _mm512_fmadd_ps(dx, dx, _mm512_fmadd_ps(dy, dy, _mm512_fmadd_ps(dz, dz, _mm512_loadu_ps(core2 + j))));
     const __m512 inv = _mm512_rsqrt14_ps(r2);
     const __m512 s = _mm512_mul_ps(_mm512_loadu_ps(w + j), _mm512_mul_ps(inv, _mm512_mul_ps(inv, inv)));
     ax = _mm512_fmadd_ps(s, dx, ax);

@@ -7,15 +7,15 @@
 
 #include "core/hair/strand_tracer.h"
 #include "core/math/perlin_noise.h"
-#include "core/util/thread_pool.h"
 #include "core/util/memory_budget.h"
+#include "core/util/thread_pool.h"
 
 namespace mq {
 
 namespace {
 
 constexpr float kTwoPi = 6.28318530718f;
-constexpr float kMargin = 0.002f;         // hair keeps this far from the proxy surface
+constexpr float kMargin = 0.002f;  // hair keeps this far from the proxy surface
 constexpr float kScalpPanelDistance = 0.025f;
 constexpr uint64_t kChildKey = uint64_t(1) << 32;
 constexpr float kPartingSpread = 0.06f;  // guide tips this far apart start to part, metres
@@ -95,7 +95,8 @@ struct StrandShaper {
     glm::vec3 original = root, next = load(pts, 1);
     glm::vec3 tangent = glm::normalize(next - original + glm::vec3(1e-9f));
     glm::vec3 normal = rootNormal - glm::dot(rootNormal, tangent) * tangent;
-    normal = glm::length(normal) > 1e-6f ? glm::normalize(normal) : glm::normalize(glm::cross(tangent, glm::vec3(1, 0, 0)) + glm::vec3(1e-6f));
+    normal = glm::length(normal) > 1e-6f ? glm::normalize(normal)
+                                         : glm::normalize(glm::cross(tangent, glm::vec3(1, 0, 0)) + glm::vec3(1e-6f));
     for (int k = 1; k < points; ++k) {
       const glm::vec3 previous = original;
       original = next;
@@ -256,8 +257,9 @@ void HairGroom::grow(const HairStyle& style, size_t strandCount) {
   total = std::min(total, kMaxStrands);
   // Positions, rest shape, velocities and the children's frames: about 64
   // bytes a point over the groom and its dynamics.
-  checkMemoryBudget("hair: " + std::to_string(total) + " strands of " + std::to_string(style.pointsPerStrand) + " points",
-                    64.0 * double(total) * style.pointsPerStrand);
+  checkMemoryBudget(
+      "hair: " + std::to_string(total) + " strands of " + std::to_string(style.pointsPerStrand) + " points",
+      64.0 * double(total) * style.pointsPerStrand);
   const size_t guides = std::min(total, size_t(std::max(1, style.guideCount)));
   sampleAllRoots(guides, total - guides, style.seed);
   regrowGuides(style);
@@ -325,7 +327,8 @@ void HairGroom::growChildren(const HairStyle& style) {
       const float alone = std::clamp((spread - kPartingSpread) / kPartingSpread, 0.0f, 1.0f);
       const float w[3] = {weights_[3 * c] + alone * (1.0f - weights_[3 * c]), (1.0f - alone) * weights_[3 * c + 1],
                           (1.0f - alone) * weights_[3 * c + 2]};
-      const float guideLength = w[0] * guideLengths_[near[0]] + w[1] * guideLengths_[near[1]] + w[2] * guideLengths_[near[2]];
+      const float guideLength =
+          w[0] * guideLengths_[near[0]] + w[1] * guideLengths_[near[1]] + w[2] * guideLengths_[near[2]];
       const float ratio = strandLength(style, root, key) / std::max(guideLength, 1e-6f);
       const float wanderStart = 256.0f * random01(style.seed, key, 5);
       const float wanderRate = style.frizzFrequency * guideLength * ratio / float(std::max(1, points - 1));

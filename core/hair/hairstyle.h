@@ -83,23 +83,23 @@ struct HairStyle {
   float noiseScale = 0.08f;      // wavelength in metres
 
   // Roots.
-  float density = 150.0f;     // hairs per cm^2
-  int maxStrands = 100000;    // cap on the total count (at most 150,000)
-  int guideCount = 2000;      // strands traced through the field; the rest are interpolated
+  float density = 150.0f;   // hairs per cm^2
+  int maxStrands = 100000;  // cap on the total count (at most 150,000)
+  int guideCount = 2000;    // strands traced through the field; the rest are interpolated
   // Strands.
-  float length = 0.30f;           // metres
-  float lengthVariation = 0.1f;   // relative random variation per strand
+  float length = 0.30f;          // metres
+  float lengthVariation = 0.1f;  // relative random variation per strand
   std::vector<LengthPoint> lengthMap;
   int pointsPerStrand = 32;
-  float strandNoise = 0.01f;      // per-strand wander at the tip, metres
-  float waveAmplitude = 0.0f;     // per-strand planar waves, metres
+  float strandNoise = 0.01f;   // per-strand wander at the tip, metres
+  float waveAmplitude = 0.0f;  // per-strand planar waves, metres
   float waveLength = 0.08f;
-  float curlRadius = 0.0f;        // per-strand helical curls, metres
-  float curlLength = 0.05f;       // length of hair per turn
+  float curlRadius = 0.0f;   // per-strand helical curls, metres
+  float curlLength = 0.05f;  // length of hair per turn
   // Children.
-  float clumping = 0.4f;      // 0: children follow their guides' shape; 1: tips meet in wisps
-  float clumpShape = 1.5f;    // exponent of the clump profile along the strand
-  float frizz = 0.004f;       // random offset at the tips, metres
+  float clumping = 0.4f;         // 0: children follow their guides' shape; 1: tips meet in wisps
+  float clumpShape = 1.5f;       // exponent of the clump profile along the strand
+  float frizz = 0.004f;          // random offset at the tips, metres
   float frizzFrequency = 40.0f;  // cycles per metre of hair
   glm::vec3 rootColor{0.10f, 0.06f, 0.035f};
   glm::vec3 tipColor{0.25f, 0.16f, 0.09f};

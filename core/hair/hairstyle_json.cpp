@@ -200,39 +200,43 @@ HairSection hairSectionFromJson(const json& j, const std::string& path) {
 
 json toJson(const HairStyle& s) {
   json streams = json::array(), sources = json::array(), vortices = json::array(), lengthMap = json::array();
-  for (const UniformStream& e : s.primitives.streams) streams.push_back({{"direction", vec(e.direction)}, {"strength", tidy(e.strength)}});
+  for (const UniformStream& e : s.primitives.streams)
+    streams.push_back({{"direction", vec(e.direction)}, {"strength", tidy(e.strength)}});
   for (const PointSource& e : s.primitives.sources)
     sources.push_back({{"position", vec(e.position)}, {"strength", tidy(e.strength)}, {"radius", tidy(e.radius)}});
   for (const Vortex& e : s.primitives.vortices)
-    vortices.push_back({{"position", vec(e.position)}, {"axis", vec(e.axis)}, {"strength", tidy(e.strength)}, {"radius", tidy(e.radius)}});
+    vortices.push_back({{"position", vec(e.position)},
+                        {"axis", vec(e.axis)},
+                        {"strength", tidy(e.strength)},
+                        {"radius", tidy(e.radius)}});
   for (const LengthPoint& e : s.lengthMap)
     lengthMap.push_back({{"position", vec(e.position)}, {"scale", tidy(e.scale)}, {"radius", tidy(e.radius)}});
   json out{{"name", s.name},
-              {"streams", streams},
-              {"sources", sources},
-              {"vortices", vortices},
-              {"scalp_outflow", tidy(s.scalpOutflow)},
-              {"noise_amplitude", tidy(s.noiseAmplitude)},
-              {"noise_scale", tidy(s.noiseScale)},
-              {"density", tidy(s.density)},
-              {"max_strands", s.maxStrands},
-              {"guides", s.guideCount},
-              {"length", tidy(s.length)},
-              {"length_variation", tidy(s.lengthVariation)},
-              {"length_map", lengthMap},
-              {"points_per_strand", s.pointsPerStrand},
-              {"strand_noise", tidy(s.strandNoise)},
-              {"wave_amplitude", tidy(s.waveAmplitude)},
-              {"wave_length", tidy(s.waveLength)},
-              {"curl_radius", tidy(s.curlRadius)},
-              {"curl_length", tidy(s.curlLength)},
-              {"clumping", tidy(s.clumping)},
-              {"clump_shape", tidy(s.clumpShape)},
-              {"frizz", tidy(s.frizz)},
-              {"frizz_frequency", tidy(s.frizzFrequency)},
-              {"root_color", vec(s.rootColor)},
-              {"tip_color", vec(s.tipColor)},
-              {"seed", s.seed}};
+           {"streams", streams},
+           {"sources", sources},
+           {"vortices", vortices},
+           {"scalp_outflow", tidy(s.scalpOutflow)},
+           {"noise_amplitude", tidy(s.noiseAmplitude)},
+           {"noise_scale", tidy(s.noiseScale)},
+           {"density", tidy(s.density)},
+           {"max_strands", s.maxStrands},
+           {"guides", s.guideCount},
+           {"length", tidy(s.length)},
+           {"length_variation", tidy(s.lengthVariation)},
+           {"length_map", lengthMap},
+           {"points_per_strand", s.pointsPerStrand},
+           {"strand_noise", tidy(s.strandNoise)},
+           {"wave_amplitude", tidy(s.waveAmplitude)},
+           {"wave_length", tidy(s.waveLength)},
+           {"curl_radius", tidy(s.curlRadius)},
+           {"curl_length", tidy(s.curlLength)},
+           {"clumping", tidy(s.clumping)},
+           {"clump_shape", tidy(s.clumpShape)},
+           {"frizz", tidy(s.frizz)},
+           {"frizz_frequency", tidy(s.frizzFrequency)},
+           {"root_color", vec(s.rootColor)},
+           {"tip_color", vec(s.tipColor)},
+           {"seed", s.seed}};
   if (s.shading != HairShadingParams{}) out["shading"] = toJson(s.shading);
   return out;
 }

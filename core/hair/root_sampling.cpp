@@ -83,7 +83,8 @@ class ProjectedGrid {
     return {std::clamp(int(q.x), 0, nu_ - 1), std::clamp(int(q.y), 0, nv_ - 1)};
   }
   // True when no accepted point lies within sqrt(r2) of p.
-  bool isFree(const glm::vec3& p, float r2, const std::vector<glm::vec3>& accepted, const std::vector<int>& next) const {
+  bool isFree(const glm::vec3& p, float r2, const std::vector<glm::vec3>& accepted,
+              const std::vector<int>& next) const {
     const glm::ivec2 c = cellOf(p);
     for (int j = std::max(0, c.y - 1); j <= std::min(nv_ - 1, c.y + 1); ++j)
       for (int i = std::max(0, c.x - 1); i <= std::min(nu_ - 1, c.x + 1); ++i)

@@ -11,7 +11,8 @@ namespace mq {
 float ScalpSurface::area() const {
   double sum = 0.0;
   for (size_t t = 0; t < triangleCount(); ++t) {
-    const glm::vec3 a = position(triangles[3 * t]), b = position(triangles[3 * t + 1]), c = position(triangles[3 * t + 2]);
+    const glm::vec3 a = position(triangles[3 * t]), b = position(triangles[3 * t + 1]),
+                    c = position(triangles[3 * t + 2]);
     sum += 0.5 * glm::length(glm::cross(b - a, c - a));
   }
   return float(sum);
@@ -95,9 +96,10 @@ ScalpSurface extractScalp(const Character& character, const ScalpRegion& region)
       for (size_t m = 0; m < character.meshes.size(); ++m)
         appendFaces(character.meshes[m], posed.meshes()[m], taggedFaces(character.meshes[m]), out);
       if (out.empty())
-        throw Error("character '" + character.name +
-                    "' has no faces tagged as scalp: give the scene's hair section a scalp region, e.g. "
-                    "\"scalp\": {\"kind\": \"bone_cone\", \"bone\": \"<head bone>\", \"axis\": [0, 1, 0], \"angle\": 70}");
+        throw Error(
+            "character '" + character.name +
+            "' has no faces tagged as scalp: give the scene's hair section a scalp region, e.g. "
+            "\"scalp\": {\"kind\": \"bone_cone\", \"bone\": \"<head bone>\", \"axis\": [0, 1, 0], \"angle\": 70}");
       break;
     case ScalpRegion::Kind::BoneCone: {
       const int bone = character.skeleton.findBone(region.bone);

@@ -15,9 +15,8 @@ inline glm::vec3 direction(const FlowField& field, const glm::vec3& x, const glm
 
 }  // namespace
 
-void traceStreamline(const FlowField& field, const BodyProxy& proxy, const glm::vec3& root,
-                     const glm::vec3& rootNormal, float length, int points, const TraceOptions& options,
-                     float* out) {
+void traceStreamline(const FlowField& field, const BodyProxy& proxy, const glm::vec3& root, const glm::vec3& rootNormal,
+                     float length, int points, const TraceOptions& options, float* out) {
   if (points <= 0) return;
   glm::vec3 x = root;
   out[0] = x.x;

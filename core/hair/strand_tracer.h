@@ -13,15 +13,14 @@
 namespace mq {
 
 struct TraceOptions {
-  bool perturb = true;     // add the field's Perlin noise to each step
-  bool pushOut = true;     // keep every point outside the proxy
-  float margin = 0.002f;   // distance kept from the proxy's surface, metres
+  bool perturb = true;    // add the field's Perlin noise to each step
+  bool pushOut = true;    // keep every point outside the proxy
+  float margin = 0.002f;  // distance kept from the proxy's surface, metres
 };
 
 // Writes `points` points (3 floats each) to `out`, root first, spaced
 // length / (points - 1) apart.
-void traceStreamline(const FlowField& field, const BodyProxy& proxy, const glm::vec3& root,
-                     const glm::vec3& rootNormal, float length, int points, const TraceOptions& options,
-                     float* out);
+void traceStreamline(const FlowField& field, const BodyProxy& proxy, const glm::vec3& root, const glm::vec3& rootNormal,
+                     float length, int points, const TraceOptions& options, float* out);
 
 }  // namespace mq

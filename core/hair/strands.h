@@ -15,9 +15,7 @@ struct Strands {
   std::vector<float> rootUvs;      // 2 per strand: scalp parameterisation, may be empty
   std::vector<int32_t> guideOf;    // per strand: its nearest guide (-1 for guides), may be empty
 
-  size_t strandCount() const {
-    return pointsPerStrand > 0 ? points.size() / (3 * size_t(pointsPerStrand)) : 0;
-  }
+  size_t strandCount() const { return pointsPerStrand > 0 ? points.size() / (3 * size_t(pointsPerStrand)) : 0; }
   float* strand(size_t s) { return points.data() + 3 * s * pointsPerStrand; }
   const float* strand(size_t s) const { return points.data() + 3 * s * pointsPerStrand; }
 };

@@ -8,10 +8,10 @@
 #include <map>
 #include <set>
 
-#include <assimp/Importer.hpp>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/Importer.hpp>
 
 #include "core/io/collada_clips.h"
 #include "core/io/file_bytes.h"
@@ -66,7 +66,8 @@ void checkColladaCounts(const std::string& text, const std::string& path) {
     if (count > double(text.size())) {
       const long line = 1 + std::count(text.begin(), text.begin() + long(at), '\n');
       throw FileError(path, "line " + std::to_string(line) + ": count=\"" +
-                                text.substr(digits, text.find('"', digits) - digits) + "\" is more than the file holds");
+                                text.substr(digits, text.find('"', digits) - digits) +
+                                "\" is more than the file holds");
     }
   }
 }
@@ -82,7 +83,7 @@ unsigned importFlags(const std::string& ext) {
 }
 
 const aiScene* readWith(Assimp::Importer& importer, const std::string& path, const std::string& colladaText) {
-  importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, false);  // no $AssimpFbx$ helper nodes
+  importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, false);       // no $AssimpFbx$ helper nodes
   importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_USE_COLLADA_NAMES, true);  // "Bone", not "id-bone-3"
   const std::string ext = fileExtension(path);
   if (ext == "dae") return importer.ReadFileFromMemory(colladaText.data(), colladaText.size(), importFlags(ext), "dae");
@@ -187,8 +188,8 @@ bool movesNode(const NodeChannel& ch, const NodeTable& t) {
          !keepsRestValue(ch.scale, &rest.scale.x);
 }
 
-Skeleton buildSkeleton(const aiScene* scene, const std::vector<RawClip>& clips, const std::vector<std::string>& extraJoints,
-                       NodeTable& t, const std::string& path) {
+Skeleton buildSkeleton(const aiScene* scene, const std::vector<RawClip>& clips,
+                       const std::vector<std::string>& extraJoints, NodeTable& t, const std::string& path) {
   std::set<int> boneNodes;
   for (unsigned m = 0; m < scene->mNumMeshes; ++m)
     for (unsigned b = 0; b < scene->mMeshes[m]->mNumBones; ++b) {
@@ -238,7 +239,8 @@ void bindSkin(const aiMesh* am, const NodeTable& t, int meshNode, Mesh& mesh, bo
     skin.inverseBind.push_back(inverseBindOf(bone, t, node, meshNode, bindFromNodes));
     for (unsigned w = 0; w < bone->mNumWeights; ++w) {
       const aiVertexWeight& vw = bone->mWeights[w];
-      if (vw.mVertexId < n && vw.mWeight > 0.0f && std::isfinite(vw.mWeight)) influences[vw.mVertexId].push_back({static_cast<int>(b), vw.mWeight});
+      if (vw.mVertexId < n && vw.mWeight > 0.0f && std::isfinite(vw.mWeight))
+        influences[vw.mVertexId].push_back({static_cast<int>(b), vw.mWeight});
     }
   }
   size_t k = 1;
@@ -370,8 +372,10 @@ RawClip convertColladaClip(const ColladaClip& clip, const NodeTable& t, const st
     for (size_t k = 0; k < track.times.size(); ++k) {
       const Trs trs = Trs::fromMatrix(track.matrices[k]);
       for (Track* tr : {&nc.translation, &nc.rotation, &nc.scale}) tr->times.push_back(track.times[k]);
-      nc.translation.values.insert(nc.translation.values.end(), {trs.translation.x, trs.translation.y, trs.translation.z});
-      nc.rotation.values.insert(nc.rotation.values.end(), {trs.rotation.x, trs.rotation.y, trs.rotation.z, trs.rotation.w});
+      nc.translation.values.insert(nc.translation.values.end(),
+                                   {trs.translation.x, trs.translation.y, trs.translation.z});
+      nc.rotation.values.insert(nc.rotation.values.end(),
+                                {trs.rotation.x, trs.rotation.y, trs.rotation.z, trs.rotation.w});
       nc.scale.values.insert(nc.scale.values.end(), {trs.scale.x, trs.scale.y, trs.scale.z});
     }
     const float end = clip.end >= 0.0f ? clip.end : track.times.back();
@@ -387,9 +391,12 @@ RawClip convertColladaClip(const ColladaClip& clip, const NodeTable& t, const st
 
 TextureWrap wrapOf(aiTextureMapMode mode) {
   switch (mode) {
-    case aiTextureMapMode_Clamp: return TextureWrap::ClampToEdge;
-    case aiTextureMapMode_Mirror: return TextureWrap::MirroredRepeat;
-    default: return TextureWrap::Repeat;
+    case aiTextureMapMode_Clamp:
+      return TextureWrap::ClampToEdge;
+    case aiTextureMapMode_Mirror:
+      return TextureWrap::MirroredRepeat;
+    default:
+      return TextureWrap::Repeat;
   }
 }
 
@@ -450,7 +457,7 @@ Material convertMaterial(const aiScene* scene, const aiMaterial* m, int index, c
   Material material;
   aiString name;
   material.name = m->Get(AI_MATKEY_NAME, name) == AI_SUCCESS && name.length > 0 ? repairedUtf8(name.C_Str())
-                                                                              : "material" + std::to_string(index);
+                                                                                : "material" + std::to_string(index);
   aiColor4D diffuse(0.8f, 0.8f, 0.8f, 1.0f);
   m->Get(AI_MATKEY_COLOR_DIFFUSE, diffuse);
   float opacity = 1.0f;
@@ -495,14 +502,16 @@ void noteUnlikelyUnits(Character& character) {
   }
   if (!box.valid()) return;
   const float height = box.max.y - box.min.y;
-  auto humanSized = [](float metres) { return (metres >= 1.0f && metres <= 2.2f) || (metres >= 0.15f && metres <= 0.35f); };
+  auto humanSized = [](float metres) {
+    return (metres >= 1.0f && metres <= 2.2f) || (metres >= 0.15f && metres <= 0.35f);
+  };
   if (humanSized(height)) return;
   std::string guesses;
   for (const auto& [unit, factor] : {std::pair{"decimetres", 0.1f}, {"centimetres", 0.01f}, {"millimetres", 0.001f}})
     if (humanSized(height * factor)) {
       char line[160];
-      std::snprintf(line, sizeof line, "%s%s (--scale %g makes it %.2f m)", guesses.empty() ? "" : " or ", unit,
-                    factor, height * factor);
+      std::snprintf(line, sizeof line, "%s%s (--scale %g makes it %.2f m)", guesses.empty() ? "" : " or ", unit, factor,
+                    height * factor);
       guesses += line;
     }
   if (guesses.empty()) return;
@@ -550,7 +559,8 @@ Character importWithAssimp(const std::string& path) {
       if (node->mMeshes[m] >= scene->mNumMeshes) throw FileError(path, "node refers to a missing mesh");
       const aiMesh* am = scene->mMeshes[node->mMeshes[m]];
       character.meshes.push_back(convertMesh(am, table, static_cast<int>(n), bindFromNodes));
-      if (am->mMaterialIndex < character.materials.size()) character.meshes.back().material = static_cast<int>(am->mMaterialIndex);
+      if (am->mMaterialIndex < character.materials.size())
+        character.meshes.back().material = static_cast<int>(am->mMaterialIndex);
     }
   }
   character.addMissingTangents();

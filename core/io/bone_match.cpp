@@ -59,7 +59,8 @@ class Matcher {
     const auto map = readNameMap(path);
     for (const auto& [joint, entry] : map)
       if (character_.findBone(entry.bone) < 0)
-        throw FileError(path, "line " + std::to_string(entry.line) + ": the character has no bone '" + entry.bone + "'");
+        throw FileError(path,
+                        "line " + std::to_string(entry.line) + ": the character has no bone '" + entry.bone + "'");
     for (JointMatch& j : report_.joints)
       if (auto it = map.find(j.joint); it != map.end()) pair(j, character_.findBone(it->second.bone), MatchSource::Map);
   }
@@ -163,10 +164,14 @@ BoneMatchReport matchBones(const Skeleton& motion, const Skeleton& character, co
 
 const char* matchSourceName(MatchSource source) {
   switch (source) {
-    case MatchSource::Map: return "name map";
-    case MatchSource::Name: return "same name";
-    case MatchSource::Role: return "humanoid role";
-    case MatchSource::None: break;
+    case MatchSource::Map:
+      return "name map";
+    case MatchSource::Name:
+      return "same name";
+    case MatchSource::Role:
+      return "humanoid role";
+    case MatchSource::None:
+      break;
   }
   return "unmatched";
 }

@@ -25,11 +25,11 @@ namespace mq {
 enum class MatchSource { None, Map, Name, Role };
 
 struct JointMatch {
-  std::string joint;   // the motion's joint name
-  int parent = -1;     // index of its parent joint in the report, -1 for a root
-  int bone = -1;       // the character's bone it drives, -1 for none
+  std::string joint;  // the motion's joint name
+  int parent = -1;    // index of its parent joint in the report, -1 for a root
+  int bone = -1;      // the character's bone it drives, -1 for none
   MatchSource source = MatchSource::None;
-  std::string role;    // for MatchSource::Role: "upper arm (left)"
+  std::string role;  // for MatchSource::Role: "upper arm (left)"
 };
 
 struct BoneMatchReport {

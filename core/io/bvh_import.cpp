@@ -75,7 +75,8 @@ class BvhParser {
         continue;
       }
       const size_t start = i;
-      while (i < text.size() && !std::isspace(static_cast<unsigned char>(text[i])) && text[i] != '{' && text[i] != '}') ++i;
+      while (i < text.size() && !std::isspace(static_cast<unsigned char>(text[i])) && text[i] != '{' && text[i] != '}')
+        ++i;
       tokens_.push_back({text.substr(start, i - start), line});
     }
   }
@@ -172,7 +173,8 @@ class BvhParser {
     // Reserve by what the file holds, not by what it declares.
     data_.values.reserve(std::min(size_t(data_.frames) * data_.channelCount, tokens_.size() - pos_));
     for (int f = 0; f < data_.frames; ++f) {
-      if (pos_ >= tokens_.size()) fail("file ends after " + std::to_string(f) + " of " + std::to_string(data_.frames) + " frames");
+      if (pos_ >= tokens_.size())
+        fail("file ends after " + std::to_string(f) + " of " + std::to_string(data_.frames) + " frames");
       const int line = tokens_[pos_].line;
       int count = 0;
       while (pos_ < tokens_.size() && tokens_[pos_].line == line) {
@@ -227,12 +229,24 @@ Pose framePose(const BvhData& bvh, int frame) {
     for (size_t c = 0; c < joint.channels.size(); ++c) {
       const float v = row[joint.firstChannel + c];
       switch (joint.channels[c]) {
-        case Channel::Xposition: trs.translation.x = v; break;
-        case Channel::Yposition: trs.translation.y = v; break;
-        case Channel::Zposition: trs.translation.z = v; break;
-        case Channel::Xrotation: trs.rotation = trs.rotation * glm::angleAxis(glm::radians(v), glm::vec3(1, 0, 0)); break;
-        case Channel::Yrotation: trs.rotation = trs.rotation * glm::angleAxis(glm::radians(v), glm::vec3(0, 1, 0)); break;
-        case Channel::Zrotation: trs.rotation = trs.rotation * glm::angleAxis(glm::radians(v), glm::vec3(0, 0, 1)); break;
+        case Channel::Xposition:
+          trs.translation.x = v;
+          break;
+        case Channel::Yposition:
+          trs.translation.y = v;
+          break;
+        case Channel::Zposition:
+          trs.translation.z = v;
+          break;
+        case Channel::Xrotation:
+          trs.rotation = trs.rotation * glm::angleAxis(glm::radians(v), glm::vec3(1, 0, 0));
+          break;
+        case Channel::Yrotation:
+          trs.rotation = trs.rotation * glm::angleAxis(glm::radians(v), glm::vec3(0, 1, 0));
+          break;
+        case Channel::Zrotation:
+          trs.rotation = trs.rotation * glm::angleAxis(glm::radians(v), glm::vec3(0, 0, 1));
+          break;
       }
     }
   }
@@ -371,10 +385,12 @@ Clip retarget(const BvhData& bvh, const std::vector<int>& boneOfJoint, const Ske
         BoneChannel& channel = clip.boneChannels[channelOfBone[b]];
         appendKey(channel.rotation, time, local);
         if (j == rootJoint) {
-          const glm::mat4 parentRest = (bone.parent >= 0 ? targetRest[bone.parent] : glm::mat4(1.0f)) * bone.parentFromOffset;
+          const glm::mat4 parentRest =
+              (bone.parent >= 0 ? targetRest[bone.parent] : glm::mat4(1.0f)) * bone.parentFromOffset;
           const glm::vec3 displacement =
               rootDisplacement(glm::vec3(sourceWorld[j][3]) - firstRootPosition, scale, inPlace);
-          appendKey(channel.translation, time, bone.rest.translation + glm::inverse(glm::mat3(parentRest)) * displacement);
+          appendKey(channel.translation, time,
+                    bone.rest.translation + glm::inverse(glm::mat3(parentRest)) * displacement);
         }
       }
       worldRotation[b] = parentRotation * local;
@@ -401,8 +417,7 @@ Character loadBvhCharacter(const std::string& bvhPath) {
     channel.bone = static_cast<int>(j);
     if (hasRotation(bvh.joints[j])) channel.rotation = emptyTrack(bvh.frames, true);
     if (hasPosition(bvh.joints[j])) channel.translation = emptyTrack(bvh.frames, false);
-    if (!bvh.joints[j].channels.empty())
-      clip.boneChannels.push_back(std::move(channel));
+    if (!bvh.joints[j].channels.empty()) clip.boneChannels.push_back(std::move(channel));
   }
   for (int f = 0; f < bvh.frames; ++f) {
     const Pose pose = framePose(bvh, f);

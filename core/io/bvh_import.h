@@ -42,12 +42,14 @@ struct RetargetedMotion {
 
 // The joint-to-bone pairing alone, without retargeting (for a preview).
 // Throws FileError when the BVH or map is malformed.
-BoneMatchReport matchBvhMotion(const std::string& bvhPath, const Character& target, const std::string& nameMapPath = "");
+BoneMatchReport matchBvhMotion(const std::string& bvhPath, const Character& target,
+                               const std::string& nameMapPath = "");
 
 // A clip that drives `target`'s skeleton with the BVH motion, and how the
 // joints were paired. Throws FileError when the BVH or map is malformed or
 // no joint matches a bone.
-RetargetedMotion retargetBvhMotion(const std::string& bvhPath, const Character& target, const MotionOptions& options = {});
+RetargetedMotion retargetBvhMotion(const std::string& bvhPath, const Character& target,
+                                   const MotionOptions& options = {});
 Clip importBvhMotion(const std::string& bvhPath, const Character& target, const std::string& nameMapPath = "");
 
 }  // namespace mq

@@ -16,7 +16,8 @@ Character importCharacter(const std::string& path) {
   if (ext == "fbx" || ext == "dae") return importWithAssimp(path);
   if (ext == "bvh") return loadBvhCharacter(path);
   if (ext == "obj" || ext == "ply" || ext == "stl") return importWithAssimp(path);  // static meshes
-  throw FileError(path, "unsupported file type '." + ext + "' (expected .gltf, .glb, .fbx, .dae, .bvh, .obj, .ply or .stl)");
+  throw FileError(path,
+                  "unsupported file type '." + ext + "' (expected .gltf, .glb, .fbx, .dae, .bvh, .obj, .ply or .stl)");
 }
 
 }  // namespace mq

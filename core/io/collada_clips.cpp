@@ -59,7 +59,8 @@ class XmlReader {
   }
   std::string name() {
     const size_t start = i_;
-    while (i_ < s_.size() && !std::isspace(static_cast<unsigned char>(s_[i_])) && s_[i_] != '>' && s_[i_] != '/' && s_[i_] != '=')
+    while (i_ < s_.size() && !std::isspace(static_cast<unsigned char>(s_[i_])) && s_[i_] != '>' && s_[i_] != '/' &&
+           s_[i_] != '=')
       ++i_;
     if (i_ == start) fail("expected a name");
     return s_.substr(start, i_ - start);
@@ -78,7 +79,10 @@ class XmlReader {
         break;
       }
       i_ = lt;
-      if (startsWith("<!--")) { skipPast("-->"); continue; }
+      if (startsWith("<!--")) {
+        skipPast("-->");
+        continue;
+      }
       if (startsWith("<![CDATA[")) {
         i_ += 9;
         const size_t end = s_.find("]]>", i_);
@@ -87,7 +91,10 @@ class XmlReader {
         i_ = end + 3;
         continue;
       }
-      if (startsWith("<?") || startsWith("<!")) { skipPast(">"); continue; }
+      if (startsWith("<?") || startsWith("<!")) {
+        skipPast(">");
+        continue;
+      }
       if (startsWith("</")) {
         i_ += 2;
         const std::string closing = name();
@@ -107,8 +114,14 @@ class XmlReader {
     for (;;) {
       skipSpace();
       if (i_ >= s_.size()) fail("file ends inside a tag");
-      if (s_[i_] == '/') { skipPast(">"); return node; }
-      if (s_[i_] == '>') { ++i_; break; }
+      if (s_[i_] == '/') {
+        skipPast(">");
+        return node;
+      }
+      if (s_[i_] == '>') {
+        ++i_;
+        break;
+      }
       const std::string key = name();
       skipSpace();
       if (i_ >= s_.size() || s_[i_] != '=') fail("attribute '" + key + "' has no value");
@@ -178,9 +191,12 @@ bool readChannel(const Library& lib, const XmlNode& channel, ColladaNodeTrack& t
   for (const XmlNode& in : sampler->children) {
     if (in.tag != "input") continue;
     const std::string semantic = in.attribute("semantic");
-    if (semantic == "INPUT") input = in.attribute("source");
-    else if (semantic == "OUTPUT") output = in.attribute("source");
-    else if (semantic == "INTERPOLATION") interpolation = in.attribute("source");
+    if (semantic == "INPUT")
+      input = in.attribute("source");
+    else if (semantic == "OUTPUT")
+      output = in.attribute("source");
+    else if (semantic == "INTERPOLATION")
+      interpolation = in.attribute("source");
   }
   const XmlNode* inputSource = lib.find(input);
   const XmlNode* outputSource = lib.find(output);

@@ -15,10 +15,10 @@ namespace mq {
 
 struct ColladaNodeTrack {
   std::string nodeId;
-  std::string nodeName;            // the node's name attribute ("" if none)
+  std::string nodeName;  // the node's name attribute ("" if none)
   std::vector<float> times;
   std::vector<glm::mat4> matrices;  // the node's local matrix at each key
-  bool step = false;               // STEP interpolation instead of LINEAR
+  bool step = false;                // STEP interpolation instead of LINEAR
 };
 
 struct ColladaClip {

@@ -1,8 +1,8 @@
 #include "core/io/gltf_document.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cctype>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 
@@ -14,9 +14,9 @@ namespace mq::gltf {
 
 namespace {
 
-constexpr uint32_t kGlbMagic = 0x46546C67;      // "glTF"
-constexpr uint32_t kChunkJson = 0x4E4F534A;     // "JSON"
-constexpr uint32_t kChunkBinary = 0x004E4942;   // "BIN\0"
+constexpr uint32_t kGlbMagic = 0x46546C67;     // "glTF"
+constexpr uint32_t kChunkJson = 0x4E4F534A;    // "JSON"
+constexpr uint32_t kChunkBinary = 0x004E4942;  // "BIN\0"
 
 uint32_t readU32(const uint8_t* p) {
   uint32_t v;
@@ -36,22 +36,52 @@ int componentsOf(const std::string& type) {
 
 int sizeOfComponent(int componentType) {
   switch (componentType) {
-    case 5120: case 5121: return 1;
-    case 5122: case 5123: return 2;
-    case 5125: case 5126: return 4;
-    default: return 0;
+    case 5120:
+    case 5121:
+      return 1;
+    case 5122:
+    case 5123:
+      return 2;
+    case 5125:
+    case 5126:
+      return 4;
+    default:
+      return 0;
   }
 }
 
 // One component as a double; normalised integers per the glTF spec.
 double readComponent(const uint8_t* p, int componentType, bool normalized) {
   switch (componentType) {
-    case 5120: { int8_t v; std::memcpy(&v, p, 1); return normalized ? std::max(v / 127.0, -1.0) : v; }
-    case 5121: { uint8_t v = *p; return normalized ? v / 255.0 : v; }
-    case 5122: { int16_t v; std::memcpy(&v, p, 2); return normalized ? std::max(v / 32767.0, -1.0) : v; }
-    case 5123: { uint16_t v; std::memcpy(&v, p, 2); return normalized ? v / 65535.0 : v; }
-    case 5125: { uint32_t v; std::memcpy(&v, p, 4); return v; }
-    default: { float v; std::memcpy(&v, p, 4); return v; }
+    case 5120: {
+      int8_t v;
+      std::memcpy(&v, p, 1);
+      return normalized ? std::max(v / 127.0, -1.0) : v;
+    }
+    case 5121: {
+      uint8_t v = *p;
+      return normalized ? v / 255.0 : v;
+    }
+    case 5122: {
+      int16_t v;
+      std::memcpy(&v, p, 2);
+      return normalized ? std::max(v / 32767.0, -1.0) : v;
+    }
+    case 5123: {
+      uint16_t v;
+      std::memcpy(&v, p, 2);
+      return normalized ? v / 65535.0 : v;
+    }
+    case 5125: {
+      uint32_t v;
+      std::memcpy(&v, p, 4);
+      return v;
+    }
+    default: {
+      float v;
+      std::memcpy(&v, p, 4);
+      return v;
+    }
   }
 }
 
@@ -99,7 +129,6 @@ std::string percentDecode(const std::string& uri) {
 
 }  // namespace
 
-
 struct Document::RawAccessor {
   const uint8_t* data = nullptr;  // null: all zeros (no bufferView)
   size_t count = 0;
@@ -112,8 +141,7 @@ struct Document::RawAccessor {
 void Document::fail(const std::string& problem) const { throw FileError(path_, problem); }
 
 const nlohmann::json& Document::element(const char* array, int index) const {
-  if (!json_.contains(array) || !json_[array].is_array() || index < 0 ||
-      index >= static_cast<int>(json_[array].size()))
+  if (!json_.contains(array) || !json_[array].is_array() || index < 0 || index >= static_cast<int>(json_[array].size()))
     fail(std::string("refers to missing ") + array + "[" + std::to_string(index) + "]");
   return json_[array][index];
 }
@@ -140,9 +168,11 @@ Document Document::load(const std::string& path) {
 
 void Document::parseGlb(const std::vector<uint8_t>& bytes) {
   if (bytes.size() < 20) fail("truncated GLB header");
-  if (readU32(bytes.data() + 4) != 2) fail("GLB container version " + std::to_string(readU32(bytes.data() + 4)) + " is not 2");
+  if (readU32(bytes.data() + 4) != 2)
+    fail("GLB container version " + std::to_string(readU32(bytes.data() + 4)) + " is not 2");
   const size_t length = readU32(bytes.data() + 8);
-  if (length > bytes.size()) fail("truncated GLB: header says " + std::to_string(length) + " bytes, file has " + std::to_string(bytes.size()));
+  if (length > bytes.size())
+    fail("truncated GLB: header says " + std::to_string(length) + " bytes, file has " + std::to_string(bytes.size()));
   size_t offset = 12;
   bool haveJson = false;
   while (offset + 8 <= length) {
@@ -168,8 +198,7 @@ void Document::parseGlb(const std::vector<uint8_t>& bytes) {
 std::vector<uint8_t> Document::dataUriBytes(const std::string& uri) const {
   std::vector<uint8_t> out;
   const size_t comma = uri.find(',');
-  if (comma == std::string::npos || uri.rfind(";base64", comma) == std::string::npos)
-    fail("data URI is not base64");
+  if (comma == std::string::npos || uri.rfind(";base64", comma) == std::string::npos) fail("data URI is not base64");
   if (!decodeBase64(uri, comma + 1, out)) fail("data URI holds invalid base64");
   return out;
 }
@@ -188,7 +217,8 @@ std::vector<uint8_t> Document::bufferViewBytes(int viewIndex) const {
   const size_t length = view.at("byteLength").get<size_t>();
   if (offset > buffer.size() || length > buffer.size() - offset)
     fail("bufferView " + std::to_string(viewIndex) + " runs past its buffer");
-  return {buffer.begin() + static_cast<std::ptrdiff_t>(offset), buffer.begin() + static_cast<std::ptrdiff_t>(offset + length)};
+  return {buffer.begin() + static_cast<std::ptrdiff_t>(offset),
+          buffer.begin() + static_cast<std::ptrdiff_t>(offset + length)};
 }
 
 std::vector<uint8_t> Document::loadUri(const std::string& uri) const {

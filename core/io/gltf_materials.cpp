@@ -9,9 +9,12 @@ using nlohmann::json;
 
 TextureWrap wrapOf(int glEnum) {
   switch (glEnum) {
-    case 33071: return TextureWrap::ClampToEdge;
-    case 33648: return TextureWrap::MirroredRepeat;
-    default: return TextureWrap::Repeat;  // 10497, and the spec's default
+    case 33071:
+      return TextureWrap::ClampToEdge;
+    case 33648:
+      return TextureWrap::MirroredRepeat;
+    default:
+      return TextureWrap::Repeat;  // 10497, and the spec's default
   }
 }
 

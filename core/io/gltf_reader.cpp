@@ -21,7 +21,7 @@ using nlohmann::json;
 
 // The node hierarchy of the default scene.
 struct NodeGraph {
-  std::vector<int> parent;       // -1 for roots
+  std::vector<int> parent;  // -1 for roots
   std::vector<bool> inScene;
   std::vector<int> preorder;     // scene nodes, parents before children
   std::vector<glm::mat4> local;  // each node's local matrix
@@ -152,7 +152,8 @@ int attributeAccessor(const json& attributes, const std::string& name) {
 
 int skinSetCount(const json& attributes) {
   int sets = 0;
-  while (attributes.contains("JOINTS_" + std::to_string(sets)) && attributes.contains("WEIGHTS_" + std::to_string(sets)))
+  while (attributes.contains("JOINTS_" + std::to_string(sets)) &&
+         attributes.contains("WEIGHTS_" + std::to_string(sets)))
     ++sets;
   return sets;
 }
@@ -168,7 +169,8 @@ std::vector<uint32_t> primitiveTriangles(const Document& doc, const json& prim, 
     std::iota(idx.begin(), idx.end(), 0u);
   }
   for (uint32_t i : idx)
-    if (i >= vertexCount) doc.fail("primitive index " + std::to_string(i) + " out of range (" + std::to_string(vertexCount) + " vertices)");
+    if (i >= vertexCount)
+      doc.fail("primitive index " + std::to_string(i) + " out of range (" + std::to_string(vertexCount) + " vertices)");
   const int mode = prim.value("mode", 4);
   std::vector<uint32_t> tri;
   if (mode == 4) {
@@ -184,8 +186,8 @@ std::vector<uint32_t> primitiveTriangles(const Document& doc, const json& prim, 
   return tri;
 }
 
-void appendSkin(const Document& doc, const json& attributes, size_t vertexCount, int influences,
-                size_t jointCount, SkinBinding& skin) {
+void appendSkin(const Document& doc, const json& attributes, size_t vertexCount, int influences, size_t jointCount,
+                SkinBinding& skin) {
   const int sets = skinSetCount(attributes);
   const size_t base = skin.joints.size();
   skin.joints.resize(base + vertexCount * influences, 0);
@@ -211,10 +213,12 @@ void appendSkin(const Document& doc, const json& attributes, size_t vertexCount,
 
 void appendMorphTargets(const Document& doc, const json& prim, size_t vertexCount, Mesh& mesh) {
   const json targets = prim.value("targets", json::array());
-  if (targets.size() != mesh.morphTargets.size()) doc.fail("primitives of mesh '" + mesh.name + "' have different morph target counts");
+  if (targets.size() != mesh.morphTargets.size())
+    doc.fail("primitives of mesh '" + mesh.name + "' have different morph target counts");
   for (size_t t = 0; t < targets.size(); ++t) {
     MorphTarget& target = mesh.morphTargets[t];
-    for (const auto& [attribute, deltas] : {std::pair{"POSITION", &target.positionDeltas}, std::pair{"NORMAL", &target.normalDeltas}}) {
+    for (const auto& [attribute, deltas] :
+         {std::pair{"POSITION", &target.positionDeltas}, std::pair{"NORMAL", &target.normalDeltas}}) {
       std::vector<float> values(3 * vertexCount, 0.0f);
       if (targets[t].contains(attribute)) {
         values = doc.readFloats(targets[t][attribute].get<int>());
@@ -239,7 +243,8 @@ void appendAttribute(const Document& doc, const json& attributes, const char* na
                      std::vector<float> fallback, std::vector<float>& out) {
   std::vector<float> values = std::move(fallback);
   if (const int a = attributeAccessor(attributes, name); a >= 0) values = doc.readFloats(a);
-  if (values.size() != static_cast<size_t>(width) * n) doc.fail(std::string(name) + " count differs from POSITION count");
+  if (values.size() != static_cast<size_t>(width) * n)
+    doc.fail(std::string(name) + " count differs from POSITION count");
   out.insert(out.end(), values.begin(), values.end());
 }
 
@@ -294,7 +299,8 @@ void bindSkin(const Document& doc, const NodeGraph& g, int skinIndex, Mesh& mesh
   std::vector<float> inverseBind;
   if (skin.contains("inverseBindMatrices")) {
     inverseBind = doc.readFloats(skin["inverseBindMatrices"].get<int>());
-    if (inverseBind.size() != 16 * joints.size()) doc.fail("skin " + std::to_string(skinIndex) + ": inverseBindMatrices count differs from joint count");
+    if (inverseBind.size() != 16 * joints.size())
+      doc.fail("skin " + std::to_string(skinIndex) + ": inverseBindMatrices count differs from joint count");
   }
   for (size_t j = 0; j < joints.size(); ++j) {
     const int bone = g.boneOfNode[joints[j]];
@@ -333,14 +339,16 @@ Mesh readNodeMesh(const Document& doc, const NodeGraph& g, int nodeIndex) {
     mesh.morphTargets.resize(targets.size());
     const json names = gm.contains("extras") ? gm["extras"].value("targetNames", json::array()) : json::array();
     for (size_t t = 0; t < targets.size(); ++t)
-      mesh.morphTargets[t].name = t < names.size() && names[t].is_string() ? names[t].get<std::string>() : "target" + std::to_string(t);
+      mesh.morphTargets[t].name =
+          t < names.size() && names[t].is_string() ? names[t].get<std::string>() : "target" + std::to_string(t);
   }
   for (const json& p : prims) appendPrimitive(doc, p, influences, jointCount, optional, mesh);
   normaliseMorphDeltas(mesh);
 
   const auto weights = node.contains("weights") ? node["weights"] : gm.value("weights", json::array());
   mesh.morphWeights.assign(mesh.morphTargets.size(), 0.0f);
-  for (size_t t = 0; t < weights.size() && t < mesh.morphWeights.size(); ++t) mesh.morphWeights[t] = weights[t].get<float>();
+  for (size_t t = 0; t < weights.size() && t < mesh.morphWeights.size(); ++t)
+    mesh.morphWeights[t] = weights[t].get<float>();
 
   if (skinned && influences > 0) {
     bindSkin(doc, g, node["skin"].get<int>(), mesh);
@@ -408,9 +416,12 @@ Clip readAnimation(const Document& doc, const NodeGraph& g, const std::map<int, 
     auto [it, added] = channelOfBone.emplace(bone, clip.boneChannels.size());
     if (added) clip.boneChannels.push_back({bone, {}, {}, {}});
     BoneChannel& bc = clip.boneChannels[it->second];
-    if (path == "translation") bc.translation = readTrack(doc, samplers[s], path);
-    else if (path == "rotation") bc.rotation = readTrack(doc, samplers[s], path);
-    else if (path == "scale") bc.scale = readTrack(doc, samplers[s], path);
+    if (path == "translation")
+      bc.translation = readTrack(doc, samplers[s], path);
+    else if (path == "rotation")
+      bc.rotation = readTrack(doc, samplers[s], path);
+    else if (path == "scale")
+      bc.scale = readTrack(doc, samplers[s], path);
   }
   return clip;
 }

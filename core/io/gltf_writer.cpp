@@ -56,7 +56,8 @@ int GltfWriter::addAccessor(const void* data, size_t count, const char* type, in
 }
 
 void GltfWriter::writeGltf(std::ostream& out) {
-  gltf_["buffers"] = {{{"byteLength", buffer_.size()}, {"uri", "data:application/octet-stream;base64," + base64(buffer_)}}};
+  gltf_["buffers"] = {
+      {{"byteLength", buffer_.size()}, {"uri", "data:application/octet-stream;base64," + base64(buffer_)}}};
   out << gltf_.dump(1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
 }
 

@@ -22,8 +22,7 @@ class GltfWriter {
   // One accessor over a new bufferView holding `count` elements of `type`
   // ("SCALAR", "VEC3", "MAT4", ...) with `components` each; returns its index.
   // target 0: no bufferView target (animation and skin data).
-  int addAccessor(const void* data, size_t count, const char* type, int components, int componentType,
-                  int target = 0);
+  int addAccessor(const void* data, size_t count, const char* type, int components, int componentType, int target = 0);
 
   void writeGltf(std::ostream& out);
   void writeGlb(std::ostream& out);

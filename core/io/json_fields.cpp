@@ -140,7 +140,8 @@ long long JsonFields::integer(std::string_view key, long long fallback, long lon
   if (value->is_number_unsigned() && value->get<unsigned long long>() > static_cast<unsigned long long>(max))
     fail(key, "must be an integer between " + std::to_string(min) + " and " + std::to_string(max));
   const long long i = value->get<long long>();
-  if (i < min || i > max) fail(key, "must be an integer between " + std::to_string(min) + " and " + std::to_string(max));
+  if (i < min || i > max)
+    fail(key, "must be an integer between " + std::to_string(min) + " and " + std::to_string(max));
   return i;
 }
 

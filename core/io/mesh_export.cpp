@@ -104,15 +104,18 @@ void buildGltf(GltfWriter& writer, const std::vector<const Mesh*>& meshes, const
     const PosedMesh& p = posed[m];
     const size_t n = p.positions.size() / 3;
     nlohmann::json attributes;
-    const int position = writer.addAccessor(p.positions.data(), n, "VEC3", 3, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
+    const int position =
+        writer.addAccessor(p.positions.data(), n, "VEC3", 3, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
     const Aabb box = boundsOf(p.positions);  // the spec requires POSITION min/max
     gltf["accessors"][position]["min"] = {box.min.x, box.min.y, box.min.z};
     gltf["accessors"][position]["max"] = {box.max.x, box.max.y, box.max.z};
     attributes["POSITION"] = position;
     if (p.normals.size() == 3 * n)
-      attributes["NORMAL"] = writer.addAccessor(p.normals.data(), n, "VEC3", 3, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
+      attributes["NORMAL"] =
+          writer.addAccessor(p.normals.data(), n, "VEC3", 3, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
     if (mesh.uvs.size() == 2 * n)
-      attributes["TEXCOORD_0"] = writer.addAccessor(mesh.uvs.data(), n, "VEC2", 2, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
+      attributes["TEXCOORD_0"] =
+          writer.addAccessor(mesh.uvs.data(), n, "VEC2", 2, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
     nlohmann::json primitive = {{"attributes", attributes}, {"mode", 4}};
     if (!mesh.triangles.empty())
       primitive["indices"] = writer.addAccessor(mesh.triangles.data(), mesh.triangles.size(), "SCALAR", 1,
@@ -150,11 +153,13 @@ void exportPosedMesh(const std::vector<const Mesh*>& meshes, const std::vector<P
   if (ext == "obj")
     writeFileAtomically(path, [&](std::ostream& out) { writeObj(out, meshes, posed); });
   else if (ext == "ply")
-    writeFileAtomically(path, [&](std::ostream& out) { writePly(out, meshes, posed); }, true);
+    writeFileAtomically(
+        path, [&](std::ostream& out) { writePly(out, meshes, posed); }, true);
   else if (ext == "gltf")
     writeFileAtomically(path, [&](std::ostream& out) { writeGltf(out, meshes, posed, false); });
   else if (ext == "glb")
-    writeFileAtomically(path, [&](std::ostream& out) { writeGltf(out, meshes, posed, true); }, true);
+    writeFileAtomically(
+        path, [&](std::ostream& out) { writeGltf(out, meshes, posed, true); }, true);
   else
     throw FileError(path, "cannot export to '." + ext + "' (use .obj, .ply, .gltf or .glb)");
 }

@@ -50,8 +50,8 @@ void addSkinAttributes(GltfWriter& writer, const SkinBinding& skin, size_t verti
       joints[4 * v + i] = four.joints[v * k + i];
       weights[4 * v + i] = four.weights[v * k + i];
     }
-  attributes["JOINTS_0"] = writer.addAccessor(joints.data(), vertices, "VEC4", 4, GltfWriter::kUnsignedShort,
-                                              GltfWriter::kArrayBuffer);
+  attributes["JOINTS_0"] =
+      writer.addAccessor(joints.data(), vertices, "VEC4", 4, GltfWriter::kUnsignedShort, GltfWriter::kArrayBuffer);
   attributes["WEIGHTS_0"] =
       writer.addAccessor(weights.data(), vertices, "VEC4", 4, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
 }
@@ -88,8 +88,8 @@ void addMesh(GltfWriter& writer, const Mesh& mesh, int boneCount) {
     for (const glm::mat4& m : mesh.skin.inverseBind)
       for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r) inverseBind.push_back(m[c][r]);  // column-major, as glTF
-    const int matrices = writer.addAccessor(inverseBind.data(), mesh.skin.inverseBind.size(), "MAT4", 16,
-                                            GltfWriter::kFloat);
+    const int matrices =
+        writer.addAccessor(inverseBind.data(), mesh.skin.inverseBind.size(), "MAT4", 16, GltfWriter::kFloat);
     gltf["skins"].push_back({{"joints", mesh.skin.jointBones}, {"inverseBindMatrices", matrices}});
     node["skin"] = gltf["skins"].size() - 1;
     gltf["scenes"][0]["nodes"].push_back(nodeIndex);

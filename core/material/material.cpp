@@ -31,9 +31,12 @@ std::vector<TextureSlot> Material::textureSlots() const {
 
 const char* alphaModeName(AlphaMode mode) {
   switch (mode) {
-    case AlphaMode::Mask: return "MASK";
-    case AlphaMode::Blend: return "BLEND";
-    case AlphaMode::Opaque: break;
+    case AlphaMode::Mask:
+      return "MASK";
+    case AlphaMode::Blend:
+      return "BLEND";
+    case AlphaMode::Opaque:
+      break;
   }
   return "OPAQUE";
 }
@@ -49,12 +52,8 @@ bool parseAlphaMode(const std::string& text, AlphaMode& mode) {
   return false;
 }
 
-float srgbToLinear(float c) {
-  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
+float srgbToLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
 
-float linearToSrgb(float c) {
-  return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-}
+float linearToSrgb(float c) { return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f; }
 
 }  // namespace mq

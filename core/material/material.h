@@ -14,10 +14,10 @@ namespace mq {
 // Where an image's bytes come from: embedded (GLB buffer view, data: URI,
 // FBX embedded texture) or a file beside the model.
 struct ImageSource {
-  std::string name;               // for messages: the URI, file name or "image N"
-  std::string path;               // absolute path of an external file, or empty
-  std::vector<uint8_t> encoded;   // embedded PNG/JPEG bytes, or empty
-  std::string mimeType;           // "image/png", "image/jpeg" or empty (guess)
+  std::string name;              // for messages: the URI, file name or "image N"
+  std::string path;              // absolute path of an external file, or empty
+  std::vector<uint8_t> encoded;  // embedded PNG/JPEG bytes, or empty
+  std::string mimeType;          // "image/png", "image/jpeg" or empty (guess)
 };
 
 enum class TextureWrap : uint8_t { Repeat, ClampToEdge, MirroredRepeat };
@@ -25,8 +25,8 @@ enum class TextureWrap : uint8_t { Repeat, ClampToEdge, MirroredRepeat };
 struct TextureSampler {
   TextureWrap wrapS = TextureWrap::Repeat;
   TextureWrap wrapT = TextureWrap::Repeat;
-  bool linear = true;       // magnification filter (false: nearest)
-  bool mipmaps = true;      // minification filter uses mipmaps
+  bool linear = true;   // magnification filter (false: nearest)
+  bool mipmaps = true;  // minification filter uses mipmaps
 };
 
 // KHR_texture_transform: uv' = T(offset) * R(rotation) * S(scale) * uv.

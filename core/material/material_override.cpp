@@ -24,7 +24,8 @@ float readNumber(const json& j, const char* key, const std::string& where, float
 template <int N>
 glm::vec<N, float> readVector(const json& j, const char* key, const std::string& where, float max) {
   const json& v = j[key];
-  if (!v.is_array() || v.size() != N) throw Error(where + "." + key + " must be an array of " + std::to_string(N) + " numbers");
+  if (!v.is_array() || v.size() != N)
+    throw Error(where + "." + key + " must be an array of " + std::to_string(N) + " numbers");
   glm::vec<N, float> out;
   for (int i = 0; i < N; ++i) {
     if (!v[i].is_number() || !std::isfinite(v[i].get<float>()) || v[i].get<float>() < 0.0f || v[i].get<float>() > max)
@@ -99,9 +100,9 @@ json MaterialOverride::toJson() const {
 
 MaterialOverride MaterialOverride::fromJson(const json& j, const std::string& where) {
   if (!j.is_object()) throw Error(where + " must be an object");
-  static const char* known[] = {"base_color",        "metallic",   "roughness",    "normal_scale",
-                                "occlusion_strength", "emissive",   "emissive_strength", "alpha_mode",
-                                "alpha_cutoff",       "double_sided", "skin"};
+  static const char* known[] = {"base_color", "metallic",          "roughness",  "normal_scale", "occlusion_strength",
+                                "emissive",   "emissive_strength", "alpha_mode", "alpha_cutoff", "double_sided",
+                                "skin"};
   for (const auto& [key, value] : j.items())
     if (std::find(std::begin(known), std::end(known), key) == std::end(known))
       throw Error(where + ": unknown field '" + key + "'");

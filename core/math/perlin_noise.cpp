@@ -15,9 +15,9 @@ inline float lerp(float t, float a, float b) { return a + t * (b - a); }
 // Dot product of the offset with one of 12 edge-midpoint gradients (16
 // entries, four repeated, as in Perlin's reference): a table lookup, since
 // branches on a random hash mispredict.
-constexpr float kGradients[16][3] = {{1, 1, 0},  {-1, 1, 0}, {1, -1, 0}, {-1, -1, 0}, {1, 0, 1},  {-1, 0, 1},
-                                     {1, 0, -1}, {-1, 0, -1}, {0, 1, 1},  {0, -1, 1}, {0, 1, -1}, {0, -1, -1},
-                                     {1, 1, 0},  {0, -1, 1}, {-1, 1, 0}, {0, -1, -1}};
+constexpr float kGradients[16][3] = {{1, 1, 0},  {-1, 1, 0},  {1, -1, 0}, {-1, -1, 0}, {1, 0, 1},  {-1, 0, 1},
+                                     {1, 0, -1}, {-1, 0, -1}, {0, 1, 1},  {0, -1, 1},  {0, 1, -1}, {0, -1, -1},
+                                     {1, 1, 0},  {0, -1, 1},  {-1, 1, 0}, {0, -1, -1}};
 inline float grad(int hash, float x, float y, float z) {
   const float* g = kGradients[hash & 15];
   return g[0] * x + g[1] * y + g[2] * z;
@@ -50,8 +50,7 @@ float PerlinNoise::noise(float x, float y, float z) const {
 }
 
 glm::vec3 PerlinNoise::noise3(const glm::vec3& p) const {
-  return {noise(p), noise(p + glm::vec3(31.416f, 47.853f, 12.679f)),
-          noise(p + glm::vec3(-23.112f, 19.871f, -55.309f))};
+  return {noise(p), noise(p + glm::vec3(31.416f, 47.853f, 12.679f)), noise(p + glm::vec3(-23.112f, 19.871f, -55.309f))};
 }
 
 }  // namespace mq

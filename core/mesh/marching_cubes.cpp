@@ -15,9 +15,9 @@ struct CubeEdge {
 };
 
 struct CubeFace {
-  std::array<int, 4> ccwCorners;       // counter-clockwise seen from outside the cube
-  std::array<int, 4> ccwEdges;         // edge m joins ccwCorners[m] and ccwCorners[m + 1]
-  std::array<int, 4> canonicalCorners; // square order in the face's (u, v) axes, same for both cubes
+  std::array<int, 4> ccwCorners;        // counter-clockwise seen from outside the cube
+  std::array<int, 4> ccwEdges;          // edge m joins ccwCorners[m] and ccwCorners[m + 1]
+  std::array<int, 4> canonicalCorners;  // square order in the face's (u, v) axes, same for both cubes
 };
 
 struct CubeTopology {

@@ -51,7 +51,8 @@ std::vector<float> vertexMeanCurvature(const std::vector<float>& positions, cons
     for (int k = 0; k < 3; ++k) {
       const int i = (k + 1) % 3, j = (k + 2) % 3;
       if (obtuse < 0) {
-        area[idx[k]] += (glm::dot(p[i] - p[k], p[i] - p[k]) * cot[j] + glm::dot(p[j] - p[k], p[j] - p[k]) * cot[i]) / 8.0;
+        area[idx[k]] +=
+            (glm::dot(p[i] - p[k], p[i] - p[k]) * cot[j] + glm::dot(p[j] - p[k], p[j] - p[k]) * cot[i]) / 8.0;
       } else {
         area[idx[k]] += triangleArea * (obtuse == k ? 0.5 : 0.25);
       }

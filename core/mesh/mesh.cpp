@@ -38,8 +38,7 @@ void SkinBinding::limitInfluences(int limit) {
   std::vector<int> order(k);
   for (size_t v = 0; v < vertices; ++v) {
     std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(),
-                     [&](int a, int b) { return weights[v * k + a] > weights[v * k + b]; });
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return weights[v * k + a] > weights[v * k + b]; });
     for (int i = 0; i < limit; ++i) {
       newJoints[v * limit + i] = joints[v * k + order[i]];
       newWeights[v * limit + i] = weights[v * k + order[i]];
@@ -86,8 +85,8 @@ void computeVertexNormals(const std::vector<float>& positions, const std::vector
       for (int d = 0; d < 3; ++d) normals[3 * i + d] += n[d];
   }
   for (size_t v = 0; v + 2 < normals.size(); v += 3) {
-    const float len = std::sqrt(normals[v] * normals[v] + normals[v + 1] * normals[v + 1] +
-                                normals[v + 2] * normals[v + 2]);
+    const float len =
+        std::sqrt(normals[v] * normals[v] + normals[v + 1] * normals[v + 1] + normals[v + 2] * normals[v + 2]);
     if (len > 0.0f)
       for (int d = 0; d < 3; ++d) normals[v + d] /= len;
     else
@@ -97,8 +96,7 @@ void computeVertexNormals(const std::vector<float>& positions, const std::vector
 
 Aabb boundsOf(const std::vector<float>& positions) {
   Aabb box;
-  for (size_t i = 0; i + 2 < positions.size(); i += 3)
-    box.extend({positions[i], positions[i + 1], positions[i + 2]});
+  for (size_t i = 0; i + 2 < positions.size(); i += 3) box.extend({positions[i], positions[i + 1], positions[i + 2]});
   return box;
 }
 

@@ -25,9 +25,9 @@ struct MorphTarget {
 // unused slots have weight 0; weights of a vertex sum to 1.
 struct SkinBinding {
   int influencesPerVertex = 0;
-  std::vector<uint16_t> joints;   // vertices * K, indices into jointBones
-  std::vector<float> weights;     // vertices * K
-  std::vector<int> jointBones;    // skin joint -> skeleton bone
+  std::vector<uint16_t> joints;        // vertices * K, indices into jointBones
+  std::vector<float> weights;          // vertices * K
+  std::vector<int> jointBones;         // skin joint -> skeleton bone
   std::vector<glm::mat4> inverseBind;  // skin joint -> boneFromMesh at bind time
 
   bool empty() const { return influencesPerVertex == 0; }
@@ -51,12 +51,12 @@ struct Submesh {
 
 struct Mesh {
   std::string name;
-  std::vector<float> positions;   // 3 per vertex
-  std::vector<float> normals;     // 3 per vertex
+  std::vector<float> positions;  // 3 per vertex
+  std::vector<float> normals;    // 3 per vertex
   // Texture coordinates as glTF has them: (0, 0) is the image's top left.
-  std::vector<float> uvs;         // 2 per vertex, may be empty (texture coordinate set 0)
-  std::vector<float> uvs1;        // 2 per vertex, may be empty (set 1)
-  std::vector<float> tangents;    // 4 per vertex (xyz, handedness w), may be empty
+  std::vector<float> uvs;           // 2 per vertex, may be empty (texture coordinate set 0)
+  std::vector<float> uvs1;          // 2 per vertex, may be empty (set 1)
+  std::vector<float> tangents;      // 4 per vertex (xyz, handedness w), may be empty
   std::vector<uint32_t> triangles;  // 3 per triangle
   std::vector<MorphTarget> morphTargets;
   std::vector<float> morphWeights;  // default weight per target
@@ -95,7 +95,10 @@ void computeVertexNormals(const std::vector<float>& positions, const std::vector
 struct Aabb {
   glm::vec3 min{1e30f};
   glm::vec3 max{-1e30f};
-  void extend(const glm::vec3& p) { min = glm::min(min, p); max = glm::max(max, p); }
+  void extend(const glm::vec3& p) {
+    min = glm::min(min, p);
+    max = glm::max(max, p);
+  }
   bool valid() const { return min.x <= max.x; }
   glm::vec3 center() const { return 0.5f * (min + max); }
   float diagonal() const { return valid() ? glm::length(max - min) : 0.0f; }

@@ -57,7 +57,10 @@ void checkVertexFans(size_t vertexCount, const std::vector<uint32_t>& triangles,
     uint32_t at = begin->first;
     while (single) {
       auto it = std::lower_bound(begin, end, std::make_pair(at, uint32_t(0)));
-      if (it == end || it->first != at) { single = false; break; }
+      if (it == end || it->first != at) {
+        single = false;
+        break;
+      }
       at = it->second;
       ++steps;
       if (at == begin->first || steps > size_t(end - begin)) break;
@@ -107,7 +110,8 @@ double signedVolume(const std::vector<float>& positions, const std::vector<uint3
     // a . (b x c) / 6: the tetrahedron with the origin
     volume += (double(a[0]) * (double(b[1]) * c[2] - double(b[2]) * c[1]) +
                double(a[1]) * (double(b[2]) * c[0] - double(b[0]) * c[2]) +
-               double(a[2]) * (double(b[0]) * c[1] - double(b[1]) * c[0])) / 6.0;
+               double(a[2]) * (double(b[0]) * c[1] - double(b[1]) * c[0])) /
+              6.0;
   }
   return volume;
 }

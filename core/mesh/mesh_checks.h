@@ -12,13 +12,13 @@ namespace mq {
 
 struct MeshTopologyReport {
   size_t edges = 0;
-  size_t boundaryEdges = 0;         // used by one triangle
-  size_t overSharedEdges = 0;       // used by more than two triangles
-  size_t misorientedEdges = 0;      // two triangles run the edge the same way
-  size_t nonManifoldVertices = 0;   // the triangles around it are not one closed fan
-  size_t isolatedVertices = 0;      // in no triangle
-  size_t degenerateTriangles = 0;   // a repeated vertex index
-  size_t components = 0;            // connected pieces (through shared vertices)
+  size_t boundaryEdges = 0;        // used by one triangle
+  size_t overSharedEdges = 0;      // used by more than two triangles
+  size_t misorientedEdges = 0;     // two triangles run the edge the same way
+  size_t nonManifoldVertices = 0;  // the triangles around it are not one closed fan
+  size_t isolatedVertices = 0;     // in no triangle
+  size_t degenerateTriangles = 0;  // a repeated vertex index
+  size_t components = 0;           // connected pieces (through shared vertices)
 
   // Every edge shared by exactly two oppositely oriented triangles, every
   // vertex a single fan, nothing degenerate or unused.
@@ -38,6 +38,6 @@ double signedVolume(const std::vector<float>& positions, const std::vector<uint3
 // vertices and edges they share; exact predicates (CGAL). The mesh must be a
 // 2-manifold (see checkTopology).
 std::vector<std::pair<size_t, size_t>> selfIntersections(const std::vector<float>& positions,
-                                                        const std::vector<uint32_t>& triangles);
+                                                         const std::vector<uint32_t>& triangles);
 
 }  // namespace mq

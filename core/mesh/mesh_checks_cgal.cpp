@@ -11,7 +11,7 @@
 namespace mq {
 
 std::vector<std::pair<size_t, size_t>> selfIntersections(const std::vector<float>& positions,
-                                                        const std::vector<uint32_t>& triangles) {
+                                                         const std::vector<uint32_t>& triangles) {
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
   using Face = SurfaceMesh::Face_index;

@@ -27,9 +27,7 @@ uint64_t edgeKey(uint32_t a, uint32_t b) {
 
 std::vector<Polygon2> sectionLoops(const std::vector<float>& positions, const std::vector<uint32_t>& triangles,
                                    const PlaneChart& chart) {
-  auto point = [&](uint32_t i) {
-    return glm::dvec3(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
-  };
+  auto point = [&](uint32_t i) { return glm::dvec3(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]); };
   auto side = [&](uint32_t i) { return glm::dot(point(i) - chart.origin, chart.normal); };
   // Each crossing triangle links the two crossed edges it has.
   std::unordered_map<uint64_t, std::pair<uint64_t, uint64_t>> links;

@@ -23,7 +23,8 @@ glm::dvec3 rowOf(double x, double y) { return {x * x, 2.0 * x * y, y * y}; }
 
 }  // namespace
 
-SurfaceCompression::SurfaceCompression(const std::vector<float>& restPositions, const std::vector<uint32_t>& triangles) {
+SurfaceCompression::SurfaceCompression(const std::vector<float>& restPositions,
+                                       const std::vector<uint32_t>& triangles) {
   const size_t n = restPositions.size() / 3;
   restPositions_ = restPositions;
   std::vector<std::vector<uint32_t>> adjacent(n);
@@ -88,57 +89,59 @@ void SurfaceCompression::evaluate(const std::vector<float>& posedPositions, std:
 void SurfaceCompression::fitStretch(const std::vector<float>& posedPositions, std::vector<float>& out) const {
   // Each vertex writes only its own 4 floats: split by index, deterministic.
   ThreadPool::shared().parallelFor(0, vertexCount(), kMinChunk, [&](size_t begin, size_t end) {
-  for (size_t v = begin; v < end; ++v) {
-    float* result = &out[4 * v];
-    result[3] = 1.0f;
-    const float* m = &inverseNormal_[6 * v];
-    if (m[0] == 0.0f && m[3] == 0.0f && m[5] == 0.0f) continue;
-    // Right-hand side of the normal equations: sum of row_e (l_e / L_e)^2.
-    glm::vec3 rhs(0.0f);
-    const glm::vec3 p = at(posedPositions, v);
-    for (uint32_t e = firstEdge_[v]; e < firstEdge_[v + 1]; ++e) {
-      const glm::vec3 d = at(posedPositions, neighbour_[e]) - p;
-      rhs += glm::vec3(rows_[3 * e], rows_[3 * e + 1], rows_[3 * e + 2]) * (glm::dot(d, d) * inverseRestLengthSquared_[e]);
+    for (size_t v = begin; v < end; ++v) {
+      float* result = &out[4 * v];
+      result[3] = 1.0f;
+      const float* m = &inverseNormal_[6 * v];
+      if (m[0] == 0.0f && m[3] == 0.0f && m[5] == 0.0f) continue;
+      // Right-hand side of the normal equations: sum of row_e (l_e / L_e)^2.
+      glm::vec3 rhs(0.0f);
+      const glm::vec3 p = at(posedPositions, v);
+      for (uint32_t e = firstEdge_[v]; e < firstEdge_[v + 1]; ++e) {
+        const glm::vec3 d = at(posedPositions, neighbour_[e]) - p;
+        rhs += glm::vec3(rows_[3 * e], rows_[3 * e + 1], rows_[3 * e + 2]) *
+               (glm::dot(d, d) * inverseRestLengthSquared_[e]);
+      }
+      const double a = double(m[0]) * rhs.x + m[1] * rhs.y + m[2] * rhs.z;
+      const double b = m[1] * rhs.x + m[3] * rhs.y + m[4] * rhs.z;
+      const double c = m[2] * rhs.x + m[4] * rhs.y + m[5] * rhs.z;
+      // Smallest eigenvalue of [[a, b], [b, c]] and its eigenvector.
+      const double mean = 0.5 * (a + c), radius = std::sqrt(0.25 * (a - c) * (a - c) + b * b);
+      const double smallest = mean - radius;
+      result[3] = static_cast<float>(std::sqrt(std::max(smallest, 0.0)));
+      // Not compressed (beyond skinning noise), or equally in every direction.
+      if (smallest >= (1.0 - kMinCompression) * (1.0 - kMinCompression) || radius < 1e-12) continue;
+      glm::dvec2 direction =
+          std::abs(a - smallest) > std::abs(c - smallest) ? glm::dvec2(b, smallest - a) : glm::dvec2(smallest - c, b);
+      direction = glm::normalize(direction);
+      glm::vec3 across(0.0f);
+      for (int k = 0; k < 3; ++k)
+        across[k] =
+            static_cast<float>(direction.x * tangentFrame_[6 * v + k] + direction.y * tangentFrame_[6 * v + 3 + k]);
+      // u and -u are the same direction; one sign everywhere keeps neighbours
+      // from cancelling when the shader interpolates them.
+      if (glm::dot(across, kSignReference) < 0.0f) across = -across;
+      for (int k = 0; k < 3; ++k) result[k] = across[k];
     }
-    const double a = double(m[0]) * rhs.x + m[1] * rhs.y + m[2] * rhs.z;
-    const double b = m[1] * rhs.x + m[3] * rhs.y + m[4] * rhs.z;
-    const double c = m[2] * rhs.x + m[4] * rhs.y + m[5] * rhs.z;
-    // Smallest eigenvalue of [[a, b], [b, c]] and its eigenvector.
-    const double mean = 0.5 * (a + c), radius = std::sqrt(0.25 * (a - c) * (a - c) + b * b);
-    const double smallest = mean - radius;
-    result[3] = static_cast<float>(std::sqrt(std::max(smallest, 0.0)));
-    // Not compressed (beyond skinning noise), or equally in every direction.
-    if (smallest >= (1.0 - kMinCompression) * (1.0 - kMinCompression) || radius < 1e-12) continue;
-    glm::dvec2 direction = std::abs(a - smallest) > std::abs(c - smallest) ? glm::dvec2(b, smallest - a)
-                                                                            : glm::dvec2(smallest - c, b);
-    direction = glm::normalize(direction);
-    glm::vec3 across(0.0f);
-    for (int k = 0; k < 3; ++k)
-      across[k] = static_cast<float>(direction.x * tangentFrame_[6 * v + k] + direction.y * tangentFrame_[6 * v + 3 + k]);
-    // u and -u are the same direction; one sign everywhere keeps neighbours
-    // from cancelling when the shader interpolates them.
-    if (glm::dot(across, kSignReference) < 0.0f) across = -across;
-    for (int k = 0; k < 3; ++k) result[k] = across[k];
-  }
   });
 }
 
 void SurfaceCompression::smoothDirections(const std::vector<float>& raw, std::vector<float>& out) const {
   ThreadPool::shared().parallelFor(0, vertexCount(), kMinChunk, [&](size_t begin, size_t end) {
-  for (size_t v = begin; v < end; ++v) {
-    const glm::vec3 own(raw[4 * v], raw[4 * v + 1], raw[4 * v + 2]);
-    out[4 * v + 3] = raw[4 * v + 3];
-    if (own == glm::vec3(0.0f)) continue;  // smoothing never spreads folds onto uncompressed skin
-    glm::vec3 sum = (1.0f - raw[4 * v + 3]) * own;
-    for (uint32_t e = firstEdge_[v]; e < firstEdge_[v + 1]; ++e) {
-      const uint32_t u = neighbour_[e];
-      glm::vec3 other(raw[4 * u], raw[4 * u + 1], raw[4 * u + 2]);
-      if (glm::dot(other, own) < 0.0f) other = -other;
-      sum += std::max(1.0f - raw[4 * u + 3], 0.0f) * other;
+    for (size_t v = begin; v < end; ++v) {
+      const glm::vec3 own(raw[4 * v], raw[4 * v + 1], raw[4 * v + 2]);
+      out[4 * v + 3] = raw[4 * v + 3];
+      if (own == glm::vec3(0.0f)) continue;  // smoothing never spreads folds onto uncompressed skin
+      glm::vec3 sum = (1.0f - raw[4 * v + 3]) * own;
+      for (uint32_t e = firstEdge_[v]; e < firstEdge_[v + 1]; ++e) {
+        const uint32_t u = neighbour_[e];
+        glm::vec3 other(raw[4 * u], raw[4 * u + 1], raw[4 * u + 2]);
+        if (glm::dot(other, own) < 0.0f) other = -other;
+        sum += std::max(1.0f - raw[4 * u + 3], 0.0f) * other;
+      }
+      const glm::vec3 direction = glm::length(sum) > 1e-12f ? glm::normalize(sum) : own;
+      for (int k = 0; k < 3; ++k) out[4 * v + k] = direction[k];
     }
-    const glm::vec3 direction = glm::length(sum) > 1e-12f ? glm::normalize(sum) : own;
-    for (int k = 0; k < 3; ++k) out[4 * v + k] = direction[k];
-  }
   });
 }
 

@@ -53,12 +53,12 @@ class SurfaceCompression {
   void smoothDirections(const std::vector<float>& raw, std::vector<float>& out) const;
   void integratePhase(std::vector<float>& out, std::vector<float>& phase) const;
 
-  std::vector<uint32_t> firstEdge_;      // CSR: vertex v's edges are [firstEdge_[v], firstEdge_[v + 1])
-  std::vector<uint32_t> neighbour_;      // the edge's other vertex
+  std::vector<uint32_t> firstEdge_;              // CSR: vertex v's edges are [firstEdge_[v], firstEdge_[v + 1])
+  std::vector<uint32_t> neighbour_;              // the edge's other vertex
   std::vector<float> inverseRestLengthSquared_;  // 1 / L_e^2
-  std::vector<float> rows_;              // 3 floats per edge: (x^2, 2xy, y^2) of u_e in the vertex's tangent frame
-  std::vector<float> tangentFrame_;      // 6 floats per vertex: t1, t2 (rest frame)
-  std::vector<float> inverseNormal_;     // 6 floats per vertex: symmetric 3x3 inverse; zeros when singular
+  std::vector<float> rows_;           // 3 floats per edge: (x^2, 2xy, y^2) of u_e in the vertex's tangent frame
+  std::vector<float> tangentFrame_;   // 6 floats per vertex: t1, t2 (rest frame)
+  std::vector<float> inverseNormal_;  // 6 floats per vertex: symmetric 3x3 inverse; zeros when singular
   std::vector<float> restPositions_;
 };
 

@@ -30,7 +30,8 @@ TriangleRayCaster::TriangleRayCaster(const std::vector<float>& positions, const 
   for (uint32_t t = 0; t < count; ++t) {
     order_[t] = t;
     centroids_[t] = (vertex(positions, triangles[3 * t]) + vertex(positions, triangles[3 * t + 1]) +
-                     vertex(positions, triangles[3 * t + 2])) / 3.0f;
+                     vertex(positions, triangles[3 * t + 2])) /
+                    3.0f;
   }
   nodes_.reserve(2 * count / kLeafSize + 2);
   nodes_.push_back({});

@@ -19,8 +19,7 @@ class TriangleRayCaster {
   // Distance along unit `direction` from `origin` to the nearest triangle hit
   // beyond `minDistance`, skipping triangles that use vertex `skipVertex`
   // (the ray's own corner; -1: none). Negative when nothing is hit.
-  float firstHit(const glm::vec3& origin, const glm::vec3& direction, float minDistance,
-                 int64_t skipVertex = -1) const;
+  float firstHit(const glm::vec3& origin, const glm::vec3& direction, float minDistance, int64_t skipVertex = -1) const;
 
  private:
   struct Node {

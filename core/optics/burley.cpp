@@ -37,9 +37,7 @@ double burleyScaleSearchlightMfp(double albedo) {
   return 1.85 - albedo + 7.0 * offset * offset * offset;
 }
 
-double burleyScaleDiffuseMfp(double albedo) {
-  return 1.9 - albedo + 3.5 * (albedo - 0.8) * (albedo - 0.8);
-}
+double burleyScaleDiffuseMfp(double albedo) { return 1.9 - albedo + 3.5 * (albedo - 0.8) * (albedo - 0.8); }
 
 double burleyScaleSearchlightDiffuseMfp(double albedo) {
   const double offset = albedo - 0.33;

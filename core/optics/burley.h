@@ -19,9 +19,9 @@ struct BurleyProfile {
   double albedo = 1.0;  // A, the total diffuse reflectance
   double shape = 1.0;   // d (mm)
 
-  double radial(double r) const;             // R(r)
-  double fractionWithin(double r) const;     // CDF of the normalised profile
-  double lineSpread(double s) const;         // P(s)
+  double radial(double r) const;          // R(r)
+  double fractionWithin(double r) const;  // CDF of the normalised profile
+  double lineSpread(double s) const;      // P(s)
   // The radius at which fractionWithin reaches xi in [0, 1): importance
   // sampling of the profile over the disc (its angle is uniform).
   double sampleRadius(double xi) const;
@@ -29,9 +29,9 @@ struct BurleyProfile {
 
 // Scaling factors s(A) of the fit (Christensen and Burley 2015, §5):
 // searchlight configuration with l the (volume) mean free path 1/sigma_t,
-double burleyScaleSearchlightMfp(double albedo);      // 1.85 - A + 7 |A - 0.8|^3
+double burleyScaleSearchlightMfp(double albedo);  // 1.85 - A + 7 |A - 0.8|^3
 // diffuse transmission with l the mean free path (Cycles' choice),
-double burleyScaleDiffuseMfp(double albedo);          // 1.9 - A + 3.5 (A - 0.8)^2
+double burleyScaleDiffuseMfp(double albedo);  // 1.9 - A + 3.5 (A - 0.8)^2
 // searchlight with l the diffuse mean free path 1/sigma_tr.
 double burleyScaleSearchlightDiffuseMfp(double albedo);  // 3.5 + 100 (A - 0.33)^4
 

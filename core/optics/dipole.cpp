@@ -38,8 +38,7 @@ double Dipole::radialReflectance(double r) const {
 }
 
 double Dipole::reflectanceWithin(double radius) const {
-  return 0.5 * reducedAlbedo_ *
-         (poleIntegral(zReal_, radius, sigmaTr_) + poleIntegral(zVirtual_, radius, sigmaTr_));
+  return 0.5 * reducedAlbedo_ * (poleIntegral(zReal_, radius, sigmaTr_) + poleIntegral(zVirtual_, radius, sigmaTr_));
 }
 
 double Dipole::totalReflectance() const { return dipoleTotalReflectance(reducedAlbedo_, boundaryA_); }

@@ -28,7 +28,7 @@ class Dipole {
   double boundaryA() const { return boundaryA_; }
   double diffuseMeanFreePath() const { return 1.0 / sigmaTr_; }  // mm
 
-  double radialReflectance(double r) const;  // R_d(r), mm^-2
+  double radialReflectance(double r) const;       // R_d(r), mm^-2
   double reflectanceWithin(double radius) const;  // C(R)
   double totalReflectance() const;
 

@@ -43,10 +43,14 @@ double logisticCdf(double x, double s) { return 1.0 / (1.0 + std::exp(-x / s)); 
 // The lobe's shift on theta_h and its variance as a multiple of v.
 double lobeShift(int p, double alpha) {
   switch (p) {
-    case 0: return alpha;
-    case 1: return -0.5 * alpha;
-    case 2: return -1.5 * alpha;
-    default: return 0.0;
+    case 0:
+      return alpha;
+    case 1:
+      return -0.5 * alpha;
+    case 2:
+      return -1.5 * alpha;
+    default:
+      return 0.0;
   }
 }
 constexpr double kLobeVarianceScale[4] = {1.0, 0.25, 4.0, 4.0};
@@ -281,8 +285,8 @@ Rgb hairSigmaAFromPigment(const HairPigment& pigment) {
 
 Rgb hairSigmaAFromColor(const Rgb& color, double betaN) {
   const double b = betaN;
-  const double d = 5.969 - 0.215 * b + 2.532 * b * b - 10.73 * b * b * b + 5.574 * std::pow(b, 4.0) +
-                   0.245 * std::pow(b, 5.0);
+  const double d =
+      5.969 - 0.215 * b + 2.532 * b * b - 10.73 * b * b * b + 5.574 * std::pow(b, 4.0) + 0.245 * std::pow(b, 5.0);
   Rgb sigmaA{};
   for (int c = 0; c < 3; ++c) {
     const double l = std::log(std::clamp(color[c], 1e-4, 1.0)) / d;

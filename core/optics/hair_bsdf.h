@@ -119,8 +119,7 @@ struct HairAzimuthalTable {
   Rgb lookup(int p, double phi, double sinThetaO) const;
   Rgb residualAt(double sinThetaO) const;
 };
-HairAzimuthalTable hairAzimuthalTable(const HairFibre& fibre, int phiCount = 32, int thetaCount = 8,
-                                      int samples = 64);
+HairAzimuthalTable hairAzimuthalTable(const HairFibre& fibre, int phiCount = 32, int thetaCount = 8, int samples = 64);
 // The far-field S through the table: the shader's sum, on the CPU.
 Rgb hairScatteringFromTable(const HairFibre& fibre, const HairAzimuthalTable& table, const glm::dvec3& wi,
                             const glm::dvec3& wo);

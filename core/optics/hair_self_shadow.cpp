@@ -184,14 +184,16 @@ std::vector<float> hairShadowByOpacityMaps(const Strands& strands, const glm::ve
       auto opacity = [&](int i, int j) {
         const long p = pixelIndex(i, j);
         if (p < 0) return 0.0f;
-        return (1 - m.fs) * maps[size_t(m.slice) * pixels + size_t(p)] + m.fs * maps[size_t(m.slice + 1) * pixels + size_t(p)];
+        return (1 - m.fs) * maps[size_t(m.slice) * pixels + size_t(p)] +
+               m.fs * maps[size_t(m.slice + 1) * pixels + size_t(p)];
       };
       const float ahead = (1 - m.fa) * (1 - m.fb) * opacity(m.i, m.j) + m.fa * (1 - m.fb) * opacity(m.i + 1, m.j) +
                           (1 - m.fa) * m.fb * opacity(m.i, m.j + 1) + m.fa * m.fb * opacity(m.i + 1, m.j + 1);
       // The interpolation counts part of the vertex's own slab, itself
       // included: take its own share out (the exact count excludes it).
-      const float own = m.fs * ((1 - m.fa) * (1 - m.fa) * (1 - m.fb) * (1 - m.fb) + m.fa * m.fa * (1 - m.fb) * (1 - m.fb) +
-                                (1 - m.fa) * (1 - m.fa) * m.fb * m.fb + m.fa * m.fa * m.fb * m.fb);
+      const float own =
+          m.fs * ((1 - m.fa) * (1 - m.fa) * (1 - m.fb) * (1 - m.fb) + m.fa * m.fa * (1 - m.fb) * (1 - m.fb) +
+                  (1 - m.fa) * (1 - m.fa) * m.fb * m.fb + m.fa * m.fa * m.fb * m.fb);
       const float transmitted = std::exp(-settings.perStrand * crossingsPerPoint * std::max(0.0f, ahead - own));
       shadow[k] = std::max(settings.minShadow, transmitted);
     }

@@ -39,8 +39,7 @@ class Random {
 glm::dvec3 scatterDirection(const glm::dvec3& dir, double cosPsi, double azimuth) {
   const double sinPsi = std::sqrt(std::max(0.0, 1.0 - cosPsi * cosPsi));
   const double cosPhi = std::cos(azimuth), sinPhi = std::sin(azimuth);
-  if (std::abs(dir.z) > 0.99999)
-    return {sinPsi * cosPhi, sinPsi * sinPhi, dir.z > 0.0 ? cosPsi : -cosPsi};
+  if (std::abs(dir.z) > 0.99999) return {sinPsi * cosPhi, sinPsi * sinPhi, dir.z > 0.0 ? cosPsi : -cosPsi};
   const double lateral = std::sqrt(1.0 - dir.z * dir.z);
   const glm::dvec3 turned(sinPsi * (dir.x * dir.z * cosPhi - dir.y * sinPhi) / lateral + dir.x * cosPsi,
                           sinPsi * (dir.y * dir.z * cosPhi + dir.x * sinPhi) / lateral + dir.y * cosPsi,
@@ -116,8 +115,8 @@ void tracePath(const Slab& slab, const SlabSettings& settings, Random& random, S
   for (;;) {
     const SlabLayer& medium = slab.layers[layer];
     const double sigmaT = medium.sigmaA + medium.sigmaS;
-    const double freePath = sigmaT > 0.0 ? -std::log1p(-random.uniform()) / sigmaT
-                                         : std::numeric_limits<double>::infinity();
+    const double freePath =
+        sigmaT > 0.0 ? -std::log1p(-random.uniform()) / sigmaT : std::numeric_limits<double>::infinity();
     double toBoundary = std::numeric_limits<double>::infinity();
     if (dir.z > 0.0) toBoundary = (slab.bottoms[layer] - position.z) / dir.z;
     if (dir.z < 0.0) toBoundary = (slab.tops[layer] - position.z) / dir.z;
@@ -141,7 +140,7 @@ void tracePath(const Slab& slab, const SlabSettings& settings, Random& random, S
     const bool goingUp = dir.z < 0.0;
     position.z = goingUp ? slab.tops[layer] : slab.bottoms[layer];
     const int next = goingUp ? layer - 1 : layer + 1;
-    const double nextIndex = next < 0 ? settings.indexAbove
+    const double nextIndex = next < 0             ? settings.indexAbove
                              : next >= layerCount ? settings.indexBelow
                                                   : slab.layers[next].index;
     if (!crossBoundary(dir, medium.index, nextIndex, random)) continue;

@@ -35,8 +35,8 @@ struct SlabSettings {
   double cosIncidence = 1.0;      // collimated beam's cos(theta) (in the plane xz)
   double annulusWidth = 0.1;      // mm
   int annulusCount = 64;
-  int angularBins = 20;           // single-scatter exits, uniform in cos(theta) outside
-  int maxOrder = 64;              // order histogram size; the last bin holds >= maxOrder
+  int angularBins = 20;                      // single-scatter exits, uniform in cos(theta) outside
+  int maxOrder = 64;                         // order histogram size; the last bin holds >= maxOrder
   std::int64_t maxEventsPerPath = 10000000;  // a path still inside then is "abandoned"
 };
 
@@ -47,9 +47,9 @@ struct SlabResult {
   std::int64_t transmitted = 0;  // left through the bottom
   std::int64_t absorbed = 0;
   std::int64_t abandoned = 0;
-  std::vector<std::int64_t> annuli;            // reflected, by exit radius
+  std::vector<std::int64_t> annuli;             // reflected, by exit radius
   std::vector<std::int64_t> singleScatterBins;  // reflected after one event, by exit cos(theta)
-  std::vector<std::int64_t> orders;            // reflected, by number of scattering events
+  std::vector<std::int64_t> orders;             // reflected, by number of scattering events
 
   double reflectance() const { return double(reflected) / paths; }
   // Reflected per photon that entered: what the dipole's R_d predicts,

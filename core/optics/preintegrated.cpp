@@ -74,8 +74,7 @@ void cellMidpoints(double halfAngle, int cells, std::vector<double>& cosX, std::
 
 }  // namespace
 
-LineSpreadKernel LineSpreadKernel::fromLineSpread(const std::function<double(double)>& lineSpread,
-                                                  double maxDistance) {
+LineSpreadKernel LineSpreadKernel::fromLineSpread(const std::function<double(double)>& lineSpread, double maxDistance) {
   // s = maxDistance u^2: the integrand P(s) 2 maxDistance u stays finite at u = 0
   // even when P has a logarithmic singularity there.
   LineSpreadKernel kernel;

@@ -47,17 +47,17 @@ class LineSpreadKernel {
 };
 
 LineSpreadKernel burleyKernel(const BurleyProfile& profile);  // closed-form P, support 60 d
-LineSpreadKernel gaussianKernel(const GaussianSum& profile);   // closed-form P, support 6 sigma
-LineSpreadKernel dipoleKernel(const Dipole& profile);          // Abel projection, support 24/sigma_tr
+LineSpreadKernel gaussianKernel(const GaussianSum& profile);  // closed-form P, support 6 sigma
+LineSpreadKernel dipoleKernel(const Dipole& profile);         // Abel projection, support 24/sigma_tr
 
 // D(theta, curvature) for one kernel; curvature in mm^-1 (0: flat),
 // ringCells cells over each half of the ring.
 double preintegratedDiffuse(const LineSpreadKernel& kernel, double theta, double curvature, int ringCells = 256);
 
 struct PreintegratedLutSettings {
-  int width = 256;           // N.L samples
-  int height = 128;          // curvature samples
-  double maxCurvature = 2.0; // mm^-1
+  int width = 256;            // N.L samples
+  int height = 128;           // curvature samples
+  double maxCurvature = 2.0;  // mm^-1
   int ringCells = 256;
 };
 

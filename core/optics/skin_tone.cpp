@@ -79,7 +79,8 @@ SkinLayers skinLayers(const SkinTone& tone) {
                               (1.0 - tone.eumelaninFraction) * pheomelaninAbsorption(lambda);
     layers.epidermisSigmaA[c] = tone.melanin * melaninMix + (1.0 - tone.melanin) * baselineAbsorption(lambda);
     layers.epidermisSigmaSPrime[c] = epidermisScattering(lambda);
-    layers.dermisSigmaA[c] = tone.hemoglobin * bloodAbsorption(c) + (1.0 - tone.hemoglobin) * baselineAbsorption(lambda);
+    layers.dermisSigmaA[c] =
+        tone.hemoglobin * bloodAbsorption(c) + (1.0 - tone.hemoglobin) * baselineAbsorption(lambda);
     layers.dermisSigmaSPrime[c] = kSkin1SigmaSPrime[c];
   }
   return layers;

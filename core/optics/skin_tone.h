@@ -50,8 +50,8 @@ struct SkinOptics {
   bool measured = false;  // Jensen's measured coefficients, not the tone model
 
   Rgb reducedAlbedo() const;
-  Rgb totalReflectance() const;      // dipole R_d
-  Rgb diffuseMeanFreePath() const;   // 1 / sigma_tr, mm
+  Rgb totalReflectance() const;     // dipole R_d
+  Rgb diffuseMeanFreePath() const;  // 1 / sigma_tr, mm
 };
 
 struct SkinTone {

@@ -1,13 +1,13 @@
 #include "core/scene/open_scene.h"
 
 #include "core/character/default_mannequin.h"
+#include "core/character/posed_character.h"
 #include "core/io/bvh_import.h"
 #include "core/io/character_import.h"
 #include "core/skinning/section_cones.h"
 #include "core/skinning/weight_regeneration.h"
 #include "core/util/error.h"
 #include "core/util/thread_pool.h"
-#include "core/character/posed_character.h"
 
 namespace mq {
 
@@ -41,7 +41,8 @@ LoadedScene resolveSceneDocument(const SceneDocument& document, const std::strin
   if (document.scale != 1.0f) scene.character.scaleUniformly(document.scale);
   if (!document.motionFile.empty()) {
     MotionOptions options;
-    if (!document.motionMapFile.empty()) options.nameMapPath = resolveDocumentPath(documentPath, document.motionMapFile);
+    if (!document.motionMapFile.empty())
+      options.nameMapPath = resolveDocumentPath(documentPath, document.motionMapFile);
     options.inPlace = document.motionInPlace;
     scene.motionMatch.emplace();
     scene.clipIndex = addMotion(scene.character, resolveDocumentPath(documentPath, document.motionFile), options,
@@ -58,7 +59,8 @@ LoadedScene resolveSceneDocument(const SceneDocument& document, const std::strin
   if (document.weights.active()) regenerateWeights(scene.character, document.weights, &ThreadPool::shared());
   if (document.helperBones) {
     std::string why;
-    if (addHelperBones(scene.character, &why) == 0) scene.character.loadWarnings.push_back("skinning.helper_bones: " + why);
+    if (addHelperBones(scene.character, &why) == 0)
+      scene.character.loadWarnings.push_back("skinning.helper_bones: " + why);
   }
   scene.character.skinning = document.skinning;
   prepareSkinning(scene.character);
@@ -69,7 +71,8 @@ LoadedScene resolveSceneDocument(const SceneDocument& document, const std::strin
 
 std::vector<std::string> loadNotices(const LoadedScene& scene) {
   std::vector<std::string> notices = scene.character.loadWarnings;
-  if (!scene.character.unitNotice.empty() && scene.document.scale == 1.0f) notices.push_back(scene.character.unitNotice);
+  if (!scene.character.unitNotice.empty() && scene.document.scale == 1.0f)
+    notices.push_back(scene.character.unitNotice);
   return notices;
 }
 

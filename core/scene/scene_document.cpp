@@ -58,7 +58,8 @@ SceneDocument fromJson(const json& root) {
   if (version < 1) throw Error("invalid format version " + std::to_string(version));
 
   SceneDocument doc;
-  doc.character = root.contains("character") && root["character"].is_null() ? "" : readString(root, "character", "default");
+  doc.character =
+      root.contains("character") && root["character"].is_null() ? "" : readString(root, "character", "default");
   if (root.contains("motion") && !root["motion"].is_null()) {
     const json& m = root["motion"];
     if (!m.is_object()) throw Error("\"motion\" must be an object with a \"file\"");
@@ -72,7 +73,8 @@ SceneDocument fromJson(const json& root) {
   if (root.contains("animation")) {
     const json& a = root["animation"];
     if (!a.is_object()) throw Error("\"animation\" must be an object");
-    if (a.contains("clip")) doc.clip = a["clip"].is_number_integer() ? std::to_string(a["clip"].get<int>()) : readString(a, "clip");
+    if (a.contains("clip"))
+      doc.clip = a["clip"].is_number_integer() ? std::to_string(a["clip"].get<int>()) : readString(a, "clip");
     if (a.contains("time")) {
       if (!a["time"].is_number()) throw Error("\"animation.time\" must be a number");
       doc.time = a["time"].get<float>();
@@ -81,7 +83,8 @@ SceneDocument fromJson(const json& root) {
   }
   if (root.contains("pose")) {
     if (!root["pose"].is_object()) throw Error("\"pose\" must map bone names to quaternions");
-    for (const auto& [bone, q] : root["pose"].items()) doc.poseRotations[bone] = readQuat(q, "pose of bone '" + bone + "'");
+    for (const auto& [bone, q] : root["pose"].items())
+      doc.poseRotations[bone] = readQuat(q, "pose of bone '" + bone + "'");
   }
   if (root.contains("view")) {
     const json& v = root["view"];
@@ -107,7 +110,8 @@ SceneDocument fromJson(const json& root) {
     if (!k.is_object()) throw Error("\"skinning\" must be an object");
     const std::string method = readString(k, "method", "lbs");
     const auto parsed = parseSkinningMethod(method);
-    if (!parsed) throw Error("skinning.method: unknown method '" + method + "' (expected " + skinningMethodChoices() + ")");
+    if (!parsed)
+      throw Error("skinning.method: unknown method '" + method + "' (expected " + skinningMethodChoices() + ")");
     doc.skinning = *parsed;
     if (k.contains("helper_bones")) {
       if (!k["helper_bones"].is_boolean()) throw Error("skinning.helper_bones must be true or false");
@@ -126,7 +130,9 @@ SceneDocument fromJson(const json& root) {
     for (const auto& [name, changes] : root["materials"].items())
       doc.materials[name] = MaterialOverride::fromJson(changes, "materials." + name);
   }
-  for (auto [key, section] : {std::pair{"hair", &doc.hair}, {"garments", &doc.garments}, {"cloth", &doc.cloth},
+  for (auto [key, section] : {std::pair{"hair", &doc.hair},
+                              {"garments", &doc.garments},
+                              {"cloth", &doc.cloth},
                               {"colliders", &doc.colliders}})
     if (root.contains(key)) *section = root[key];
   return doc;

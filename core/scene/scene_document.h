@@ -10,8 +10,8 @@
 //     "motion": {"file": "walk.bvh", "map": "names.txt", "inPlace": false},   (optional)
 //     "animation": {"clip": "walk", "time": 0.5},
 //     "pose": {"upperarm_l": [x, y, z, w], ...},   local rotation edits
-//     "view": {"skeleton": false, "weights": false, "cones": false, "look": "auto", "camera": {"position": [..], "focus": [..]}},
-//     "skinning": {"method": "lbs" | "dqs" | "cones",    (absent: lbs)
+//     "view": {"skeleton": false, "weights": false, "cones": false, "look": "auto", "camera": {"position": [..],
+//     "focus": [..]}}, "skinning": {"method": "lbs" | "dqs" | "cones",    (absent: lbs)
 //                  "helper_bones": bool,                (absent: false)
 //                  "weights": {"regenerate": bool, "smooth": bool, ...}},
 //                                      (weight_regeneration.h; absent: the file's)
@@ -35,8 +35,8 @@ namespace mq {
 
 struct ViewSettings {
   bool showSkeleton = false;
-  bool showWeights = false;  // the selected bone's skin weights as a heat map
-  bool showCones = false;    // the section cones around the limbs
+  bool showWeights = false;   // the selected bone's skin weights as a heat map
+  bool showCones = false;     // the section cones around the limbs
   std::string look = "auto";  // surface look: auto, skin, mannequin or plain
   bool hasCamera = false;
   glm::vec3 cameraPosition{0.0f};
@@ -55,9 +55,9 @@ struct SceneDocument {
   std::map<std::string, glm::quat> poseRotations;  // bone name -> local rotation edit
   ViewSettings view;
   SkinningMethod skinning = SkinningMethod::Lbs;
-  bool helperBones = false;  // add helper bones at the joints (helper_bones.h) on open
-  WeightSettings weights;    // regenerate or smooth the file's weights on open
-  float scale = 1.0f;  // applied to the character at load (its file's units to metres)
+  bool helperBones = false;                           // add helper bones at the joints (helper_bones.h) on open
+  WeightSettings weights;                             // regenerate or smooth the file's weights on open
+  float scale = 1.0f;                                 // applied to the character at load (its file's units to metres)
   std::map<std::string, MaterialOverride> materials;  // by material name
   // Sections owned by other modules (null when absent).
   nlohmann::json hair;

@@ -48,7 +48,7 @@ struct Rig {
   const Skeleton& skeleton;
   std::vector<glm::vec3> joint;  // rest world positions
   std::vector<std::vector<int>> children;
-  float height = 0.0f;           // vertical extent of the joints
+  float height = 0.0f;  // vertical extent of the joints
 
   Rig(const Skeleton& s, const std::vector<glm::mat4>& world) : skeleton(s), children(s.boneCount()) {
     float lo = 1e30f, hi = -1e30f;
@@ -94,8 +94,10 @@ int findHips(const Rig& rig, int legs[2]) {
       if (!goesDown(rig, b, c)) continue;
       // The side of the leg's lowest joint (the foot), not of its first one.
       const float side = rig.joint[rig.follow(c, [](glm::vec3 p) { return -p.y; }).back()].x;
-      if (side > rig.joint[b].x && left < 0) left = c;
-      else if (side < rig.joint[b].x && right < 0) right = c;
+      if (side > rig.joint[b].x && left < 0)
+        left = c;
+      else if (side < rig.joint[b].x && right < 0)
+        right = c;
     }
     if (left >= 0 && right >= 0) {
       legs[0] = left, legs[1] = right;
@@ -190,7 +192,8 @@ HumanoidBones structuralRoles(const Rig& rig) {
     try {
       limbJoints(rig, arm, r.upperArm[s], r.forearm[s], r.hand[s], r.clavicle[s]);
     } catch (const Error& e) {
-      missing("upper arm" + sideName(s), "the arm starting at '" + rig.skeleton.bone(armStart[s]).name + "': " + e.what());
+      missing("upper arm" + sideName(s),
+              "the arm starting at '" + rig.skeleton.bone(armStart[s]).name + "': " + e.what());
     }
   }
   if (armStart[0] == armStart[1]) missing("upper arm (left)", "both arms are the same chain");
@@ -213,13 +216,15 @@ HumanoidBones structuralRoles(const Rig& rig) {
 }  // namespace
 
 int findBoneByRoleName(const Skeleton& skeleton, const std::string& role, int side) {
-  std::vector<std::string> sides = side == 0 ? std::vector<std::string>{"l", "left"} : std::vector<std::string>{"r", "right"};
+  std::vector<std::string> sides =
+      side == 0 ? std::vector<std::string>{"l", "left"} : std::vector<std::string>{"r", "right"};
   for (const auto& [name, patterns] : aliases()) {
     if (name != role) continue;
     for (const std::string& pattern : patterns) {
       std::vector<std::string> candidates;
       size_t pct = pattern.find('%');
-      if (pct == std::string::npos) candidates.push_back(pattern);
+      if (pct == std::string::npos)
+        candidates.push_back(pattern);
       else
         for (const std::string& s : sides) candidates.push_back(pattern.substr(0, pct) + s + pattern.substr(pct + 1));
       for (const std::string& candidate : candidates)
@@ -248,7 +253,8 @@ HumanoidBones findHumanoidBones(const Skeleton& skeleton, const std::vector<glm:
   }
   std::vector<int*> required = {&named.pelvis, &named.spine, &named.chest, &named.neck};
   for (int s = 0; s < 2; ++s)
-    for (int* b : {&named.upperArm[s], &named.forearm[s], &named.hand[s], &named.thigh[s], &named.shin[s], &named.foot[s]})
+    for (int* b :
+         {&named.upperArm[s], &named.forearm[s], &named.hand[s], &named.thigh[s], &named.shin[s], &named.foot[s]})
       required.push_back(b);
   const bool allNamed = std::all_of(required.begin(), required.end(), [](const int* b) { return *b >= 0; });
 

@@ -20,7 +20,7 @@ namespace mq {
 
 struct HumanoidBones {
   int pelvis = -1, spine = -1, chest = -1, neck = -1;
-  int head = -1;  // optional: -1 when the neck is the top of the spine
+  int head = -1;            // optional: -1 when the neck is the top of the spine
   int clavicle[2]{-1, -1};  // optional
   int upperArm[2]{-1, -1}, forearm[2]{-1, -1}, hand[2]{-1, -1};
   int thigh[2]{-1, -1}, shin[2]{-1, -1}, foot[2]{-1, -1};

@@ -6,8 +6,7 @@ namespace mq {
 
 int Skeleton::addBone(Bone bone) {
   const int index = boneCount();
-  if (bone.parent >= index)
-    throw std::invalid_argument("bone '" + bone.name + "' added before its parent");
+  if (bone.parent >= index) throw std::invalid_argument("bone '" + bone.name + "' added before its parent");
   bones_.push_back(std::move(bone));
   return index;
 }

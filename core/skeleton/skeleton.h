@@ -15,9 +15,9 @@ namespace mq {
 
 struct Bone {
   std::string name;
-  int parent = -1;                     // index of the parent bone, -1 for a root
-  Trs rest;                            // local transform in the rest pose
-  glm::mat4 parentFromOffset{1.0f};    // fixed non-bone transforms above it
+  int parent = -1;                   // index of the parent bone, -1 for a root
+  Trs rest;                          // local transform in the rest pose
+  glm::mat4 parentFromOffset{1.0f};  // fixed non-bone transforms above it
 };
 
 // Local transforms of every bone, indexed like Skeleton::bones.

@@ -52,13 +52,12 @@ inline void cross(const float* a, const float* b, float* out) {
   out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-
 // K influences and the stretch known at compile time let the compiler unroll
 // the blend; K = 0 reads the count at run time.
 template <int K, bool Stretched>
-void skinRange(size_t begin, size_t end, int k, const uint16_t* jointsOf, const float* weightsOf,
-               const float* dqs, const float* stretches, const float* positions, const float* normals,
-               float* outPositions, float* outNormals) {
+void skinRange(size_t begin, size_t end, int k, const uint16_t* jointsOf, const float* weightsOf, const float* dqs,
+               const float* stretches, const float* positions, const float* normals, float* outPositions,
+               float* outNormals) {
   const int influences = K > 0 ? K : k;
   for (size_t v = begin; v < end; ++v) {
     const uint16_t* joints = jointsOf + v * influences;
@@ -99,9 +98,8 @@ void skinRange(size_t begin, size_t end, int k, const uint16_t* jointsOf, const 
     const float xx = r[0] * x2, yy = r[1] * y2, zz = r[2] * z2;
     const float xy = r[0] * y2, xz = r[0] * z2, yz = r[1] * z2;
     const float wx = rw * x2, wy = rw * y2, wz = rw * z2;
-    const float m[9] = {1.0f - (yy + zz), xy - wz, xz + wy,
-                        xy + wz, 1.0f - (xx + zz), yz - wx,
-                        xz - wy, yz + wx, 1.0f - (xx + yy)};
+    const float m[9] = {1.0f - (yy + zz), xy - wz, xz + wy, xy + wz,         1.0f - (xx + zz),
+                        yz - wx,          xz - wy, yz + wx, 1.0f - (xx + yy)};
     float p[3] = {positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]};
     if (Stretched) {
       const float q[3] = {p[0], p[1], p[2]};
@@ -142,10 +140,18 @@ void skinRangeFor(int k, size_t b, size_t e, const SkinBinding& skin, const Dual
   const float* dqs = palette.dualQuaternions.data();
   const float* stretches = palette.stretches.data();
   switch (k) {
-    case 1: skinRange<1, Stretched>(b, e, k, joints, weights, dqs, stretches, positions, normals, outPositions, outNormals); break;
-    case 2: skinRange<2, Stretched>(b, e, k, joints, weights, dqs, stretches, positions, normals, outPositions, outNormals); break;
-    case 4: skinRange<4, Stretched>(b, e, k, joints, weights, dqs, stretches, positions, normals, outPositions, outNormals); break;
-    default: skinRange<0, Stretched>(b, e, k, joints, weights, dqs, stretches, positions, normals, outPositions, outNormals); break;
+    case 1:
+      skinRange<1, Stretched>(b, e, k, joints, weights, dqs, stretches, positions, normals, outPositions, outNormals);
+      break;
+    case 2:
+      skinRange<2, Stretched>(b, e, k, joints, weights, dqs, stretches, positions, normals, outPositions, outNormals);
+      break;
+    case 4:
+      skinRange<4, Stretched>(b, e, k, joints, weights, dqs, stretches, positions, normals, outPositions, outNormals);
+      break;
+    default:
+      skinRange<0, Stretched>(b, e, k, joints, weights, dqs, stretches, positions, normals, outPositions, outNormals);
+      break;
   }
 }
 
@@ -181,9 +187,9 @@ void buildDualQuaternionPalette(const SkinBinding& skin, const std::vector<glm::
   }
 }
 
-void skinVerticesDualQuaternion(const SkinBinding& skin, const DualQuaternionPalette& palette,
-                                const float* positions, const float* normals, size_t count, float* outPositions,
-                                float* outNormals, ThreadPool* pool) {
+void skinVerticesDualQuaternion(const SkinBinding& skin, const DualQuaternionPalette& palette, const float* positions,
+                                const float* normals, size_t count, float* outPositions, float* outNormals,
+                                ThreadPool* pool) {
   const int k = skin.influencesPerVertex;
   auto body = [&](size_t b, size_t e) {
     if (palette.stretched)

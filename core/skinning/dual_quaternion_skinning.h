@@ -35,8 +35,8 @@ void buildDualQuaternionPalette(const SkinBinding& skin, const std::vector<glm::
 
 // Deforms `count` vertices; normals/outNormals may be null. Threaded results
 // equal single-threaded ones bit for bit (vertices are independent).
-void skinVerticesDualQuaternion(const SkinBinding& skin, const DualQuaternionPalette& palette,
-                                const float* positions, const float* normals, size_t count, float* outPositions,
-                                float* outNormals, ThreadPool* pool);
+void skinVerticesDualQuaternion(const SkinBinding& skin, const DualQuaternionPalette& palette, const float* positions,
+                                const float* normals, size_t count, float* outPositions, float* outNormals,
+                                ThreadPool* pool);
 
 }  // namespace mq

@@ -33,10 +33,10 @@ struct Character;
 struct HelperBone {
   enum class Kind { HalfAngle, Twist };
   Kind kind = Kind::HalfAngle;
-  int bone = -1;    // the helper itself
-  int driver = -1;  // HalfAngle: the bent bone (forearm, shin); Twist: the hand
-  float share = 0.5f;      // of the driver's rotation (HalfAngle) or twist (Twist)
-  glm::vec3 axis{0.0f};    // Twist: the forearm's axis in the forearm's frame
+  int bone = -1;                       // the helper itself
+  int driver = -1;                     // HalfAngle: the bent bone (forearm, shin); Twist: the hand
+  float share = 0.5f;                  // of the driver's rotation (HalfAngle) or twist (Twist)
+  glm::vec3 axis{0.0f};                // Twist: the forearm's axis in the forearm's frame
   glm::mat4 driverRestInParent{1.0f};  // Twist: the hand in the forearm's frame at rest
 };
 

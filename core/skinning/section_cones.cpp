@@ -47,8 +47,9 @@ SectionCone::Point SectionCone::locate(const glm::dvec3& p) const {
   const glm::dvec2 fromEnclosing = across - lerp2(enclosing[0].center, enclosing[1].center, t);
   const double re = glm::length(fromEnclosing);
   out.rhoEnclosing =
-      re > 0.0 ? re / ((1.0 - t) * enclosing[0].radius(fromEnclosing / re) + t * enclosing[1].radius(fromEnclosing / re))
-               : 0.0;
+      re > 0.0
+          ? re / ((1.0 - t) * enclosing[0].radius(fromEnclosing / re) + t * enclosing[1].radius(fromEnclosing / re))
+          : 0.0;
   return out;
 }
 
@@ -142,8 +143,9 @@ SectionCone fitCone(const Mesh& mesh, const WeldedSkin& welded, const Skeleton& 
   cone.axis = (tail - cone.head) / cone.length;
   glm::dvec3 x = glm::dvec3(meshFromBone[0]);
   x -= glm::dot(x, cone.axis) * cone.axis;
-  if (glm::length(x) < 1e-6) x = std::abs(cone.axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0),
-                               x -= glm::dot(x, cone.axis) * cone.axis;
+  if (glm::length(x) < 1e-6)
+    x = std::abs(cone.axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0),
+    x -= glm::dot(x, cone.axis) * cone.axis;
   cone.side = glm::normalize(x);
   cone.front = glm::cross(cone.side, cone.axis);
   cone.valid = fitBase(welded, cone, SectionCone::kBaseNear, cone.minimum[0], cone.enclosing[0]) &&
@@ -250,8 +252,7 @@ JointFrames framesOf(const SkinBinding& skin, const std::vector<glm::mat4>& worl
   f.meshFromWorld.resize(skin.jointBones.size());
   for (size_t j = 0; j < skin.jointBones.size(); ++j) {
     const int bone = skin.jointBones[j];
-    const glm::mat4 world =
-        bone >= 0 && bone < int(worldFromBone.size()) ? worldFromBone[bone] : glm::mat4(1.0f);
+    const glm::mat4 world = bone >= 0 && bone < int(worldFromBone.size()) ? worldFromBone[bone] : glm::mat4(1.0f);
     f.worldFromMesh[j] = glm::dmat4(world) * glm::dmat4(skin.inverseBind[j]);
     f.meshFromWorld[j] = glm::inverse(f.worldFromMesh[j]);
   }
@@ -274,7 +275,6 @@ void creasePlanes(const SectionCones& cones, JointFrames& f) {
     f.creaseNormal[j] = glm::normalize(half * cones.cones[j].axis);
   }
 }
-
 
 // Keeps the vertex on its side of its joint's plane (a crease where the two
 // limbs meet instead of skin crossing skin).

@@ -48,10 +48,10 @@ struct SectionCone {
   Ellipse2 minimum[2], enclosing[2];  // at kBaseNear and kBaseFar
 
   struct Point {
-    double s = 0.0;            // along the bone, 0 at the head, 1 at the tail
-    glm::dvec3 radial{0.0};    // from the cone's centre line to the point, across the axis
-    double rho = 0.0;          // |radial| / the minimum ellipse's radius that way
-    double rhoEnclosing = 0.0; // |radial| / the enclosing ellipse's radius that way
+    double s = 0.0;             // along the bone, 0 at the head, 1 at the tail
+    glm::dvec3 radial{0.0};     // from the cone's centre line to the point, across the axis
+    double rho = 0.0;           // |radial| / the minimum ellipse's radius that way
+    double rhoEnclosing = 0.0;  // |radial| / the enclosing ellipse's radius that way
   };
   // A bind-space point in cone coordinates (for inspecting a fit).
   Point locate(const glm::dvec3& p) const;
@@ -66,7 +66,7 @@ struct SectionCones {
   std::vector<int16_t> creaseJoint;
   std::vector<int8_t> creaseSide;
   std::vector<float> creaseBound;
-  std::vector<uint32_t> visited;     // vertices with a crease
+  std::vector<uint32_t> visited;  // vertices with a crease
   // Vertex -> triangles, to recompute the normals of moved vertices.
   std::vector<uint32_t> triangleStart, triangleList;
 };
@@ -78,7 +78,6 @@ std::shared_ptr<const SectionCones> bindSectionCones(const Mesh& mesh, const Ske
 std::vector<SectionCone> fitSectionCones(const Mesh& mesh, const Skeleton& skeleton);
 // Each skin joint's nearest ancestor among the skin's joints (-1: none).
 std::vector<int> skinJointParents(const SkinBinding& skin, const Skeleton& skeleton);
-
 
 // Applies the creases to dual-quaternion-skinned positions (and recomputes
 // the moved vertices' normals, if given) in place; the skinning matrices come from worldFromBone and the skin's

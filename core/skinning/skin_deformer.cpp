@@ -12,9 +12,8 @@ constexpr size_t kMinChunk = 4096;
 // K influences known at compile time lets the compiler unroll and vectorise
 // the 12-float blend.
 template <int K>
-void skinRange(size_t begin, size_t end, int k, const uint16_t* joints, const float* weights,
-               const float* palette, const float* positions, const float* normals,
-               float* outPositions, float* outNormals) {
+void skinRange(size_t begin, size_t end, int k, const uint16_t* joints, const float* weights, const float* palette,
+               const float* positions, const float* normals, float* outPositions, float* outNormals) {
   const int influences = K > 0 ? K : k;
   for (size_t v = begin; v < end; ++v) {
     float m[12] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
@@ -57,19 +56,28 @@ void buildSkinPalette(const SkinBinding& skin, const std::vector<glm::mat4>& wor
 }
 
 void skinVertices(const SkinBinding& skin, const std::vector<float>& palette, const float* positions,
-                  const float* normals, size_t count, float* outPositions, float* outNormals,
-                  ThreadPool* pool) {
+                  const float* normals, size_t count, float* outPositions, float* outNormals, ThreadPool* pool) {
   const int k = skin.influencesPerVertex;
   const uint16_t* joints = skin.joints.data();
   const float* weights = skin.weights.data();
   const float* pal = palette.data();
   auto body = [&](size_t b, size_t e) {
     switch (k) {
-      case 1: skinRange<1>(b, e, k, joints, weights, pal, positions, normals, outPositions, outNormals); break;
-      case 2: skinRange<2>(b, e, k, joints, weights, pal, positions, normals, outPositions, outNormals); break;
-      case 4: skinRange<4>(b, e, k, joints, weights, pal, positions, normals, outPositions, outNormals); break;
-      case 8: skinRange<8>(b, e, k, joints, weights, pal, positions, normals, outPositions, outNormals); break;
-      default: skinRange<0>(b, e, k, joints, weights, pal, positions, normals, outPositions, outNormals); break;
+      case 1:
+        skinRange<1>(b, e, k, joints, weights, pal, positions, normals, outPositions, outNormals);
+        break;
+      case 2:
+        skinRange<2>(b, e, k, joints, weights, pal, positions, normals, outPositions, outNormals);
+        break;
+      case 4:
+        skinRange<4>(b, e, k, joints, weights, pal, positions, normals, outPositions, outNormals);
+        break;
+      case 8:
+        skinRange<8>(b, e, k, joints, weights, pal, positions, normals, outPositions, outNormals);
+        break;
+      default:
+        skinRange<0>(b, e, k, joints, weights, pal, positions, normals, outPositions, outNormals);
+        break;
     }
   };
   if (pool)

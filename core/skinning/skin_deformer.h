@@ -24,7 +24,6 @@ void buildSkinPalette(const SkinBinding& skin, const std::vector<glm::mat4>& wor
 // Deforms `count` vertices. normals/outNormals may be null.
 // pool == nullptr runs on the calling thread.
 void skinVertices(const SkinBinding& skin, const std::vector<float>& palette, const float* positions,
-                  const float* normals, size_t count, float* outPositions, float* outNormals,
-                  ThreadPool* pool);
+                  const float* normals, size_t count, float* outPositions, float* outNormals, ThreadPool* pool);
 
 }  // namespace mq

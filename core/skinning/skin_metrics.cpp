@@ -71,8 +71,8 @@ OuterSection outerSection(const std::vector<float>& rest, const std::vector<floa
 }
 
 double minimumSectionRatio(const std::vector<float>& rest, const std::vector<float>& posed,
-                           const std::vector<uint32_t>& triangles, const glm::dvec3& joint,
-                           const glm::dvec3& axis, double from, double to, double step) {
+                           const std::vector<uint32_t>& triangles, const glm::dvec3& joint, const glm::dvec3& axis,
+                           double from, double to, double step) {
   double least = -1.0;
   const int count = int(std::floor((to - from) / step + 1e-9)) + 1;
   for (int i = 0; i < count; ++i) {

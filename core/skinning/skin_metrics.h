@@ -54,8 +54,8 @@ OuterSection outerSection(const std::vector<float>& rest, const std::vector<floa
 // over planes perpendicular to `axis` through joint + s axis, s from
 // `from` to `to` every `step` metres. -1 when no rest section exists.
 double minimumSectionRatio(const std::vector<float>& rest, const std::vector<float>& posed,
-                           const std::vector<uint32_t>& triangles, const glm::dvec3& joint,
-                           const glm::dvec3& axis, double from, double to, double step);
+                           const std::vector<uint32_t>& triangles, const glm::dvec3& joint, const glm::dvec3& axis,
+                           double from, double to, double step);
 
 // M3: the volume of the triangles whose rest centroid lies within `radius`
 // of the rest joint, as cones to the joint (rest joint for the rest mesh,
@@ -74,10 +74,10 @@ size_t intersectingPairs(const std::vector<float>& positions, const std::vector<
 // `radius` of `jointRest`. In metres; vertices 0 when none is that close.
 struct BodyDeviation {
   size_t vertices = 0;
-  double mean = 0.0;        // negative: sunk into the body
+  double mean = 0.0;  // negative: sunk into the body
   double rms = 0.0;
-  double largest = 0.0;     // largest |deviation|
-  double beyond2mm = 0.0;   // share of the vertices more than 2 mm inside or outside
+  double largest = 0.0;    // largest |deviation|
+  double beyond2mm = 0.0;  // share of the vertices more than 2 mm inside or outside
 };
 BodyDeviation implicitBodyDeviation(const ImplicitBody& posedBody, const std::vector<float>& rest,
                                     const std::vector<float>& posed, const glm::dvec3& jointRest, double radius);

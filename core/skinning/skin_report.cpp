@@ -138,7 +138,7 @@ struct Hinge {
   double sign;              // +1 bends forward about cross(d_bone, front), -1 backward
   double radius;            // M3 radius at the reference height
   std::vector<float> angles;
-  bool outerSection;        // M1 applies (a hinge between two long bones)
+  bool outerSection;  // M1 applies (a hinge between two long bones)
 };
 
 void measureHingePoses(Measurer& m, const Character& character, const HumanoidBones& roles, double scale,
@@ -153,8 +153,8 @@ void measureHingePoses(Measurer& m, const Character& character, const HumanoidBo
   const auto& restWorld = m.restWorld();
   for (const Hinge& h : hinges) {
     // The wrist turns about the forearm's hinge axis (the hand may have no child).
-    const glm::dvec3 dBone = h.child >= 0 ? direction(restWorld, h.bone, h.child)
-                                          : direction(restWorld, h.parent, h.bone);
+    const glm::dvec3 dBone =
+        h.child >= 0 ? direction(restWorld, h.bone, h.child) : direction(restWorld, h.parent, h.bone);
     const glm::dvec3 axis = glm::normalize(glm::cross(dBone, glm::dvec3(front)));
     for (float angle : h.angles) {
       PoseMeasure pm;
@@ -177,8 +177,8 @@ void measureHingePoses(Measurer& m, const Character& character, const HumanoidBo
         pm.thickness = section.thickness;
         pm.halfArea = section.halfArea;
       }
-      pm.localVolume = localVolumeRatio(m.rest(), posed, m.body().triangles(), joint, headOf(world, h.bone),
-                                        h.radius * scale);
+      pm.localVolume =
+          localVolumeRatio(m.rest(), posed, m.body().triangles(), joint, headOf(world, h.bone), h.radius * scale);
       if (const std::optional<BodyDeviation> deviation = m.implicitDeviation(joint, h.radius * scale)) {
         pm.deviationRms = deviation->rms;
         pm.deviationMean = deviation->mean;
@@ -259,8 +259,8 @@ ClipMeasure measureClip(Measurer& m, const Character& character, int clip, float
 
 SkinReport measureSkinning(const Character& character, const SkinReportOptions& options, ThreadPool* pool) {
   SkinReport report;
-  report.method = std::string(skinningMethodName(character.skinning)) +
-                  (character.helperBones.empty() ? "" : " + helper bones");
+  report.method =
+      std::string(skinningMethodName(character.skinning)) + (character.helperBones.empty() ? "" : " + helper bones");
   Measurer m(character, options, pool);
   report.vertices = m.body().vertexCount();
   report.triangles = m.body().triangles().size() / 3;
@@ -279,7 +279,8 @@ SkinReport measureSkinning(const Character& character, const SkinReportOptions& 
     }
   }
   if (options.clips)
-    for (int c = 0; c < int(character.clips.size()); ++c) report.clips.push_back(measureClip(m, character, c, options.clipFps));
+    for (int c = 0; c < int(character.clips.size()); ++c)
+      report.clips.push_back(measureClip(m, character, c, options.clipFps));
   return report;
 }
 

@@ -15,14 +15,14 @@ namespace mq {
 class ThreadPool;
 
 struct PoseMeasure {
-  std::string name;           // "elbow 120", "wrist twist 180", ...
-  double thickness = -1.0;    // M1 outer thickness ratio (-1: not measured)
-  double halfArea = -1.0;     // M1 outer half-section area ratio
-  double twistSection = -1.0; // M2 least section ratio in the twist band
-  double localVolume = -1.0;  // M3
-  long intersections = -1;    // M4 pairs (-1: not measured)
-  double deviationRms = -1.0; // M6 RMS distance to the posed implicit body, metres (-1: not measured)
-  double deviationMean = 0.0; // M6 mean (negative: sunk in)
+  std::string name;            // "elbow 120", "wrist twist 180", ...
+  double thickness = -1.0;     // M1 outer thickness ratio (-1: not measured)
+  double halfArea = -1.0;      // M1 outer half-section area ratio
+  double twistSection = -1.0;  // M2 least section ratio in the twist band
+  double localVolume = -1.0;   // M3
+  long intersections = -1;     // M4 pairs (-1: not measured)
+  double deviationRms = -1.0;  // M6 RMS distance to the posed implicit body, metres (-1: not measured)
+  double deviationMean = 0.0;  // M6 mean (negative: sunk in)
 };
 
 struct ClipMeasure {
@@ -37,7 +37,7 @@ struct ClipMeasure {
 struct SkinReport {
   std::string method;
   size_t vertices = 0, triangles = 0;  // of the welded body
-  double restError = 0.0;  // largest |rest pose - rest mesh| / bounding-box diagonal
+  double restError = 0.0;              // largest |rest pose - rest mesh| / bounding-box diagonal
   std::vector<PoseMeasure> poses;
   std::vector<ClipMeasure> clips;
   std::vector<std::string> notes;  // what could not be measured, and why

@@ -9,9 +9,12 @@ constexpr SkinningMethod kAll[] = {SkinningMethod::Lbs, SkinningMethod::Dqs, Ski
 
 const char* skinningMethodName(SkinningMethod method) {
   switch (method) {
-    case SkinningMethod::Lbs: return "lbs";
-    case SkinningMethod::Dqs: return "dqs";
-    case SkinningMethod::Cones: return "cones";
+    case SkinningMethod::Lbs:
+      return "lbs";
+    case SkinningMethod::Dqs:
+      return "dqs";
+    case SkinningMethod::Cones:
+      return "cones";
   }
   return "lbs";
 }

@@ -68,8 +68,10 @@ size_t countBlended(const WeldedWeights& w) {
     std::array<float, 2> top{0.0f, 0.0f};
     for (int j = 0; j < w.joints; ++j) {
       const float x = w.of(v)[j];
-      if (x > top[0]) top = {x, top[0]};
-      else if (x > top[1]) top[1] = x;
+      if (x > top[0])
+        top = {x, top[0]};
+      else if (x > top[1])
+        top[1] = x;
     }
     blended += top[1] > kBlendedWeight;
   }
@@ -174,8 +176,10 @@ void assignRigidly(WeldedWeights& w, const std::vector<SectionCone>& cones, cons
       weights[chosen] = 1.0f;
     }
   };
-  if (pool) pool->parallelFor(0, w.positions.size(), 512, assign);
-  else assign(0, w.positions.size());
+  if (pool)
+    pool->parallelFor(0, w.positions.size(), 512, assign);
+  else
+    assign(0, w.positions.size());
 }
 
 // The transition length of each joint: `transition` section radii of its
@@ -286,8 +290,8 @@ double edgeMove(const float* wa, const float* wb, int joints, double length, con
 
 // Jacobi passes of the cone-threshold smoothing; returns the passes run and
 // the largest excess left.
-std::pair<int, double> smoothWelded(WeldedWeights& w, const std::vector<Edge>& edges, const std::vector<double>& lengths,
-                                    int maxPasses) {
+std::pair<int, double> smoothWelded(WeldedWeights& w, const std::vector<Edge>& edges,
+                                    const std::vector<double>& lengths, int maxPasses) {
   std::vector<double> delta(w.weights.size());
   std::vector<int> moves(w.positions.size());
   int pass = 0;
@@ -331,9 +335,8 @@ void writeBack(const WeldedWeights& w, SkinBinding& skin, size_t vertexCount) {
   for (size_t v = 0; v < vertexCount; ++v) {
     const float* weights = w.of(w.weld.weldedIndex[v]);
     std::iota(order.begin(), order.end(), 0);
-    std::partial_sort(order.begin(), order.begin() + k, order.end(), [&](int a, int b) {
-      return weights[a] != weights[b] ? weights[a] > weights[b] : a < b;
-    });
+    std::partial_sort(order.begin(), order.begin() + k, order.end(),
+                      [&](int a, int b) { return weights[a] != weights[b] ? weights[a] > weights[b] : a < b; });
     for (int i = 0; i < k; ++i) {
       skin.joints[v * k + i] = uint16_t(order[i]);
       skin.weights[v * k + i] = weights[order[i]];
@@ -415,8 +418,11 @@ WeightSettings weightSettingsFromJson(const nlohmann::json& value, const std::st
 }
 
 nlohmann::json toJson(const WeightSettings& s) {
-  return {{"regenerate", s.regenerate}, {"smooth", s.smooth}, {"axial_weight", s.axialWeight},
-          {"transition", s.transition}, {"passes", s.passes}};
+  return {{"regenerate", s.regenerate},
+          {"smooth", s.smooth},
+          {"axial_weight", s.axialWeight},
+          {"transition", s.transition},
+          {"passes", s.passes}};
 }
 
 }  // namespace mq

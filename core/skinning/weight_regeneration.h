@@ -47,8 +47,8 @@ struct WeightSettings {
   static constexpr double kMaxAxialWeight = 100.0, kMinTransition = 0.05, kMaxTransition = 20.0;
   static constexpr int kMaxPasses = 10000;
 
-  bool regenerate = false;  // rigid assignment by cylinder score, then the blend
-  bool smooth = false;      // then the cone-threshold smoothing
+  bool regenerate = false;   // rigid assignment by cylinder score, then the blend
+  bool smooth = false;       // then the cone-threshold smoothing
   double axialWeight = 0.5;  // of the distance past a bone's ends, against the radial
   double transition = 2.0;   // the blend's and the smoothing's length, in section radii
   int passes = 64;           // smoothing passes at most
@@ -63,7 +63,7 @@ struct WeightReport {
   size_t vertices = 0;
   size_t blendedBefore = 0, blendedAfter = 0;  // vertices with a second weight > 0.05
   int passes = 0;                              // smoothing passes of the slowest mesh
-  double largestExcess = 0.0;  // the worst edge's |dw| - threshold left, 0 when converged
+  double largestExcess = 0.0;                  // the worst edge's |dw| - threshold left, 0 when converged
 
   std::string summary() const;
 };

@@ -1,14 +1,14 @@
 #include "core/util/atomic_file.h"
 
+#include <fcntl.h>
+#include <unistd.h>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <random>
 #include <sstream>
-#include <unistd.h>
 
 #include "core/util/error.h"
 
@@ -30,8 +30,7 @@ void syncFile(const std::string& path) {
 
 }  // namespace
 
-void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write,
-                         bool binary) {
+void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write, bool binary) {
   const std::string tmp = temporaryPathBeside(path);
   try {
     std::ofstream out(tmp, binary ? std::ios::binary : std::ios::out);

@@ -11,8 +11,7 @@ namespace mq {
 // Calls write(stream) on a temporary file next to `path`, then renames it to
 // `path`. Throws FileError naming `path` if anything fails; the previous
 // file, if any, is left untouched in that case.
-void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write,
-                         bool binary = false);
+void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write, bool binary = false);
 
 // Reads a whole file; throws FileError when it cannot be opened.
 std::string readFileText(const std::string& path);

@@ -45,9 +45,7 @@ enum ChildExit { kSucceeded = 0, kFailed = 1, kOutOfMemory = 2 };
   _exit(code);  // no atexit handlers or static destructors of the parent's state
 }
 
-std::string gibibytes(size_t bytes) {
-  return std::to_string(bytes >> 30) + " GiB";
-}
+std::string gibibytes(size_t bytes) { return std::to_string(bytes >> 30) + " GiB"; }
 
 }  // namespace
 

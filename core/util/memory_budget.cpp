@@ -17,8 +17,7 @@ void checkMemoryBudget(const std::string& what, double bytes) {
   const size_t budget = memoryBudgetBytes();
   if (bytes <= double(budget)) return;
   throw Error(what + " would need about " + std::to_string(static_cast<long long>(bytes / 1048576.0)) +
-              " MB (the limit is " + std::to_string(budget >> 20) +
-              " MB; MANNEQUIN_MEMORY_LIMIT_MB sets it)");
+              " MB (the limit is " + std::to_string(budget >> 20) + " MB; MANNEQUIN_MEMORY_LIMIT_MB sets it)");
 }
 
 }  // namespace mq

@@ -32,8 +32,7 @@ class ThreadPool {
 
   // Calls body(chunkBegin, chunkEnd) over [begin, end); ranges smaller than
   // minChunk run on the calling thread alone.
-  void parallelFor(size_t begin, size_t end, size_t minChunk,
-                   const std::function<void(size_t, size_t)>& body);
+  void parallelFor(size_t begin, size_t end, size_t minChunk, const std::function<void(size_t, size_t)>& body);
 
   // Calls body(i) once for every i in [0, blocks). The caller and the idle
   // workers claim blocks one at a time, so the caller never waits for a

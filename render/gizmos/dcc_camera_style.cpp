@@ -14,18 +14,29 @@ void DccCameraStyle::startByModifiers(int defaultState) {
   if (!CurrentRenderer) return;
   GrabFocus(EventCallbackCommand);
   int state = defaultState;
-  if (rwi->GetShiftKey()) state = VTKIS_PAN;
-  else if (rwi->GetControlKey()) state = VTKIS_DOLLY;
+  if (rwi->GetShiftKey())
+    state = VTKIS_PAN;
+  else if (rwi->GetControlKey())
+    state = VTKIS_DOLLY;
   StartState(state);
 }
 
 void DccCameraStyle::endInteraction() {
   switch (State) {
-    case VTKIS_ROTATE: EndRotate(); break;
-    case VTKIS_PAN: EndPan(); break;
-    case VTKIS_DOLLY: EndDolly(); break;
-    case VTKIS_SPIN: EndSpin(); break;
-    default: break;
+    case VTKIS_ROTATE:
+      EndRotate();
+      break;
+    case VTKIS_PAN:
+      EndPan();
+      break;
+    case VTKIS_DOLLY:
+      EndDolly();
+      break;
+    case VTKIS_SPIN:
+      EndSpin();
+      break;
+    default:
+      break;
   }
   if (Interactor) ReleaseFocus();
 }

@@ -50,9 +50,7 @@ MoveGizmo::MoveGizmo() : ViewportGizmo(kScreenFraction) {
   addHandle(makeDisc(), kColors[kScreenPlane]);
 }
 
-glm::vec3 MoveGizmo::axis(int handle) const {
-  return handle == kScreenPlane ? toCamera() : frameAxis(handle);
-}
+glm::vec3 MoveGizmo::axis(int handle) const { return handle == kScreenPlane ? toCamera() : frameAxis(handle); }
 
 void MoveGizmo::placeHandles() {
   const glm::mat4 place = glm::translate(glm::mat4(1.0f), center());
@@ -65,7 +63,8 @@ void MoveGizmo::placeHandles() {
   }
   const glm::quat facing = glm::rotation(glm::vec3(0, 0, 1), toCamera());
   handle(kScreenPlane)
-      ->SetUserMatrix(toVtkMatrix(place * glm::mat4_cast(facing) * glm::scale(glm::mat4(1.0f), glm::vec3(float(kDiscRadius) * size()))));
+      ->SetUserMatrix(toVtkMatrix(place * glm::mat4_cast(facing) *
+                                  glm::scale(glm::mat4(1.0f), glm::vec3(float(kDiscRadius) * size()))));
 }
 
 }  // namespace mq::ui

@@ -43,9 +43,7 @@ RotationGizmo::RotationGizmo() : ViewportGizmo(kScreenFraction) {
   for (int axis = 0; axis < kRingCount; ++axis) addHandle(makeRing(axis), kAxisColors[axis]);
 }
 
-glm::vec3 RotationGizmo::axis(int index) const {
-  return index == kViewAxis ? toCamera() : frameAxis(index);
-}
+glm::vec3 RotationGizmo::axis(int index) const { return index == kViewAxis ? toCamera() : frameAxis(index); }
 
 void RotationGizmo::placeHandles() {
   const glm::mat4 place = glm::translate(glm::mat4(1.0f), center());

@@ -9,9 +9,9 @@
 
 #include <vector>
 
+#include <vtkSmartPointer.h>
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
-#include <vtkSmartPointer.h>
 
 class vtkActor;
 class vtkAlgorithm;

@@ -68,8 +68,7 @@ uint64_t vertexCountOf(const BakedCloth& cloth) {
   return t.empty() ? 0 : uint64_t(*std::max_element(t.begin(), t.end())) + 1;
 }
 
-BakedCloth readGarment(ByteReader& in, const std::string& garment,
-                       std::vector<std::vector<float>>& stretch) {
+BakedCloth readGarment(ByteReader& in, const std::string& garment, std::vector<std::vector<float>>& stretch) {
   const float fps = in.f32(garment + " fps");
   const uint32_t indexCount = in.count(garment + " triangle index", 4);
   BakedCloth cloth(in.u32s(indexCount, garment + " triangles"), fps);
@@ -98,7 +97,8 @@ void writeBakeCache(const std::string& path, const BakeCache& cache) {
   };
   // The file stores counts as uint32.
   const auto count = [&](uint64_t n, const std::string& what) {
-    if (n > std::numeric_limits<uint32_t>::max()) refuse(what + " " + std::to_string(n) + " exceeds the format's limit");
+    if (n > std::numeric_limits<uint32_t>::max())
+      refuse(what + " " + std::to_string(n) + " exceeds the format's limit");
     return uint32_t(n);
   };
   if (cache.stretch.size() != cache.garments.size())
@@ -156,8 +156,7 @@ BakeCache readBakeCache(const std::string& path) {
   cache.stretch.resize(garmentCount);
   for (uint32_t g = 0; g < garmentCount; ++g)
     cache.garments.push_back(readGarment(in, "garment " + std::to_string(g), cache.stretch[g]));
-  if (in.remaining() > 0)
-    in.fail(std::to_string(in.remaining()) + " unexpected bytes after the last garment");
+  if (in.remaining() > 0) in.fail(std::to_string(in.remaining()) + " unexpected bytes after the last garment");
   return cache;
 }
 

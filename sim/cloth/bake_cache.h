@@ -26,8 +26,8 @@ struct BakeCache {
   // Opaque to the cache: the editor computes it from everything the bake
   // depends on (garment JSON, character, clip, fps) and compares it on load.
   std::string key;
-  int clip = -1;      // the clip baked, -1 for none
-  float start = 0;    // seconds into the clip of the first frame
+  int clip = -1;    // the clip baked, -1 for none
+  float start = 0;  // seconds into the clip of the first frame
   std::vector<BakedCloth> garments;
   // Per-vertex stretch of each garment at each frame: [garment][frame][vertex],
   // as many frames as the garment's BakedCloth and one value per vertex.

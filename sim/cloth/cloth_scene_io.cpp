@@ -80,8 +80,8 @@ void parseSettings(const JsonFields& r, ClothSettings& st) {
   st.cgTolerance = r.positive("cg_tolerance", st.cgTolerance, 1.0);
   const std::string preconditioner = r.string("cg_preconditioner", cgPreconditionerName(st.cgPreconditioner));
   if (!parseCgPreconditioner(preconditioner, st.cgPreconditioner))
-    r.fail("cg_preconditioner", "unknown preconditioner '" + preconditioner + "' " +
-                                    knownNames({"block_jacobi", "two_level"}));
+    r.fail("cg_preconditioner",
+           "unknown preconditioner '" + preconditioner + "' " + knownNames({"block_jacobi", "two_level"}));
 }
 
 void parsePins(const JsonFields& r, ClothSceneSpec& spec) {
@@ -106,10 +106,12 @@ PrimitiveCollider parseCollider(const json& j, size_t index) {
   const std::string type = c.string("type", "");
   PrimitiveCollider out;
   if (type == "sphere") {
-    out = PrimitiveCollider::sphere(c.vec3("center", glm::vec3(0.0f), kMaxDistance), c.positive("radius", 0.0f, kMaxDistance));
+    out = PrimitiveCollider::sphere(c.vec3("center", glm::vec3(0.0f), kMaxDistance),
+                                    c.positive("radius", 0.0f, kMaxDistance));
   } else if (type == "capsule") {
-    out = PrimitiveCollider::capsule(c.vec3("a", glm::vec3(0.0f), kMaxDistance), c.vec3("b", glm::vec3(0.0f), kMaxDistance),
-                                      c.positive("radius", 0.0f, kMaxDistance));
+    out = PrimitiveCollider::capsule(c.vec3("a", glm::vec3(0.0f), kMaxDistance),
+                                     c.vec3("b", glm::vec3(0.0f), kMaxDistance),
+                                     c.positive("radius", 0.0f, kMaxDistance));
   } else if (type == "plane") {
     const glm::vec3 n = c.vec3("normal", {0.0f, 1.0f, 0.0f}, 1000.0f);
     if (!(glm::length(n) > 0.0f)) c.fail("normal", "must not be zero");
@@ -182,9 +184,14 @@ void writeClothScene(const ClothSceneSpec& spec, json& cloth, json& colliders) {
   const ClothSettings& s = spec.settings;
   cloth = json::object();
   if (spec.hasSheet)
-    cloth["garment"] = {{"type", "sheet"}, {"columns", g.columns}, {"rows", g.rows}, {"width", g.width},
-                      {"height", g.height}, {"center", vec3Json(g.center)},
-                      {"orientation", g.vertical ? "vertical" : "horizontal"}, {"tilt_degrees", g.tiltDegrees}};
+    cloth["garment"] = {{"type", "sheet"},
+                        {"columns", g.columns},
+                        {"rows", g.rows},
+                        {"width", g.width},
+                        {"height", g.height},
+                        {"center", vec3Json(g.center)},
+                        {"orientation", g.vertical ? "vertical" : "horizontal"},
+                        {"tilt_degrees", g.tiltDegrees}};
   cloth["fabric"] = fabricToJson(f, spec.fabricPreset);
   if (spec.massPerVertex > 0.0f) cloth["mass_per_vertex"] = spec.massPerVertex;
   cloth["integrator"] = integratorName(s.integrator);
@@ -212,10 +219,19 @@ void writeClothScene(const ClothSceneSpec& spec, json& cloth, json& colliders) {
   for (const PrimitiveCollider& c : spec.colliders) {
     json j = {{"type", shapeName(c.shape)}};
     switch (c.shape) {
-      case PrimitiveCollider::Shape::Sphere: j["center"] = vec3Json(c.a); j["radius"] = c.radius; break;
+      case PrimitiveCollider::Shape::Sphere:
+        j["center"] = vec3Json(c.a);
+        j["radius"] = c.radius;
+        break;
       case PrimitiveCollider::Shape::Capsule:
-        j["a"] = vec3Json(c.a); j["b"] = vec3Json(c.b); j["radius"] = c.radius; break;
-      case PrimitiveCollider::Shape::Plane: j["point"] = vec3Json(c.a); j["normal"] = vec3Json(c.b); break;
+        j["a"] = vec3Json(c.a);
+        j["b"] = vec3Json(c.b);
+        j["radius"] = c.radius;
+        break;
+      case PrimitiveCollider::Shape::Plane:
+        j["point"] = vec3Json(c.a);
+        j["normal"] = vec3Json(c.b);
+        break;
     }
     if (c.friction >= 0.0f) j["friction"] = c.friction;
     colliders.push_back(j);

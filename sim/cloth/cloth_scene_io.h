@@ -57,7 +57,7 @@ struct ClothSceneSpec {
   SheetGarmentSpec sheet;
   std::string fabricPreset = "cotton";  // the preset the fabric started from ("" = custom)
   Fabric fabric;
-  float massPerVertex = 0.0f;           // > 0 overrides the fabric's mass per area
+  float massPerVertex = 0.0f;  // > 0 overrides the fabric's mass per area
   ClothSettings settings;
   std::vector<int> pinnedRows;
   std::vector<uint32_t> pinnedVertices;

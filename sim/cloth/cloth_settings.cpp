@@ -21,18 +21,17 @@ const char* nameOf(E value, const std::pair<const char*, E> (&table)[N]) {
   return "?";
 }
 
-const std::pair<const char*, IntegratorKind> kIntegrators[] = {
-    {"symplectic_euler", IntegratorKind::SymplecticEuler},
-    {"verlet", IntegratorKind::Verlet},
-    {"rk4", IntegratorKind::RK4},
-    {"implicit_euler", IntegratorKind::ImplicitEuler}};
+const std::pair<const char*, IntegratorKind> kIntegrators[] = {{"symplectic_euler", IntegratorKind::SymplecticEuler},
+                                                               {"verlet", IntegratorKind::Verlet},
+                                                               {"rk4", IntegratorKind::RK4},
+                                                               {"implicit_euler", IntegratorKind::ImplicitEuler}};
 const std::pair<const char*, BendingModel> kBending[] = {{"springs", BendingModel::Springs},
                                                          {"cantilever", BendingModel::Cantilever}};
 const std::pair<const char*, StretchLimitMode> kLimits[] = {{"off", StretchLimitMode::Off},
                                                             {"position", StretchLimitMode::PositionCorrection},
                                                             {"velocity", StretchLimitMode::VelocityCorrection}};
 const std::pair<const char*, CgPreconditioner> kPreconditioners[] = {{"block_jacobi", CgPreconditioner::BlockJacobi},
-                                                                    {"two_level", CgPreconditioner::TwoLevel}};
+                                                                     {"two_level", CgPreconditioner::TwoLevel}};
 
 }  // namespace
 

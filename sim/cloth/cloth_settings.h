@@ -22,11 +22,11 @@ struct ClothSettings {
   int substeps = 0;
   BendingModel bending = BendingModel::Springs;
   glm::vec3 gravity{0.0f, -9.81f, 0.0f};
-  glm::vec3 wind{0.0f};        // m/s, air velocity
-  float airDamping = 0.5f;     // N s/m^3: drag per unit cloth area per unit relative speed
+  glm::vec3 wind{0.0f};     // m/s, air velocity
+  float airDamping = 0.5f;  // N s/m^3: drag per unit cloth area per unit relative speed
   StretchLimitMode stretchLimit = StretchLimitMode::PositionCorrection;
-  float maxStretch = 1.10f;    // Provot's limit: no structural spring longer than this times its rest length
-  int stretchIterations = 100; // passes of the correction at most per solver step
+  float maxStretch = 1.10f;     // Provot's limit: no structural spring longer than this times its rest length
+  int stretchIterations = 100;  // passes of the correction at most per solver step
   // When the position correction cannot hold the limit in a step, the step is
   // redone with 2, 4, ... times the substeps, up to this factor (1 = never).
   int maxRefinement = 8;

@@ -20,8 +20,8 @@ namespace {
 // free inverse mass in the elongation limit: the limit then moves their
 // neighbours instead.
 constexpr float kContactInvMassScale = 0.05f;
-constexpr int kSelfCollisionPasses = 20;  // per substep, at most
-constexpr float kMaxApproachReach = 0.08f;  // m: how far ahead findApproachingBody() looks at most
+constexpr int kSelfCollisionPasses = 20;      // per substep, at most
+constexpr float kMaxApproachReach = 0.08f;    // m: how far ahead findApproachingBody() looks at most
 constexpr float kApproachPerSubstep = 0.03f;  // m: see substepsForBodySpeed()
 constexpr int kMaxBodySpeedSubsteps = 4;
 constexpr int kContactLimitRounds = 8;  // with a body: see constraints/contact_aware_limit.h
@@ -36,7 +36,8 @@ ClothState initialState(const ClothMesh& mesh, const ClothTopology& topology, co
   for (size_t i = 0; i < n; ++i) {
     s.x[i] = vec3At(mesh.positions, i);
     s.mass[i] = mesh.masses.empty() ? fabric.massPerArea * topology.vertexArea[i] : mesh.masses[i];
-    if (!(s.mass[i] > 0.0f) || !std::isfinite(s.mass[i])) throw Error("cloth vertex " + std::to_string(i) + " has no positive mass");
+    if (!(s.mass[i] > 0.0f) || !std::isfinite(s.mass[i]))
+      throw Error("cloth vertex " + std::to_string(i) + " has no positive mass");
     s.invMass[i] = 1.0f / s.mass[i];
   }
   return s;
@@ -72,8 +73,9 @@ glm::vec3 firstContactAlong(const PrimitiveCollider& c, const glm::vec3& from, c
 
 const char* clothPhaseName(ClothPhase phase) {
   static const char* const names[kClothPhaseCount] = {
-      "body_pose",     "approach",      "integrate",           "collide", "stretch_limit",
-      "self_collision", "body_features", "limit_after_contacts", "finish"};
+      "body_pose",     "approach",       "integrate",     "collide",
+      "stretch_limit", "self_collision", "body_features", "limit_after_contacts",
+      "finish"};
   return names[int(phase)];
 }
 
@@ -192,8 +194,7 @@ void ClothSimulator::findNearestBody(float radius, std::vector<BodyContact>& con
   contacts.resize(state_.size());
   found.assign(state_.size(), 0);
   forRange(state_.size(), [&](size_t b, size_t e) {
-    for (size_t i = b; i < e; ++i)
-      found[i] = freeInvMass_[i] != 0.0f && nearestBodyContact(i, radius, contacts[i]);
+    for (size_t i = b; i < e; ++i) found[i] = freeInvMass_[i] != 0.0f && nearestBodyContact(i, radius, contacts[i]);
   });
 }
 
@@ -315,10 +316,10 @@ bool ClothSimulator::limitStretch(float h) {
     return r.maxStretchAfter <= settings_.maxStretch;
   }
   if (settings_.stretchLimit == StretchLimitMode::VelocityCorrection)
-    stats_.stretchPasses += limitStretchByVelocities(state_, stepStart_, forces_->springs().springs(),
-                                                     forces_->structuralCount(), settings_.maxStretch,
-                                                     settings_.stretchIterations, h)
-                                .passes;
+    stats_.stretchPasses +=
+        limitStretchByVelocities(state_, stepStart_, forces_->springs().springs(), forces_->structuralCount(),
+                                 settings_.maxStretch, settings_.stretchIterations, h)
+            .passes;
   return true;
 }
 
@@ -329,7 +330,7 @@ void ClothSimulator::pushOffBodyVertices() {
   if (body_.empty() || sewing_.active()) return;
   const PhaseTimer timer(stats_, ClothPhase::BodyFeatures);
   stats_.bodyFeatureContacts += bodyFeatures_->resolve(state_, body_, settings_.collisionThickness, touched_, kContact,
-                                                    body_.moved() ? kSweptContact : kContact);
+                                                       body_.moved() ? kSweptContact : kContact);
 }
 
 // Contacts moved vertices after the limit: limit again without pulling them
@@ -482,7 +483,8 @@ void ClothSimulator::applyRestingFriction(float h) {
 }
 
 void ClothSimulator::placePins() {
-  for (const Pin& p : pins_) state_.x[p.vertex] = p.bodyVertex >= 0 ? body_.positions()[p.bodyVertex] + p.offset : p.target;
+  for (const Pin& p : pins_)
+    state_.x[p.vertex] = p.bodyVertex >= 0 ? body_.positions()[p.bodyVertex] + p.offset : p.target;
 }
 
 void ClothSimulator::collideWithColliders() {
@@ -511,8 +513,8 @@ void ClothSimulator::collideWithColliders() {
       }
       if (nearestBodyContact(i, body_.searchRadius(), contact) && contact.signedDistance < thickness) {
         touched_[i] = std::max(touched_[i], kContact);
-        respondToContact(state_.x[i], state_.v[i], contact.normal, thickness - contact.signedDistance,
-                         contact.velocity, settings_.friction);
+        respondToContact(state_.x[i], state_.v[i], contact.normal, thickness - contact.signedDistance, contact.velocity,
+                         settings_.friction);
       }
     }
   });
@@ -522,9 +524,10 @@ void ClothSimulator::checkFinite(const char* where) const {
   for (size_t i = 0; i < state_.size(); ++i) {
     const glm::vec3 &x = state_.x[i], &v = state_.v[i];
     if (!std::isfinite(x.x + x.y + x.z) || !std::isfinite(v.x + v.y + v.z))
-      throw ClothDiverged("cloth simulation diverged " + std::string(where) + " (step " +
-                          std::to_string(stats_.steps + 1) + "): vertex " + std::to_string(i) +
-                          " has a non-finite position or velocity; try the implicit integrator, more substeps or a softer fabric");
+      throw ClothDiverged(
+          "cloth simulation diverged " + std::string(where) + " (step " + std::to_string(stats_.steps + 1) +
+          "): vertex " + std::to_string(i) +
+          " has a non-finite position or velocity; try the implicit integrator, more substeps or a softer fabric");
   }
 }
 

@@ -54,15 +54,15 @@ class ClothDiverged : public Error {
 
 // The parts of a step(), for its time profile (ClothStats::phaseSeconds).
 enum class ClothPhase : int {
-  BodyPose,        // the body's new pose and the step's first contacts (substepsForBodySpeed)
-  Approach,        // body parts about to reach the cloth, the body moved, pins, resting contacts
-  Integrate,       // the integrator (the implicit solve), resting friction
-  Collide,         // colliders and the body, both passes
-  StretchLimit,    // the elongation limit after integrating (or sewing)
-  SelfCollision,   // cloth-cloth proximity
-  BodyFeatures,    // body vertices under cloth triangles
+  BodyPose,            // the body's new pose and the step's first contacts (substepsForBodySpeed)
+  Approach,            // body parts about to reach the cloth, the body moved, pins, resting contacts
+  Integrate,           // the integrator (the implicit solve), resting friction
+  Collide,             // colliders and the body, both passes
+  StretchLimit,        // the elongation limit after integrating (or sewing)
+  SelfCollision,       // cloth-cloth proximity
+  BodyFeatures,        // body vertices under cloth triangles
   LimitAfterContacts,  // the elongation limit keeping contacts out
-  Finish,          // pins placed, NaN check, stats
+  Finish,              // pins placed, NaN check, stats
   Count
 };
 constexpr int kClothPhaseCount = int(ClothPhase::Count);
@@ -86,17 +86,17 @@ class PhaseTimer {
 const char* clothPhaseName(ClothPhase phase);
 
 struct ClothStats {
-  float maxStretch = 1.0f;       // largest structural length / rest length now
-  float maxStretchEver = 1.0f;   // ... over all steps so far
+  float maxStretch = 1.0f;      // largest structural length / rest length now
+  float maxStretchEver = 1.0f;  // ... over all steps so far
   glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
-  int substeps = 0;              // solver steps in the last step()
-  int solverIterations = 0;      // CG iterations in the last step() (implicit)
-  float solverResidual = 0.0f;   // the largest relative residual a solve of the last step() ended with (implicit)
-  int selfContacts = 0;          // cloth-cloth pairs closer than the thickness in the last step()
-  int bodyFeatureContacts = 0;   // body vertices under (or through) cloth triangles in the last step()
-  int stretchPasses = 0;         // elongation-limit passes in the last step()
-  long long bodyQueries = 0;     // nearest-point body queries of cloth vertices in the last step()
-  long long bodySearches = 0;    // ... of them, those that searched the body (the others: a vertex's last query sufficed)
+  int substeps = 0;             // solver steps in the last step()
+  int solverIterations = 0;     // CG iterations in the last step() (implicit)
+  float solverResidual = 0.0f;  // the largest relative residual a solve of the last step() ended with (implicit)
+  int selfContacts = 0;         // cloth-cloth pairs closer than the thickness in the last step()
+  int bodyFeatureContacts = 0;  // body vertices under (or through) cloth triangles in the last step()
+  int stretchPasses = 0;        // elongation-limit passes in the last step()
+  long long bodyQueries = 0;    // nearest-point body queries of cloth vertices in the last step()
+  long long bodySearches = 0;  // ... of them, those that searched the body (the others: a vertex's last query sufficed)
   double phaseSeconds[kClothPhaseCount] = {};  // wall time of each phase in the last step()
   long long steps = 0;
   double simulatedTime = 0.0;
@@ -126,7 +126,7 @@ class ClothSimulator {
   void setInnerSurface(ClothSurfaceCollider* surface) { innerSurface_ = surface; }
 
   // Pins: a pinned vertex follows its target exactly.
-  void pinVertex(uint32_t vertex);                      // where it is now
+  void pinVertex(uint32_t vertex);  // where it is now
   void pinVertex(uint32_t vertex, glm::vec3 target);
   void pinToBodyVertex(uint32_t vertex, uint32_t bodyVertex);  // keeps today's offset
 
@@ -148,7 +148,10 @@ class ClothSimulator {
   std::vector<float> flatPositions() const;
   const std::vector<uint32_t>& triangles() const { return triangles_; }
   const ClothState& state() const { return state_; }
-  ClothState& mutableState() { penetrating_ = -1; return state_; }  // tests and tools: edit, then step
+  ClothState& mutableState() {
+    penetrating_ = -1;
+    return state_;
+  }  // tests and tools: edit, then step
   const ClothStats& stats() const { return stats_; }
   // Vertices inside a collider or the body now: counted when asked (a body
   // query per vertex, too dear for every step), kept until the cloth, the
@@ -206,7 +209,7 @@ class ClothSimulator {
   std::unique_ptr<Integrator> integrator_;
   std::unique_ptr<SelfCollision> selfCollision_;
   std::unique_ptr<BodyFeatureContact> bodyFeatures_;  // body vertices against cloth triangles
-  StretchLimiter stretchLimiter_;  // over forces_'s structural springs
+  StretchLimiter stretchLimiter_;                     // over forces_'s structural springs
   ClothState state_;
   std::vector<float> freeInvMass_;
   std::vector<glm::vec3> stepStart_;
@@ -236,8 +239,8 @@ class ClothSimulator {
   float activeMaxStretch() const { return sewing_.maxStretch(settings_.maxStretch); }
   ClothStats stats_;
   mutable int penetrating_ = -1;  // penetratingVertices() since the last change; -1: not counted
-  bool limitHeld_ = true;  // the elongation limit held in every substep of this try
-  int passBudget_ = 100;   // elongation-limit passes per call in this try
+  bool limitHeld_ = true;         // the elongation limit held in every substep of this try
+  int passBudget_ = 100;          // elongation-limit passes per call in this try
 };
 
 }  // namespace mq::cloth

@@ -28,7 +28,8 @@ void ClothSimulator::collideWithInnerSurface(float fraction) {
     for (size_t i = b; i < e; ++i) {
       if (state_.invMass[i] == 0.0f) continue;
       SurfaceContact contact;
-      if (!innerSurface_->nearestContact(state_.x[i], radius, contact) || !(contact.signedDistance < thickness)) continue;
+      if (!innerSurface_->nearestContact(state_.x[i], radius, contact) || !(contact.signedDistance < thickness))
+        continue;
       touched_[i] = std::max(touched_[i], kContact);
       respondToContact(state_.x[i], state_.v[i], contact.normal, thickness - contact.signedDistance, contact.velocity,
                        settings_.friction);

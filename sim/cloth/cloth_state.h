@@ -10,9 +10,9 @@
 namespace mq::cloth {
 
 struct ClothState {
-  std::vector<glm::vec3> x;  // positions, m
-  std::vector<glm::vec3> v;  // velocities, m/s
-  std::vector<float> mass;   // kg
+  std::vector<glm::vec3> x;    // positions, m
+  std::vector<glm::vec3> v;    // velocities, m/s
+  std::vector<float> mass;     // kg
   std::vector<float> invMass;  // 1/kg; 0 for vertices the solver must not move (pins)
   // Outward normal of a resting contact at the start of the step (zero: none);
   // the implicit solver keeps such a vertex's normal velocity at zero.

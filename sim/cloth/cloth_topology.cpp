@@ -11,8 +11,8 @@ namespace mq::cloth {
 namespace {
 
 struct EdgeRecord {
-  uint32_t a, b;          // a < b
-  uint32_t opposite[2];   // the vertex opposite the edge in each adjacent triangle
+  uint32_t a, b;         // a < b
+  uint32_t opposite[2];  // the vertex opposite the edge in each adjacent triangle
   float triangleArea[2];
   int triangles = 0;
 };

@@ -24,10 +24,10 @@ struct SpringTopology {
 };
 
 struct BendLine {
-  uint32_t i, k, j;   // k is the middle vertex
-  float length0;      // |x_k - x_i| at rest
-  float length1;      // |x_j - x_k| at rest
-  float width;        // m of cloth across the line
+  uint32_t i, k, j;  // k is the middle vertex
+  float length0;     // |x_k - x_i| at rest
+  float length1;     // |x_j - x_k| at rest
+  float width;       // m of cloth across the line
 };
 
 struct ClothTopology {

@@ -59,8 +59,8 @@ std::unique_ptr<GarmentSimulation> makeSheetSimulation(const ClothSceneSpec& spe
   settings.cloth = spec.settings;
   settings.fabric = spec.fabric;
   if (spec.massPerVertex > 0.0f)  // the same total mass, spread by area
-    settings.fabric.massPerArea = spec.massPerVertex * float(spec.sheet.columns * spec.sheet.rows) /
-                                  (spec.sheet.width * spec.sheet.height);
+    settings.fabric.massPerArea =
+        spec.massPerVertex * float(spec.sheet.columns * spec.sheet.rows) / (spec.sheet.width * spec.sheet.height);
   auto sim = std::make_unique<GarmentSimulation>(sheetGarmentMesh(spec), settings, bodyPositions, bodyTriangles);
   for (const PrimitiveCollider& c : spec.colliders) sim->addCollider(c);
   std::vector<uint32_t> pinned;

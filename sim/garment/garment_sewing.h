@@ -28,9 +28,9 @@ ClothMesh clothMeshFromGarment(const GarmentMesh& garment);
 float maxSeamGap(const std::vector<glm::vec3>& x, const std::vector<std::pair<uint32_t, uint32_t>>& seams);
 
 struct WeldedCloth {
-  ClothMesh mesh;           // welded triangles, no seams; positions averaged
-  ClothTopology topology;   // springs and bend lines remapped
-  SeamWeld weld;            // old vertex -> new vertex
+  ClothMesh mesh;          // welded triangles, no seams; positions averaged
+  ClothTopology topology;  // springs and bend lines remapped
+  SeamWeld weld;           // old vertex -> new vertex
 };
 
 // Welds the seam pairs of `mesh`. Springs whose ends merged are dropped;

@@ -31,21 +31,21 @@ uint32_t nearestVertex(const std::vector<float>& positions, glm::vec3 p) {
 
 struct GarmentSimulation::Impl {
   GarmentSimulationSettings settings;
-  ClothMesh mesh;                  // unwelded, with its seams
-  std::vector<uint32_t> triangles; // the garment mesh's
-  std::vector<float> body;         // the body now (flat), empty: none
+  ClothMesh mesh;                   // unwelded, with its seams
+  std::vector<uint32_t> triangles;  // the garment mesh's
+  std::vector<float> body;          // the body now (flat), empty: none
   std::vector<uint32_t> bodyTriangles;
   std::unique_ptr<ClothSimulator> sim;
   std::vector<PrimitiveCollider> colliders;
   bool welded = false;
   std::vector<glm::vec3> weldPositions;  // unwelded positions at the weld
-  SeamWeld weld;                   // identity until welded
+  SeamWeld weld;                         // identity until welded
   struct Pin {
-    uint32_t vertex;               // garment-mesh index
-    int64_t bodyVertex = -1;       // >= 0: follows it
+    uint32_t vertex;          // garment-mesh index
+    int64_t bodyVertex = -1;  // >= 0: follows it
   };
   std::vector<Pin> pins;
-  std::vector<uint32_t> pinned;    // garment-mesh indices, in pin order
+  std::vector<uint32_t> pinned;  // garment-mesh indices, in pin order
   // Sewing in two stages: first the seams within a panel (a sleeve or a
   // trouser leg closing into a tube around its limb), then all of them. A
   // sleeve sewn to the armhole first would be turned level by the armhole's
@@ -185,9 +185,11 @@ void GarmentSimulation::setColliders(const std::vector<PrimitiveCollider>& colli
 
 void GarmentSimulation::pin(uint32_t garmentVertex) {
   Impl& m = *impl_;
-  if (garmentVertex >= vertexCount()) throw Error("pinned garment vertex " + std::to_string(garmentVertex) + " out of range");
-  m.pins.erase(std::remove_if(m.pins.begin(), m.pins.end(), [&](const Impl::Pin& p) { return p.vertex == garmentVertex; }),
-               m.pins.end());
+  if (garmentVertex >= vertexCount())
+    throw Error("pinned garment vertex " + std::to_string(garmentVertex) + " out of range");
+  m.pins.erase(
+      std::remove_if(m.pins.begin(), m.pins.end(), [&](const Impl::Pin& p) { return p.vertex == garmentVertex; }),
+      m.pins.end());
   m.pins.push_back({garmentVertex, -1});
   m.applyPin(m.pins.back());
   m.pinned.clear();
@@ -196,10 +198,12 @@ void GarmentSimulation::pin(uint32_t garmentVertex) {
 
 void GarmentSimulation::pinToBody(uint32_t garmentVertex) {
   Impl& m = *impl_;
-  if (garmentVertex >= vertexCount()) throw Error("pinned garment vertex " + std::to_string(garmentVertex) + " out of range");
+  if (garmentVertex >= vertexCount())
+    throw Error("pinned garment vertex " + std::to_string(garmentVertex) + " out of range");
   if (m.body.empty()) throw Error("cannot pin a garment vertex to the body: the simulation has no body");
-  m.pins.erase(std::remove_if(m.pins.begin(), m.pins.end(), [&](const Impl::Pin& p) { return p.vertex == garmentVertex; }),
-               m.pins.end());
+  m.pins.erase(
+      std::remove_if(m.pins.begin(), m.pins.end(), [&](const Impl::Pin& p) { return p.vertex == garmentVertex; }),
+      m.pins.end());
   const glm::vec3 at = m.sim->positions()[m.running(garmentVertex)];
   m.pins.push_back({garmentVertex, int64_t(nearestVertex(m.body, at))});
   m.applyPin(m.pins.back());
@@ -301,8 +305,10 @@ void GarmentSimulation::startFromDrape(const std::vector<float>& positions, cons
     m.weldNow();
   } else {  // a garment without seams: welded from the start, pins re-applied here
     for (const Impl::Pin& p : m.pins)
-      if (p.bodyVertex >= 0) m.applyPin(p);
-      else m.sim->pinVertex(m.running(p.vertex), vec3At(positions, p.vertex));
+      if (p.bodyVertex >= 0)
+        m.applyPin(p);
+      else
+        m.sim->pinVertex(m.running(p.vertex), vec3At(positions, p.vertex));
   }
   for (glm::vec3& v : m.sim->mutableState().v) v = glm::vec3(0.0f);
 }

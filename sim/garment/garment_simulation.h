@@ -37,10 +37,10 @@ namespace mq::cloth {
 struct GarmentSimulationSettings {
   ClothSettings cloth;
   Fabric fabric;
-  float weldGap = 0.004f;          // m: seams weld once every seam pair is this close
-  float maxSewingSeconds = 2.0f;   // simulated time after which the seams weld regardless
-  float sewingSpeed = 0.5f;        // m/s: how fast a seam gap may shrink while sewing
-  float sewingStretchRelief = 1.0f; // the elongation limit is this much looser while sewing
+  float weldGap = 0.004f;            // m: seams weld once every seam pair is this close
+  float maxSewingSeconds = 2.0f;     // simulated time after which the seams weld regardless
+  float sewingSpeed = 0.5f;          // m/s: how fast a seam gap may shrink while sewing
+  float sewingStretchRelief = 1.0f;  // the elongation limit is this much looser while sewing
 };
 
 class GarmentSimulation {
@@ -54,8 +54,8 @@ class GarmentSimulation {
   // Replaces the colliders, keeping the cloth's state (a collider dragged while it runs).
   void setColliders(const std::vector<PrimitiveCollider>& colliders);
   // Pins, in garment-mesh vertex indices; kept across the weld.
-  void pin(uint32_t garmentVertex);         // fixed in space where it is now
-  void pinToBody(uint32_t garmentVertex);   // follows the nearest body vertex
+  void pin(uint32_t garmentVertex);        // fixed in space where it is now
+  void pinToBody(uint32_t garmentVertex);  // follows the nearest body vertex
   const std::vector<uint32_t>& pinnedVertices() const;
 
   // Layering: the garments this one is worn over (sim/garment/garment_layers.h).
@@ -72,13 +72,13 @@ class GarmentSimulation {
   void step(float dt, const std::vector<float>* posedBody = nullptr);
 
   bool welded() const;
-  float seamGap() const;                         // largest open seam gap now (0 once welded)
-  std::vector<float> positions() const;          // 3 per garment-mesh vertex
-  std::vector<float> vertexStretch() const;      // per garment-mesh vertex: largest length / rest of its structural springs
+  float seamGap() const;                     // largest open seam gap now (0 once welded)
+  std::vector<float> positions() const;      // 3 per garment-mesh vertex
+  std::vector<float> vertexStretch() const;  // per garment-mesh vertex: largest length / rest of its structural springs
   const std::vector<uint32_t>& triangles() const;  // the garment mesh's
-  size_t vertexCount() const;                    // garment-mesh vertices
-  const ClothStats& stats() const;               // of the running solver
-  const ClothSimulator& simulator() const;       // sewing solver, then the welded one
+  size_t vertexCount() const;                      // garment-mesh vertices
+  const ClothStats& stats() const;                 // of the running solver
+  const ClothSimulator& simulator() const;         // sewing solver, then the welded one
 
   // A welded simulation's state, to continue another simulation built the
   // same way (same garment mesh, settings, body, colliders and pins) from

@@ -55,9 +55,8 @@ const std::vector<float>* HairBake::frameAt(float t) const {
   return &frames[std::clamp(i, 0, frameCount() - 1)];
 }
 
-HairBake bakeHair(const Character& character, int clipIndex, const Strands& restGuides,
-                  const HairSimParams& params, const HairBakeSettings& settings,
-                  const HairBakeCallbacks& callbacks, const HairRig* givenRig) {
+HairBake bakeHair(const Character& character, int clipIndex, const Strands& restGuides, const HairSimParams& params,
+                  const HairBakeSettings& settings, const HairBakeCallbacks& callbacks, const HairRig* givenRig) {
   HairBake bake;
   bake.fps = settings.fps > 0.0f ? settings.fps : 60.0f;
   bake.pointsPerStrand = restGuides.pointsPerStrand;

@@ -19,7 +19,7 @@ struct Character;
 // What moves hair on a character: the bone the scalp rides on (its rest
 // world transform maps rest-space strands to bone space) and the colliders.
 struct HairRig {
-  int headBone = -1;                // -1: the scalp does not move
+  int headBone = -1;  // -1: the scalp does not move
   glm::mat4 restWorldFromHead{1.0f};
   HairColliders body;
 
@@ -67,8 +67,8 @@ struct HairBakeSettings {
 // clip clipIndex (-1: the rest pose for one second). Deterministic. Stops
 // early, with cancelled set and the frames done so far, when asked to.
 // rig: null fits one with HairRig::fromCharacter.
-HairBake bakeHair(const Character& character, int clipIndex, const Strands& restGuides,
-                  const HairSimParams& params, const HairBakeSettings& settings = {},
-                  const HairBakeCallbacks& callbacks = {}, const HairRig* rig = nullptr);
+HairBake bakeHair(const Character& character, int clipIndex, const Strands& restGuides, const HairSimParams& params,
+                  const HairBakeSettings& settings = {}, const HairBakeCallbacks& callbacks = {},
+                  const HairRig* rig = nullptr);
 
 }  // namespace mq

@@ -66,9 +66,9 @@ bool PosedHairColliders::contains(const glm::vec3& p, float tolerance) const {
   for (const Ellipsoid& e : ellipsoids) {
     // Shrink by the tolerance along the smallest axis (conservative).
     const glm::vec3 q = glm::vec3(e.unitFromWorld * glm::vec4(p, 1.0f));
-    const float smallest = std::min({glm::length(glm::vec3(e.worldFromUnit[0])),
-                                     glm::length(glm::vec3(e.worldFromUnit[1])),
-                                     glm::length(glm::vec3(e.worldFromUnit[2]))});
+    const float smallest =
+        std::min({glm::length(glm::vec3(e.worldFromUnit[0])), glm::length(glm::vec3(e.worldFromUnit[1])),
+                  glm::length(glm::vec3(e.worldFromUnit[2]))});
     const float limit = std::max(0.0f, 1.0f - tolerance / smallest);
     if (glm::length(q) < limit) return true;
   }
@@ -95,8 +95,10 @@ PosedHairColliders HairColliders::posed(const std::vector<glm::mat4>& worldFromB
     const glm::mat4 worldFromUnit = transformOf(e.bone) * boneFromUnit;
     // The Frobenius norm bounds how far a unit vector can be stretched.
     const glm::mat3 axes(worldFromUnit);
-    const float reach2 = (glm::dot(axes[0], axes[0]) + glm::dot(axes[1], axes[1]) + glm::dot(axes[2], axes[2])) * 1.002f;
-    out.ellipsoids.push_back({worldFromUnit, glm::inverse(worldFromUnit), glm::vec3(worldFromUnit[3]), reach2 + 1e-12f});
+    const float reach2 =
+        (glm::dot(axes[0], axes[0]) + glm::dot(axes[1], axes[1]) + glm::dot(axes[2], axes[2])) * 1.002f;
+    out.ellipsoids.push_back(
+        {worldFromUnit, glm::inverse(worldFromUnit), glm::vec3(worldFromUnit[3]), reach2 + 1e-12f});
   }
   return out;
 }
@@ -132,9 +134,7 @@ int nearestBone(const Skeleton& skeleton, const std::vector<glm::mat4>& worldFro
 
 HairColliders HairColliders::attachToSkeleton(const BodyProxy& restProxy, const Skeleton& skeleton, int headBone) {
   const std::vector<glm::mat4> worldFromBone = skeleton.worldTransforms(skeleton.restPose());
-  auto boneFromWorld = [&](int bone) {
-    return bone >= 0 ? glm::inverse(worldFromBone[bone]) : glm::mat4(1.0f);
-  };
+  auto boneFromWorld = [&](int bone) { return bone >= 0 ? glm::inverse(worldFromBone[bone]) : glm::mat4(1.0f); };
   HairColliders colliders;
   for (size_t i = 0; i < restProxy.ellipsoids.size(); ++i) {
     const Ellipsoid& e = restProxy.ellipsoids[i];
@@ -146,7 +146,8 @@ HairColliders HairColliders::attachToSkeleton(const BodyProxy& restProxy, const 
   for (const Capsule& c : restProxy.capsules) {
     const int bone = nearestBone(skeleton, worldFromBone, 0.5f * (c.a + c.b));
     const glm::mat4 m = boneFromWorld(bone);
-    colliders.capsules.push_back({bone, glm::vec3(m * glm::vec4(c.a, 1.0f)), glm::vec3(m * glm::vec4(c.b, 1.0f)), c.radius});
+    colliders.capsules.push_back(
+        {bone, glm::vec3(m * glm::vec4(c.a, 1.0f)), glm::vec3(m * glm::vec4(c.b, 1.0f)), c.radius});
   }
   return colliders;
 }

@@ -19,7 +19,7 @@ class Skeleton;
 // A capsule is the set of points within `radius` of segment [a, b]; a sphere
 // is a capsule with a == b.
 struct ColliderCapsule {
-  int bone = -1;  // -1: fixed in world space
+  int bone = -1;               // -1: fixed in world space
   glm::vec3 a{0.0f}, b{0.0f};  // bone space
   float radius = 0.0f;
 };

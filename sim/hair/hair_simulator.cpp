@@ -30,8 +30,8 @@ float perSubstep(float k, float h) {
 }
 
 glm::quat rotationOf(const glm::mat4& m) {
-  return glm::normalize(glm::quat_cast(glm::mat3(glm::normalize(glm::vec3(m[0])), glm::normalize(glm::vec3(m[1])),
-                                                 glm::normalize(glm::vec3(m[2])))));
+  return glm::normalize(glm::quat_cast(
+      glm::mat3(glm::normalize(glm::vec3(m[0])), glm::normalize(glm::vec3(m[1])), glm::normalize(glm::vec3(m[2])))));
 }
 
 // Per-strand scratch for one strand's substep (reused per thread).

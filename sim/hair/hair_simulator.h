@@ -27,13 +27,13 @@ namespace mq {
 
 struct HairSimParams {
   glm::vec3 gravity{0.0f, -9.81f, 0.0f};
-  float airDamping = 1.0f;        // 1/s: free velocity decays as exp(-airDamping t)
-  float ftlDamping = 0.9f;        // share of the FTL correction removed from the velocity
-  float globalStiffness = 0.3f;   // pull toward the rest shape at the root, per 1/60 s
-  float globalRange = 0.5f;       // share of the strand over which that pull fades out
-  float bendStiffness = 0.8f;     // pull of a segment toward its rest direction, per 1/60 s
-  float friction = 0.4f;          // share of tangential velocity lost per contact step
-  float collisionMargin = 0.002f; // metres kept between hair and body proxies
+  float airDamping = 1.0f;         // 1/s: free velocity decays as exp(-airDamping t)
+  float ftlDamping = 0.9f;         // share of the FTL correction removed from the velocity
+  float globalStiffness = 0.3f;    // pull toward the rest shape at the root, per 1/60 s
+  float globalRange = 0.5f;        // share of the strand over which that pull fades out
+  float bendStiffness = 0.8f;      // pull of a segment toward its rest direction, per 1/60 s
+  float friction = 0.4f;           // share of tangential velocity lost per contact step
+  float collisionMargin = 0.002f;  // metres kept between hair and body proxies
   float maxSubstep = 1.0f / 60.0f;
 };
 
@@ -85,8 +85,8 @@ class HairSimulator {
   Strands rest_;
   size_t strandCount_ = 0;
   int pointsPerStrand_ = 0;
-  std::vector<float> restLengths_;     // per particle: length of the segment to its parent (0 at roots)
-  std::vector<glm::vec3> restDirs_;    // per particle: unit rest direction of the segment to its child
+  std::vector<float> restLengths_;   // per particle: length of the segment to its parent (0 at roots)
+  std::vector<glm::vec3> restDirs_;  // per particle: unit rest direction of the segment to its child
   std::vector<float> positions_, velocities_;
   std::vector<glm::quat> frames_;
   std::vector<RootTarget> previousRoots_;

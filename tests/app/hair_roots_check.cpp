@@ -35,7 +35,8 @@ bool readPlyRoots(const char* path, std::vector<float>& roots) {
   if (vertices == 0 || points == 0 || vertices % points) return false;
   std::vector<float> all(3 * vertices);
   if (!in.read(reinterpret_cast<char*>(all.data()), std::streamsize(all.size() * sizeof(float)))) return false;
-  for (size_t s = 0; s < vertices / points; ++s) roots.insert(roots.end(), &all[3 * s * points], &all[3 * s * points] + 3);
+  for (size_t s = 0; s < vertices / points; ++s)
+    roots.insert(roots.end(), &all[3 * s * points], &all[3 * s * points] + 3);
   return true;
 }
 
@@ -61,7 +62,8 @@ int main(int argc, char** argv) {
   for (size_t r = 0; r < roots.size() / 3; r += stride) {
     double best = std::numeric_limits<double>::max();
     for (size_t v = 0; v < mesh.size(); v += 3) {
-      const double dx = roots[3 * r] - mesh[v], dy = roots[3 * r + 1] - mesh[v + 1], dz = roots[3 * r + 2] - mesh[v + 2];
+      const double dx = roots[3 * r] - mesh[v], dy = roots[3 * r + 1] - mesh[v + 1],
+                   dz = roots[3 * r + 2] - mesh[v + 2];
       best = std::min(best, dx * dx + dy * dy + dz * dz);
     }
     worst = std::max(worst, std::sqrt(best));

@@ -14,7 +14,6 @@
 
 #include <memory>
 
-
 #include "core/character/default_mannequin.h"
 #include "core/character/posed_character.h"
 #include "sim/cloth/collision/body_feature_contact.h"

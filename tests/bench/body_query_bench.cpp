@@ -62,7 +62,8 @@ const BodyScene& walkingBody() {
       s.points.push_back(p + offset * n);
       s.moves.push_back(0.01f * glm::normalize(glm::vec3(next() - 0.5f, next() - 0.5f, next() - 0.5f)));
       BodyContact last;
-      s.hints.push_back(s.body.nearestContact(s.points.back() - 0.2f * s.moves.back(), last, 0.08f) ? last.triangle : -1);
+      s.hints.push_back(s.body.nearestContact(s.points.back() - 0.2f * s.moves.back(), last, 0.08f) ? last.triangle
+                                                                                                    : -1);
     }
     return s;
   }();

@@ -71,7 +71,7 @@ void runScene(benchmark::State& state, const std::string& name, int frames, bool
     framesRun += frames;
     penetrating = sim.penetratingVertices();
   }
-  state.counters["ms_per_frame"] = 1000.0 * stepSeconds / double(std::max(1LL, framesRun));  // wall time
+  state.counters["ms_per_frame"] = 1000.0 * stepSeconds / double(std::max(1LL, framesRun));     // wall time
   state.counters["cpu_ms_per_frame"] = 1000.0 * cpuSeconds / double(std::max(1LL, framesRun));  // all threads
   state.counters["max_stretch"] = maxStretch;
   state.counters["penetrating"] = penetrating;
@@ -145,7 +145,13 @@ void BM_ClothImplicitSolve(benchmark::State& state) {
   state.counters["cpu_ms_per_iteration"] = 1000.0 * cpuSeconds / double(std::max(1LL, iterations));
   state.counters["iterations_per_frame"] = double(iterations) / (double(kFrames) * double(state.iterations()));
 }
-BENCHMARK(BM_ClothImplicitSolve)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3)->UseRealTime();
+BENCHMARK(BM_ClothImplicitSolve)
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->UseRealTime();
 
 void BM_ClothDrape64(benchmark::State& s) { runScene(s, "drape_64", 120); }
 void BM_ClothDrape128(benchmark::State& s) { runScene(s, "drape_128", 120); }

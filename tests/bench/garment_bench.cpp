@@ -3,8 +3,8 @@
 #include <benchmark/benchmark.h>
 
 #include "core/character/default_mannequin.h"
-#include "core/garment/parametric_garments.h"
 #include "core/garment/panel_mesher.h"
+#include "core/garment/parametric_garments.h"
 
 namespace {
 

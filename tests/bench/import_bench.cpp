@@ -18,10 +18,16 @@ void importFile(benchmark::State& state, const std::string& relative) {
   for (auto _ : state) benchmark::DoNotOptimize(mq::importCharacter(path));
 }
 
-BENCHMARK_CAPTURE(importFile, cesium_gltf, std::string("characters/CesiumMan/glTF/CesiumMan.gltf"))->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(importFile, cesium_glb, std::string("characters/CesiumMan/glTF-Binary/CesiumMan.glb"))->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(importFile, fbx, std::string("characters/assimp_fbx_animation_with_skeleton/animation_with_skeleton.fbx"))->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(importFile, dae_clips, std::string("characters/assimp_collada_library_animation_clips/library_animation_clips.dae"))->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(importFile, cesium_gltf, std::string("characters/CesiumMan/glTF/CesiumMan.gltf"))
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(importFile, cesium_glb, std::string("characters/CesiumMan/glTF-Binary/CesiumMan.glb"))
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(importFile, fbx,
+                  std::string("characters/assimp_fbx_animation_with_skeleton/animation_with_skeleton.fbx"))
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(importFile, dae_clips,
+                  std::string("characters/assimp_collada_library_animation_clips/library_animation_clips.dae"))
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(importFile, bvh_cmu_2752_frames, std::string("motion/cmu_01_01.bvh"))->Unit(benchmark::kMillisecond);
 
 void retargetCmuOntoItself(benchmark::State& state) {
@@ -34,7 +40,8 @@ void exportCesium(benchmark::State& state, const char* extension) {
   const mq::Character c = mq::importCharacter(kAssets + "characters/CesiumMan/glTF-Binary/CesiumMan.glb");
   mq::PosedCharacter posed;
   posed.evaluate(c, 0, 1.0f, nullptr, nullptr);
-  const std::string out = (std::filesystem::temp_directory_path() / (std::string("mq_bench_export.") + extension)).string();
+  const std::string out =
+      (std::filesystem::temp_directory_path() / (std::string("mq_bench_export.") + extension)).string();
   for (auto _ : state) mq::exportPosedCharacter(c, posed, out);
   std::filesystem::remove(out);
 }

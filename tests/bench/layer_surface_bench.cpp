@@ -34,7 +34,8 @@ mq::GarmentMesh placedGarment(const std::string& type, const mq::Character& body
 
 std::vector<glm::vec3> positionsOf(const mq::GarmentMesh& mesh) {
   std::vector<glm::vec3> x(mesh.vertexCount());
-  for (size_t i = 0; i < x.size(); ++i) x[i] = {mesh.positions[3 * i], mesh.positions[3 * i + 1], mesh.positions[3 * i + 2]};
+  for (size_t i = 0; i < x.size(); ++i)
+    x[i] = {mesh.positions[3 * i], mesh.positions[3 * i + 1], mesh.positions[3 * i + 2]};
   return x;
 }
 

@@ -22,7 +22,6 @@
 #include <cmath>
 #include <memory>
 
-
 #include "core/character/default_mannequin.h"
 #include "core/character/posed_character.h"
 #include "sim/cloth/collision/self_collision.h"
@@ -35,7 +34,7 @@ namespace {
 using namespace mq::cloth;
 
 struct ShirtStates {
-  ClothState before, after;      // the sewing solver's state before and after the last frame
+  ClothState before, after;  // the sewing solver's state before and after the last frame
   std::vector<uint32_t> triangles;
   ClothSettings settings;
   std::unique_ptr<mq::cloth::GarmentSimulation> sim;  // keeps the springs the limiter points at

@@ -55,12 +55,13 @@ TEST(BoneMatch, CmuOnTheDefaultMannequinByNameThenRole) {
   EXPECT_EQ(pairing(r, s, "RightLeg"), "shin_r (humanoid role, shin (right))");
   EXPECT_EQ(pairing(r, s, "RightFoot"), "foot_r (humanoid role, foot (right))");
   EXPECT_EQ(pairing(r, s, "LowerBack"), "-");
-  EXPECT_EQ(r.unmatchedJoints,
-            (std::vector<std::string>{"LHipJoint", "LeftToeBase", "RHipJoint", "RightToeBase", "LowerBack", "Neck1",
-                                      "LeftFingerBase", "LFingers", "LThumb", "RightFingerBase", "RFingers", "RThumb"}));
+  EXPECT_EQ(r.unmatchedJoints, (std::vector<std::string>{"LHipJoint", "LeftToeBase", "RHipJoint", "RightToeBase",
+                                                         "LowerBack", "Neck1", "LeftFingerBase", "LFingers", "LThumb",
+                                                         "RightFingerBase", "RFingers", "RThumb"}));
   EXPECT_EQ(r.unmatchedBones, (std::vector<std::string>{"toes_l", "toes_r"}));
-  EXPECT_EQ(r.summary(3), "matched 19 of 31 bones; unmatched: LHipJoint, LeftToeBase, RHipJoint and 9 more; "
-                          "not driven on the character: toes_l, toes_r");
+  EXPECT_EQ(r.summary(3),
+            "matched 19 of 31 bones; unmatched: LHipJoint, LeftToeBase, RHipJoint and 9 more; "
+            "not driven on the character: toes_l, toes_r");
 }
 
 TEST(BoneMatch, CmuOnCesiumManByStructure) {
@@ -105,7 +106,8 @@ TEST(BoneMatch, NonHumanoidGetsNamesOnly) {
 std::vector<glm::vec3> pelvisPath(const Character& c, int clip) {
   const int pelvis = c.skeleton.findBone("pelvis");
   std::vector<glm::vec3> path;
-  for (float t = 0.0f; t < 5.0f; t += 0.25f) path.push_back(glm::vec3(c.skeleton.worldTransforms(samplePose(c, clip, t))[pelvis][3]));
+  for (float t = 0.0f; t < 5.0f; t += 0.25f)
+    path.push_back(glm::vec3(c.skeleton.worldTransforms(samplePose(c, clip, t))[pelvis][3]));
   return path;
 }
 
@@ -123,7 +125,7 @@ TEST(BoneMatch, InPlaceKeepsTheRootOverItsStartButLetsItBob) {
     bob = std::max(bob, std::abs(stayed[i].y - stayed[0].y));
     EXPECT_NEAR(stayed[i].y, walked[i].y, 1e-4f) << "the vertical part is kept";
   }
-  EXPECT_GT(travel, 0.5f);   // the CMU walk covers metres in five seconds
+  EXPECT_GT(travel, 0.5f);  // the CMU walk covers metres in five seconds
   EXPECT_LT(drift, 1e-4f);
   EXPECT_GT(bob, 0.005f);
 }

@@ -40,10 +40,15 @@ int frameCount(const Clip& clip) {
 }
 
 TEST(Bvh, CountsMatchManifest) {
-  struct Expected { const char* file; int joints; int frames; float frameTime; };
-  for (const Expected& e : {Expected{"cmu_01_01.bvh", 31, 2752, 0.0083333f},
-                            Expected{"makehuman_tpose.bvh", 173, 1, 0.041667f},
-                            Expected{"makehuman_walk1.bvh", 75, 14, 0.041667f}}) {
+  struct Expected {
+    const char* file;
+    int joints;
+    int frames;
+    float frameTime;
+  };
+  for (const Expected& e :
+       {Expected{"cmu_01_01.bvh", 31, 2752, 0.0083333f}, Expected{"makehuman_tpose.bvh", 173, 1, 0.041667f},
+        Expected{"makehuman_walk1.bvh", 75, 14, 0.041667f}}) {
     SCOPED_TRACE(e.file);
     const Character c = importCharacter(kMotion + e.file);
     EXPECT_EQ(c.skeleton.boneCount(), e.joints);
@@ -94,7 +99,8 @@ TEST(Bvh, AppliedToItsOwnSkeletonReproducesTheMotion) {
     const auto own0 = c.skeleton.worldTransforms(samplePose(c, 0, 0.0f));
     const auto applied0 = c.skeleton.worldTransforms(samplePose(c, 1, 0.0f));
     for (size_t b = 0; b < own.size(); ++b) {
-      const glm::vec3 d = (glm::vec3(own[b][3]) - glm::vec3(own0[0][3])) - (glm::vec3(applied[b][3]) - glm::vec3(applied0[0][3]));
+      const glm::vec3 d =
+          (glm::vec3(own[b][3]) - glm::vec3(own0[0][3])) - (glm::vec3(applied[b][3]) - glm::vec3(applied0[0][3]));
       EXPECT_LT(glm::length(d), 1e-3f) << "bone " << b;
     }
   }
@@ -109,7 +115,8 @@ TEST(Bvh, NameMapDrivesRenamedBones) {
     renamed.skeleton.bone(b).name = "mq_" + renamed.skeleton.bone(b).name;
   }
   renamed.clips = {importBvhMotion(kMotion + "makehuman_walk1.bvh", renamed, writeTemp("walk.map", map))};
-  for (float t : {0.0f, 0.2f, 0.5f}) expectSameRotations(worldRotationChange(source, 0, t), worldRotationChange(renamed, 0, t));
+  for (float t : {0.0f, 0.2f, 0.5f})
+    expectSameRotations(worldRotationChange(source, 0, t), worldRotationChange(renamed, 0, t));
 }
 
 TEST(Bvh, RetargetsOntoBonesWithOtherLocalAxes) {
@@ -141,7 +148,8 @@ TEST(Bvh, RetargetsOntoBonesWithOtherLocalAxes) {
 }
 
 TEST(Bvh, UnrelatedSkeletonIsRefused) {
-  const Character skin = importCharacter(std::string(MANNEQUIN_SHARED_DIR) + "/assets/characters/SimpleSkin/SimpleSkin.gltf");
+  const Character skin =
+      importCharacter(std::string(MANNEQUIN_SHARED_DIR) + "/assets/characters/SimpleSkin/SimpleSkin.gltf");
   try {
     importBvhMotion(kMotion + "cmu_01_01.bvh", skin);
     FAIL() << "expected FileError";

@@ -49,8 +49,8 @@ TEST(DefaultMannequin, StandsOnTheGroundFacingPlusZWithLeftOnPlusX) {
   EXPECT_LT(restJoint("hand_r").x, -0.3f);
   EXPECT_GT(restJoint("toes_l").z, restJoint("foot_l").z);  // toes point forward
   EXPECT_GT(restJoint("head").y, restJoint("chest").y);
-  EXPECT_NEAR(restJoint("thigh_l").y, 0.93f, 0.05f);       // hip joints at ~0.53 of stature
-  EXPECT_NEAR(restJoint("shin_l").y, 0.5f, 0.04f);         // knees at ~0.285
+  EXPECT_NEAR(restJoint("thigh_l").y, 0.93f, 0.05f);  // hip joints at ~0.53 of stature
+  EXPECT_NEAR(restJoint("shin_l").y, 0.5f, 0.04f);    // knees at ~0.285
   // Symmetric: the right half mirrors the left.
   EXPECT_NEAR(box.min.x, -box.max.x, 0.01f);
 }
@@ -85,7 +85,8 @@ TEST(DefaultMannequin, FacesOutwardWithAHumanVolume) {
   size_t agreeing = 0;
   for (size_t i = 0; i < faceNormals.size(); i += 3)
     agreeing += faceNormals[i] * body().normals[i] + faceNormals[i + 1] * body().normals[i + 1] +
-                    faceNormals[i + 2] * body().normals[i + 2] > 0.5f;
+                    faceNormals[i + 2] * body().normals[i + 2] >
+                0.5f;
   EXPECT_GT(agreeing, body().vertexCount() * 99 / 100);
   for (size_t i = 0; i < body().normals.size(); i += 3)
     ASSERT_NEAR(std::hypot(body().normals[i], body().normals[i + 1], body().normals[i + 2]), 1.0f, 1e-4f);
@@ -280,7 +281,7 @@ void expectJointBendKeepsShape(const std::string& boneName, float degrees) {
 }
 
 TEST(DefaultMannequin, ElbowAndKneeBendNinetyDegreesWithoutCollapse) {
-  expectJointBendKeepsShape("forearm_l", 90.0f);   // elbow flexion (forward)
+  expectJointBendKeepsShape("forearm_l", 90.0f);  // elbow flexion (forward)
   expectJointBendKeepsShape("forearm_r", 90.0f);
   expectJointBendKeepsShape("shin_l", -90.0f);     // knee flexion (backward)
   expectJointBendKeepsShape("thigh_r", 80.0f);     // hip flexion (a high step)

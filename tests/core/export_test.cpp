@@ -78,7 +78,8 @@ MeshData readBinaryPly(const std::string& path) {
 
 // CesiumMan mid-clip: the whole posed character as one flat list.
 struct Fixture {
-  Character character = importCharacter(std::string(MANNEQUIN_SHARED_DIR) + "/assets/characters/CesiumMan/glTF/CesiumMan.gltf");
+  Character character =
+      importCharacter(std::string(MANNEQUIN_SHARED_DIR) + "/assets/characters/CesiumMan/glTF/CesiumMan.gltf");
   PosedCharacter posed;
   MeshData expected;
   Fixture() {

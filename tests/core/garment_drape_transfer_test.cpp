@@ -18,7 +18,9 @@ const Character& mannequin() {
 }
 
 // A smooth made-up drape: the placed panels bent and shifted.
-glm::vec3 bent(glm::vec3 p) { return {p.x + 0.05f * p.y * p.y, p.y - 0.1f + 0.03f * std::sin(6.0f * p.x), p.z + 0.02f * p.x}; }
+glm::vec3 bent(glm::vec3 p) {
+  return {p.x + 0.05f * p.y * p.y, p.y - 0.1f + 0.03f * std::sin(6.0f * p.x), p.z + 0.02f * p.x};
+}
 
 std::vector<float> bentDrape(const GarmentMesh& mesh) {
   std::vector<float> out;
@@ -32,7 +34,8 @@ std::vector<float> bentDrape(const GarmentMesh& mesh) {
 float largestError(const GarmentMesh& mesh, const std::vector<float>& drape) {
   float worst = 0.0f;
   for (size_t v = 0; v < mesh.vertexCount(); ++v)
-    worst = std::max(worst, glm::length(glm::vec3(drape[3 * v], drape[3 * v + 1], drape[3 * v + 2]) - bent(mesh.position(v))));
+    worst = std::max(worst,
+                     glm::length(glm::vec3(drape[3 * v], drape[3 * v + 1], drape[3 * v + 2]) - bent(mesh.position(v))));
   return worst;
 }
 
@@ -58,7 +61,8 @@ TEST(GarmentDrapeTransfer, FinerMeshInterpolatesTheDrape) {
   for (size_t v = 0; v < after.vertexCount(); ++v) {
     size_t nearest = 0;
     for (size_t w = 0; w < before.vertexCount(); ++w)
-      if (glm::length(before.position(w) - after.position(v)) < glm::length(before.position(nearest) - after.position(v)))
+      if (glm::length(before.position(w) - after.position(v)) <
+          glm::length(before.position(nearest) - after.position(v)))
         nearest = w;
     const glm::vec3 p = bent(before.position(nearest));
     copied.insert(copied.end(), {p.x, p.y, p.z});

@@ -213,7 +213,8 @@ TEST(GarmentJson, LayerRoundTripsAndBadLayersNameTheJsonPath) {
   EXPECT_EQ(garmentToJson(g)["layer"], 3);
   EXPECT_EQ(garmentsFromJson(nlohmann::json::parse(garmentsToJson({g}).dump())).at(0).layer, 3);
   const std::string expected = "garments[0].layer: expected a layer number, an integer from 0 to 99";
-  for (const nlohmann::json& bad : {nlohmann::json(-1), nlohmann::json(100), nlohmann::json(1.5), nlohmann::json("top")}) {
+  for (const nlohmann::json& bad :
+       {nlohmann::json(-1), nlohmann::json(100), nlohmann::json(1.5), nlohmann::json("top")}) {
     nlohmann::json j = garmentsToJson({g});
     j[0]["layer"] = bad;
     EXPECT_EQ(errorOf(j), expected) << bad.dump();

@@ -152,7 +152,7 @@ TEST(GarmentPanel, PlacementOnCylinderIsAnIsometry) {
   placement.radius = 0.2f;
   glm::vec3 a = placement.place({0, 0}), b = placement.place({0.2f * float(M_PI) / 2, 0});
   EXPECT_NEAR(glm::length(a - glm::vec3(0, 1, 0.2f)), 0.0f, 1e-6f);  // anchor faces +Z
-  EXPECT_NEAR(glm::length(b - glm::vec3(0.2f, 1, 0)), 0.0f, 1e-5f);   // +u turns to +X (axis x facing)
+  EXPECT_NEAR(glm::length(b - glm::vec3(0.2f, 1, 0)), 0.0f, 1e-5f);  // +u turns to +X (axis x facing)
   // Geodesic length of a pattern segment is kept: a small step keeps its length.
   glm::vec3 c = placement.place({0.1f, 0.05f}), d = placement.place({0.101f, 0.05f});
   EXPECT_NEAR(glm::length(d - c), 0.001f, 1e-6f);

@@ -19,10 +19,12 @@ const Character& mannequin() {
 std::vector<uint32_t> topOfPanel(const GarmentMesh& mesh, uint16_t panel, float fraction) {
   float top = -1e9f, bottom = 1e9f;
   for (size_t v = 0; v < mesh.vertexCount(); ++v)
-    if (mesh.panelIds[v] == panel) top = std::max(top, mesh.restUvs[2 * v + 1]), bottom = std::min(bottom, mesh.restUvs[2 * v + 1]);
+    if (mesh.panelIds[v] == panel)
+      top = std::max(top, mesh.restUvs[2 * v + 1]), bottom = std::min(bottom, mesh.restUvs[2 * v + 1]);
   std::vector<uint32_t> out;
   for (size_t v = 0; v < mesh.vertexCount(); ++v)
-    if (mesh.panelIds[v] == panel && mesh.restUvs[2 * v + 1] >= top - fraction * (top - bottom)) out.push_back(uint32_t(v));
+    if (mesh.panelIds[v] == panel && mesh.restUvs[2 * v + 1] >= top - fraction * (top - bottom))
+      out.push_back(uint32_t(v));
   return out;
 }
 

@@ -44,8 +44,8 @@ struct Buffer {
 
 inline std::string writeGltf(const std::string& name, json gltf, const Buffer& buffer) {
   gltf["asset"] = {{"version", "2.0"}};
-  gltf["buffers"] = {{{"byteLength", buffer.bytes.size()},
-                      {"uri", "data:application/octet-stream;base64," + base64(buffer.bytes)}}};
+  gltf["buffers"] = {
+      {{"byteLength", buffer.bytes.size()}, {"uri", "data:application/octet-stream;base64," + base64(buffer.bytes)}}};
   const auto dir = scratchDir("mq_gltf_features");
   const std::string path = (dir / name).string();
   std::ofstream(path) << gltf.dump(1);

@@ -75,7 +75,8 @@ TEST(HairFlow, PanelsReproducePotentialFlowAroundASphere) {
     const float t = 3.14159f * (float(i) + 0.5f) / 40.0f, phi = 0.7f * float(i);
     const glm::vec3 dir(std::sin(t) * std::cos(phi), std::cos(t), std::sin(t) * std::sin(phi));
     const float r = 1.4f * kRadius, k = std::pow(kRadius / r, 3.0f);
-    const glm::vec3 thetaDir = glm::normalize(glm::vec3(std::cos(t) * std::cos(phi), -std::sin(t), std::cos(t) * std::sin(phi)));
+    const glm::vec3 thetaDir =
+        glm::normalize(glm::vec3(std::cos(t) * std::cos(phi), -std::sin(t), std::cos(t) * std::sin(phi)));
     const glm::vec3 expected = std::cos(t) * (1.0f - k) * dir - std::sin(t) * (1.0f + 0.5f * k) * thetaDir;
     const glm::vec3 v = field.velocity(r * dir);
     EXPECT_LT(glm::length(v - expected), 0.06f) << "at polar angle " << t;
@@ -93,7 +94,8 @@ size_t pointsInsideSphere(const FlowField& field, const BodyProxy& traceProxy, f
     const float a = 2.39996f * float(i), rho = 0.012f + 0.1f * std::sqrt((float(i) + 0.5f) / 60.0f);
     const glm::vec3 seed(rho * std::cos(a), 0.3f, rho * std::sin(a));
     traceStreamline(field, traceProxy, seed, glm::vec3(0, -1, 0), 0.6f, 64, raw, pts.data());
-    for (int k = 0; k < 64; ++k) inside += glm::length(glm::vec3(pts[3 * k], pts[3 * k + 1], pts[3 * k + 2])) < insideRadius;
+    for (int k = 0; k < 64; ++k)
+      inside += glm::length(glm::vec3(pts[3 * k], pts[3 * k + 1], pts[3 * k + 2])) < insideRadius;
   }
   return inside;
 }
@@ -115,7 +117,8 @@ TEST(HairFlow, UniformStreamAloneAlignsStrandsFarFromTheHead) {
   TraceOptions options;
   options.perturb = false;
   std::vector<float> pts(3 * 32);
-  for (const glm::vec3 seed : {glm::vec3(1.0f, 0.5f, 0.0f), glm::vec3(-0.8f, 0.0f, 0.9f), glm::vec3(0.0f, 1.2f, -1.0f)}) {
+  for (const glm::vec3 seed :
+       {glm::vec3(1.0f, 0.5f, 0.0f), glm::vec3(-0.8f, 0.0f, 0.9f), glm::vec3(0.0f, 1.2f, -1.0f)}) {
     traceStreamline(field, proxy, seed, glm::vec3(0, 1, 0), 0.3f, 32, options, pts.data());
     for (int k = 1; k < 32; ++k) {
       const glm::vec3 seg = glm::vec3(pts[3 * k], pts[3 * k + 1], pts[3 * k + 2]) -
@@ -154,20 +157,22 @@ TEST(HairFlow, LoneVortexTurnsStrandsMoreWithStrength) {
     EXPECT_GT(angle, last + 0.05f) << "strength " << s;
     last = angle;
   }
-  EXPECT_GT(last, 2.0f);  // the strongest turns them by more than 115 degrees
+  EXPECT_GT(last, 2.0f);                                  // the strongest turns them by more than 115 degrees
   EXPECT_LT(sweptAngle(0.4f) * sweptAngle(-0.4f), 0.0f);  // the sign sets the sense
 }
 
 TEST(HairFlow, ProxyCellGridAgreesWithTestingEveryShape) {
   BodyProxy plain;
-  plain.ellipsoids.push_back({glm::vec3(0.0f, 1.6f, 0.0f), glm::mat3(glm::rotate(glm::mat4(1.0f), 0.4f, glm::vec3(1, 0, 1))),
+  plain.ellipsoids.push_back({glm::vec3(0.0f, 1.6f, 0.0f),
+                              glm::mat3(glm::rotate(glm::mat4(1.0f), 0.4f, glm::vec3(1, 0, 1))),
                               glm::vec3(0.07f, 0.11f, 0.03f)});
   plain.capsules.push_back({glm::vec3(0, 1.5f, 0), glm::vec3(0.2f, 1.3f, 0), 0.04f});
   plain.capsules.push_back({glm::vec3(0, 1.2f, 0), glm::vec3(0, 1.45f, 0), 0.12f});
   BodyProxy gridded = plain;
   gridded.updateBounds();
   for (int i = 0; i < 200000; ++i) {
-    const glm::vec3 p(0.3f * std::sin(1.37f * i), 1.1f + 0.7f * std::fmod(0.6180339f * i, 1.0f), 0.3f * std::cos(0.91f * i));
+    const glm::vec3 p(0.3f * std::sin(1.37f * i), 1.1f + 0.7f * std::fmod(0.6180339f * i, 1.0f),
+                      0.3f * std::cos(0.91f * i));
     for (float margin : {0.0f, 0.002f, 0.01f}) ASSERT_EQ(plain.contains(p, margin), gridded.contains(p, margin)) << i;
     glm::vec3 a = p, b = p;
     plain.pushOut(a, 0.002f);

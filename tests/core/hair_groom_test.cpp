@@ -46,7 +46,8 @@ TEST(HairRoots, DensityGivesTheCount) {
 }
 
 HairGroom sphereGroom() {
-  return HairGroom(test::sphereScalp(glm::vec3(0.0f, 1.6f, 0.0f), 0.1f, -0.1f), sphereProxy(glm::vec3(0.0f, 1.6f, 0.0f), 0.099f), 200);
+  return HairGroom(test::sphereScalp(glm::vec3(0.0f, 1.6f, 0.0f), 0.1f, -0.1f),
+                   sphereProxy(glm::vec3(0.0f, 1.6f, 0.0f), 0.099f), 200);
 }
 
 TEST(HairGroom, RequestedCountSameSeedSameStrands) {
@@ -144,7 +145,8 @@ TEST(HairGroom, MannequinStreamlinesStayOutsideTheHeadWithoutPushOut) {
   std::vector<float> pts(3 * 32);
   size_t inside = 0;
   for (size_t g = 0; g < groom->guideRoots().size(); ++g) {
-    traceStreamline(groom->flow(), head, groom->guideRoots().position(g), groom->guideRoots().normal(g), 0.4f, 32, raw, pts.data());
+    traceStreamline(groom->flow(), head, groom->guideRoots().position(g), groom->guideRoots().normal(g), 0.4f, 32, raw,
+                    pts.data());
     for (int k = 1; k < 32; ++k) inside += head.contains({pts[3 * k], pts[3 * k + 1], pts[3 * k + 2]}, -0.001f);
   }
   EXPECT_EQ(inside, 0u);

@@ -80,7 +80,8 @@ TEST(HairHeadFit, FittedGroomIsProportionalToTheHead) {
     EXPECT_NEAR(meanTipDistance(large.strands()) / meanTipDistance(small.strands()), 2.0f, 0.2f) << name;
     EXPECT_NEAR(meanPointDistance(large.strands()) / meanPointDistance(small.strands()), 2.0f, 0.2f) << name;
     // Hair below the head's centre reaches proportionally as far.
-    const float dropSmall = kCentre.y - extentOf(small.strands()).lo.y, dropLarge = kCentre.y - extentOf(large.strands()).lo.y;
+    const float dropSmall = kCentre.y - extentOf(small.strands()).lo.y,
+                dropLarge = kCentre.y - extentOf(large.strands()).lo.y;
     EXPECT_NEAR(dropLarge / dropSmall, 2.0f, 0.2f) << name;
     // Not fitted, the same numbers on the large head: much less than twice as far.
     HairGroom unfitted = sphereGroom(2.0f * r);

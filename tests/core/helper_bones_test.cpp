@@ -35,8 +35,8 @@ TEST(HelperBones, MannequinGetsShoulderElbowHipKneeAndTwistBones) {
   const int before = c.skeleton.boneCount();
   EXPECT_EQ(addHelperBones(c), 12);
   EXPECT_EQ(c.skeleton.boneCount(), before + 12);
-  for (const char* name : {"forearm_l_half", "shin_r_half", "thigh_l_half", "upperarm_r_half", "forearm_l_twist1",
-                           "forearm_r_twist2"})
+  for (const char* name :
+       {"forearm_l_half", "shin_r_half", "thigh_l_half", "upperarm_r_half", "forearm_l_twist1", "forearm_r_twist2"})
     EXPECT_GE(c.skeleton.findBone(name), 0) << name;
   // Twice is once.
   std::string why;

@@ -25,9 +25,11 @@ std::vector<glm::mat4> restWorld(const Character& c) {
 // Role -> bone name, in a fixed order, for comparisons and messages.
 std::vector<std::pair<std::string, std::string>> roleNames(const Skeleton& s, const HumanoidBones& r) {
   auto name = [&](int b) { return b < 0 ? std::string("-") : s.bone(b).name; };
-  std::vector<std::pair<std::string, std::string>> out = {
-      {"pelvis", name(r.pelvis)}, {"spine", name(r.spine)}, {"chest", name(r.chest)},
-      {"neck", name(r.neck)},     {"head", name(r.head)}};
+  std::vector<std::pair<std::string, std::string>> out = {{"pelvis", name(r.pelvis)},
+                                                          {"spine", name(r.spine)},
+                                                          {"chest", name(r.chest)},
+                                                          {"neck", name(r.neck)},
+                                                          {"head", name(r.head)}};
   for (int side = 0; side < 2; ++side) {
     const std::string tag = side == 0 ? "_l" : "_r";
     out.push_back({"clavicle" + tag, name(r.clavicle[side])});

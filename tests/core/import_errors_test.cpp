@@ -85,7 +85,8 @@ TEST(ImportErrors, TruncatedExternalBuffer) {
 
 TEST(ImportErrors, GltfWithBadReferences) {
   expectFileError(writeTemp("v1.gltf", R"({"asset": {"version": "1.0"}})"));
-  expectFileError(writeTemp("badnode.gltf", R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [5]}], "nodes": []})"));
+  expectFileError(
+      writeTemp("badnode.gltf", R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [5]}], "nodes": []})"));
   expectFileError(writeTemp("badmesh.gltf", R"({"asset": {"version": "2.0"}, "nodes": [{"mesh": 3}]})"));
   expectFileError(writeTemp("cycle.gltf", R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}],
                                               "nodes": [{"children": [1]}, {"children": [0]}]})"));
@@ -108,21 +109,24 @@ TEST(ImportErrors, GarbageBytesWithEveryExtension) {
 }
 
 TEST(ImportErrors, EmptyFiles) {
-  for (const char* ext : {"gltf", "glb", "fbx", "dae", "bvh"}) expectFileError(writeTemp(std::string("empty.") + ext, ""));
+  for (const char* ext : {"gltf", "glb", "fbx", "dae", "bvh"})
+    expectFileError(writeTemp(std::string("empty.") + ext, ""));
 }
 
 TEST(ImportErrors, WrongExtension) {
   // A glTF under a name the importer does not know, and a BVH called .gltf.
   const std::string text = loadFileText(kCharacters + "SimpleSkin/SimpleSkin.gltf");
   EXPECT_NE(expectFileError(writeTemp("skin.txt", text)).find("unsupported file type"), std::string::npos);
-  expectFileError(writeTemp("motion.gltf", loadFileText(std::string(MANNEQUIN_SHARED_DIR) + "/assets/motion/makehuman_walk1.bvh")));
+  expectFileError(
+      writeTemp("motion.gltf", loadFileText(std::string(MANNEQUIN_SHARED_DIR) + "/assets/motion/makehuman_walk1.bvh")));
   expectFileError(writeTemp("gltf_as.fbx", text));
 }
 
 TEST(ImportErrors, TruncatedFbxAndDae) {
   const std::string fbx = loadFileText(kCharacters + "assimp_fbx_animation_with_skeleton/animation_with_skeleton.fbx");
   expectFileError(writeTemp("cut.fbx", fbx.substr(0, fbx.size() / 3)));
-  const std::string dae = loadFileText(kCharacters + "assimp_collada_library_animation_clips/library_animation_clips.dae");
+  const std::string dae =
+      loadFileText(kCharacters + "assimp_collada_library_animation_clips/library_animation_clips.dae");
   expectFileError(writeTemp("cut.dae", dae.substr(0, dae.size() / 2)));
 }
 
@@ -136,20 +140,22 @@ std::string colladaWith(const std::string& from, const std::string& to) {
 
 TEST(ImportErrors, ColladaCountsBeyondTheFileAreRefusedBeforeReading) {
   // Assimp would reserve 720 million weights (14 s of page faults here) first.
-  const std::string message =
-      expectFileError(writeTemp("counts.dae", colladaWith("<vertex_weights count=\"72\">", "<vertex_weights count=\"720000000\">")));
+  const std::string message = expectFileError(
+      writeTemp("counts.dae", colladaWith("<vertex_weights count=\"72\">", "<vertex_weights count=\"720000000\">")));
   EXPECT_NE(message.find("line 170: count=\"720000000\" is more than the file holds"), std::string::npos) << message;
 }
 
 TEST(ImportErrors, ColladaThatMakesAssimpAbortIsRefused) {
   // An index past its source's values trips an assertion inside Assimp
   // (Debian builds it with assertions on), which aborts the process.
-  const std::string message = expectFileError(writeTemp("index.dae", colladaWith("<v> 0 0 0 1", "<v> 0 0 0 1999999999")));
+  const std::string message =
+      expectFileError(writeTemp("index.dae", colladaWith("<v> 0 0 0 1", "<v> 0 0 0 1999999999")));
   EXPECT_NE(message.find("the importer (Assimp) crashed"), std::string::npos) << message;
 }
 
 TEST(ImportErrors, ColladaNegativeWeightIsIgnored) {
-  const std::string path = writeTemp("negative.dae", colladaWith("skin_weights-array\" count=\"112\"> 1.0", "skin_weights-array\" count=\"112\"> -1.0"));
+  const std::string path = writeTemp("negative.dae", colladaWith("skin_weights-array\" count=\"112\"> 1.0",
+                                                                 "skin_weights-array\" count=\"112\"> -1.0"));
   const Character c = importCharacter(path);
   ASSERT_FALSE(c.meshes.empty());
   for (const Mesh& mesh : c.meshes)

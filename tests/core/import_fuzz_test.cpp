@@ -6,8 +6,8 @@
 #include <fstream>
 #include <random>
 
-#include <nlohmann/json.hpp>
 #include <unistd.h>
+#include <nlohmann/json.hpp>
 
 #include "core/io/character_import.h"
 #include "core/io/file_bytes.h"
@@ -27,7 +27,8 @@ void fuzz(const std::string& source, const std::string& extension, int rounds, i
   // Companion files (external buffers) beside the mutant.
   for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(kAssets + source).parent_path()))
     if (entry.path().extension() == ".bin")
-      std::filesystem::copy_file(entry.path(), dir / entry.path().filename(), std::filesystem::copy_options::overwrite_existing);
+      std::filesystem::copy_file(entry.path(), dir / entry.path().filename(),
+                                 std::filesystem::copy_options::overwrite_existing);
   const std::string path = (dir / ("mutant." + extension)).string();
   std::mt19937 rng(12111);
   int imported = 0, refused = 0;
@@ -69,10 +70,12 @@ void collectIntegers(nlohmann::json& j, std::vector<nlohmann::json*>& out) {
 // Integer fields (indices, counts, offsets, strides, component types) set to
 // hostile values: the bounds checks must catch every one.
 TEST(ImportFuzz, GltfIntegerFields) {
-  const nlohmann::json original = nlohmann::json::parse(loadFileText(kAssets + "characters/SimpleSkin/SimpleSkin.gltf"));
+  const nlohmann::json original =
+      nlohmann::json::parse(loadFileText(kAssets + "characters/SimpleSkin/SimpleSkin.gltf"));
   const auto dir = test::scratchDir("mq_fuzz");
   const std::string path = (dir / "integers.gltf").string();
-  const std::vector<int64_t> hostile = {0, 1, -1, 2, 3, 7, 255, 5126, 65535, 2147483647LL, 4294967295LL, 1000000000000LL};
+  const std::vector<int64_t> hostile = {
+      0, 1, -1, 2, 3, 7, 255, 5126, 65535, 2147483647LL, 4294967295LL, 1000000000000LL};
   std::mt19937 rng(12111);
   int refused = 0;
   for (int round = 0; round < 400; ++round) {
@@ -94,12 +97,15 @@ TEST(ImportFuzz, GltfIntegerFields) {
 
 TEST(ImportFuzz, GlbBytes) { fuzz("characters/CesiumMan/glTF-Binary/CesiumMan.glb", "glb", 120, 8); }
 
-TEST(ImportFuzz, SimpleSkinEmbedded) { fuzz("characters/SimpleSkin/SimpleSkin.gltf", "gltf", 300, 2, "0123456789AZaz+/=-,:"); }
+TEST(ImportFuzz, SimpleSkinEmbedded) {
+  fuzz("characters/SimpleSkin/SimpleSkin.gltf", "gltf", 300, 2, "0123456789AZaz+/=-,:");
+}
 
 TEST(ImportFuzz, BvhDigits) { fuzz("motion/makehuman_walk1.bvh", "bvh", 100, 4, "0123456789-. \nxyz{}"); }
 
 TEST(ImportFuzz, ColladaText) {
-  fuzz("characters/assimp_collada_library_animation_clips/library_animation_clips.dae", "dae", 60, 4, "0123456789 <>/\"#");
+  fuzz("characters/assimp_collada_library_animation_clips/library_animation_clips.dae", "dae", 60, 4,
+       "0123456789 <>/\"#");
 }
 
 }  // namespace

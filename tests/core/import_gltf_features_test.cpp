@@ -9,8 +9,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include <nlohmann/json.hpp>
 #include <unistd.h>
+#include <nlohmann/json.hpp>
 
 #include "core/character/posed_character.h"
 #include "core/io/character_import.h"
@@ -87,13 +87,16 @@ TEST(GltfFeatures, SparseMorphTargetWithCubicWeights) {
                       {{"buffer", 0}, {"byteOffset", times}, {"byteLength", 8}},
                       {{"buffer", 0}, {"byteOffset", weights}, {"byteLength", 24}}};
   g["accessors"] = {
-      {{"componentType", 5126}, {"count", 3}, {"type", "VEC3"},
-       {"sparse", {{"count", 2}, {"indices", {{"bufferView", 0}, {"componentType", 5121}}}, {"values", {{"bufferView", 1}}}}}},
+      {{"componentType", 5126},
+       {"count", 3},
+       {"type", "VEC3"},
+       {"sparse",
+        {{"count", 2}, {"indices", {{"bufferView", 0}, {"componentType", 5121}}}, {"values", {{"bufferView", 1}}}}}},
       {{"bufferView", 2}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}},
       {{"bufferView", 3}, {"componentType", 5126}, {"count", 2}, {"type", "SCALAR"}},
       {{"bufferView", 4}, {"componentType", 5126}, {"count", 6}, {"type", "SCALAR"}}};
-  g["meshes"] = {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"targets", {{{"POSITION", 1}}}}}}},
-                  {"weights", {0.25}}}};
+  g["meshes"] = {
+      {{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"targets", {{{"POSITION", 1}}}}}}}, {"weights", {0.25}}}};
   g["nodes"] = {{{"mesh", 0}}};
   g["scenes"] = {{{"nodes", {0}}}};
   g["animations"] = {{{"samplers", {{{"input", 2}, {"output", 3}, {"interpolation", "CUBICSPLINE"}}}},

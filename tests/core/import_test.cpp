@@ -29,7 +29,10 @@ const std::vector<Expected> kManifest = {
     {"RiggedSimple/RiggedSimple.gltf", 96, 2, 2, {{0.0416f, 2.083f}}},
     {"SimpleSkin/SimpleSkin.gltf", 10, 2, 2, {{0.0f, 5.5f}}},
     {"assimp_fbx_animation_with_skeleton/animation_with_skeleton.fbx", 4224, 14, 6, {{0.0f, 0.8333f}}},
-    {"assimp_collada_library_animation_clips/library_animation_clips.dae", 72, 5, 2,
+    {"assimp_collada_library_animation_clips/library_animation_clips.dae",
+     72,
+     5,
+     2,
      {{0.04167f, 0.625f}, {0.0f, 0.8333f}}},
 };
 
@@ -50,7 +53,8 @@ TEST(Import, CountsMatchManifest) {
 }
 
 TEST(Import, ColladaClipsAreNamed) {
-  const Character c = importCharacter(kCharacters + "assimp_collada_library_animation_clips/library_animation_clips.dae");
+  const Character c =
+      importCharacter(kCharacters + "assimp_collada_library_animation_clips/library_animation_clips.dae");
   ASSERT_EQ(c.clips.size(), 2u);
   EXPECT_EQ(c.findClip("bend"), 0);
   EXPECT_EQ(c.findClip("turn"), 1);
@@ -126,8 +130,7 @@ void expectBindPoseIsRigid(const Character& c) {
       const glm::mat4 other = world[m.skin.jointBones[j]] * m.skin.inverseBind[j];
       for (int col = 0; col < 4; ++col)
         for (int row = 0; row < 4; ++row)
-          EXPECT_NEAR(other[col][row], first[col][row], 1e-5f * scale)
-              << m.name << " joint " << j;
+          EXPECT_NEAR(other[col][row], first[col][row], 1e-5f * scale) << m.name << " joint " << j;
     }
   }
 }
@@ -143,9 +146,12 @@ float worstEdgeStretch(const Character& c, const PosedCharacter& rest, const Pos
     for (size_t t = 0; t < tri.size(); t += 3)
       for (int e = 0; e < 3; ++e) {
         const uint32_t a = tri[t + e], b = tri[t + (e + 1) % 3];
-        const float restLength = glm::distance(glm::vec3(r[3 * a], r[3 * a + 1], r[3 * a + 2]), glm::vec3(r[3 * b], r[3 * b + 1], r[3 * b + 2]));
-        const float posedLength = glm::distance(glm::vec3(p[3 * a], p[3 * a + 1], p[3 * a + 2]), glm::vec3(p[3 * b], p[3 * b + 1], p[3 * b + 2]));
-        if (restLength > 1e-6f) worst = std::max(worst, std::max(posedLength / restLength, restLength / std::max(posedLength, 1e-12f)));
+        const float restLength = glm::distance(glm::vec3(r[3 * a], r[3 * a + 1], r[3 * a + 2]),
+                                               glm::vec3(r[3 * b], r[3 * b + 1], r[3 * b + 2]));
+        const float posedLength = glm::distance(glm::vec3(p[3 * a], p[3 * a + 1], p[3 * a + 2]),
+                                                glm::vec3(p[3 * b], p[3 * b + 1], p[3 * b + 2]));
+        if (restLength > 1e-6f)
+          worst = std::max(worst, std::max(posedLength / restLength, restLength / std::max(posedLength, 1e-12f)));
       }
   }
   return worst;
@@ -187,13 +193,15 @@ TEST(Import, FbxSkinBindPoseAndClip) {
 }
 
 TEST(Import, ColladaSkinBindPoseAndClips) {
-  const Character c = importCharacter(kCharacters + "assimp_collada_library_animation_clips/library_animation_clips.dae");
+  const Character c =
+      importCharacter(kCharacters + "assimp_collada_library_animation_clips/library_animation_clips.dae");
   expectBindPoseIsRigid(c);
   expectPlausibleOverClips(c);
 }
 
 TEST(Import, GltfSkinBindPoseIsRigid) {
-  for (const char* f : {"CesiumMan/glTF/CesiumMan.gltf", "RiggedSimple/RiggedSimple.gltf", "SimpleSkin/SimpleSkin.gltf"})
+  for (const char* f :
+       {"CesiumMan/glTF/CesiumMan.gltf", "RiggedSimple/RiggedSimple.gltf", "SimpleSkin/SimpleSkin.gltf"})
     expectBindPoseIsRigid(importCharacter(kCharacters + f));
 }
 

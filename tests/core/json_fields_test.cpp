@@ -76,9 +76,7 @@ TEST(JsonFields, ElementsAndObjectsCarryTheirPath) {
 // The scene that crashed `simulate` (a length variation of 1e37 gave
 // strands of infinite length) and its neighbours are refused where read.
 TEST(JsonFields, HairStyleValuesAreRangeChecked) {
-  auto errorOf = [](const json& style) {
-    return fieldError([&] { hairSectionFromJson(json{{"style", style}}); });
-  };
+  auto errorOf = [](const json& style) { return fieldError([&] { hairSectionFromJson(json{{"style", style}}); }); };
   EXPECT_EQ(errorOf({{"length_variation", 1e37}}), "hair.style.length_variation: must be between 0 and 1");
   EXPECT_EQ(errorOf({{"max_strands", 1e9}}), "hair.style.max_strands: must be an integer");
   EXPECT_EQ(errorOf({{"max_strands", 1000000000}}), "hair.style.max_strands: must be an integer between 0 and 150000");
@@ -87,9 +85,13 @@ TEST(JsonFields, HairStyleValuesAreRangeChecked) {
   EXPECT_EQ(errorOf({{"root_color", {2, 0, 0}}}),
             "hair.style.root_color: must hold finite numbers of magnitude at most 1");
   EXPECT_EQ(errorOf({{"preset", "bob"}, {"length", -1}}), "hair.style.length: must be positive");
-  EXPECT_EQ(fieldError([&] { hairSectionFromJson(json{{"strands", -5}}); }),
+  EXPECT_EQ(fieldError([&] {
+              hairSectionFromJson(json{{"strands", -5}});
+            }),
             "hair.strands: must be an integer between 0 and 150000");
-  EXPECT_EQ(fieldError([&] { hairSectionFromJson(json{{"scalp", {{"kind", "faces"}, {"faces", {1, -2}}}}}); }),
+  EXPECT_EQ(fieldError([&] {
+              hairSectionFromJson(json{{"scalp", {{"kind", "faces"}, {"faces", {1, -2}}}}});
+            }),
             "hair.scalp.faces: must hold face indices (whole numbers from 0)");
 }
 
@@ -97,10 +99,13 @@ TEST(Utf8, FindsTheFirstInvalidByte) {
   EXPECT_EQ(firstInvalidUtf8("plain"), std::string::npos);
   EXPECT_EQ(firstInvalidUtf8("caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x98\x80"), std::string::npos);
   EXPECT_EQ(firstInvalidUtf8("ab\xff"), 2u);
-  EXPECT_EQ(firstInvalidUtf8("\xc0\xaf"), 0u);          // overlong '/'
-  EXPECT_EQ(firstInvalidUtf8("x\xed\xa0\x80"), 1u);     // a surrogate
-  EXPECT_EQ(firstInvalidUtf8("\xe2\x82"), 0u);          // cut short
-  EXPECT_EQ(repairedUtf8("a\xff" "b"), "a\xef\xbf\xbd" "b");
+  EXPECT_EQ(firstInvalidUtf8("\xc0\xaf"), 0u);       // overlong '/'
+  EXPECT_EQ(firstInvalidUtf8("x\xed\xa0\x80"), 1u);  // a surrogate
+  EXPECT_EQ(firstInvalidUtf8("\xe2\x82"), 0u);       // cut short
+  EXPECT_EQ(repairedUtf8("a\xff"
+                         "b"),
+            "a\xef\xbf\xbd"
+            "b");
   EXPECT_EQ(firstInvalidUtf8(repairedUtf8("\xc0\xaf\xe2\x82")), std::string::npos);
 }
 
@@ -113,10 +118,12 @@ TEST(IsolatedRun, ReportsSuccessFailureCrashAndTimeout) {
   EXPECT_NE(crash.problem.find("SIGABRT"), std::string::npos) << crash.problem;
   IsolationLimits quick;
   quick.seconds = 0.2;
-  const IsolatedOutcome hang = runIsolated([] {
-    for (;;) pause();
-    return true;
-  }, quick);
+  const IsolatedOutcome hang = runIsolated(
+      [] {
+        for (;;) pause();
+        return true;
+      },
+      quick);
   EXPECT_EQ(hang.problem, "took longer than 0 s");
 }
 

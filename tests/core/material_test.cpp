@@ -5,10 +5,10 @@
 #include <cmath>
 #include <filesystem>
 
+#include "core/character/posed_character.h"
 #include "core/io/character_import.h"
 #include "core/material/material_override.h"
 #include "core/mesh/tangents.h"
-#include "core/character/posed_character.h"
 #include "core/scene/open_scene.h"
 #include "core/util/error.h"
 #include "gltf_test_util.h"
@@ -82,8 +82,9 @@ std::string writeTwoMaterialQuad(const std::string& name, json materialOverrides
                     {{"bufferView", 3}, {"componentType", 5123}, {"count", 3}, {"type", "SCALAR"}},
                     {{"bufferView", 4}, {"componentType", 5123}, {"count", 3}, {"type", "SCALAR"}}};
   const json attributes = {{"POSITION", 0}, {"NORMAL", 1}, {"TEXCOORD_0", 2}};
-  g["meshes"] = {{{"primitives", {{{"attributes", attributes}, {"indices", 3}, {"material", 1}},
-                                  {{"attributes", attributes}, {"indices", 4}, {"material", 0}}}}}};
+  g["meshes"] = {{{"primitives",
+                   {{{"attributes", attributes}, {"indices", 3}, {"material", 1}},
+                    {{"attributes", attributes}, {"indices", 4}, {"material", 0}}}}}};
   g["nodes"] = {{{"mesh", 0}}};
   g["scenes"] = {{{"nodes", {0}}}};
   g["images"] = {{{"uri", "missing_albedo.png"}}, {{"uri", "data:image/png;base64,iVBORw0KGgo="}}};
@@ -349,12 +350,14 @@ TEST(StaticMeshes, ObjHeadOpensWeldedWithAUnitNotice) {
 TEST(StaticMeshes, PlyAndStlOpen) {
   const auto dir = test::scratchDir("mq_static");
   const std::string ply = (dir / "tet.ply").string(), stl = (dir / "tet.stl").string();
-  std::ofstream(ply) << "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
-                        "element face 4\nproperty list uchar int vertex_indices\nend_header\n"
-                        "0 0 0\n1 0 0\n0 1.7 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
-  std::ofstream(stl) << "solid t\nfacet normal 0 0 -1\nouter loop\nvertex 0 0 0\nvertex 0 170 0\nvertex 100 0 0\n"
-                        "endloop\nendfacet\nfacet normal 0 -1 0\nouter loop\nvertex 0 0 0\nvertex 100 0 0\nvertex 0 0 100\n"
-                        "endloop\nendfacet\nendsolid t\n";
+  std::ofstream(ply)
+      << "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+         "element face 4\nproperty list uchar int vertex_indices\nend_header\n"
+         "0 0 0\n1 0 0\n0 1.7 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  std::ofstream(stl)
+      << "solid t\nfacet normal 0 0 -1\nouter loop\nvertex 0 0 0\nvertex 0 170 0\nvertex 100 0 0\n"
+         "endloop\nendfacet\nfacet normal 0 -1 0\nouter loop\nvertex 0 0 0\nvertex 100 0 0\nvertex 0 0 100\n"
+         "endloop\nendfacet\nendsolid t\n";
   const Character tet = importCharacter(ply);
   ASSERT_EQ(tet.meshes.size(), 1u);
   EXPECT_EQ(tet.meshes[0].triangleCount(), 4u);

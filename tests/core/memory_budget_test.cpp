@@ -26,7 +26,8 @@ TEST(MemoryBudget, DefaultAndConfigured) {
     checkMemoryBudget("a bake of 9 frames", 300.0 * 1048576);
     FAIL() << "not refused";
   } catch (const Error& e) {
-    EXPECT_STREQ(e.what(), "a bake of 9 frames would need about 300 MB (the limit is 100 MB; MANNEQUIN_MEMORY_LIMIT_MB sets it)");
+    EXPECT_STREQ(e.what(),
+                 "a bake of 9 frames would need about 300 MB (the limit is 100 MB; MANNEQUIN_MEMORY_LIMIT_MB sets it)");
   }
 }
 
@@ -40,7 +41,8 @@ TEST(MemoryBudget, GroomRefusesMoreHairThanTheBudget) {
     groom->grow(section.style, 10000);  // 10k x 1024 points: about 625 MB
     FAIL() << "not refused";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("hair: 10000 strands of 1024 points would need about"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("hair: 10000 strands of 1024 points would need about"), std::string::npos)
+        << e.what();
   }
   EXPECT_NO_THROW(groom->grow(section.style, 200));
 }

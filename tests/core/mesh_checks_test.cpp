@@ -14,9 +14,10 @@ struct SoupMesh {
 // Unit cube [0,1]^3, 12 triangles wound counter-clockwise from outside.
 SoupMesh cube(float x0 = 0.0f) {
   SoupMesh m;
-  for (int i = 0; i < 8; ++i) m.positions.insert(m.positions.end(), {x0 + float(i & 1), float((i >> 1) & 1), float((i >> 2) & 1)});
-  m.triangles = {0, 2, 1, 1, 2, 3,  4, 5, 6, 5, 7, 6,  0, 1, 4, 1, 5, 4,
-                 2, 6, 3, 3, 6, 7,  0, 4, 2, 2, 4, 6,  1, 3, 5, 3, 7, 5};
+  for (int i = 0; i < 8; ++i)
+    m.positions.insert(m.positions.end(), {x0 + float(i & 1), float((i >> 1) & 1), float((i >> 2) & 1)});
+  m.triangles = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
+                 2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
   return m;
 }
 

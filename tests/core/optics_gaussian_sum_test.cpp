@@ -32,10 +32,10 @@ struct FitError {
 FitError fitError(const Dipole& dipole, const GaussianSum& fit) {
   const double farOut = 30.0 / dipole.sigmaTr();
   auto squared = [](double x) { return x * x; };
-  const double error = logSimpson([&](double r) { return squared(dipole.radialReflectance(r) - fit.radial(r)) * kTwoPi * r; },
-                                  1e-6, farOut, 20000);
-  const double norm = logSimpson([&](double r) { return squared(dipole.radialReflectance(r)) * kTwoPi * r; }, 1e-6,
-                                 farOut, 20000);
+  const double error = logSimpson(
+      [&](double r) { return squared(dipole.radialReflectance(r) - fit.radial(r)) * kTwoPi * r; }, 1e-6, farOut, 20000);
+  const double norm =
+      logSimpson([&](double r) { return squared(dipole.radialReflectance(r)) * kTwoPi * r; }, 1e-6, farOut, 20000);
   double cdf = 0.0;
   for (double r = 1e-3; r < farOut; r *= 1.02)
     cdf = std::max(cdf, std::abs(fit.reflectanceWithin(r) - dipole.reflectanceWithin(r)));
@@ -80,8 +80,8 @@ TEST(OpticsGaussianSum, NnlsMeetsTheKktConditions) {
 TEST(OpticsGaussianSum, EightGaussiansFitTheSkin1Dipole) {  // O17
   for (int c = 0; c < 3; ++c) {
     const Dipole dipole = skin1(c);
-    const GaussianSum fit = fitGaussianSum([&](double r) { return dipole.radialReflectance(r); }, 8, 0.005, 60.0,
-                                           30.0 / dipole.sigmaTr());
+    const GaussianSum fit =
+        fitGaussianSum([&](double r) { return dipole.radialReflectance(r); }, 8, 0.005, 60.0, 30.0 / dipole.sigmaTr());
     const FitError e = fitError(dipole, fit);
     EXPECT_LE(e.relativeL2, 0.02) << "channel " << c;
     EXPECT_LE(e.cdf, 0.01) << "channel " << c;
@@ -91,8 +91,8 @@ TEST(OpticsGaussianSum, EightGaussiansFitTheSkin1Dipole) {  // O17
 TEST(OpticsGaussianSum, SixGaussiansFitWithinTheLooserBound) {  // O17, K = 6
   for (int c = 0; c < 3; ++c) {
     const Dipole dipole = skin1(c);
-    const GaussianSum fit = fitGaussianSum([&](double r) { return dipole.radialReflectance(r); }, 6, 0.005, 60.0,
-                                           30.0 / dipole.sigmaTr());
+    const GaussianSum fit =
+        fitGaussianSum([&](double r) { return dipole.radialReflectance(r); }, 6, 0.005, 60.0, 30.0 / dipole.sigmaTr());
     const FitError e = fitError(dipole, fit);
     EXPECT_LE(e.relativeL2, 0.06) << "channel " << c;
     EXPECT_LE(e.cdf, 0.03) << "channel " << c;

@@ -65,8 +65,8 @@ TEST(OpticsHairBsdf, AzimuthalLobeIntegratesToOne) {
     const double s = hairAzimuthalScale(beta);
     EXPECT_NEAR(test::simpson([&](double x) { return trimmedLogistic(x, s); }, -kPi, kPi, 20000), 1.0, 1e-6);
     for (int p = 0; p < 3; ++p)
-      EXPECT_NEAR(test::simpson([&](double phi) { return hairAzimuthal(phi, p, s, 0.4, 0.25); }, -kPi, kPi, 20000),
-                  1.0, 1e-6);
+      EXPECT_NEAR(test::simpson([&](double phi) { return hairAzimuthal(phi, p, s, 0.4, 0.25); }, -kPi, kPi, 20000), 1.0,
+                  1e-6);
   }
 }
 
@@ -88,10 +88,10 @@ TEST(OpticsHairBsdf, WhiteFurnaceReturnsAllTheLight) {
     HairFibre fibre;
     fibre.longitudinalRoughness = fibre.azimuthalRoughness = beta;
     for (const auto& [wo, h] : {std::pair{direction(10.0, 0.3), -0.6}, std::pair{direction(-40.0, 2.0), 0.3}}) {
-        const Rgb e = sphereIntegral([&](const glm::dvec3& wi) { return hairScattering(fibre, wi, wo, h); });
-        std::printf("furnace beta %.1f theta_o %+5.1f h %+.1f: %.6f\n", beta, std::asin(wo.x) * 180.0 / kPi, h, e[0]);
-        EXPECT_NEAR(e[0], 1.0, 0.01) << "beta " << beta << " h " << h;
-        EXPECT_NEAR(e[2], e[0], 1e-12);
+      const Rgb e = sphereIntegral([&](const glm::dvec3& wi) { return hairScattering(fibre, wi, wo, h); });
+      std::printf("furnace beta %.1f theta_o %+5.1f h %+.1f: %.6f\n", beta, std::asin(wo.x) * 180.0 / kPi, h, e[0]);
+      EXPECT_NEAR(e[0], 1.0, 0.01) << "beta " << beta << " h " << h;
+      EXPECT_NEAR(e[2], e[0], 1e-12);
     }
   }
 }
@@ -103,8 +103,8 @@ TEST(OpticsHairBsdf, WhiteFurnaceThroughTheShaderTable) {
     fibre.longitudinalRoughness = fibre.azimuthalRoughness = beta;
     const HairAzimuthalTable table = hairAzimuthalTable(fibre);
     const glm::dvec3 wo = direction(25.0, 0.0);
-    const Rgb e = sphereIntegral([&](const glm::dvec3& wi) { return hairScatteringFromTable(fibre, table, wi, wo); },
-                                 400, 360);
+    const Rgb e =
+        sphereIntegral([&](const glm::dvec3& wi) { return hairScatteringFromTable(fibre, table, wi, wo); }, 400, 360);
     std::printf("furnace (table) beta %.1f: %.6f\n", beta, e[0]);
     EXPECT_NEAR(e[0], 1.0, 0.01);
   }
@@ -152,8 +152,8 @@ TEST(OpticsHairBsdf, ReciprocalOnTheMirrorConeWithoutTilt) {
     }
   // Any longitudinal pair at all, for M alone.
   const double v = hairLongitudinalVariance(0.3);
-  EXPECT_NEAR(hairLongitudinal(0.3, std::sqrt(0.91), -0.6, 0.8, v), hairLongitudinal(-0.6, 0.8, 0.3, std::sqrt(0.91), v),
-              1e-12);
+  EXPECT_NEAR(hairLongitudinal(0.3, std::sqrt(0.91), -0.6, 0.8, v),
+              hairLongitudinal(-0.6, 0.8, 0.3, std::sqrt(0.91), v), 1e-12);
 }
 
 // Each lobe peaks where Marschner's table puts it: theta_h = alpha_p with
@@ -213,8 +213,8 @@ TEST(OpticsHairBsdf, PresetsOrderedByMelanin) {
   EXPECT_LT(luminance(black), luminance(brown));
   EXPECT_LT(luminance(brown), luminance(blond));
   EXPECT_LT(luminance(blond), luminance(grey));
-  EXPECT_GT(red[0], 1.5 * red[2]);      // red: red over blue
-  EXPECT_LT(grey[0], 1.3 * grey[2]);    // grey: nearly neutral
+  EXPECT_GT(red[0], 1.5 * red[2]);    // red: red over blue
+  EXPECT_LT(grey[0], 1.3 * grey[2]);  // grey: nearly neutral
   HairFibre white;
   EXPECT_NEAR(luminance(hairMeanAlbedo(white)), 1.0, 1e-9);
   EXPECT_THROW(hairPigmentPreset("green"), std::exception);

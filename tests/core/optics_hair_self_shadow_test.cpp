@@ -23,8 +23,7 @@ void expectSlabDarkensWithDepth(optics::HairShadowMethod method) {
   for (int layer = 0; layer < 10; ++layer)
     for (int row = 0; row < 20; ++row)
       for (int i = 0; i < 16; ++i)
-        strands.points.insert(strands.points.end(),
-                              {0.01f * float(i), -0.005f * float(layer), 0.002f * float(row)});
+        strands.points.insert(strands.points.end(), {0.01f * float(i), -0.005f * float(layer), 0.002f * float(row)});
   optics::HairShadowSettings settings;
   settings.minShadow = 0.0f;
   settings.perStrand = 0.04f;  // weak, so the deepest layers do not all saturate near 0

@@ -24,8 +24,11 @@ glm::dvec3 direction(double cosTheta, double phi) {
 double singleScatterAlbedo(const ScatteringLayer& layer) {
   return simpson(
       [&](double mu) {
-        return mu * simpson([&](double phi) { return hanrahanKruegerBrdf(layer, {0, 0, 1}, direction(mu, phi)); }, 0,
-                            2 * kPi, 64);
+        return mu * simpson(
+                        [&](double phi) {
+                          return hanrahanKruegerBrdf(layer, {0, 0, 1}, direction(mu, phi));
+                        },
+                        0, 2 * kPi, 64);
       },
       1e-9, 1.0, 4000);
 }
@@ -33,9 +36,11 @@ double singleScatterAlbedo(const ScatteringLayer& layer) {
 // 2 pi W int_0^1 p(-mu) mu / (1 + mu) (1 - e^{-tau (1 + 1/mu)}) dmu.
 double expectedAlbedo(double albedo, double g, double opticalDepth) {
   return 2 * kPi * albedo *
-         simpson([&](double mu) {
-           return henyeyGreenstein(-mu, g) * mu / (1 + mu) * -std::expm1(-opticalDepth * (1 + 1 / mu));
-         }, 1e-9, 1.0, 20000);
+         simpson(
+             [&](double mu) {
+               return henyeyGreenstein(-mu, g) * mu / (1 + mu) * -std::expm1(-opticalDepth * (1 + 1 / mu));
+             },
+             1e-9, 1.0, 20000);
 }
 
 TEST(OpticsHanrahanKrueger, IsotropicHalfSpaceAlbedoIsSeeligersClosedForm) {  // O11

@@ -91,8 +91,8 @@ TEST(OpticsMcSlab, AnisotropicSingleScatteringMatchesTheClosedForm) {  // O11 wi
   const std::vector<SlabLayer> halfSpace = {{1.0 - w, w, g, kInfinity, 1.0}};
   const std::int64_t n = 100000;
   const SlabResult r = simulateSlab(halfSpace, settings(n, 12));
-  const double expected =
-      2 * std::numbers::pi * w * simpson([g](double mu) { return henyeyGreenstein(-mu, g) * mu / (1 + mu); }, 0, 1, 2000);
+  const double expected = 2 * std::numbers::pi * w *
+                          simpson([g](double mu) { return henyeyGreenstein(-mu, g) * mu / (1 + mu); }, 0, 1, 2000);
   EXPECT_NEAR(r.singleScatterFraction(), expected, 4.0 * standardError(expected, n));
 }
 
@@ -119,9 +119,7 @@ TEST(OpticsMcSlab, DiffuseAlbedoMatchesVanDeHulst) {
 TEST(OpticsMcSlab, DipoleTotalMatchesTheRandomWalk) {
   const double g = 0.85;
   const std::int64_t n = 100000;
-  const struct {
-    double albedo, tolerance;
-  } cases[] = {{0.95, 0.01}, {0.925, 0.01}, {0.84, 0.02}, {0.68, 0.08}};
+  const struct { double albedo, tolerance; } cases[] = {{0.95, 0.01}, {0.925, 0.01}, {0.84, 0.02}, {0.68, 0.08}};
   for (const auto& c : cases) {
     const double sigmaSPrime = c.albedo, sigmaA = 1.0 - c.albedo;  // sigma_t' = 1 mm^-1
     const std::vector<SlabLayer> halfSpace = {{sigmaA, sigmaSPrime / (1.0 - g), g, kInfinity, 1.0}};

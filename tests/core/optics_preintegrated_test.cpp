@@ -33,7 +33,8 @@ TEST(OpticsPreintegrated, EveryRingIntegratesToTwo) {  // O19
 double worstDeviationFromLambert(const LineSpreadKernel& kernel, double radius) {
   double worst = 0.0;
   for (double theta = 0.0; theta <= kPi; theta += kPi / 1440)
-    worst = std::max(worst, std::abs(preintegratedDiffuse(kernel, theta, 1.0 / radius) - std::max(std::cos(theta), 0.0)));
+    worst =
+        std::max(worst, std::abs(preintegratedDiffuse(kernel, theta, 1.0 / radius) - std::max(std::cos(theta), 0.0)));
   return worst;
 }
 

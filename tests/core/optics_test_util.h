@@ -15,8 +15,12 @@ inline double simpson(const std::function<double(double)>& f, double a, double b
 
 // int_lo^hi f(r) dr on a log-spaced grid (r = e^u, dr = r du), Simpson in u.
 inline double logSimpson(const std::function<double(double)>& f, double lo, double hi, int intervals) {
-  return simpson([&](double u) { const double r = std::exp(u); return f(r) * r; }, std::log(lo), std::log(hi),
-                 intervals);
+  return simpson(
+      [&](double u) {
+        const double r = std::exp(u);
+        return f(r) * r;
+      },
+      std::log(lo), std::log(hi), intervals);
 }
 
 // Standard error of a fraction p estimated from n Bernoulli trials.

@@ -36,9 +36,7 @@ nlohmann::json referenceIndex() {
   return nlohmann::json::parse(in);
 }
 
-TEST(ReferencePoses, IndexListsPoses) {
-  EXPECT_GE(referenceIndex()["references"].size(), 12u);
-}
+TEST(ReferencePoses, IndexListsPoses) { EXPECT_GE(referenceIndex()["references"].size(), 12u); }
 
 TEST(ReferencePoses, EveryPoseMatchesWithinTolerance) {
   const nlohmann::json index = referenceIndex();
@@ -64,8 +62,8 @@ TEST(ReferencePoses, EveryPoseMatchesWithinTolerance) {
         worst = std::max(worst, glm::length(p - expected[v]));
       }
     EXPECT_LE(worst, tolerance) << "worst vertex error " << worst;
-    std::cout << "[ reference ] " << obj << " from " << ref["source"].get<std::string>() << " max error " << worst << " ("
-              << worst / ref["bbox_diagonal"].get<double>() << " x bbox diagonal)\n";
+    std::cout << "[ reference ] " << obj << " from " << ref["source"].get<std::string>() << " max error " << worst
+              << " (" << worst / ref["bbox_diagonal"].get<double>() << " x bbox diagonal)\n";
   }
 }
 

@@ -134,7 +134,8 @@ TEST(SectionCones, SharpBendMakesACreaseInsteadOfCrossing) {
   for (size_t v = 0; v < cones.meshes[0].vertexCount(); ++v) {
     const double restHeight = cones.meshes[0].positions[3 * v + 1] - 1.0;
     const double height = glm::dot(glm::dvec3(p[3 * v], p[3 * v + 1], p[3 * v + 2]) - glm::dvec3(0, 1, 0), normal);
-    if (std::abs(restHeight) > 1e-6 && glm::length(glm::dvec3(cones.meshes[0].position(v)) - glm::dvec3(0, 1, 0)) < 0.6) {
+    if (std::abs(restHeight) > 1e-6 &&
+        glm::length(glm::dvec3(cones.meshes[0].position(v)) - glm::dvec3(0, 1, 0)) < 0.6) {
       EXPECT_GT(restHeight * height, -1e-9) << "vertex " << v;
     }
   }

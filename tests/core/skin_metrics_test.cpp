@@ -66,8 +66,8 @@ Bend bendTube(SkinningMethod method, float degrees) {
   posed.evaluate(c, -1, 0.0f, &edits, nullptr);
   const auto& tris = c.meshes[0].triangles;
   const OuterSection s = outerSection(c.meshes[0].positions, posed.meshes()[0].positions, tris, tubeBend(degrees));
-  const double v = localVolumeRatio(c.meshes[0].positions, posed.meshes()[0].positions, tris, {0, 1, 0},
-                                    {0, 1, 0}, 0.3);
+  const double v =
+      localVolumeRatio(c.meshes[0].positions, posed.meshes()[0].positions, tris, {0, 1, 0}, {0, 1, 0}, 0.3);
   return {s.thickness, s.halfArea, v};
 }
 
@@ -100,8 +100,8 @@ TEST(SkinMetrics, RigidMotionChangesNothing) {
   posed.evaluate(c, -1, 0.0f, &edits, nullptr);
   const glm::dvec3 joint(posed.worldFromBone()[1][3]);
   const auto& tris = c.meshes[0].triangles;
-  EXPECT_NEAR(localVolumeRatio(c.meshes[0].positions, posed.meshes()[0].positions, tris, {0, 1, 0}, joint, 0.3),
-              1.0, 1e-5);
+  EXPECT_NEAR(localVolumeRatio(c.meshes[0].positions, posed.meshes()[0].positions, tris, {0, 1, 0}, joint, 0.3), 1.0,
+              1e-5);
 }
 
 TEST(SkinMetrics, WeldMergesBitEqualPositionsAcrossMeshes) {

@@ -4,13 +4,12 @@
 #include <random>
 
 #include "core/character/posed_character.h"
+#include "core/skin_test_util.h"
 #include "core/skinning/skin_deformer.h"
 #include "core/util/thread_pool.h"
-#include "core/skin_test_util.h"
 
 namespace mq {
 namespace {
-
 
 TEST(Skeleton, WorldIsParentWorldTimesLocal) {
   Skeleton s = twoBoneChain();
@@ -36,7 +35,6 @@ TEST(Skeleton, ParentFromOffsetAppliesAboveBone) {
   const auto world = s.worldTransforms(s.restPose());
   EXPECT_FLOAT_EQ(world[0][0][0], 2.0f);
 }
-
 
 TEST(Skinning, BindPoseReproducesRestMesh) {
   const Character c = tubeCharacter(40, 24, false);

@@ -37,7 +37,8 @@ std::vector<float> transformed(const std::vector<float>& p, const glm::mat4& m) 
 TEST(SurfaceCompression, RigidMotionIsNotCompressed) {
   const test::FlatMesh sphere = test::makeIcosphere(0.1f, 3);
   const SurfaceCompression compression(sphere.positions, sphere.triangles);
-  const glm::mat4 rigid = glm::rotate(glm::translate(glm::mat4(1.0f), {0.3f, -1.0f, 2.0f}), 1.1f, glm::normalize(glm::vec3(1, 2, 3)));
+  const glm::mat4 rigid =
+      glm::rotate(glm::translate(glm::mat4(1.0f), {0.3f, -1.0f, 2.0f}), 1.1f, glm::normalize(glm::vec3(1, 2, 3)));
   std::vector<float> out;
   compression.evaluate(transformed(sphere.positions, rigid), out);
   ASSERT_EQ(out.size(), 4 * compression.vertexCount());

@@ -138,7 +138,8 @@ TEST(WeightRegeneration, MannequinHandStaysOnItsChainAndHelpersComeBack) {
 }
 
 TEST(WeightRegeneration, SeamVerticesOfAnImportedSkinKeepOneWeight) {
-  Character c = importCharacter(std::string(MANNEQUIN_SHARED_DIR) + "/assets/characters/CesiumMan/glTF-Binary/CesiumMan.glb");
+  Character c =
+      importCharacter(std::string(MANNEQUIN_SHARED_DIR) + "/assets/characters/CesiumMan/glTF-Binary/CesiumMan.glb");
   WeightSettings settings;
   settings.regenerate = settings.smooth = true;
   regenerateWeights(c, settings, nullptr);

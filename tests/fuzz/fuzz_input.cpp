@@ -15,13 +15,15 @@ namespace mq::fuzz {
 
 std::string inputFile(const uint8_t* data, size_t size, const std::string& extension) {
   static const std::filesystem::path dir = [] {
-    const std::filesystem::path base = std::filesystem::exists("/dev/shm") ? "/dev/shm" : std::filesystem::temp_directory_path();
+    const std::filesystem::path base =
+        std::filesystem::exists("/dev/shm") ? "/dev/shm" : std::filesystem::temp_directory_path();
     auto d = base / ("mannequin_fuzz_" + std::to_string(getpid()));
     std::filesystem::create_directories(d);
     return d;
   }();
   const std::string path = (dir / ("input." + extension)).string();
-  std::ofstream(path, std::ios::binary | std::ios::trunc).write(reinterpret_cast<const char*>(data), std::streamsize(size));
+  std::ofstream(path, std::ios::binary | std::ios::trunc)
+      .write(reinterpret_cast<const char*>(data), std::streamsize(size));
   return path;
 }
 

@@ -10,7 +10,8 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  static const mq::Character walk = mq::importCharacter(std::string(MANNEQUIN_SHARED_DIR) + "/assets/motion/cmu_01_01.bvh");
+  static const mq::Character walk =
+      mq::importCharacter(std::string(MANNEQUIN_SHARED_DIR) + "/assets/motion/cmu_01_01.bvh");
   const std::string path = mq::fuzz::inputFile(data, size, "map");
   mq::fuzz::expectOnlyErrors([&] { mq::matchBones(walk.skeleton, mq::fuzz::mannequin().skeleton, path); });
   return 0;

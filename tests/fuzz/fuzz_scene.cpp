@@ -16,8 +16,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const bool hasGarments = doc.garments.is_array() && !doc.garments.empty();
     if (hasGarments)
       for (size_t i = 0; i < doc.garments.size(); ++i)
-        mq::fuzz::expectOnlyErrors([&] { mq::garmentFromJson(doc.garments[i], "garments[" + std::to_string(i) + "]"); });
-    mq::fuzz::expectOnlyErrors([&] { mq::cloth::parseClothScene(doc.cloth, doc.colliders, "scene.mqscene", hasGarments); });
+        mq::fuzz::expectOnlyErrors(
+            [&] { mq::garmentFromJson(doc.garments[i], "garments[" + std::to_string(i) + "]"); });
+    mq::fuzz::expectOnlyErrors(
+        [&] { mq::cloth::parseClothScene(doc.cloth, doc.colliders, "scene.mqscene", hasGarments); });
     // What is read must write back and read again.
     mq::parseSceneDocument(mq::toJson(doc).dump(), "again.mqscene");
   });

@@ -1,6 +1,6 @@
-// The hair shader: strands combed over a sphere head, drawn with Kajiya-Kay shading, shifted highlights and self-shadowing.
-// Checks that hair shows, that it has highlights and shadowed inner strands,
-// that the self-shadow term darkens with depth, and compares a baseline.
+// The hair shader: strands combed over a sphere head, drawn with Kajiya-Kay shading, shifted highlights and
+// self-shadowing. Checks that hair shows, that it has highlights and shadowed inner strands, that the self-shadow term
+// darkens with depth, and compares a baseline.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,9 +20,9 @@
 #include "core/hair/character_groom.h"
 #include "core/hair/hairstyle.h"
 #include "core/hair/head_fit.h"
+#include "core/hair_test_util.h"
 #include "core/io/character_import.h"
 #include "core/optics/hair_bsdf.h"
-#include "core/hair_test_util.h"
 #include "render/hair_actor.h"
 #include "render/image_checks.h"
 #include "render/offscreen.h"
@@ -32,9 +32,9 @@ namespace mq {
 namespace {
 
 constexpr int kWidth = 320, kHeight = 320;
+using test::combedStrands;
 using test::kHeadCenter;
 using test::kHeadRadius;
-using test::combedStrands;
 
 class HairRenderTest : public ::testing::Test {
  protected:
@@ -222,9 +222,9 @@ TEST_F(HairRenderTest, PhysicalTrtHighlightIsShiftedAndTintedAgainstR) {
   const Highlight r = highlightOf(renderer.capture(), mask);
   hair.setShading(physical(shading, "blond", optics::kHairTRT));
   const Highlight trt = highlightOf(renderer.capture(), mask);
-  std::printf("R highlight at (%.1f, %.1f), level %.0f, red/blue %.2f; TRT at (%.1f, %.1f), level %.0f, red/blue %.2f\n",
-              r.centre.x, r.centre.y, r.level, r.redOverBlue, trt.centre.x, trt.centre.y, trt.level,
-              trt.redOverBlue);
+  std::printf(
+      "R highlight at (%.1f, %.1f), level %.0f, red/blue %.2f; TRT at (%.1f, %.1f), level %.0f, red/blue %.2f\n",
+      r.centre.x, r.centre.y, r.level, r.redOverBlue, trt.centre.x, trt.centre.y, trt.level, trt.redOverBlue);
   ASSERT_GT(r.level, 8.0);  // a highlight at all (8-bit levels)
   ASSERT_GT(trt.level, 8.0);
   EXPECT_GT(trt.centre.y - r.centre.y, 4.0);  // toward the tips
@@ -253,8 +253,8 @@ TEST(HairRenderDefault, DefaultMannequinWithDefaultHairstyle) {
   hair.setStrands(groom->strands());
   hair.setColors(style.rootColor, style.tipColor);
   view.addProp(hair.actor());
-  for (const auto& [name, offset] : {std::pair{"front", glm::vec3(0.45f, 0.15f, 1.0f)},
-                                     std::pair{"back", glm::vec3(-0.45f, 0.2f, -1.0f)}}) {
+  for (const auto& [name, offset] :
+       {std::pair{"front", glm::vec3(0.45f, 0.15f, 1.0f)}, std::pair{"back", glm::vec3(-0.45f, 0.2f, -1.0f)}}) {
     view.setCamera(head + offset, head + glm::vec3(0.0f, -0.15f, 0.0f));
     hair.setVisible(false);
     const render::RgbImage bare = renderer.capture();
@@ -294,7 +294,7 @@ TEST_F(HairRenderTest, OpacityShadowMapsShadeInnerStrands) {
       sumFlat += luminance(flat.at(x, y));
       sumCounted += luminance(counted.at(x, y));
     }
-  EXPECT_GT(sumFlat, sumMaps * 1.03);  // the maps shadow the hair
+  EXPECT_GT(sumFlat, sumMaps * 1.03);            // the maps shadow the hair
   EXPECT_NEAR(sumMaps / sumCounted, 1.0, 0.05);  // about as much as the exact count
   const std::string why = test::checkAgainstBaseline(image, "hair_draped_sphere_osm");
   EXPECT_TRUE(why.empty()) << why;

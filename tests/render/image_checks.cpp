@@ -81,8 +81,8 @@ std::string checkAgainstBaseline(const render::RgbImage& image, const std::strin
   if (d.rms <= tolerance.maxRms && d.changedFraction <= tolerance.maxChangedFraction) return "";
   render::writePng(image, actual.string());
   std::ostringstream why;
-  why << "differs from " << baseline.string() << ": rms " << d.rms << " levels (max " << tolerance.maxRms
-      << "), " << 100.0 * d.changedFraction << "% of pixels changed (max " << 100.0 * tolerance.maxChangedFraction
+  why << "differs from " << baseline.string() << ": rms " << d.rms << " levels (max " << tolerance.maxRms << "), "
+      << 100.0 * d.changedFraction << "% of pixels changed (max " << 100.0 * tolerance.maxChangedFraction
       << "%); the image is " << actual.string();
   if (expected.width == image.width && expected.height == image.height) {
     const auto diffPath = temporaryDir() / (name + ".diff.png");

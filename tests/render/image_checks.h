@@ -23,8 +23,8 @@ struct ImageDifference {
 ImageDifference compareImages(const render::RgbImage& a, const render::RgbImage& b);
 
 struct Foreground {
-  double fraction = 0.0;   // of all pixels
-  glm::dvec2 centre{0.0};  // centre of mass, 0..1 across, 0..1 down
+  double fraction = 0.0;          // of all pixels
+  glm::dvec2 centre{0.0};         // centre of mass, 0..1 across, 0..1 down
   glm::dvec2 min{1.0}, max{0.0};  // bounding box, same units
 };
 // Pixels of `image` that differ from `background` by more than 24 levels.

@@ -62,8 +62,9 @@ std::string writeQuad(const std::string& name, const json& material, const std::
                     {{"bufferView", 1}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
                     {{"bufferView", 2}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}},
                     {{"bufferView", 3}, {"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}}};
-  g["meshes"] = {{{"primitives", {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}, {"TEXCOORD_0", 2}}},
-                                   {"indices", 3}, {"material", 0}}}}}};
+  g["meshes"] = {
+      {{"primitives",
+        {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}, {"TEXCOORD_0", 2}}}, {"indices", 3}, {"material", 0}}}}}};
   g["nodes"] = {{{"mesh", 0}}};
   g["scenes"] = {{{"nodes", {0}}}};
   g["materials"] = {material};
@@ -180,7 +181,8 @@ double coveredFraction(const render::RgbImage& image, const render::RgbImage& em
 TEST_F(MaterialRenderTest, AlphaMaskCutsWhereTheTextureIsTransparent) {
   const json texture = {{"baseColorTexture", {{"index", 0}}}, {"metallicFactor", 0.0}};
   const auto png = halfTransparentPng();
-  show(importCharacter(writeQuad("mask.gltf", {{"pbrMetallicRoughness", texture}, {"alphaMode", "MASK"}}, {pngImage(png)})));
+  show(importCharacter(
+      writeQuad("mask.gltf", {{"pbrMetallicRoughness", texture}, {"alphaMode", "MASK"}}, {pngImage(png)})));
   lookStraightAtQuad();
   render::OffscreenRenderer renderer(view, kWidth, kHeight);
   const render::RgbImage empty = withoutCharacter(renderer);
@@ -206,8 +208,8 @@ TEST_F(MaterialRenderTest, NormalMapShadesAFlatQuad) {
   lookStraightAtQuad();
   render::OffscreenRenderer renderer(view, kWidth, kHeight);
   const render::RgbImage flat = renderer.capture();
-  show(importCharacter(writeQuad("bumpy.gltf", {{"pbrMetallicRoughness", base}, {"normalTexture", {{"index", 0}}}},
-                                 {pngImage(bumps)})));
+  show(importCharacter(
+      writeQuad("bumpy.gltf", {{"pbrMetallicRoughness", base}, {"normalTexture", {{"index", 0}}}}, {pngImage(bumps)})));
   lookStraightAtQuad();
   const render::RgbImage bumpy = renderer.capture();
   EXPECT_GT(test::compareImages(flat, bumpy).rms, 3.0);
@@ -220,7 +222,8 @@ TEST_F(MaterialRenderTest, NormalMapShadesAFlatQuad) {
 }
 
 TEST_F(MaterialRenderTest, UnreadableImageIsAWarningAndTheFactorsRemain) {
-  const json material = {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"baseColorFactor", {0.1, 0.6, 0.1, 1}}}}};
+  const json material = {
+      {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"baseColorFactor", {0.1, 0.6, 0.1, 1}}}}};
   // Bytes that claim to be a PNG and are not one.
   const std::vector<uint8_t> broken{0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A, 1, 2, 3};
   show(importCharacter(writeQuad("broken_image.gltf", material, {pngImage(broken)})));
@@ -284,8 +287,10 @@ TEST(MaterialTexturesFuzz, MutatedImagesDecodeOrWarn) {
       render::MaterialTextures textures(images);
       TextureRef ref;
       ref.image = 0;
-      if (textures.colour(ref)) ++decoded;
-      else ++warned;
+      if (textures.colour(ref))
+        ++decoded;
+      else
+        ++warned;
       EXPECT_EQ(textures.warnings().size(), textures.colour(ref) ? 0u : 1u);
     }
     EXPECT_EQ(decoded + warned, 60);

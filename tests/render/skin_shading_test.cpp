@@ -75,17 +75,17 @@ TerminatorBand renderTerminatorBand(float radius) {
   keep(image, radius < 0.1f ? "skin_sphere_small" : "skin_sphere_large");
   const render::ViewLights lights = render::gatherViewLights(renderer);
   EXPECT_EQ(lights.count, 1);
-  const glm::vec3 toLight = glm::normalize(glm::vec3(lights.towardLightVC[0][0], lights.towardLightVC[0][1],
-                                                     lights.towardLightVC[0][2]));
-  EXPECT_NEAR(toLight.y, 0.0f, 1e-4f);  // horizontal: a flipped row order changes nothing
+  const glm::vec3 toLight =
+      glm::normalize(glm::vec3(lights.towardLightVC[0][0], lights.towardLightVC[0][1], lights.towardLightVC[0][2]));
+  EXPECT_NEAR(toLight.y, 0.0f, 1e-4f);                   // horizontal: a flipped row order changes nothing
   const double tanHalf = std::tan(15.0 * M_PI / 180.0);  // VTK's default view angle, 30 degrees
   const glm::dvec3 eye(0.0, 0.0, distance);
   double red = 0.0, green = 0.0;
   TerminatorBand band;
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x) {
-      const glm::dvec3 ray = glm::normalize(glm::dvec3((2.0 * (x + 0.5) / kSize - 1.0) * tanHalf,
-                                                       (1.0 - 2.0 * (y + 0.5) / kSize) * tanHalf, -1.0));
+      const glm::dvec3 ray = glm::normalize(
+          glm::dvec3((2.0 * (x + 0.5) / kSize - 1.0) * tanHalf, (1.0 - 2.0 * (y + 0.5) / kSize) * tanHalf, -1.0));
       const double b = glm::dot(eye, ray), disc = b * b - (glm::dot(eye, eye) - double(radius) * radius);
       if (disc <= 0.0) continue;
       const glm::dvec3 normal = (eye + (-b - std::sqrt(disc)) * ray) / double(radius);

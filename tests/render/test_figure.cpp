@@ -78,11 +78,10 @@ Character makeTestFigure() {
   const int chest = add("chest", spine, {0, 1.25f, 0});
   const int neck = add("neck", chest, {0, 1.47f, 0});
   const int head = add("head", neck, {0, 1.57f, 0});
-  std::vector<Part> parts = {blob(pelvis, {0, 0.96f, 0}, {0.16f, 0.1f, 0.1f}),
-                             blob(spine, {0, 1.12f, 0}, {0.13f, 0.12f, 0.09f}),
-                             blob(chest, {0, 1.32f, 0}, {0.17f, 0.16f, 0.1f}),
-                             limb(neck, {0, 1.44f, 0}, {0, 1.56f, 0}, 0.045f),
-                             blob(head, {0, 1.65f, 0.01f}, {0.085f, 0.11f, 0.1f})};
+  std::vector<Part> parts = {
+      blob(pelvis, {0, 0.96f, 0}, {0.16f, 0.1f, 0.1f}), blob(spine, {0, 1.12f, 0}, {0.13f, 0.12f, 0.09f}),
+      blob(chest, {0, 1.32f, 0}, {0.17f, 0.16f, 0.1f}), limb(neck, {0, 1.44f, 0}, {0, 1.56f, 0}, 0.045f),
+      blob(head, {0, 1.65f, 0.01f}, {0.085f, 0.11f, 0.1f})};
   for (const float side : {1.0f, -1.0f}) {
     const std::string s = side > 0 ? "_l" : "_r";  // the figure's left is +x (it faces +z)
     const int clavicle = add("clavicle" + s, chest, {side * 0.04f, 1.42f, 0});

@@ -152,8 +152,10 @@ TEST(BakeCache, FileIsLittleEndianInTheDocumentedLayout) {
   const std::vector<uint8_t> bytes = smallBytes();
   ASSERT_EQ(bytes.size(), kSmallSize);
   EXPECT_EQ(std::string(bytes.begin(), bytes.begin() + 6), "MQBAKE");
-  EXPECT_EQ(std::vector<uint8_t>(bytes.begin() + 6, bytes.begin() + 14), (std::vector<uint8_t>{1, 0, 0, 0, 2, 0, 0, 0}));
-  EXPECT_EQ(std::vector<uint8_t>(bytes.begin() + 16, bytes.begin() + 20), (std::vector<uint8_t>{0xFF, 0xFF, 0xFF, 0xFF}));
+  EXPECT_EQ(std::vector<uint8_t>(bytes.begin() + 6, bytes.begin() + 14),
+            (std::vector<uint8_t>{1, 0, 0, 0, 2, 0, 0, 0}));
+  EXPECT_EQ(std::vector<uint8_t>(bytes.begin() + 16, bytes.begin() + 20),
+            (std::vector<uint8_t>{0xFF, 0xFF, 0xFF, 0xFF}));
   EXPECT_EQ(bytes[48], 3);  // vertex count
   EXPECT_EQ(bytes[52], 2);  // frame count
 }

@@ -84,7 +84,8 @@ void bumpySphere(float phase, std::vector<float>& positions, std::vector<uint32_
   triangles.clear();
   auto at = [&](float theta, float phi) {
     const float r = 0.1f * (1.0f + 0.15f * std::sin(5.0f * phi + phase) * std::sin(3.0f * theta));
-    positions.insert(positions.end(), {r * std::sin(theta) * std::cos(phi), r * std::cos(theta), r * std::sin(theta) * std::sin(phi)});
+    positions.insert(positions.end(),
+                     {r * std::sin(theta) * std::cos(phi), r * std::cos(theta), r * std::sin(theta) * std::sin(phi)});
   };
   at(0.0f, 0.0f);  // north pole: vertex 0
   for (int i = 1; i < kRings; ++i)
@@ -96,7 +97,8 @@ void bumpySphere(float phase, std::vector<float>& positions, std::vector<uint32_
     triangles.insert(triangles.end(), {0, ring(1, j + 1), ring(1, j)});
     triangles.insert(triangles.end(), {south, ring(kRings - 1, j), ring(kRings - 1, j + 1)});
     for (int i = 1; i + 1 < kRings; ++i)
-      triangles.insert(triangles.end(), {ring(i, j), ring(i, j + 1), ring(i + 1, j + 1), ring(i, j), ring(i + 1, j + 1), ring(i + 1, j)});
+      triangles.insert(triangles.end(), {ring(i, j), ring(i, j + 1), ring(i + 1, j + 1), ring(i, j), ring(i + 1, j + 1),
+                                         ring(i + 1, j)});
   }
 }
 
@@ -197,17 +199,23 @@ std::vector<glm::vec3> probePoints(const BodyCollider& body, uint32_t seed, size
     const glm::vec3 n = glm::length(normal) > 0.0f ? glm::normalize(normal) : glm::vec3(0.0f, 0.0f, 1.0f);
     const float u = unit(random), v = unit(random) * (1.0f - u);
     switch (k % 5) {
-      case 0: points.push_back(a); break;
-      case 1: points.push_back(a + u * (b - a)); break;
-      case 2: points.push_back(a + u * (b - a) + v * (c - a) + (unit(random) - 0.5f) * 2e-6f * n); break;
-      default: points.push_back(a + u * (b - a) + v * (c - a) + (unit(random) - 0.2f) * spread * n);
+      case 0:
+        points.push_back(a);
+        break;
+      case 1:
+        points.push_back(a + u * (b - a));
+        break;
+      case 2:
+        points.push_back(a + u * (b - a) + v * (c - a) + (unit(random) - 0.5f) * 2e-6f * n);
+        break;
+      default:
+        points.push_back(a + u * (b - a) + v * (c - a) + (unit(random) - 0.2f) * spread * n);
     }
   }
   return points;
 }
 
-void expectBruteForceNearest(const BodyCollider& body, const std::vector<glm::vec3>& points, float radius,
-                             int& found) {
+void expectBruteForceNearest(const BodyCollider& body, const std::vector<glm::vec3>& points, float radius, int& found) {
   const size_t triangleCount = body.triangles().size() / 3;
   for (size_t i = 0; i < points.size(); ++i) {
     const glm::vec3& p = points[i];
@@ -233,7 +241,8 @@ TEST(BodyCollider, NearestTriangleIsTheBruteForceNearestExactly) {
   for (float fraction : {0.0f, 0.5f}) {
     body.moveTo(fraction);
     body.moveTo(fraction);  // a move that does not move it keeps the trees as they are
-    for (float radius : {0.005f, 0.02f, 0.08f}) expectBruteForceNearest(body, probePoints(body, 3, 1500, 0.03f), radius, found);
+    for (float radius : {0.005f, 0.02f, 0.08f})
+      expectBruteForceNearest(body, probePoints(body, 3, 1500, 0.03f), radius, found);
   }
   EXPECT_GT(found, 3000);
 }
@@ -270,7 +279,8 @@ TEST(BodyCollider, NearestTriangleAmongSliversIsTheBruteForceNearest) {
   for (uint32_t k = 0; k < 60; ++k) {
     const glm::vec3 a(0.05f * unit(random), 0.05f * unit(random), 0.05f * unit(random));
     const glm::vec3 along = 0.01f * glm::vec3(unit(random), unit(random), unit(random));
-    const glm::vec3 aside = float(std::pow(10.0f, -1.0f - 5.0f * (unit(random) + 1.0f))) * glm::vec3(unit(random), unit(random), unit(random));
+    const glm::vec3 aside = float(std::pow(10.0f, -1.0f - 5.0f * (unit(random) + 1.0f))) *
+                            glm::vec3(unit(random), unit(random), unit(random));
     // A sliver: its third corner near the line of the first two (on it, or at a corner, for every tenth).
     const glm::vec3 b = a + along, c = k % 10 == 0 ? a : a + (0.5f + 0.5f * unit(random)) * along + aside;
     for (const glm::vec3& v : {a, b, c}) positions.insert(positions.end(), {v.x, v.y, v.z});
@@ -305,7 +315,9 @@ TEST(BodyCollider, QueriesFromTheLastQueryAnswerAsAFreshSearch) {
     for (int round = 0; round < 6; ++round)
       for (size_t i = 0; i < points.size(); ++i) {
         // Every third round from the same point; otherwise a few mm on, or a jump.
-        if (round % 3 != 2) points[i] += round == 4 ? glm::vec3(where(random), 0, 0) : glm::vec3(step(random), step(random), step(random));
+        if (round % 3 != 2)
+          points[i] +=
+              round == 4 ? glm::vec3(where(random), 0, 0) : glm::vec3(step(random), step(random), step(random));
         // The wide ones prove the narrow ones' misses, and answer them from the same point.
         const float radius = round == 0 || round == 5 ? 0.05f : 0.02f;
         BodyContact fresh, kept;
@@ -335,8 +347,8 @@ TEST(BodyCollider, QueriesFromTheLastQueryAnswerAsAFreshSearch) {
       }
   }
   EXPECT_GT(found, 1000);
-  EXPECT_GT(provenEmpty, 500);                   // far points moved a little: no search
-  EXPECT_GT(provenEmpty, 3500);  // with the clearance of a miss (3151 with its radius alone)
+  EXPECT_GT(provenEmpty, 500);                       // far points moved a little: no search
+  EXPECT_GT(provenEmpty, 3500);                      // with the clearance of a miss (3151 with its radius alone)
   EXPECT_GT(queries - provenEmpty - searched, 700);  // unmoved points: the answer again
 }
 

@@ -7,10 +7,10 @@
 #include <optional>
 
 #include "cloth_test_scenes.h"
-#include "garment_test_garments.h"
 #include "core/character/posed_character.h"
 #include "core/garment/garment_json.h"
 #include "core/scene/open_scene.h"
+#include "garment_test_garments.h"
 #include "sim/cloth/cloth_scene_io.h"
 #include "sim/cloth/collision/body_feature_contact.h"
 #include "sim/garment/garment_scene.h"
@@ -22,11 +22,23 @@ namespace {
 // with half-width `halfWidth`, apex `height` above it.
 void spike(float x, float z, float base, float halfWidth, float height, std::vector<float>& positions,
            std::vector<uint32_t>& triangles) {
-  positions = {x - halfWidth, base, z - halfWidth, x + halfWidth, base, z - halfWidth,
-               x + halfWidth, base, z + halfWidth, x - halfWidth, base, z + halfWidth,
-               x,            base + height, z};
-  triangles = {0, 1, 2, 0, 2, 3,                        // base, facing down
-               0, 4, 1, 1, 4, 2, 2, 4, 3, 3, 4, 0};   // sides
+  positions = {x - halfWidth,
+               base,
+               z - halfWidth,
+               x + halfWidth,
+               base,
+               z - halfWidth,
+               x + halfWidth,
+               base,
+               z + halfWidth,
+               x - halfWidth,
+               base,
+               z + halfWidth,
+               x,
+               base + height,
+               z};
+  triangles = {0, 1, 2, 0, 2, 3,                     // base, facing down
+               0, 4, 1, 1, 4, 2, 2, 4, 3, 3, 4, 0};  // sides
 }
 
 // A closed box, outward triangles, from corner `lo` to corner `hi`.
@@ -142,8 +154,8 @@ TEST(BodyFeatureContact, TheTreeFindsThePairsOfTestingEveryTriangle) {
   const std::vector<uint32_t>& triangles = garment->simulator().triangles();
   const float thickness = garment->simulator().settings().collisionThickness, dt = 1.0f / spec.fps;
 
-  BodyFeatureContact tree(triangles, placed.x), everyTriangle(triangles, placed.x,
-                                                               BodyFeatureContact::Search::EveryTriangle);
+  BodyFeatureContact tree(triangles, placed.x),
+      everyTriangle(triangles, placed.x, BodyFeatureContact::Search::EveryTriangle);
   BodyCollider body;
   body.setMesh(rest, bodyTriangles, 0.02f);
   ClothState cloth = placed;

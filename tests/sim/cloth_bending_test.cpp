@@ -30,7 +30,8 @@ float tipDroop(BendingModel model, float bendStiffness, float length) {
     for (int c = 0; c < 2; ++c) sim.pinVertex(strip.index(row, c));
   for (int frame = 0; frame < 96; ++frame) sim.step(1.0f / 24.0f);
   EXPECT_TRUE(test::allFinite(sim));
-  const glm::vec3 tip = 0.5f * (sim.positions()[strip.index(0, columns - 1)] + sim.positions()[strip.index(1, columns - 1)]);
+  const glm::vec3 tip =
+      0.5f * (sim.positions()[strip.index(0, columns - 1)] + sim.positions()[strip.index(1, columns - 1)]);
   return 1.0f - tip.y;
 }
 

@@ -97,13 +97,15 @@ TEST(AabbTree, SkippedNodesLeaveOutExactlyTheirOwnPairs) {
       if (boxes[i].overlaps(boxes[j]) && !(side[i] == 1 && side[j] == 1)) expected.insert({i, j});
   auto skipLeft = [&](int32_t node) { return node == root.left; };
   for (const AabbTree::PairJob& job : tree.pairJobs(16, skipLeft))
-    tree.runJob(job, [&](uint32_t i, uint32_t j) { found.insert(std::minmax(i, j)); }, skipLeft);
+    tree.runJob(
+        job, [&](uint32_t i, uint32_t j) { found.insert(std::minmax(i, j)); }, skipLeft);
   EXPECT_EQ(found, expected);
   const Box probe{glm::vec3(0.3f), glm::vec3(0.7f)};
   std::set<uint32_t> expectedHits, hits;
   for (uint32_t i = 0; i < boxes.size(); ++i)
     if (boxes[i].overlaps(probe) && side[i] != 2) expectedHits.insert(i);
-  tree.query(probe, [&](uint32_t i) { hits.insert(i); }, [&](int32_t node) { return node == root.right; });
+  tree.query(
+      probe, [&](uint32_t i) { hits.insert(i); }, [&](int32_t node) { return node == root.right; });
   ASSERT_FALSE(expectedHits.empty());
   EXPECT_EQ(hits, expectedHits);
 }
@@ -249,7 +251,8 @@ TEST(SelfCollision, CandidatesDoNotDependOnTreeRefits) {
   SelfCollision reused(mesh.triangles, mesh.vertexCount());
   for (int step = 0; step < 20; ++step) {
     ClothState start = sim.state();
-    for (size_t i = 0; i < start.size(); ++i) start.x[i] += glm::vec3(0.0f, 0.0005f * std::sin(0.3f * float(step + i)), 0.0f);
+    for (size_t i = 0; i < start.size(); ++i)
+      start.x[i] += glm::vec3(0.0f, 0.0005f * std::sin(0.3f * float(step + i)), 0.0f);
     ClothState moved = start;
     for (size_t i = 0; i < moved.size(); ++i)
       moved.x[i] += glm::vec3(0.001f * std::cos(0.7f * float(i + step)), -0.002f * float(i % 3), 0.0f);
@@ -339,8 +342,10 @@ TEST(SelfCollision, MotionBoundsLeaveOutNoCandidate) {
     ClothState moved = start;
     for (size_t i = 0; i < moved.size(); ++i) {
       const glm::vec3 r = start.x[i] - axisPoint;
-      const glm::vec3 turned(std::cos(angle) * r.x + std::sin(angle) * r.z, r.y, -std::sin(angle) * r.x + std::cos(angle) * r.z);
-      moved.x[i] = axisPoint + turned + 0.001f * glm::vec3(std::sin(float(i)), std::cos(1.3f * float(i)), std::sin(0.7f * float(i)));
+      const glm::vec3 turned(std::cos(angle) * r.x + std::sin(angle) * r.z, r.y,
+                             -std::sin(angle) * r.x + std::cos(angle) * r.z);
+      moved.x[i] = axisPoint + turned +
+                   0.001f * glm::vec3(std::sin(float(i)), std::cos(1.3f * float(i)), std::sin(0.7f * float(i)));
     }
     for (const float thickness : {0.004f, 0.008f}) {
       SelfCollision bounded(mesh.triangles, mesh.vertexCount()), unbounded(mesh.triangles, mesh.vertexCount());
@@ -378,7 +383,8 @@ ClothState turned(const ClothState& state, glm::vec3 axisPoint, float angle) {
   ClothState out = state;
   for (glm::vec3& p : out.x) {
     const glm::vec3 r = p - axisPoint;
-    p = axisPoint + glm::vec3(std::cos(angle) * r.x + std::sin(angle) * r.z, r.y, -std::sin(angle) * r.x + std::cos(angle) * r.z);
+    p = axisPoint +
+        glm::vec3(std::cos(angle) * r.x + std::sin(angle) * r.z, r.y, -std::sin(angle) * r.x + std::cos(angle) * r.z);
   }
   return out;
 }
@@ -405,8 +411,8 @@ TEST(SelfCollision, SearchesFindThePairsOfAnExhaustiveTest) {
       for (const float thickness : {settings.selfThickness, 0.01f}) {
         const Candidates searched = candidatesOf(mesh, start, end, thickness, false);
         const Candidates reference = candidatesOf(mesh, start, end, thickness, true);
-        const std::string where = "step " + std::to_string(step) + (swung ? " swung" : "") + ", thickness " +
-                                  std::to_string(thickness);
+        const std::string where =
+            "step " + std::to_string(step) + (swung ? " swung" : "") + ", thickness " + std::to_string(thickness);
         EXPECT_EQ(searched.vertexTriangle, reference.vertexTriangle) << where;
         EXPECT_EQ(searched.edgeEdge, reference.edgeEdge) << where;
         (swung ? swungVertexTriangle : vertexTriangle) += reference.vertexTriangle.size();

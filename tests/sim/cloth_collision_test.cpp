@@ -29,14 +29,16 @@ void uvSphere(float radius, int segments, int rings, std::vector<float>& positio
   for (int s = 0; s < segments; ++s) triangles.insert(triangles.end(), {0, at(1, s), at(1, s + 1)});
   for (int r = 1; r + 1 < rings; ++r)
     for (int s = 0; s < segments; ++s)
-      triangles.insert(triangles.end(), {at(r, s), at(r + 1, s), at(r + 1, s + 1), at(r, s), at(r + 1, s + 1), at(r, s + 1)});
-  for (int s = 0; s < segments; ++s) triangles.insert(triangles.end(), {bottom, at(rings - 1, s + 1), at(rings - 1, s)});
+      triangles.insert(triangles.end(),
+                       {at(r, s), at(r + 1, s), at(r + 1, s + 1), at(r, s), at(r + 1, s + 1), at(r, s + 1)});
+  for (int s = 0; s < segments; ++s)
+    triangles.insert(triangles.end(), {bottom, at(rings - 1, s + 1), at(rings - 1, s)});
 }
 
 void expectDrapedOverSphere(const ClothSimulator& sim, float radius) {
   EXPECT_TRUE(test::allFinite(sim));
   EXPECT_EQ(sim.countPenetrating(), 0);
-  EXPECT_LT(sim.stats().boundsMin.y, 0.0f);           // hangs down around the sphere
+  EXPECT_LT(sim.stats().boundsMin.y, 0.0f);            // hangs down around the sphere
   EXPECT_GT(sim.stats().boundsMax.y, radius - 0.01f);  // rests on its top
   EXPECT_LT(sim.stats().boundsMax.y, radius + 0.03f);
   EXPECT_LE(sim.stats().maxStretchEver, 1.1f);
@@ -226,7 +228,8 @@ void swingALegInATrouserLeg(CgPreconditioner preconditioner) {
   auto at = [&](int r, int a) { return uint32_t(r * around + a % around); };
   for (int r = 0; r + 1 < rows; ++r)
     for (int a = 0; a < around; ++a)
-      tube.triangles.insert(tube.triangles.end(), {at(r, a), at(r + 1, a), at(r + 1, a + 1), at(r, a), at(r + 1, a + 1), at(r, a + 1)});
+      tube.triangles.insert(tube.triangles.end(),
+                            {at(r, a), at(r + 1, a), at(r + 1, a + 1), at(r, a), at(r + 1, a + 1), at(r, a + 1)});
   ClothSettings settings;
   settings.maxRefinement = 1;  // one solver step per frame, like the garment scenes
   settings.collisionThickness = 0.004f;

@@ -151,7 +151,8 @@ TEST(ClothForces, SpringImplicitProductMatchesTheAssembledMatrix) {
     EXPECT_LT(glm::length(bulk[v] - expected[v]), tolerance) << v;
     EXPECT_LT(glm::length(split[v] - expected[v]), tolerance) << v;
     for (int c = 0; c < 3; ++c)
-      EXPECT_LT(glm::length(diagonal[v][c] - expectedDiagonal[v][c]), 1e-4f * (1.0f + glm::length(expectedDiagonal[v][c])));
+      EXPECT_LT(glm::length(diagonal[v][c] - expectedDiagonal[v][c]),
+                1e-4f * (1.0f + glm::length(expectedDiagonal[v][c])));
   }
 }
 

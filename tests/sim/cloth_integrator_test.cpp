@@ -40,8 +40,8 @@ std::unique_ptr<ClothSimulator> smallHangingSheet(IntegratorKind kind, int colum
 }
 
 TEST(ClothIntegrators, EachIsStableAndFiniteOnASmallScene) {
-  for (IntegratorKind kind : {IntegratorKind::SymplecticEuler, IntegratorKind::Verlet, IntegratorKind::RK4,
-                              IntegratorKind::ImplicitEuler}) {
+  for (IntegratorKind kind :
+       {IntegratorKind::SymplecticEuler, IntegratorKind::Verlet, IntegratorKind::RK4, IntegratorKind::ImplicitEuler}) {
     auto sim = smallHangingSheet(kind);
     for (int frame = 0; frame < 24; ++frame) sim->step(1.0f / 24.0f);
     EXPECT_TRUE(test::allFinite(*sim)) << integratorName(kind);
@@ -267,7 +267,8 @@ TEST(ClothIntegrators, TwoLevelHandlesPatchesWithoutAFreeVertex) {
   const auto jacobi = run(CgPreconditioner::BlockJacobi), twoLevel = run(CgPreconditioner::TwoLevel);
   const ClothMesh mesh = test::horizontalSheetMesh(24, 0.5f, {0, 1, 0});
   float moved = 0.0f;
-  for (size_t i = 0; i < mesh.vertexCount(); ++i) moved = std::max(moved, glm::length(jacobi[i] - vec3At(mesh.positions, i)));
+  for (size_t i = 0; i < mesh.vertexCount(); ++i)
+    moved = std::max(moved, glm::length(jacobi[i] - vec3At(mesh.positions, i)));
   EXPECT_GT(moved, 0.02f);  // the free edge bends down
   EXPECT_LT(largestDistance(jacobi, twoLevel), 0.01f * moved) << "moved " << moved;
 }

@@ -77,7 +77,7 @@ TEST(ClothLayers, ASheetDroppedOnASheetOnTheFloorRestsOnIt) {
   }
   const float thickness = sheetSettings().cloth.collisionThickness;
   const std::vector<float> innerNow = inner.positions(), outerNow = outer.positions();
-  EXPECT_LT(maxY(innerNow), 2.0f * thickness);            // the inner sheet lies on the floor
+  EXPECT_LT(maxY(innerNow), 2.0f * thickness);                   // the inner sheet lies on the floor
   EXPECT_GT(minY(outerNow), maxY(innerNow) + 0.5f * thickness);  // the outer one on it, not through it
   EXPECT_LT(maxY(outerNow), maxY(innerNow) + 3.0f * thickness);  // and has come to rest there
 }
@@ -125,7 +125,7 @@ TEST(ClothLayers, TheColliderSaysNothingBeyondABoundaryEdge) {
   SurfaceContact contact;
   ASSERT_TRUE(surface.nearestContact({0.05f, -0.004f, 0.03f}, 0.02f, contact));  // behind the middle
   EXPECT_NEAR(contact.signedDistance, -0.004f, 1e-5f);
-  EXPECT_NEAR(contact.normal.y, 1.0f, 1e-4f);  // out is up, through the sheet
+  EXPECT_NEAR(contact.normal.y, 1.0f, 1e-4f);                                   // out is up, through the sheet
   ASSERT_TRUE(surface.nearestContact({0.05f, 0.003f, 0.03f}, 0.02f, contact));  // in front
   EXPECT_NEAR(contact.signedDistance, 0.003f, 1e-5f);
   EXPECT_FALSE(surface.nearestContact({0.21f, -0.002f, 0.03f}, 0.02f, contact));  // beyond the edge x = 0.2

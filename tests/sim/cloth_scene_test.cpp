@@ -96,12 +96,14 @@ TEST(ClothScene, BadValuesNameTheFileAndTheKey) {
   EXPECT_NE(errorFor({{"air_damping", "nan"}}).find("cloth.air_damping: must be a number"), std::string::npos);
   EXPECT_NE(errorFor({{"gravity", {0, 1}}}).find("cloth.gravity: must be an array of 3 numbers"), std::string::npos);
   EXPECT_NE(errorFor({{"fabric", "velvet"}}).find("unknown fabric preset 'velvet'"), std::string::npos);
-  EXPECT_NE(errorFor({{"fabric", {{"stretch", -1}}}}).find("cloth.fabric.stretch: must be positive"), std::string::npos);
+  EXPECT_NE(errorFor({{"fabric", {{"stretch", -1}}}}).find("cloth.fabric.stretch: must be positive"),
+            std::string::npos);
   EXPECT_NE(errorFor({{"garment", {{"columns", 1}}}}).find("cloth.garment.columns"), std::string::npos);
   EXPECT_NE(errorFor(json::object(), json::array({{{"type", "cone"}}})).find("colliders[0].type: unknown collider"),
             std::string::npos);
   EXPECT_NE(errorFor(json()).find("no cloth section"), std::string::npos);
-  EXPECT_NE(errorFor({{"bake_frames", 0}}).find("cloth.bake_frames: must be an integer between 1 and 100000"), std::string::npos);
+  EXPECT_NE(errorFor({{"bake_frames", 0}}).find("cloth.bake_frames: must be an integer between 1 and 100000"),
+            std::string::npos);
   EXPECT_NE(errorFor({{"cg_preconditioner", "multigrid"}})
                 .find("cloth.cg_preconditioner: unknown preconditioner 'multigrid' (known: block_jacobi, two_level)"),
             std::string::npos);

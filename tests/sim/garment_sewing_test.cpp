@@ -11,9 +11,9 @@
 #include "core/garment/body_measurements.h"
 #include "core/garment/parametric_garments.h"
 #include "core/io/character_import.h"
+#include "garment_test_garments.h"
 #include "sim/garment/garment_sewing.h"
 #include "sim/garment/garment_simulation.h"
-#include "garment_test_garments.h"
 
 namespace mq {
 namespace {
@@ -114,10 +114,12 @@ SewnGarment sewOn(const Character& body, const std::string& type, float edge, in
   out.penetrating = sim.simulator().penetratingVertices();
   out.finalStretch = sim.stats().maxStretch;
   out.bounds = boundsOf(x);
-  std::printf("%s on %s: %zu vertices, seam gap %.3f m, welded after %d frames (gap %.4f m), bounds y %.3f..%.3f, stretch %.3f, "
-              "%d inside the body (%d by the solver's test)\n",
-              type.c_str(), body.name.c_str(), out.vertices, out.initialGap, out.sewingFrames, out.gapAtWeld, out.bounds.min.y,
-              out.bounds.max.y, out.finalStretch, out.insideBody, out.penetrating);
+  std::printf(
+      "%s on %s: %zu vertices, seam gap %.3f m, welded after %d frames (gap %.4f m), bounds y %.3f..%.3f, stretch "
+      "%.3f, "
+      "%d inside the body (%d by the solver's test)\n",
+      type.c_str(), body.name.c_str(), out.vertices, out.initialGap, out.sewingFrames, out.gapAtWeld, out.bounds.min.y,
+      out.bounds.max.y, out.finalStretch, out.insideBody, out.penetrating);
   return out;
 }
 
@@ -265,8 +267,8 @@ TEST(GarmentSewing, ShirtStartedFromItsDrapeWithPinsChosenOnItKeepsItsShape) {
     const std::vector<float> x = warm.positions();
     float pinMoved = 0.0f;
     for (uint32_t v : pins) pinMoved = std::max(pinMoved, glm::length(vec3At(x, v) - vec3At(drape, v)));
-    std::printf("every %d: settled %.3f, at start %.3f, after 5 steps %.3f, pins moved %.4f m\n", every, settled, atStart,
-                largest(warm.vertexStretch()), pinMoved);
+    std::printf("every %d: settled %.3f, at start %.3f, after 5 steps %.3f, pins moved %.4f m\n", every, settled,
+                atStart, largest(warm.vertexStretch()), pinMoved);
     EXPECT_LT(largest(warm.vertexStretch()), std::max(settled, 1.1f) + 0.005f) << "pins every " << every;
     EXPECT_LT(pinMoved, 1e-3f);
   }

@@ -8,9 +8,9 @@
 
 #include "core/garment/garment_json.h"
 #include "core/util/error.h"
+#include "garment_test_garments.h"
 #include "sim/garment/garment_scene.h"
 #include "sim/garment/garment_simulation.h"
-#include "garment_test_garments.h"
 
 namespace mq {
 namespace {

@@ -9,10 +9,10 @@
 #include "core/garment/garment.h"
 #include "core/scene/scene_document.h"
 #include "core/util/error.h"
+#include "garment_test_garments.h"
 #include "sim/garment/drape_schedule.h"
 #include "sim/garment/garment_scene.h"
 #include "sim/garment/garment_simulation.h"
-#include "garment_test_garments.h"
 
 namespace mq {
 namespace {
@@ -57,7 +57,7 @@ TEST(GarmentSnapshot, RestoredSimulationContinuesLikeTheOriginal) {
   EXPECT_LT(maxDifference(restored.positions(), original.positions()), 1e-3f);
   const std::vector<float> x = restored.positions();
   EXPECT_NEAR(x[3 * pinned + 1], mesh.position(pinned).y, 1e-4f);  // the pin held through the restore
-  EXPECT_LT(*std::min_element(x.begin() + 1, x.end()), 1.0f);     // and the rest fell
+  EXPECT_LT(*std::min_element(x.begin() + 1, x.end()), 1.0f);      // and the rest fell
 }
 
 TEST(GarmentSnapshot, SnapshotOfAnotherGarmentIsRefused) {
@@ -136,7 +136,7 @@ TEST(GarmentSnapshot, StartFromDrapeRefusesAnotherMeshOrNonFinitePositions) {
   drape[4] = NAN;
   EXPECT_THROW(sim.startFromDrape(drape, {}), Error);
   EXPECT_THROW(sim.startFromDrape(mesh.positions, std::vector<float>(9, 0.0f)), Error);  // a body it was not built with
-  EXPECT_FALSE(sim.welded());  // refused: nothing changed
+  EXPECT_FALSE(sim.welded());                                                            // refused: nothing changed
 }
 
 TEST(GarmentSheet, SheetFallsOnItsColliderAndKeepsItsPins) {

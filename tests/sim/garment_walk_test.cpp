@@ -88,7 +88,8 @@ TEST(GarmentWalk, TrousersKeepTheBentKneeCovered) {
     sim->step(dt, &body);
     maxStretch = std::max(maxStretch, sim->stats().maxStretch);
     if (frame < 21) continue;
-    const int exposed = skinInFrontOfTheCloth(body, triangles, sim->positions(), sim->triangles(), knee - 0.12f, knee + 0.12f);
+    const int exposed =
+        skinInFrontOfTheCloth(body, triangles, sim->positions(), sim->triangles(), knee - 0.12f, knee + 0.12f);
     std::printf("frame %d: %d knee vertices in front of the cloth, %d cloth vertices inside, stretch %.4f\n", frame,
                 exposed, sim->simulator().penetratingVertices(), sim->stats().maxStretch);
     worstFrame = std::max(worstFrame, exposed);

@@ -13,9 +13,9 @@
 #include "core/character/default_mannequin.h"
 #include "core/hair/character_groom.h"
 #include "core/hair/hairstyle.h"
-#include "sim/hair/hair_colliders.h"
 #include "sim/hair/child_follow.h"
 #include "sim/hair/hair_bake.h"
+#include "sim/hair/hair_colliders.h"
 #include "sim/hair/hair_simulator.h"
 
 namespace mq {
@@ -204,8 +204,8 @@ TEST(HairSim, ChildrenFollowTheirGuides) {
     }
   HairSimulator sim;
   sim.setRest(guides);
-  const glm::mat4 moved = glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(0.3f, 0.2f, 0.0f)), 1.2f,
-                                      glm::vec3(0.0f, 1.0f, 0.0f));
+  const glm::mat4 moved =
+      glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(0.3f, 0.2f, 0.0f)), 1.2f, glm::vec3(0.0f, 1.0f, 0.0f));
   for (int step = 0; step < 90; ++step) sim.step(kDt, moved);
   std::vector<float> childNow;
   followGuides(children, sim, childNow);
@@ -222,16 +222,16 @@ TEST(HairSim, ChildrenFollowTheirGuides) {
       const float gapNow = glm::length(pointOf(childNow, c * 16 + i) - pointOf(sim.positions(), g * 16 + i));
       EXPECT_NEAR(gapNow, restGap, 1e-5f);
     }
-    guideMotion = std::max(guideMotion, glm::length(pointOf(sim.positions(), g * 16 + 15) -
-                                                    glm::vec3(moved * glm::vec4(pointOf(guides.points, g * 16 + 15), 1.0f))));
+    guideMotion =
+        std::max(guideMotion, glm::length(pointOf(sim.positions(), g * 16 + 15) -
+                                          glm::vec3(moved * glm::vec4(pointOf(guides.points, g * 16 + 15), 1.0f))));
   }
   EXPECT_GT(guideMotion, 0.01f);  // the guides really moved away from the rigid rest shape
 
   // Frames rebuilt from the positions alone (baked playback) match the simulator's.
   const std::vector<glm::quat> rebuilt = guideFrames(guides, sim.positions(), glm::quat_cast(glm::mat3(moved)));
   ASSERT_EQ(rebuilt.size(), sim.frames().size());
-  for (size_t k = 0; k < rebuilt.size(); ++k)
-    EXPECT_GT(std::abs(glm::dot(rebuilt[k], sim.frames()[k])), 0.9999f) << k;
+  for (size_t k = 0; k < rebuilt.size(); ++k) EXPECT_GT(std::abs(glm::dot(rebuilt[k], sim.frames()[k])), 0.9999f) << k;
 }
 
 TEST(HairSim, GroomedStrandsPoseGuidesFirstThenChildren) {
@@ -335,8 +335,8 @@ TEST(HairSim, DefaultMannequinGuidesStayOutOfTheBodyWhenTheHeadShakes) {
   for (int step = 0; step < 120; ++step) {
     Pose pose = character.skeleton.restPose();
     const float swing = std::sin(2.0f * float(M_PI) * 3.0f * float(step) * kDt);
-    pose[rig.headBone].rotation = pose[rig.headBone].rotation *
-                                  glm::angleAxis(0.7f * swing, glm::normalize(glm::vec3(0.3f, 1.0f, 0.4f)));
+    pose[rig.headBone].rotation =
+        pose[rig.headBone].rotation * glm::angleAxis(0.7f * swing, glm::normalize(glm::vec3(0.3f, 1.0f, 0.4f)));
     character.skeleton.worldTransforms(pose, worldFromBone);
     const PosedHairColliders body = rig.body.posed(worldFromBone, sim.params().collisionMargin);
     sim.step(kDt, rig.posedFromRest(worldFromBone), &body);

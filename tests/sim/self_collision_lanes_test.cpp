@@ -50,11 +50,20 @@ SegmentPair randomPair(std::mt19937& rng) {
   s.q0 = s.p0 + direction();
   s.q1 = s.q0 + direction();
   switch (rng() % 6) {
-    case 0: s.q1 = s.q0 + (s.p1 - s.p0) * (0.5f + fraction(rng)); break;   // parallel
-    case 1: s.p1 = s.p0; break;                                             // p a point
-    case 2: s.q1 = s.q0; break;                                             // q a point
-    case 3: s.q0 = glm::mix(s.p0, s.p1, fraction(rng)) - 0.5f * direction(), s.q1 = s.q0 + direction(); break;
-    default: break;
+    case 0:
+      s.q1 = s.q0 + (s.p1 - s.p0) * (0.5f + fraction(rng));
+      break;  // parallel
+    case 1:
+      s.p1 = s.p0;
+      break;  // p a point
+    case 2:
+      s.q1 = s.q0;
+      break;  // q a point
+    case 3:
+      s.q0 = glm::mix(s.p0, s.p1, fraction(rng)) - 0.5f * direction(), s.q1 = s.q0 + direction();
+      break;
+    default:
+      break;
   }
   const glm::vec2 st = closestSegmentParameters(s.p0, s.p1, s.q0, s.q1);
   const float distance = glm::length(glm::mix(s.p0, s.p1, st.x) - glm::mix(s.q0, s.q1, st.y));
@@ -101,7 +110,7 @@ TEST(SegmentReach, TheMidpointLineBoundRejectsOnlyPairsTheScalarTestRejects) {
       const glm::vec3 hp = 0.5f * (pairs[k].p1 - pairs[k].p0), hq = 0.5f * (pairs[k].q1 - pairs[k].q0);
       for (int c = 0; c < 3; ++c) mid[c][k] = m[c], halfP[c][k] = hp[c], halfQ[c][k] = hq[c];
     }
-    auto lanes3 = [](float (&v)[3][4]) { return Vec3x4{_mm_loadu_ps(v[0]), _mm_loadu_ps(v[1]), _mm_loadu_ps(v[2])}; };
+    auto lanes3 = [](float(&v)[3][4]) { return Vec3x4{_mm_loadu_ps(v[0]), _mm_loadu_ps(v[1]), _mm_loadu_ps(v[2])}; };
     const unsigned apart = segmentsApart(lanes3(mid), lanes3(halfP), lanes3(halfQ), _mm_loadu_ps(reach));
     for (int k = 0; k < 4; ++k) {
       const bool within = segmentsWithinReach(pairs[k].p0, pairs[k].p1, pairs[k].q0, pairs[k].q1, pairs[k].reach);
@@ -142,11 +151,14 @@ TEST(AabbTree, LeafQueriesTwoLevelsAtATimeFindEveryOverlappingBox) {
       std::set<uint32_t> expected, found;
       for (uint32_t i = 0; i < boxes.size(); ++i)
         if (boxes[i].overlaps(probe)) expected.insert(i);
-      tree.queryLeaves(probe, [&](int32_t leaf) {
-        const uint32_t first = tree.nodeInfo(size_t(leaf)).first;
-        for (unsigned mask = tree.leafOverlaps(leaf, probe); mask != 0; mask &= mask - 1)
-          EXPECT_TRUE(found.insert(tree.primitive(first + uint32_t(__builtin_ctz(mask)))).second);
-      }, [](int32_t) { return false; });
+      tree.queryLeaves(
+          probe,
+          [&](int32_t leaf) {
+            const uint32_t first = tree.nodeInfo(size_t(leaf)).first;
+            for (unsigned mask = tree.leafOverlaps(leaf, probe); mask != 0; mask &= mask - 1)
+              EXPECT_TRUE(found.insert(tree.primitive(first + uint32_t(__builtin_ctz(mask)))).second);
+          },
+          [](int32_t) { return false; });
       EXPECT_EQ(found, expected);
     }
   }
@@ -182,8 +194,10 @@ TEST(AabbTree, LeafQueriesFromSharedEntriesFindTheLeavesOfQueriesFromTheRoot) {
     tree.queryEntries(around, uint32_t(1 + rng() % 400), skip, entries);
     for (const Box& probe : probes) {
       std::vector<int32_t> fromRoot, fromEntries;
-      tree.queryLeaves(probe, [&](int32_t leaf) { fromRoot.push_back(leaf); }, skip);
-      tree.queryLeavesFrom(entries, probe, [&](int32_t leaf) { fromEntries.push_back(leaf); }, skip);
+      tree.queryLeaves(
+          probe, [&](int32_t leaf) { fromRoot.push_back(leaf); }, skip);
+      tree.queryLeavesFrom(
+          entries, probe, [&](int32_t leaf) { fromEntries.push_back(leaf); }, skip);
       std::sort(fromRoot.begin(), fromRoot.end());
       std::sort(fromEntries.begin(), fromEntries.end());
       ASSERT_EQ(fromEntries, fromRoot) << "run " << run;

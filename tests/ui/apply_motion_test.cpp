@@ -6,10 +6,10 @@
 // Run as `mannequin_gui_tests motion`; with MANNEQUIN_SCREENSHOT_DIR set it
 // saves the dialog as apply_motion_dialog.png there.
 #include <QCheckBox>
-#include <QPushButton>
 #include <QDir>
 #include <QFile>
 #include <QLabel>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -107,7 +107,8 @@ class ApplyMotionTest : public QObject {
     QVERIFY(dialog);
     dialog->setMotionFile(kCmu);
     dialog->setNameMapFile(kCmuMap);
-    QVERIFY2(dialog->summaryLabel()->text().startsWith("matched 21 of 31 bones\n"), qPrintable(dialog->summaryLabel()->text()));
+    QVERIFY2(dialog->summaryLabel()->text().startsWith("matched 21 of 31 bones\n"),
+             qPrintable(dialog->summaryLabel()->text()));
     QCOMPARE(dialog->motionTree()->topLevelItem(0)->text(2), QString("name map"));
 
     const QString bad = writeFile(dir_, "bad.map", "Hips pelvis\nLeftArm\n");

@@ -29,6 +29,7 @@
 #include "render/collider_actors.h"
 #include "render/gizmos/move_gizmo.h"
 #include "render/scene_view.h"
+#include "test_window.h"
 #include "ui/document/editor_document.h"
 #include "ui/garment/collider_drag_tool.h"
 #include "ui/garment/garment_panel.h"
@@ -36,7 +37,6 @@
 #include "ui/main_window.h"
 #include "ui/panels/timeline_panel.h"
 #include "ui/viewport/viewport_geometry.h"
-#include "test_window.h"
 
 using namespace mq;
 using namespace mq::ui;
@@ -175,8 +175,10 @@ class ColliderDragTest : public QObject {
     drag(from, to);
     const glm::vec3 centre = collider(0).a;
     const QPoint landed = toWidget(window_, centre);
-    QVERIFY2((landed - to).manhattanLength() <= 2, qPrintable(QString("landed at %1,%2, released at %3,%4")
-                                                                   .arg(landed.x()).arg(landed.y()).arg(to.x()).arg(to.y())));
+    QVERIFY2(
+        (landed - to).manhattanLength() <= 2,
+        qPrintable(
+            QString("landed at %1,%2, released at %3,%4").arg(landed.x()).arg(landed.y()).arg(to.x()).arg(to.y())));
     double direction[3];
     window_->sceneView()->renderer()->GetActiveCamera()->GetDirectionOfProjection(direction);
     const float depth = glm::dot(centre - kSphereCentre, glm::vec3(direction[0], direction[1], direction[2]));
@@ -257,7 +259,8 @@ class ColliderDragTest : public QObject {
     QVERIFY2(deepest < 0.01f, qPrintable(QString("%1 m inside the moved sphere").arg(deepest)));
     // Over the moved sphere's top the sheet rests on it, not where the sphere was.
     const float top = sphere.a.y + sphere.radius;
-    QVERIFY2(onTop > top - 0.01f && onTop < top + 0.05f, qPrintable(QString("sheet at %1 over a top at %2").arg(onTop).arg(top)));
+    QVERIFY2(onTop > top - 0.01f && onTop < top + 0.05f,
+             qPrintable(QString("sheet at %1 over a top at %2").arg(onTop).arg(top)));
     renderNow(window_);
     keepShot("collider_dragged_under_sheet");
     undo()->undo();
@@ -296,7 +299,7 @@ class ColliderDragTest : public QObject {
     QString error;
     QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));
     tool_->dock()->raise();
-    tool_->addCollider(cloth::PrimitiveCollider::Shape::Plane);  // at the feet, 2 m wide, behind the legs
+    tool_->addCollider(cloth::PrimitiveCollider::Shape::Plane);   // at the feet, 2 m wide, behind the legs
     tool_->addCollider(cloth::PrimitiveCollider::Shape::Sphere);  // in front of the chest
     renderNow(window_);
     // A point of the floor collider's square that the character hides (its feet stand on it).

@@ -38,12 +38,12 @@
 #include "render/collider_actors.h"
 #include "render/scene_view.h"
 #include "sim/cloth/point_cache.h"
+#include "test_window.h"
 #include "ui/document/editor_document.h"
 #include "ui/garment/garment_panel.h"
 #include "ui/garment/garment_tool.h"
 #include "ui/jobs/long_job.h"
 #include "ui/main_window.h"
-#include "test_window.h"
 #include "ui/viewport/vtk_viewport_widget.h"
 
 using namespace mq;
@@ -77,7 +77,6 @@ bool jsonNear(const nlohmann::json& a, const nlohmann::json& b) {
   }
   return a == b;
 }
-
 
 }  // namespace
 
@@ -180,14 +179,14 @@ class GarmentToolTest : public QObject {
     const std::vector<float> before = tool_->garmentMesh(0)->positions;
     const Aabb boxBefore = boundsOf(before);
     const int commands = undo()->index();
-    const double changed = std::clamp(field->value() + 0.1 * (chosen->max - chosen->min), double(chosen->min),
-                                      double(chosen->max));
+    const double changed =
+        std::clamp(field->value() + 0.1 * (chosen->max - chosen->min), double(chosen->min), double(chosen->max));
     field->setValue(changed);
     QCOMPARE(undo()->index(), commands + 1);
     const std::vector<float> after = tool_->garmentMesh(0)->positions;
     const Aabb boxAfter = boundsOf(after);
-    QVERIFY2(after.size() != before.size() || glm::length(boxAfter.max - boxBefore.max) +
-                                                      glm::length(boxAfter.min - boxBefore.min) > 0.01f,
+    QVERIFY2(after.size() != before.size() ||
+                 glm::length(boxAfter.max - boxBefore.max) + glm::length(boxAfter.min - boxBefore.min) > 0.01f,
              "changing a measurement did not change the garment");
     QCOMPARE(tool_->scene().garments[0].recipe.parameters.at(chosen->name), float(changed));
 
@@ -328,7 +327,8 @@ class GarmentToolTest : public QObject {
     const GarmentMesh& finer = *tool_->garmentMesh(0);
     QVERIFY(finer.vertexCount() != before.vertexCount());
     QVERIFY2(tool_->scene().garments[0].pins.vertices.size() >= pins.size() / 2,
-             qPrintable(QString("%1 of %2 pins kept").arg(tool_->scene().garments[0].pins.vertices.size()).arg(pins.size())));
+             qPrintable(
+                 QString("%1 of %2 pins kept").arg(tool_->scene().garments[0].pins.vertices.size()).arg(pins.size())));
     QVERIFY(nearOldPins(finer, 0.05f));
     QCOMPARE(doc()->sceneSections().garments[0]["pins"]["vertices"].size(),
              tool_->scene().garments[0].pins.vertices.size());
@@ -502,8 +502,8 @@ class GarmentToolTest : public QObject {
     QVERIFY(tool_->bakeOutOfDate().isEmpty());
     doc()->setTime(start);
     const std::vector<float> silk = tool_->shownPositions(0);
-    QVERIFY(maxDifference(silk, cotton) > 1e-5f);   // simulated again, with silk
-    QVERIFY(maxDifference(silk, cotton) < 0.1f);    // from the cotton drape, not from flat panels
+    QVERIFY(maxDifference(silk, cotton) > 1e-5f);  // simulated again, with silk
+    QVERIFY(maxDifference(silk, cotton) < 0.1f);   // from the cotton drape, not from flat panels
     // Undo: cotton again, and its drape with it.
     undo()->undo();
     QCOMPARE(tool_->scene().garments[0].fabric, std::string("cotton"));
@@ -579,8 +579,10 @@ class GarmentToolTest : public QObject {
                                             glm::vec3(onScreen[3 * v], onScreen[3 * v + 1], onScreen[3 * v + 2])));
     QVERIFY2(moved < 0.01f, qPrintable(QString("a pin moved %1 m from where it was chosen").arg(moved)));
     const std::vector<float> stretch = tool_->shownStretch(0);
-    QVERIFY2(*std::max_element(stretch.begin(), stretch.end()) < 1.105f,
-             qPrintable(QString("the pins stretch the drape %1 times").arg(*std::max_element(stretch.begin(), stretch.end()))));
+    QVERIFY2(
+        *std::max_element(stretch.begin(), stretch.end()) < 1.105f,
+        qPrintable(
+            QString("the pins stretch the drape %1 times").arg(*std::max_element(stretch.begin(), stretch.end()))));
 
     // Undo, step by step: each state comes back with the drape it had.
     undo()->undo();  // the pins
@@ -675,7 +677,8 @@ class GarmentToolTest : public QObject {
     // The actor follows: a sphere of that radius there.
     double bounds[6];
     tool_->colliderActors().actor(0)->GetBounds(bounds);
-    QVERIFY(std::abs((bounds[1] - bounds[0]) - 0.16) < 0.01 && std::abs(0.5 * (bounds[2] + bounds[3]) - target.y) < 0.01);
+    QVERIFY(std::abs((bounds[1] - bounds[0]) - 0.16) < 0.01 &&
+            std::abs(0.5 * (bounds[2] + bounds[3]) - target.y) < 0.01);
     // Undo goes back one field at a time: friction, then radius.
     undo()->undo();
     QVERIFY(tool_->scene().cloth.colliders[0].friction < 0.0f);
@@ -697,7 +700,8 @@ class GarmentToolTest : public QObject {
     auto deepest = [&](const std::vector<float>& p) {
       float inside = 0.0f;
       for (size_t v = 0; v < p.size() / 3; ++v)
-        inside = std::max(inside, sphere.radius - glm::length(glm::vec3(p[3 * v], p[3 * v + 1], p[3 * v + 2]) - sphere.a));
+        inside =
+            std::max(inside, sphere.radius - glm::length(glm::vec3(p[3 * v], p[3 * v + 1], p[3 * v + 2]) - sphere.a));
       return inside;
     };
     QVERIFY(deepest(tool_->shownPositions(0)) > 0.05f);
@@ -825,12 +829,19 @@ class GarmentToolTest : public QObject {
   void sheetAndCollidersWithoutCharacter() {
     QTemporaryDir dir;
     const QString path = dir.filePath("sheet.mqscene");
-    const nlohmann::json scene = {
-        {"format", "mannequin-scene"}, {"version", 1}, {"character", nullptr},
-        {"cloth", {{"garment", {{"type", "sheet"}, {"columns", 16}, {"rows", 16}, {"width", 0.8}, {"height", 0.8},
-                                {"center", {0.0, 0.6, 0.0}}}},
-                   {"fps", 24}}},
-        {"colliders", {{{"type", "sphere"}, {"center", {0.0, 0.3, 0.0}}, {"radius", 0.2}}}}};
+    const nlohmann::json scene = {{"format", "mannequin-scene"},
+                                  {"version", 1},
+                                  {"character", nullptr},
+                                  {"cloth",
+                                   {{"garment",
+                                     {{"type", "sheet"},
+                                      {"columns", 16},
+                                      {"rows", 16},
+                                      {"width", 0.8},
+                                      {"height", 0.8},
+                                      {"center", {0.0, 0.6, 0.0}}}},
+                                    {"fps", 24}}},
+                                  {"colliders", {{{"type", "sphere"}, {"center", {0.0, 0.3, 0.0}}, {"radius", 0.2}}}}};
     {
       QFile file(path);
       QVERIFY(file.open(QIODevice::WriteOnly));
@@ -856,8 +867,8 @@ class GarmentToolTest : public QObject {
     QVERIFY(allFinite(fallen));
     QVERIFY(maxDifference(fallen, placed) > 0.05f);
     for (size_t v = 0; v < fallen.size() / 3; ++v)
-      QVERIFY(glm::length(glm::vec3(fallen[3 * v], fallen[3 * v + 1], fallen[3 * v + 2]) - glm::vec3(0.0f, 0.3f, 0.0f)) >
-              0.19f);
+      QVERIFY(glm::length(glm::vec3(fallen[3 * v], fallen[3 * v + 1], fallen[3 * v + 2]) -
+                          glm::vec3(0.0f, 0.3f, 0.0f)) > 0.19f);
 
     // A floor, saved and reopened with the sheet.
     tool_->addCollider(cloth::PrimitiveCollider::Shape::Plane);
@@ -878,11 +889,19 @@ class GarmentToolTest : public QObject {
   void longBakeAsksFirst() {
     QTemporaryDir dir;
     const QString path = dir.filePath("big_sheet.mqscene");
-    const nlohmann::json scene = {
-        {"format", "mannequin-scene"}, {"version", 1}, {"character", nullptr},
-        {"cloth", {{"garment", {{"type", "sheet"}, {"columns", 64}, {"rows", 64}, {"width", 0.8}, {"height", 0.8},
-                                {"center", {0.0, 0.6, 0.0}}}},
-                   {"fps", 24}, {"bake_frames", 100000}}}};
+    const nlohmann::json scene = {{"format", "mannequin-scene"},
+                                  {"version", 1},
+                                  {"character", nullptr},
+                                  {"cloth",
+                                   {{"garment",
+                                     {{"type", "sheet"},
+                                      {"columns", 64},
+                                      {"rows", 64},
+                                      {"width", 0.8},
+                                      {"height", 0.8},
+                                      {"center", {0.0, 0.6, 0.0}}}},
+                                    {"fps", 24},
+                                    {"bake_frames", 100000}}}};
     {
       QFile file(path);
       QVERIFY(file.open(QIODevice::WriteOnly));

@@ -188,8 +188,8 @@ class HairStallTest : public QObject {
     if (tool_->hasHair()) waitUntilHairShown();
     result.worstStallMs = probe_.stop();
     camera->GetPosition(position);
-    result.cameraMoved = std::hypot(position[0] - startPosition[0], position[1] - startPosition[1],
-                                    position[2] - startPosition[2]);
+    result.cameraMoved =
+        std::hypot(position[0] - startPosition[0], position[1] - startPosition[1], position[2] - startPosition[2]);
     qInfo("orbit%s: worst event-loop stall %.0f ms; %zu frames in the %lld ms drag (%.1f ms a frame)",
           tool_->hasHair() ? " with hair" : " without hair", result.worstStallMs, result.frames, result.dragMs,
           result.frames ? double(result.dragMs) / double(result.frames) : 0.0);

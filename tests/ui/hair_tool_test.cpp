@@ -11,13 +11,13 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QImage>
 #include <QLabel>
-#include <QMouseEvent>
 #include <QListWidget>
 #include <QLocale>
+#include <QMouseEvent>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSpinBox>
@@ -31,12 +31,12 @@
 
 #include "core/hair/hair_groom.h"
 #include "core/hair/hairstyle_json.h"
-#include "ui/document/editor_document.h"
 #include "render/scene_view.h"
+#include "test_window.h"
+#include "ui/document/editor_document.h"
 #include "ui/hair/hair_panel.h"
 #include "ui/hair/hair_tool.h"
 #include "ui/main_window.h"
-#include "test_window.h"
 #include "ui/viewport/vtk_viewport_widget.h"
 
 using namespace mq;
@@ -100,7 +100,6 @@ class HairToolTest : public QObject {
   // the edited one.
   void waitForHair() { tool_->finishBackgroundWork(); }
 
-
   // State after each step, compared by undo/redo and the reopen.
   std::vector<float> opened_, added_, strengthened_, moved_;
   std::string openedStyle_, movedStyle_;
@@ -133,9 +132,9 @@ class HairToolTest : public QObject {
     opened_ = guidePoints(*tool_);
     openedStyle_ = styleText(*tool_);
     QVERIFY(!opened_.empty());
-    QCOMPARE(panel()->primitiveList()->count(), int(tool_->style().primitives.streams.size() +
-                                                     tool_->style().primitives.sources.size() +
-                                                     tool_->style().primitives.vortices.size()));
+    QCOMPARE(panel()->primitiveList()->count(),
+             int(tool_->style().primitives.streams.size() + tool_->style().primitives.sources.size() +
+                 tool_->style().primitives.vortices.size()));
   }
 
   void addingASourceRegrowsTheGuides() {
@@ -193,7 +192,7 @@ class HairToolTest : public QObject {
     waitForHair();
     QCOMPARE(guidePoints(*tool_), added_);
     QVERIFY(std::abs(panel()->strengthBox()->value() - 0.3) < 1e-3);  // the panel follows
-    undo->undo();  // the source
+    undo->undo();                                                     // the source
     waitForHair();
     QCOMPARE(guidePoints(*tool_), opened_);
     QCOMPARE(styleText(*tool_), openedStyle_);
@@ -331,7 +330,7 @@ class HairToolTest : public QObject {
     QCOMPARE(tool_->scalp().kind, ScalpRegion::Kind::BoneCone);
     QCOMPARE(doc()->undoStack()->index(), commands + 1);
     QCOMPARE(panel()->scalpBoneCombo()->currentText(), QString::fromStdString(tool_->scalp().bone));
-    QVERIFY(panel()->scalpBoneCombo()->count() > 10);  // the character's bones
+    QVERIFY(panel()->scalpBoneCombo()->count() > 10);              // the character's bones
     QCOMPARE(panel()->scalpAxisPresetCombo()->currentIndex(), 1);  // up-back
     QVERIFY(panel()->scalpAngleBox()->isEnabled());
     wideConeRoots_ = rootPoints(*tool_);
@@ -345,8 +344,8 @@ class HairToolTest : public QObject {
     QCOMPARE(doc()->undoStack()->index(), commands + 2);
     narrowConeRoots_ = rootPoints(*tool_);
     qInfo("roots: tagged %zu (spread %.3f m), %.0f deg cone %zu (spread %.3f m), %.0f deg cone %zu (spread %.3f m)",
-          taggedRoots_.size() / 3, rootSpread(taggedRoots_), wideAngle, wideConeRoots_.size() / 3, rootSpread(wideConeRoots_), wideAngle / 2,
-          narrowConeRoots_.size() / 3, rootSpread(narrowConeRoots_));
+          taggedRoots_.size() / 3, rootSpread(taggedRoots_), wideAngle, wideConeRoots_.size() / 3,
+          rootSpread(wideConeRoots_), wideAngle / 2, narrowConeRoots_.size() / 3, rootSpread(narrowConeRoots_));
     QVERIFY2(narrowConeRoots_.size() < wideConeRoots_.size(), "a narrower cone grew as many roots");
     QVERIFY2(rootSpread(narrowConeRoots_) < 0.9f * rootSpread(wideConeRoots_), "a narrower cone spread as wide");
     QVERIFY(panel()->scalpStatusLabel()->text().contains(QString::number(tool_->strandCount())));
@@ -444,7 +443,10 @@ class HairToolTest : public QObject {
     const QPoint tipAfter = tipOnScreen();
     QVERIFY2(tipAfter.x() > at.x() + 15 && std::abs(tipAfter.y() - at.y()) < 15,
              qPrintable(QString("the tip went to (%1, %2), not right of (%3, %4)")
-                            .arg(tipAfter.x()).arg(tipAfter.y()).arg(at.x()).arg(at.y())));
+                            .arg(tipAfter.x())
+                            .arg(tipAfter.y())
+                            .arg(at.x())
+                            .arg(at.y())));
     const std::vector<float> guidesAfter = guidePoints(*tool_);
     QVERIFY2(maxDifference(guidesBefore, guidesAfter) > 1e-3f, "the guides did not follow the turned axis");
     doc()->undoStack()->undo();
@@ -488,7 +490,8 @@ class HairToolTest : public QObject {
     limit->setValue(2000);
     waitForHair();
     QCOMPARE(tool_->displayStrandLimit(), size_t(2000));
-    QVERIFY2(tool_->strandCount() <= 2000 && tool_->strandCount() > 1500, qPrintable(QString::number(tool_->strandCount())));
+    QVERIFY2(tool_->strandCount() <= 2000 && tool_->strandCount() > 1500,
+             qPrintable(QString::number(tool_->strandCount())));
     QCOMPARE(panel()->displayCountLabel()->text(),
              QString("Displaying %1 of %2 strands").arg(locale.toString(2000), locale.toString(qulonglong(wanted))));
     QCOMPARE(doc()->undoStack()->index(), commands);  // an editor setting, not a document edit

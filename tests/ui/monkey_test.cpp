@@ -46,14 +46,15 @@ class MonkeyTest : public QObject {
 
   void randomActions() {
     std::mt19937 rng(gSeed);
-    const QStringList files = {"default",
-                               kAssets + "characters/CesiumMan/glTF-Binary/CesiumMan.glb",
-                               kAssets + "characters/RiggedSimple/RiggedSimple.gltf",
-                               kAssets + "characters/assimp_fbx_animation_with_skeleton/animation_with_skeleton.fbx",
-                               kAssets + "characters/assimp_collada_library_animation_clips/library_animation_clips.dae",
-                               kScenes + "hair_bob.json",
-                               kScenes + "garment_tshirt_walk.json",
-                               kScenes + "cloth_sheet_colliders.json"};
+    const QStringList files = {
+        "default",
+        kAssets + "characters/CesiumMan/glTF-Binary/CesiumMan.glb",
+        kAssets + "characters/RiggedSimple/RiggedSimple.gltf",
+        kAssets + "characters/assimp_fbx_animation_with_skeleton/animation_with_skeleton.fbx",
+        kAssets + "characters/assimp_collada_library_animation_clips/library_animation_clips.dae",
+        kScenes + "hair_bob.json",
+        kScenes + "garment_tshirt_walk.json",
+        kScenes + "cloth_sheet_colliders.json"};
     // Weighted actions: cheap ones often, files and bakes seldom.
     struct Action {
       int weight;
@@ -65,27 +66,39 @@ class MonkeyTest : public QObject {
     const std::vector<Action> actions = {
         {25, [&] { doc->setTime(doc->clipStart() + unit() * std::max(0.0f, doc->clipEnd() - doc->clipStart())); }},
         {6, [&] { doc->setClip(pick(int(doc->character().clips.size()) + 1) - 1); }},
-        {15, [&] {
+        {15,
+         [&] {
            const int bones = int(doc->character().skeleton.boneCount());
            if (bones == 0) return;
            const glm::vec3 axis = glm::normalize(glm::vec3(unit() - 0.5f, unit() - 0.5f, unit() - 0.5f) + 1e-3f);
            doc->setBoneRotation(pick(bones), glm::angleAxis(3.0f * (unit() - 0.5f), axis));
          }},
-        {10, [&] {
+        {10,
+         [&] {
            const int bones = int(doc->character().skeleton.boneCount());
            if (bones > 0) doc->selectByName(doc->character().skeleton.bone(pick(bones)).name);
          }},
         {12, [&] { doc->undoStack()->undo(); }},
         {8, [&] { doc->undoStack()->redo(); }},
         {3, [&] { doc->setSkinning(SkinningMethod(pick(3))); }},
-        {3, [&] { doc->setLook(std::vector<std::string>{"auto", "skin", "mannequin", "plain"}[pick(4)]); }},
+        {3,
+         [&] {
+           doc->setLook(std::vector<std::string>{"auto", "skin", "mannequin", "plain"}[pick(4)]);
+         }},
         {3, [&] { window_->setSkeletonVisible(pick(2) == 0); }},
         {2, [&] { window_->frameAll(); }},
         {2, [&] { renderNow(window_); }},
-        {2, [&] { hair_->useBuiltinStyle(QStringList{"bob", "wavy", "curly", "long_straight"}[pick(4)]); }},
+        {2,
+         [&] {
+           hair_->useBuiltinStyle(QStringList{"bob", "wavy", "curly", "long_straight"}[pick(4)]);
+         }},
         {1, [&] { hair_->removeHair(); }},
-        {2, [&] { garments_->addGarment(std::vector<std::string>{"tshirt", "skirt", "trousers"}[pick(3)]); }},
-        {1, [&] {
+        {2,
+         [&] {
+           garments_->addGarment(std::vector<std::string>{"tshirt", "skirt", "trousers"}[pick(3)]);
+         }},
+        {1,
+         [&] {
            if (doc->clipIndex() < 0) return;
            // A short bake, cancelled at once half of the time.
            QTimer cancel;
@@ -98,12 +111,14 @@ class MonkeyTest : public QObject {
            garments_->bake(doc->clipStart(), doc->clipStart() + 0.1f);
          }},
         {1, [&] { garments_->clearBake(); }},
-        {1, [&] {
+        {1,
+         [&] {
            garments_->setSimulating(true);
            QTest::qWait(50);
            garments_->setSimulating(false);
          }},
-        {2, [&] {
+        {2,
+         [&] {
            QString error;
            window_->openFileNow(files[pick(int(files.size()))], &error);  // every listed file opens
            QVERIFY2(error.isEmpty(), qPrintable(error));

@@ -29,7 +29,8 @@ class RecoveryTest : public QObject {
     environment.insert("MANNEQUIN_AUTOSAVE_SECONDS", "1");
     editor.setProcessEnvironment(environment);
     editor.setProcessChannelMode(QProcess::ForwardedChannels);
-    editor.start(QString(MANNEQUIN_BINARY_DIR) + "/app/mannequin", {"default", "--add-garment", "skirt", "--size", "800x600"});
+    editor.start(QString(MANNEQUIN_BINARY_DIR) + "/app/mannequin",
+                 {"default", "--add-garment", "skirt", "--size", "800x600"});
     QVERIFY(editor.waitForStarted());
     const QString copy = folder.filePath(QString::number(editor.processId()) + ".mqscene");
     const QString about = folder.filePath(QString::number(editor.processId()) + ".json");

@@ -9,12 +9,12 @@
 #include <cstdlib>
 #include <thread>
 
+#include <vtkRenderer.h>
 #include <QApplication>
 #include <QDoubleSpinBox>
 #include <QMouseEvent>
 #include <QTest>
 #include <glm/glm.hpp>
-#include <vtkRenderer.h>
 
 #include "render/scene_view.h"
 #include "ui/main_window.h"

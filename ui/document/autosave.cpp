@@ -50,7 +50,8 @@ bool Autosave::saveNow() {
   }
   const QString path = copyPath();
   if (!source_.write(path, &lastError_)) return false;
-  const QJsonObject about{{"document", source_.documentPath()}, {"written", QDateTime::currentDateTime().toString(Qt::ISODate)}};
+  const QJsonObject about{{"document", source_.documentPath()},
+                          {"written", QDateTime::currentDateTime().toString(Qt::ISODate)}};
   try {
     writeFileAtomically(sidecarOf(path).toStdString(),
                         [&](std::ostream& out) { out << QJsonDocument(about).toJson().toStdString(); });
@@ -85,7 +86,8 @@ std::vector<RecoveryCopy> Autosave::leftBehind(const QString& folder) {
     }
     copies.push_back(copy);
   }
-  std::sort(copies.begin(), copies.end(), [](const RecoveryCopy& a, const RecoveryCopy& b) { return a.written > b.written; });
+  std::sort(copies.begin(), copies.end(),
+            [](const RecoveryCopy& a, const RecoveryCopy& b) { return a.written > b.written; });
   return copies;
 }
 

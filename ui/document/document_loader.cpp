@@ -29,7 +29,8 @@ LoadedDocument loadDocument(const QString& fileOrDefault) {
     out.displayName = QFileInfo(file).fileName();
     if (!scene.documentPath.empty()) out.documentPath = QFileInfo(file).absoluteFilePath();
     // A character file: keep its absolute path (saving makes it relative).
-    else out.scene.character = QFileInfo(file).absoluteFilePath().toStdString();
+    else
+      out.scene.character = QFileInfo(file).absoluteFilePath().toStdString();
   }
   return out;
 }
@@ -49,15 +50,14 @@ bool isCharacterFile(const QString& path) {
   static const QStringList kinds = {"gltf", "glb", "fbx", "dae"};
   return kinds.contains(suffixOf(path));
 }
-bool isOpenableFile(const QString& path) {
-  return isMotionFile(path) || isSceneFile(path) || isCharacterFile(path);
-}
+bool isOpenableFile(const QString& path) { return isMotionFile(path) || isSceneFile(path) || isCharacterFile(path); }
 
 QString openFileFilter() {
-  return QObject::tr("All supported (*.mqscene *.json *.gltf *.glb *.fbx *.dae *.bvh);;"
-                     "Scene documents (*.mqscene *.json);;"
-                     "Characters (*.gltf *.glb *.fbx *.dae);;"
-                     "Motions (*.bvh);;All files (*)");
+  return QObject::tr(
+      "All supported (*.mqscene *.json *.gltf *.glb *.fbx *.dae *.bvh);;"
+      "Scene documents (*.mqscene *.json);;"
+      "Characters (*.gltf *.glb *.fbx *.dae);;"
+      "Motions (*.bvh);;All files (*)");
 }
 QString saveSceneFilter() { return QObject::tr("Scene documents (*.mqscene)"); }
 QString motionFilter() { return QObject::tr("Motions (*.bvh)"); }

@@ -5,9 +5,9 @@
 #include <QLocale>
 #include <QUndoStack>
 
+#include "core/character/posed_character.h"
 #include "core/skinning/section_cones.h"
 #include "core/util/thread_pool.h"
-#include "core/character/posed_character.h"
 
 namespace mq::ui {
 
@@ -91,8 +91,10 @@ std::optional<glm::quat> EditorDocument::boneRotation(int bone) const {
 
 void EditorDocument::setBoneRotation(int bone, std::optional<glm::quat> rotation) {
   if (bone < 0 || bone >= character_.skeleton.boneCount()) return;
-  if (rotation) edits_.rotations[bone] = glm::normalize(*rotation);
-  else edits_.rotations.erase(bone);
+  if (rotation)
+    edits_.rotations[bone] = glm::normalize(*rotation);
+  else
+    edits_.rotations.erase(bone);
   evaluatePose();
   emit poseChanged();
   emit documentChanged();
@@ -152,15 +154,11 @@ void EditorDocument::setWeightSettings(const WeightSettings& settings) {
   emit documentChanged();
 }
 
-void EditorDocument::evaluatePose() {
-  posed_.evaluate(character_, clipIndex_, time_, &edits_, &ThreadPool::shared());
-}
+void EditorDocument::evaluatePose() { posed_.evaluate(character_, clipIndex_, time_, &edits_, &ThreadPool::shared()); }
 
 // --- animation ------------------------------------------------------------------
 
-float EditorDocument::clipStart() const {
-  return clipIndex_ >= 0 ? character_.clips[clipIndex_].startTime() : 0.0f;
-}
+float EditorDocument::clipStart() const { return clipIndex_ >= 0 ? character_.clips[clipIndex_].startTime() : 0.0f; }
 
 float EditorDocument::clipEnd() const {
   return clipIndex_ >= 0 ? character_.clips[clipIndex_].endTime() : noClipDuration_;
@@ -214,9 +212,7 @@ void EditorDocument::removeLastClip(int clipIndex, float seconds) {
 
 // --- selection and view -------------------------------------------------------------
 
-void EditorDocument::selectBone(int bone) {
-  setSelection(bone < character_.skeleton.boneCount() ? bone : -1, -1, -1);
-}
+void EditorDocument::selectBone(int bone) { setSelection(bone < character_.skeleton.boneCount() ? bone : -1, -1, -1); }
 
 void EditorDocument::selectMesh(int mesh) {
   setSelection(-1, mesh < static_cast<int>(character_.meshes.size()) ? mesh : -1, -1);
@@ -257,8 +253,10 @@ void EditorDocument::setMaterial(int index, const Material& material) {
   if (index < 0 || index >= static_cast<int>(character_.materials.size())) return;
   character_.materials[index] = material;
   const MaterialOverride changes = MaterialOverride::between(fileMaterials_[index], material);
-  if (changes.empty()) scene_.materials.erase(material.name);
-  else scene_.materials[material.name] = changes;
+  if (changes.empty())
+    scene_.materials.erase(material.name);
+  else
+    scene_.materials[material.name] = changes;
   emit materialChanged(index);
   emit documentChanged();
 }

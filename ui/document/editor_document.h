@@ -22,12 +22,12 @@ namespace mq::ui {
 struct LoadedDocument {
   Character character;
   SceneDocument scene;
-  PoseEdits edits;       // scene.poseRotations by bone index
-  int clipIndex = -1;    // current clip, -1 for the rest pose
+  PoseEdits edits;                      // scene.poseRotations by bone index
+  int clipIndex = -1;                   // current clip, -1 for the rest pose
   std::vector<Material> fileMaterials;  // the file's materials before the scene's changes
   std::vector<SkinBinding> fileSkins;   // the file's weights before the scene rebuilt them
-  QString documentPath;  // the scene file, empty for a character file or "default"
-  QString displayName;   // for the title bar
+  QString documentPath;                 // the scene file, empty for a character file or "default"
+  QString displayName;                  // for the title bar
 };
 
 class EditorDocument : public QObject {
@@ -132,11 +132,11 @@ class EditorDocument : public QObject {
  signals:
   void characterReplaced();
   void skeletonChanged();  // bones added or removed on the same character (helper bones)
-  void poseChanged();  // the posed meshes changed (edit, clip or time)
-  void weightsChanged();  // the skin weights were rebuilt or given back
+  void poseChanged();      // the posed meshes changed (edit, clip or time)
+  void weightsChanged();   // the skin weights were rebuilt or given back
   void timeChanged(float seconds);
   void clipChanged(int clipIndex);
-  void clipsChanged();  // the list of clips changed
+  void clipsChanged();     // the list of clips changed
   void timeAxisChanged();  // clipStart() or clipEnd() changed without a clip change
   void selectionChanged();
   void viewSettingsChanged();

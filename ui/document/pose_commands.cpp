@@ -6,8 +6,8 @@
 
 namespace mq::ui {
 
-SetBoneRotationCommand::SetBoneRotationCommand(EditorDocument* document, int bone,
-                                               std::optional<glm::quat> after, int dragId)
+SetBoneRotationCommand::SetBoneRotationCommand(EditorDocument* document, int bone, std::optional<glm::quat> after,
+                                               int dragId)
     : document_(document), bone_(bone), before_(document->boneRotation(bone)), after_(after), dragId_(dragId) {
   const QString name = QString::fromStdString(document->character().skeleton.bone(bone).name);
   setText(after ? QCoreApplication::translate("mq", "Rotate %1").arg(name)

@@ -73,10 +73,14 @@ void ColliderDragTool::updateGizmo() {
 bool ColliderDragTool::eventFilter(QObject* watched, QEvent* event) {
   if (watched != window_->viewport()) return false;
   switch (event->type()) {
-    case QEvent::MouseButtonPress: return onPress(static_cast<QMouseEvent*>(event));
-    case QEvent::MouseMove: return onMove(static_cast<QMouseEvent*>(event));
-    case QEvent::MouseButtonRelease: return onRelease(static_cast<QMouseEvent*>(event));
-    default: return false;
+    case QEvent::MouseButtonPress:
+      return onPress(static_cast<QMouseEvent*>(event));
+    case QEvent::MouseMove:
+      return onMove(static_cast<QMouseEvent*>(event));
+    case QEvent::MouseButtonRelease:
+      return onRelease(static_cast<QMouseEvent*>(event));
+    default:
+      return false;
   }
 }
 

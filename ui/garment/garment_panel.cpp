@@ -41,12 +41,12 @@ struct FabricField {
 
 const FabricField kFabricFields[] = {
     {"Mass (kg/m²)", &Fabric::massPerArea, 1.0, 0.01, 3.0, 0.01, 3, "Mass per unit area"},
-    {"Stretch (kN/m)", &Fabric::stretchStiffness, 1e-3, 0.01, 1000.0, 1.0, 2,
-     "Membrane tension per unit strain"},
+    {"Stretch (kN/m)", &Fabric::stretchStiffness, 1e-3, 0.01, 1000.0, 1.0, 2, "Membrane tension per unit strain"},
     {"Shear (N/m)", &Fabric::shearStiffness, 1.0, 0.01, 10000.0, 5.0, 2, "In-plane shear stiffness per radian"},
     {"Bend (µN·m)", &Fabric::bendStiffness, 1e6, 0.001, 100000.0, 1.0, 3,
      "Bending moment per unit width per unit curvature"},
-    {"Damping (ms)", &Fabric::damping, 1e3, 0.0, 100.0, 0.5, 3, "Rayleigh damping: spring damping = damping x stiffness"},
+    {"Damping (ms)", &Fabric::damping, 1e3, 0.0, 100.0, 0.5, 3,
+     "Rayleigh damping: spring damping = damping x stiffness"},
     {"Friction", &Fabric::friction, 1.0, 0.0, 2.0, 0.05, 2, "Coulomb coefficient against the body"},
     {"Thickness (mm)", &Fabric::thickness, 1e3, 0.01, 10.0, 0.05, 2, "Cloth thickness"},
 };
@@ -57,10 +57,14 @@ const cloth::IntegratorKind kIntegrators[] = {cloth::IntegratorKind::ImplicitEul
 
 QString integratorLabel(cloth::IntegratorKind kind) {
   switch (kind) {
-    case cloth::IntegratorKind::ImplicitEuler: return QObject::tr("Implicit Euler (stable, default)");
-    case cloth::IntegratorKind::SymplecticEuler: return QObject::tr("Symplectic Euler");
-    case cloth::IntegratorKind::Verlet: return QObject::tr("Verlet");
-    default: return QObject::tr("Runge-Kutta 4");
+    case cloth::IntegratorKind::ImplicitEuler:
+      return QObject::tr("Implicit Euler (stable, default)");
+    case cloth::IntegratorKind::SymplecticEuler:
+      return QObject::tr("Symplectic Euler");
+    case cloth::IntegratorKind::Verlet:
+      return QObject::tr("Verlet");
+    default:
+      return QObject::tr("Runge-Kutta 4");
   }
 }
 
@@ -92,7 +96,8 @@ GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent)
   garmentLayout->addWidget(list_);
   auto* addRow = new QHBoxLayout;
   typeCombo_ = new QComboBox;
-  for (const std::string& type : parametricGarmentTypes()) typeCombo_->addItem(typeLabel(type), QString::fromStdString(type));
+  for (const std::string& type : parametricGarmentTypes())
+    typeCombo_->addItem(typeLabel(type), QString::fromStdString(type));
   add_ = new QPushButton(tr("Add"));
   add_->setToolTip(tr("Add a built-in garment sized to the character"));
   remove_ = new QPushButton(tr("Remove"));
@@ -104,8 +109,9 @@ GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent)
   layer_ = new QSpinBox;
   layer_->setRange(0, Garment::kMaxLayer);
   layer_->setKeyboardTracking(false);
-  layer_->setToolTip(tr("Worn over the garments of lower layers (and those above it in the list on the same "
-                        "layer): it collides with them, they do not feel it"));
+  layer_->setToolTip(
+      tr("Worn over the garments of lower layers (and those above it in the list on the same "
+         "layer): it collides with them, they do not feel it"));
   layerForm->addRow(tr("Layer"), layer_);
   garmentLayout->addLayout(layerForm);
   connect(layer_, &QSpinBox::valueChanged, this, [this](int layer) {
@@ -166,9 +172,10 @@ GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent)
     fabricForm->addRow(tr(field.label), spin);
     fabricFields_.push_back(spin);
     connect(spin, &QDoubleSpinBox::valueChanged, this, [this, f](double shown) {
-      editFabric(int(f) + 100,
-                 [f](Fabric& fabric, double v) { fabric.*(kFabricFields[f].member) = float(v / kFabricFields[f].scale); },
-                 shown);
+      editFabric(
+          int(f) + 100,
+          [f](Fabric& fabric, double v) { fabric.*(kFabricFields[f].member) = float(v / kFabricFields[f].scale); },
+          shown);
     });
   }
   layout->addWidget(fabricBox);
@@ -198,8 +205,9 @@ GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent)
   bakeFrames_->setRange(1, 100000);
   bakeFrames_->setSuffix(tr(" frames"));
   bakeFrames_->setKeyboardTracking(false);
-  bakeFrames_->setToolTip(tr("With no character there is no clip to follow: Bake simulates this many frames "
-                             "(at the cloth's fps) from the placed cloth; the timeline scrubs them"));
+  bakeFrames_->setToolTip(
+      tr("With no character there is no clip to follow: Bake simulates this many frames "
+         "(at the cloth's fps) from the placed cloth; the timeline scrubs them"));
   simForm->addRow(tr("Bake length"), bakeFrames_);
   connect(bakeFrames_, &QSpinBox::valueChanged, this, [this](int frames) {
     if (refreshing_) return;
@@ -225,11 +233,13 @@ GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent)
   bake_->setToolTip(tr("Simulate the whole clip; the timeline then scrubs the baked frames"));
   clearBake_ = new QPushButton(tr("Clear bake"));
   exportBake_ = new QPushButton(tr("Export bake..."));
-  exportBake_->setToolTip(tr("Write the baked frames into a folder: OBJ sequences (one file per frame per garment) "
-                             "or Point Cache 2 files (one .pc2 per garment and the mesh it deforms)"));
+  exportBake_->setToolTip(
+      tr("Write the baked frames into a folder: OBJ sequences (one file per frame per garment) "
+         "or Point Cache 2 files (one .pc2 per garment and the mesh it deforms)"));
   resetDrapes_ = new QPushButton(tr("Reset drape"));
-  resetDrapes_->setToolTip(tr("Back to the flat placed panels: the next Simulate or Bake sews the garments anew "
-                              "(edits otherwise keep the drape on screen and continue from it)"));
+  resetDrapes_->setToolTip(
+      tr("Back to the flat placed panels: the next Simulate or Bake sews the garments anew "
+         "(edits otherwise keep the drape on screen and continue from it)"));
   for (QPushButton* b : {simulate_, bake_, clearBake_}) simButtons->addWidget(b);
   simLayout->addLayout(simButtons);
   auto* moreButtons = new QHBoxLayout;
@@ -259,8 +269,9 @@ GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent)
   auto* pinLayout = new QVBoxLayout(pinBox);
   select_ = new QPushButton(tr("Select vertices"));
   select_->setCheckable(true);
-  select_->setToolTip(tr("Drag a rectangle in the viewport: Shift adds, Ctrl removes.\n"
-                         "Ctrl+Alt+drag selects without this mode."));
+  select_->setToolTip(
+      tr("Drag a rectangle in the viewport: Shift adds, Ctrl removes.\n"
+         "Ctrl+Alt+drag selects without this mode."));
   pin_ = new QPushButton(tr("Pin selected"));
   unpin_ = new QPushButton(tr("Unpin"));
   clearPins_ = new QPushButton(tr("Clear"));
@@ -360,9 +371,10 @@ void GarmentPanel::refresh() {
   }
   simForm_->setRowVisible(bakeFrames_, tool_->bakesWithoutClip());
   bake_->setText(tool_->bakesWithoutClip() ? tr("Bake") : tr("Bake clip"));
-  bake_->setToolTip(tool_->bakesWithoutClip()
-                        ? tr("Simulate the bake length from the placed cloth; the timeline then scrubs the baked frames")
-                        : tr("Simulate the whole clip; the timeline then scrubs the baked frames"));
+  bake_->setToolTip(
+      tool_->bakesWithoutClip()
+          ? tr("Simulate the bake length from the placed cloth; the timeline then scrubs the baked frames")
+          : tr("Simulate the whole clip; the timeline then scrubs the baked frames"));
   {
     const QSignalBlocker block(attach_);
     attach_->setCurrentIndex(current >= 0 && scene.garments[current].pins.attach == GarmentPins::Attach::Space ? 1 : 0);
@@ -377,8 +389,7 @@ void GarmentPanel::refresh() {
 void GarmentPanel::rebuildMeasurements() {
   const int current = tool_->currentGarment();
   const GarmentScene& scene = tool_->scene();
-  const QString type =
-      current >= 0 ? QString::fromStdString(scene.garments[current].recipe.type) : QString();
+  const QString type = current >= 0 ? QString::fromStdString(scene.garments[current].recipe.type) : QString();
   if (current != measuredGarment_ || type != measuredType_) {
     while (measurementForm_->rowCount() > 0) measurementForm_->removeRow(0);
     measurementFields_.clear();
@@ -395,12 +406,13 @@ void GarmentPanel::rebuildMeasurements() {
         spin->setKeyboardTracking(false);
         spin->setToolTip(QString::fromStdString(p.help));
         const std::string name = p.name;
-        connect(spin, &QDoubleSpinBox::valueChanged, this, [this, name, index = int(measurementFields_.size())](double v) {
-          if (refreshing_) return;
-          if (lastField_ != index + 1) lastMergeKey_ = GarmentEditCommand::nextMergeKey();
-          lastField_ = index + 1;
-          tool_->setMeasurement(tool_->currentGarment(), name, float(v), lastMergeKey_);
-        });
+        connect(spin, &QDoubleSpinBox::valueChanged, this,
+                [this, name, index = int(measurementFields_.size())](double v) {
+                  if (refreshing_) return;
+                  if (lastField_ != index + 1) lastMergeKey_ = GarmentEditCommand::nextMergeKey();
+                  lastField_ = index + 1;
+                  tool_->setMeasurement(tool_->currentGarment(), name, float(v), lastMergeKey_);
+                });
         auto* label = new QLabel(QString::fromStdString(p.name).replace('_', ' '));
         label->setToolTip(QString::fromStdString(p.help));
         measurementForm_->addRow(label, spin);
@@ -455,8 +467,8 @@ void GarmentPanel::editFabric(int field, const std::function<void(Fabric&, doubl
 namespace {
 
 constexpr cloth::PrimitiveCollider::Shape kShapes[] = {cloth::PrimitiveCollider::Shape::Sphere,
-                                                        cloth::PrimitiveCollider::Shape::Capsule,
-                                                        cloth::PrimitiveCollider::Shape::Plane};
+                                                       cloth::PrimitiveCollider::Shape::Capsule,
+                                                       cloth::PrimitiveCollider::Shape::Plane};
 
 QString colliderLabel(const cloth::PrimitiveCollider& c, int index) {
   const glm::vec3& p = c.a;
@@ -466,7 +478,8 @@ QString colliderLabel(const cloth::PrimitiveCollider& c, int index) {
       return QObject::tr("%1. Sphere r %2 at %3").arg(index + 1).arg(c.radius, 0, 'f', 2).arg(at);
     case cloth::PrimitiveCollider::Shape::Capsule:
       return QObject::tr("%1. Capsule r %2 from %3").arg(index + 1).arg(c.radius, 0, 'f', 2).arg(at);
-    default: return QObject::tr("%1. Plane through %2").arg(index + 1).arg(at);
+    default:
+      return QObject::tr("%1. Plane through %2").arg(index + 1).arg(at);
   }
 }
 
@@ -510,7 +523,8 @@ void GarmentPanel::buildColliderGroup(QVBoxLayout* layout) {
       spin->setPrefix(QString("xyz"[axis]) + " ");
       spin->setButtonSymbols(QAbstractSpinBox::NoButtons);  // three in a row: keep the dock narrow
       spin->setMinimumWidth(40);
-      connect(spin, &QDoubleSpinBox::valueChanged, this, [this, vector, axis] { editCollider(300 + 3 * vector + axis); });
+      connect(spin, &QDoubleSpinBox::valueChanged, this,
+              [this, vector, axis] { editCollider(300 + 3 * vector + axis); });
       colliderVectors_[vector][axis] = spin;
       row->addWidget(spin);
     }
@@ -624,8 +638,10 @@ void GarmentPanel::refreshStatus() {
   QStringList lines;
   if (const GarmentMesh* mesh = tool_->garmentMesh(current))
     lines << tr("%1 vertices, %2 triangles").arg(mesh->vertexCount()).arg(mesh->triangleCount());
-  if (tool_->hasBake()) lines << tr("Baked: %1 frames (scrub the timeline)").arg(tool_->bakedFrameCount());
-  else if (!tool_->bakeOutOfDate().isEmpty()) lines << tr("Bake out of date: %1").arg(tool_->bakeOutOfDate());
+  if (tool_->hasBake())
+    lines << tr("Baked: %1 frames (scrub the timeline)").arg(tool_->bakedFrameCount());
+  else if (!tool_->bakeOutOfDate().isEmpty())
+    lines << tr("Bake out of date: %1").arg(tool_->bakeOutOfDate());
   if (tool_->hasSheet()) lines << tr("Sheet: %1 vertices").arg(tool_->shownSheetPositions().size() / 3);
   if (tool_->simulating()) {
     lines << tr("Simulating: %1 steps (%2)").arg(tool_->simulatedSteps()).arg(tool_->simulationPhase());

@@ -61,7 +61,8 @@ std::string bakeInvalidatedBy(const GarmentScene& before, const GarmentScene& af
   if (before.garments.size() != after.garments.size()) return "garments added or removed";
   for (size_t i = 0; i < before.garments.size(); ++i) {
     json a = garmentToJson(before.garments[i]), b = garmentToJson(after.garments[i]);
-    for (const auto& [part, change] : {std::pair{"fabric", "fabric changed"}, {"pins", "pins changed"}, {"layer", "layers changed"}}) {
+    for (const auto& [part, change] :
+         {std::pair{"fabric", "fabric changed"}, {"pins", "pins changed"}, {"layer", "layers changed"}}) {
       if (a.value(part, json()) != b.value(part, json())) return change;
       a.erase(part), b.erase(part);
     }

@@ -17,8 +17,8 @@ namespace mq::ui {
 
 struct GarmentScene {
   std::vector<Garment> garments;
-  cloth::ClothSceneSpec cloth;     // solver settings and fps (a sheet too, if the document has one)
-  bool writeCloth = false;         // the document has a cloth section, or the settings were edited
+  cloth::ClothSceneSpec cloth;  // solver settings and fps (a sheet too, if the document has one)
+  bool writeCloth = false;      // the document has a cloth section, or the settings were edited
 
   bool operator==(const GarmentScene& other) const;
 };

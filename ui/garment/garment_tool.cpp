@@ -23,23 +23,23 @@
 #include <vtkMatrix4x4.h>
 #include <vtkRenderer.h>
 
-#include "core/util/memory_budget.h"
 #include "core/character/posed_character.h"
 #include "core/garment/garment_json.h"
 #include "core/garment/parametric_garments.h"
 #include "core/garment/pin_remap.h"
 #include "core/geometry/nearest_points.h"
 #include "core/util/error.h"
+#include "core/util/memory_budget.h"
 #include "core/util/thread_pool.h"
 #include "render/cloth_shading.h"
 #include "render/collider_actors.h"
 #include "render/garment_overlay.h"
 #include "render/scene_view.h"
+#include "sim/cloth/bake_cache.h"
 #include "sim/cloth/baked_cloth.h"
 #include "sim/garment/drape_schedule.h"
 #include "sim/garment/garment_layers.h"
 #include "sim/garment/garment_scene.h"
-#include "sim/cloth/bake_cache.h"
 #include "sim/garment/garment_simulation.h"
 #include "ui/document/autosave.h"
 #include "ui/document/editor_document.h"
@@ -86,9 +86,12 @@ bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y
 
 QString shapeLabel(cloth::PrimitiveCollider::Shape shape) {
   switch (shape) {
-    case cloth::PrimitiveCollider::Shape::Sphere: return QObject::tr("sphere");
-    case cloth::PrimitiveCollider::Shape::Capsule: return QObject::tr("capsule");
-    default: return QObject::tr("plane");
+    case cloth::PrimitiveCollider::Shape::Sphere:
+      return QObject::tr("sphere");
+    case cloth::PrimitiveCollider::Shape::Capsule:
+      return QObject::tr("capsule");
+    default:
+      return QObject::tr("plane");
   }
 }
 
@@ -112,7 +115,7 @@ struct GarmentTool::View {
   std::unique_ptr<cloth::GarmentSimulation> simulation;
   cloth::DrapeSchedule drape;
   std::vector<float> positions, stretch;  // what is shown
-  std::vector<uint32_t> nearestBody;     // per garment vertex, for the unsimulated preview
+  std::vector<uint32_t> nearestBody;      // per garment vertex, for the unsimulated preview
 
   explicit View(render::SceneView* sceneView) : scene(sceneView) {
     scene->addProp(actor.actor());
@@ -151,8 +154,8 @@ struct GarmentTool::View {
   // Where `positions` come from: a simulated or baked drape becomes the held
   // drape at the next edit.
   enum class Shown { Placed, Held, Simulated, Baked } shown = Shown::Placed;
-  std::string sewingKey;     // the kept-state key of the running simulation
-  bool sewnKept = false;     // its sewn state is kept (or came from there)
+  std::string sewingKey;  // the kept-state key of the running simulation
+  bool sewnKept = false;  // its sewn state is kept (or came from there)
 };
 
 struct GarmentTool::Bake {
@@ -250,7 +253,8 @@ void GarmentTool::storeSections() {
 // ---- Editing ----
 
 void GarmentTool::edit(const GarmentScene& after, const QString& text, int mergeKey) {
-  window_->document()->undoStack()->push(new GarmentEditCommand([this](const GarmentScene& scene) { applyScene(scene); }, scene_, after, text, mergeKey));
+  window_->document()->undoStack()->push(
+      new GarmentEditCommand([this](const GarmentScene& scene) { applyScene(scene); }, scene_, after, text, mergeKey));
 }
 
 void GarmentTool::addGarment(const std::string& type) {
@@ -451,11 +455,13 @@ cloth::PrimitiveCollider GarmentTool::placedCollider(cloth::PrimitiveCollider::S
     floor = sheet.center - glm::vec3(0.0f, sheet.vertical ? sheet.height : 0.5f, 0.0f);
   }
   switch (shape) {
-    case cloth::PrimitiveCollider::Shape::Sphere: return cloth::PrimitiveCollider::sphere(centre, size);
+    case cloth::PrimitiveCollider::Shape::Sphere:
+      return cloth::PrimitiveCollider::sphere(centre, size);
     case cloth::PrimitiveCollider::Shape::Capsule:
       return cloth::PrimitiveCollider::capsule(centre - glm::vec3(1.5f * size, 0, 0),
                                                centre + glm::vec3(1.5f * size, 0, 0), 0.4f * size);
-    default: return cloth::PrimitiveCollider::plane(floor, {0.0f, 1.0f, 0.0f});
+    default:
+      return cloth::PrimitiveCollider::plane(floor, {0.0f, 1.0f, 0.0f});
   }
 }
 
@@ -466,12 +472,12 @@ void GarmentTool::addCollider(cloth::PrimitiveCollider::Shape shape) {
   setCurrentCollider(colliderCount() - 1);
 }
 
-bool GarmentTool::setCollider(int index, const cloth::PrimitiveCollider& collider, int mergeKey,
-                              const QString& text) {
+bool GarmentTool::setCollider(int index, const cloth::PrimitiveCollider& collider, int mergeKey, const QString& text) {
   if (index < 0 || index >= colliderCount()) return false;
   const bool isPlane = collider.shape == cloth::PrimitiveCollider::Shape::Plane;
   QString problem;
-  if (!finite(collider.a) || !finite(collider.b) || !std::isfinite(collider.radius) || !std::isfinite(collider.friction))
+  if (!finite(collider.a) || !finite(collider.b) || !std::isfinite(collider.radius) ||
+      !std::isfinite(collider.friction))
     problem = tr("collider values must be finite numbers");
   else if (isPlane && !(glm::length(collider.b) > 0.0f))
     problem = tr("a plane's normal must not be zero");
@@ -644,7 +650,8 @@ void GarmentTool::rebuildSheet() {
     lastError_ = QString::fromStdString(e.what());
   }
   sheet_->builtFrom = wanted;
-  sheet_->actor.setShading(render::clothShadingForFabric(scene_.cloth.fabricPreset.empty() ? "cotton" : scene_.cloth.fabricPreset));
+  sheet_->actor.setShading(
+      render::clothShadingForFabric(scene_.cloth.fabricPreset.empty() ? "cotton" : scene_.cloth.fabricPreset));
 }
 
 void GarmentTool::setCurrentGarment(int index) {
@@ -816,8 +823,10 @@ bool GarmentTool::exportBake(const QString& dir, bool pointCache) {
     for (size_t g = 0; g < bake_->garments.size(); ++g) {
       const bool garment = g < scene_.garments.size();
       const std::string stem = garment ? cloth::garmentFileStem(scene_.garments[g].name, g) : "sheet";
-      if (pointCache) bake_->garments[g].exportPointCache(dir.toStdString(), stem);
-      else bake_->garments[g].exportObjSequence(dir.toStdString(), stem);
+      if (pointCache)
+        bake_->garments[g].exportPointCache(dir.toStdString(), stem);
+      else
+        bake_->garments[g].exportObjSequence(dir.toStdString(), stem);
     }
   } catch (const std::exception& e) {
     lastError_ = QString::fromStdString(e.what());
@@ -874,7 +883,8 @@ void GarmentTool::loadBakeBeside(const QString& documentPath) {
     const std::vector<View*> views = simulatedViews();
     bool fits = cache.garments.size() == views.size() && !cache.garments.empty();
     for (size_t i = 0; fits && i < views.size(); ++i)
-      fits = cache.garments[i].frameCount() > 0 && cache.garments[i].frame(0).size() == 3 * views[i]->mesh.vertexCount();
+      fits =
+          cache.garments[i].frameCount() > 0 && cache.garments[i].frame(0).size() == 3 * views[i]->mesh.vertexCount();
     const int frames = fits ? int(cache.garments[0].frameCount()) : 0;
     const bool clipExists = cache.clip < int(window_->document()->character().clips.size());
     if (!fits || !clipExists || cache.key != bakeKey(cache.clip, cache.start, frames)) {
@@ -900,7 +910,9 @@ int GarmentTool::bakedFrameCount() const {
   return bake_ && !bake_->garments.empty() ? int(bake_->garments[0].frameCount()) : 0;
 }
 
-std::vector<float> GarmentTool::posedBody() const { return concatenatedPositions(window_->document()->posed().meshes()); }
+std::vector<float> GarmentTool::posedBody() const {
+  return concatenatedPositions(window_->document()->posed().meshes());
+}
 
 // Every garment starts from its kept sewn state when there is one, else from
 // the placed panels (its sewn state is kept once the seams are done).
@@ -1052,8 +1064,8 @@ void GarmentTool::onStepFinished() {
     // Sewing ends by the weld, at the latest after the sewing time limit.
     const float limit = cloth::GarmentSimulationSettings{}.maxSewingSeconds + 0.25f;
     window_->showProgress(tr("Sewing the garments"), std::min(99, int(100.0f * simulatedSeconds_ / limit)));
-  }
-  else if (sewingShown_) window_->hideProgress(tr("Garments sewn"));
+  } else if (sewingShown_)
+    window_->hideProgress(tr("Garments sewn"));
   sewingShown_ = sewing;
   showGarments();
   emit simulationChanged();
@@ -1149,8 +1161,10 @@ bool settle(GarmentTool::BakeGarment& g, const std::vector<float>& rest, const s
             const std::atomic<bool>& cancel, const std::function<void(int)>& stepped, PhaseClock& clock) {
   cloth::GarmentSimulation& simulation = *g.simulation;
   cloth::DrapeSchedule drape;
-  if (g.warm) drape.skipToPose();  // on the first frame's body already: it only settles
-  else if (g.sewn) drape.skipSewing();
+  if (g.warm)
+    drape.skipToPose();  // on the first frame's body already: it only settles
+  else if (g.sewn)
+    drape.skipSewing();
   std::vector<float> body;
   for (int step = 0; step < g.settleSteps && (g.warm || !drape.draped()); ++step) {
     if (cancel) return false;
@@ -1182,7 +1196,8 @@ bool bakeFrames(std::vector<GarmentTool::BakeGarment>& garments, const std::vect
   std::vector<cloth::GarmentSimulation*> simulations;
   for (GarmentTool::BakeGarment& g : garments) simulations.push_back(g.simulation.get());
   cloth::wearInLayers(simulations, order, [&](size_t g) { return g < layered; });
-  if (std::min(layered, garments.size()) > 1 && !bodies.empty() && !bodies[0].empty())  // no character: frame 1 is the placed cloth
+  if (std::min(layered, garments.size()) > 1 && !bodies.empty() &&
+      !bodies[0].empty())  // no character: frame 1 is the placed cloth
     for (int s = 0; s < int(std::ceil(kLayerSettleSeconds * fps)); ++s) {
       if (cancel) return false;
       for (size_t g : order) garments[g].simulation->step(1.0f / fps, bodyOrNull(bodies[0]));
@@ -1299,7 +1314,8 @@ bool GarmentTool::bake(float from, float to, bool askIfLong) {
       for (size_t g = 0; g < garments.size(); ++g) {
         BakeGarment& garment = garments[g];
         if (!garment.draped &&
-            !settle(garment, restBody_, bodies[0], 1.0f / fps, cancelBake_, [&](int s) { done = base[g] + s; }, clock))
+            !settle(
+                garment, restBody_, bodies[0], 1.0f / fps, cancelBake_, [&](int s) { done = base[g] + s; }, clock))
           return QString();
       }
       // ... then they go through the clip together, in layers.
@@ -1308,8 +1324,9 @@ bool GarmentTool::bake(float from, float to, bool askIfLong) {
       for (const BakeGarment& g : garments) baked.emplace_back(g.simulation->triangles(), fps);
       std::vector<std::vector<std::vector<float>>> stretch(garments.size());
       const int settled = total - frames * int(garments.size());
-      if (!bakeFrames(garments, order, garmentViews, bodies, fps, cancelBake_,
-                      [&](int f) { done = settled + f * int(garments.size()); }, baked, stretch))
+      if (!bakeFrames(
+              garments, order, garmentViews, bodies, fps, cancelBake_,
+              [&](int f) { done = settled + f * int(garments.size()); }, baked, stretch))
         return QString();
       clock.charge(PhaseClock::Frames);
       result->garments = std::move(baked);
@@ -1342,8 +1359,10 @@ bool GarmentTool::bake(float from, float to, bool askIfLong) {
 
   // What was sewn or draped is kept, even when the bake was cancelled later.
   for (BakeGarment& g : garments) {
-    if (g.sewn && !g.sewnState) ++reusedSewings_;
-    else ++sewingRuns_;
+    if (g.sewn && !g.sewnState)
+      ++reusedSewings_;
+    else
+      ++sewingRuns_;
     if (g.sewnState) keepState(g.sewnKey, std::move(*g.sewnState));
     if (g.drapedState) keepState(g.drapedKey, std::move(*g.drapedState));
   }
@@ -1439,10 +1458,14 @@ void GarmentTool::setSelectMode(bool on) {
 bool GarmentTool::eventFilter(QObject* watched, QEvent* event) {
   if (watched != window_->viewport() || current_ < 0) return false;
   switch (event->type()) {
-    case QEvent::MouseButtonPress: return onPress(static_cast<QMouseEvent*>(event));
-    case QEvent::MouseMove: return onMove(static_cast<QMouseEvent*>(event));
-    case QEvent::MouseButtonRelease: return onRelease(static_cast<QMouseEvent*>(event));
-    default: return false;
+    case QEvent::MouseButtonPress:
+      return onPress(static_cast<QMouseEvent*>(event));
+    case QEvent::MouseMove:
+      return onMove(static_cast<QMouseEvent*>(event));
+    case QEvent::MouseButtonRelease:
+      return onRelease(static_cast<QMouseEvent*>(event));
+    default:
+      return false;
   }
 }
 
@@ -1475,8 +1498,10 @@ bool GarmentTool::onRelease(QMouseEvent* event) {
   const Qt::KeyboardModifiers mods = event->modifiers();
   const bool chord = (mods & Qt::ControlModifier) && (mods & Qt::AltModifier);
   SelectOp op = SelectOp::Replace;
-  if (mods & Qt::ShiftModifier) op = SelectOp::Add;
-  else if ((mods & Qt::ControlModifier) && !chord) op = SelectOp::Remove;
+  if (mods & Qt::ShiftModifier)
+    op = SelectOp::Add;
+  else if ((mods & Qt::ControlModifier) && !chord)
+    op = SelectOp::Remove;
   selectInRect(rect, op);
   return true;
 }

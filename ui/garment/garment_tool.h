@@ -228,6 +228,7 @@ class GarmentTool : public QObject {
  private:
   struct View;
   struct Bake;
+
  public:
   struct BakeGarment;  // one garment of a bake (garment_tool.cpp)
 
@@ -311,7 +312,7 @@ class GarmentTool : public QObject {
   float simulatedSeconds_ = 0.0f;
   QElapsedTimer stepClock_;       // since the last step finished
   double framesPerSecond_ = 0.0;  // smoothed
-  bool sewingShown_ = false;  // the status bar shows the sewing progress
+  bool sewingShown_ = false;      // the status bar shows the sewing progress
   QFutureWatcher<QString> stepWatcher_;
 
   // Bake

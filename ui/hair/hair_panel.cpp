@@ -27,10 +27,29 @@ namespace mq::ui {
 namespace {
 
 enum FieldKey {
-  kStrength = 1, kRadius, kAxisX, kAxisY, kAxisZ, kPosX, kPosY, kPosZ,
-  kDensity, kLength, kClumping, kFrizz, kRootColor, kTipColor,
-  kScalpAxisX, kScalpAxisY, kScalpAxisZ, kScalpAngle,
-  kShadingModel, kMelanin, kPheomelanin, kRoughness, kPigmentPreset
+  kStrength = 1,
+  kRadius,
+  kAxisX,
+  kAxisY,
+  kAxisZ,
+  kPosX,
+  kPosY,
+  kPosZ,
+  kDensity,
+  kLength,
+  kClumping,
+  kFrizz,
+  kRootColor,
+  kTipColor,
+  kScalpAxisX,
+  kScalpAxisY,
+  kScalpAxisZ,
+  kScalpAngle,
+  kShadingModel,
+  kMelanin,
+  kPheomelanin,
+  kRoughness,
+  kPigmentPreset
 };
 
 // Scalp cone axes (world, rest pose; the character faces +Z).
@@ -45,9 +64,12 @@ bool sameDirection(const glm::vec3& a, const glm::vec3& b) {
 
 QString kindName(PrimitiveRef::Kind kind) {
   switch (kind) {
-    case PrimitiveRef::Stream: return QObject::tr("Stream");
-    case PrimitiveRef::Source: return QObject::tr("Source");
-    default: return QObject::tr("Vortex");
+    case PrimitiveRef::Stream:
+      return QObject::tr("Stream");
+    case PrimitiveRef::Source:
+      return QObject::tr("Source");
+    default:
+      return QObject::tr("Vortex");
   }
 }
 
@@ -72,8 +94,10 @@ HairPanel::HairPanel(HairTool* tool, QWidget* parent) : QWidget(parent), tool_(t
   styleForm->addRow(tr("Hairstyle"), styleCombo_);
   layout->addLayout(styleForm);
   connect(styleCombo_, &QComboBox::activated, this, [this](int index) {
-    if (index == 0) tool_->removeHair();
-    else if (index < styleCombo_->count() - 1) tool_->useBuiltinStyle(styleCombo_->itemText(index));
+    if (index == 0)
+      tool_->removeHair();
+    else if (index < styleCombo_->count() - 1)
+      tool_->useBuiltinStyle(styleCombo_->itemText(index));
   });
 
   // Primitives
@@ -173,9 +197,10 @@ HairPanel::HairPanel(HairTool* tool, QWidget* parent) : QWidget(parent), tool_(t
   displayLimit_->setSingleStep(5000);
   displayLimit_->setGroupSeparatorShown(true);
   displayLimit_->setKeyboardTracking(false);
-  displayLimit_->setToolTip(tr("The viewport grows at most this many strands (an editor setting, not saved in the "
-                               "document; the document keeps its density). Software OpenGL draws about 40,000 "
-                               "fluidly."));
+  displayLimit_->setToolTip(
+      tr("The viewport grows at most this many strands (an editor setting, not saved in the "
+         "document; the document keeps its density). Software OpenGL draws about 40,000 "
+         "fluidly."));
   displayCount_ = new QLabel;
   strandForm->addRow(tr("Display at most"), displayLimit_);
   strandForm->addRow(displayCount_);
@@ -187,8 +212,9 @@ HairPanel::HairPanel(HairTool* tool, QWidget* parent) : QWidget(parent), tool_(t
           [this](double v) { editField(tr("Hair density"), kDensity, [&](HairStyle& s) { s.density = float(v); }); });
   connect(length_, &QDoubleSpinBox::valueChanged, this,
           [this](double v) { editField(tr("Hair length"), kLength, [&](HairStyle& s) { s.length = float(v); }); });
-  connect(clumping_, &QDoubleSpinBox::valueChanged, this,
-          [this](double v) { editField(tr("Hair clumping"), kClumping, [&](HairStyle& s) { s.clumping = float(v); }); });
+  connect(clumping_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+    editField(tr("Hair clumping"), kClumping, [&](HairStyle& s) { s.clumping = float(v); });
+  });
   connect(frizz_, &QDoubleSpinBox::valueChanged, this,
           [this](double v) { editField(tr("Hair frizz"), kFrizz, [&](HairStyle& s) { s.frizz = float(v); }); });
   connect(rootColor_, &QPushButton::clicked, this, [this] { pickColor(true); });
@@ -202,8 +228,9 @@ HairPanel::HairPanel(HairTool* tool, QWidget* parent) : QWidget(parent), tool_(t
   handles_ = new QCheckBox(tr("Show primitive handles"));
   handles_->setChecked(true);
   shadowMaps_ = new QCheckBox(tr("Opacity shadow maps"));
-  shadowMaps_->setToolTip(tr("Self-shadowing from a stack of opacity maps along the light (faster) "
-                             "instead of the exact count of the hair in front of each point"));
+  shadowMaps_->setToolTip(
+      tr("Self-shadowing from a stack of opacity maps along the light (faster) "
+         "instead of the exact count of the hair in front of each point"));
   simulate_ = new QCheckBox(tr("Simulate while playing"));
   bake_ = new QPushButton(tr("Bake clip"));
   dynamicsLayout->addWidget(handles_);
@@ -241,9 +268,10 @@ QWidget* HairPanel::makeShadingGroup() {
   shadingModel_ = new QComboBox;
   shadingModel_->addItem(tr("Kajiya-Kay"));
   shadingModel_->addItem(tr("Physical (Marschner)"));
-  shadingModel_->setToolTip(tr("Kajiya-Kay: the root and tip colours with shifted highlights. Physical: a fibre "
-                               "that reflects, transmits and absorbs (R, TT and TRT lobes), coloured by its "
-                               "melanin."));
+  shadingModel_->setToolTip(
+      tr("Kajiya-Kay: the root and tip colours with shifted highlights. Physical: a fibre "
+         "that reflects, transmits and absorbs (R, TT and TRT lobes), coloured by its "
+         "melanin."));
   melanin_ = addSpin(0.0, 8.0, 0.1, 2);
   melanin_->setToolTip(tr("Eumelanin, the brown-black pigment: 0 white, 0.3 blond, 1.3 brown, 8 black"));
   pheomelanin_ = addSpin(0.0, 4.0, 0.1, 2);
@@ -315,9 +343,10 @@ QWidget* HairPanel::makeScalpGroup() {
   scalpMode_->addItem(tr("Tagged scalp"));
   scalpMode_->addItem(tr("Head bone cone"));
   scalpMode_->addItem(tr("Automatic"));
-  scalpMode_->setToolTip(tr("Tagged: the character's scalp vertices (the default mannequin). Head bone cone: the "
-                            "faces the bone drives within an angle of an axis. Automatic: the tagged scalp, else "
-                            "the top and back of the head."));
+  scalpMode_->setToolTip(
+      tr("Tagged: the character's scalp vertices (the default mannequin). Head bone cone: the "
+         "faces the bone drives within an angle of an axis. Automatic: the tagged scalp, else "
+         "the top and back of the head."));
   scalpBone_ = new QComboBox;
   scalpAxisPreset_ = new QComboBox;
   scalpAxisPreset_->addItem(tr("Up"));
@@ -496,7 +525,8 @@ void HairPanel::addPrimitive(int kind) {
     after.primitives.sources.push_back({k * glm::vec3(0.0f, 0.05f, 0.12f), 0.3f * k, 0.05f * k});
     ref.index = int(after.primitives.sources.size()) - 1;
   } else {
-    after.primitives.vortices.push_back({k * glm::vec3(0.0f, -0.15f, -0.12f), glm::vec3(0.0f, -1.0f, 0.0f), 0.5f, 0.05f * k});
+    after.primitives.vortices.push_back(
+        {k * glm::vec3(0.0f, -0.15f, -0.12f), glm::vec3(0.0f, -1.0f, 0.0f), 0.5f, 0.05f * k});
     ref.index = int(after.primitives.vortices.size()) - 1;
   }
   lastFieldKey_ = 0;
@@ -521,9 +551,8 @@ void HairPanel::pickColor(bool root) {
   const glm::vec3 current = root ? tool_->style().rootColor : tool_->style().tipColor;
   const QColor chosen = QColorDialog::getColor(toQColor(current), this, root ? tr("Root colour") : tr("Tip colour"));
   if (!chosen.isValid()) return;
-  editField(root ? tr("Hair root colour") : tr("Hair tip colour"), root ? kRootColor : kTipColor, [&](HairStyle& s) {
-    (root ? s.rootColor : s.tipColor) = fromQColor(chosen);
-  });
+  editField(root ? tr("Hair root colour") : tr("Hair tip colour"), root ? kRootColor : kTipColor,
+            [&](HairStyle& s) { (root ? s.rootColor : s.tipColor) = fromQColor(chosen); });
 }
 
 void HairPanel::refresh() {
@@ -582,9 +611,10 @@ void HairPanel::refreshStrandCounts() {
     const size_t wanted = tool_->documentStrandCount();
     const size_t shown = std::min(wanted, tool_->displayStrandLimit());
     const QLocale locale;
-    displayCount_->setText(shown < wanted ? tr("Displaying %1 of %2 strands")
-                                                .arg(locale.toString(qulonglong(shown)), locale.toString(qulonglong(wanted)))
-                                          : tr("Displaying all %1 strands").arg(locale.toString(qulonglong(wanted))));
+    displayCount_->setText(shown < wanted
+                               ? tr("Displaying %1 of %2 strands")
+                                     .arg(locale.toString(qulonglong(shown)), locale.toString(qulonglong(wanted)))
+                               : tr("Displaying all %1 strands").arg(locale.toString(qulonglong(wanted))));
   } else {
     status_->setText(tool_->lastError().isEmpty() ? tr("No hair: pick a hairstyle.") : tool_->lastError());
     displayCount_->clear();

@@ -36,8 +36,8 @@ namespace {
 const char* const kDisplayStrandLimitKey = "hair/displayStrandLimit";
 
 glm::quat rotationOf(const glm::mat4& m) {
-  return glm::normalize(glm::quat_cast(glm::mat3(glm::normalize(glm::vec3(m[0])), glm::normalize(glm::vec3(m[1])),
-                                                 glm::normalize(glm::vec3(m[2])))));
+  return glm::normalize(glm::quat_cast(
+      glm::mat3(glm::normalize(glm::vec3(m[0])), glm::normalize(glm::vec3(m[1])), glm::normalize(glm::vec3(m[2])))));
 }
 
 }  // namespace
@@ -167,7 +167,8 @@ void HairTool::storeSection() {
 // ---- Editing ----
 
 void HairTool::editStyle(const HairStyle& after, const QString& text, int mergeKey, bool live) {
-  window_->document()->undoStack()->push(new HairStyleCommand(applyStyleSnapshot(), {style_, false}, {after, live}, text, mergeKey));
+  window_->document()->undoStack()->push(
+      new HairStyleCommand(applyStyleSnapshot(), {style_, false}, {after, live}, text, mergeKey));
 }
 
 void HairTool::useBuiltinStyle(const QString& name) {
@@ -183,7 +184,9 @@ void HairTool::useBuiltinStyle(const QString& name) {
 }
 
 void HairTool::removeHair() {
-  if (style_) window_->document()->undoStack()->push(new HairStyleCommand(applyStyleSnapshot(), {style_, false}, {std::nullopt, false}, tr("Remove hair")));
+  if (style_)
+    window_->document()->undoStack()->push(
+        new HairStyleCommand(applyStyleSnapshot(), {style_, false}, {std::nullopt, false}, tr("Remove hair")));
 }
 
 bool HairTool::makeGroom() {
@@ -234,9 +237,9 @@ size_t HairTool::documentStrandCount() const {
 // The document's count, else the style's density on this scalp (so a
 // smaller scalp grows fewer strands), at most the display limit.
 size_t HairTool::viewportStrandCount(const HairStyle& style) const {
-  const size_t wanted = requestedStrands_ ? requestedStrands_
-                                          : rootCountForDensity(groom_->scalp(), style.density,
-                                                                size_t(std::max(0, style.maxStrands)));
+  const size_t wanted =
+      requestedStrands_ ? requestedStrands_
+                        : rootCountForDensity(groom_->scalp(), style.density, size_t(std::max(0, style.maxStrands)));
   return std::clamp<size_t>(wanted, 1, displayStrandLimit_);
 }
 
@@ -309,7 +312,8 @@ bool HairTool::editScalp(const ScalpRegion& after, const QString& text, int merg
     return false;
   }
   lastError_.clear();
-  window_->document()->undoStack()->push(new HairScalpCommand([this](const ScalpRegion& region) { applyScalp(region); }, scalp_, after, text, mergeKey));
+  window_->document()->undoStack()->push(
+      new HairScalpCommand([this](const ScalpRegion& region) { applyScalp(region); }, scalp_, after, text, mergeKey));
   return true;
 }
 
@@ -502,9 +506,9 @@ bool HairTool::bake() {
     QCoreApplication::processEvents();
   };
   callbacks.cancelled = [&] { return progress.wasCanceled(); };
-  HairBake result = bakeHair(document->character(), document->clipIndex(),
-                             leadingStrands(groom_->strands(), groom_->guideCount()), characterHairParams(), {}, callbacks,
-                             rig_.get());
+  HairBake result =
+      bakeHair(document->character(), document->clipIndex(), leadingStrands(groom_->strands(), groom_->guideCount()),
+               characterHairParams(), {}, callbacks, rig_.get());
   window_->hideProgress(result.cancelled ? tr("Hair bake cancelled") : tr("Hair baked"));
   if (result.cancelled) return false;
   simulating_ = false;
@@ -525,10 +529,14 @@ QPoint HairTool::toDisplay(const QPointF& position) const {
 bool HairTool::eventFilter(QObject* watched, QEvent* event) {
   if (watched != window_->viewport() || !style_ || !groom_) return false;
   switch (event->type()) {
-    case QEvent::MouseButtonPress: return onPress(static_cast<QMouseEvent*>(event));
-    case QEvent::MouseMove: return onMove(static_cast<QMouseEvent*>(event));
-    case QEvent::MouseButtonRelease: return onRelease(static_cast<QMouseEvent*>(event));
-    default: return false;
+    case QEvent::MouseButtonPress:
+      return onPress(static_cast<QMouseEvent*>(event));
+    case QEvent::MouseMove:
+      return onMove(static_cast<QMouseEvent*>(event));
+    case QEvent::MouseButtonRelease:
+      return onRelease(static_cast<QMouseEvent*>(event));
+    default:
+      return false;
   }
 }
 

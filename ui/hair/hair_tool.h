@@ -27,8 +27,8 @@
 
 #include "core/hair/hairstyle.h"
 #include "core/hair/scalp.h"
-#include "sim/hair/hair_bake.h"
 #include "render/hair_handles.h"
+#include "sim/hair/hair_bake.h"
 #include "ui/hair/hair_style_command.h"
 #include "ui/hair/hair_worker.h"
 
@@ -193,7 +193,7 @@ class HairTool : public QObject {
   size_t displayStrandLimit_ = kDefaultDisplayStrandLimit;
   PrimitiveRef selected_;
   QString lastError_;
-  bool loading_ = false;  // a section being loaded: not written back
+  bool loading_ = false;     // a section being loaded: not written back
   bool guidesOnly_ = false;  // the actor shows the guides alone (during a drag)
 
   // Dynamics

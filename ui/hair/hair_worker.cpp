@@ -14,8 +14,8 @@ namespace mq::ui {
 namespace {
 
 bool rootsDiffer(const HairStyle& a, const HairStyle& b) {
-  return a.density != b.density || a.maxStrands != b.maxStrands || a.guideCount != b.guideCount ||
-         a.seed != b.seed || a.pointsPerStrand != b.pointsPerStrand;
+  return a.density != b.density || a.maxStrands != b.maxStrands || a.guideCount != b.guideCount || a.seed != b.seed ||
+         a.pointsPerStrand != b.pointsPerStrand;
 }
 
 // Colours and shading are shader uniforms: the strands stay.

@@ -151,9 +151,12 @@ void ApplyMotionDialog::rematch() {
   const bool usable = report_ && report_->matchedCount() > 0;
   applyButton()->setEnabled(usable);
   summary_->setStyleSheet(QString());
-  if (!motion_) summary_->setText(tr("Choose a BVH motion to see how its joints match %1's bones.").arg(characterName_));
-  else if (!usable) showProblem(tr("No joint of this motion matches a bone of %1: choose a bone-name map.").arg(characterName_));
-  else summary_->setText(QString::fromStdString(report_->summary(12)).replace("; ", "\n"));  // one list a line
+  if (!motion_)
+    summary_->setText(tr("Choose a BVH motion to see how its joints match %1's bones.").arg(characterName_));
+  else if (!usable)
+    showProblem(tr("No joint of this motion matches a bone of %1: choose a bone-name map.").arg(characterName_));
+  else
+    summary_->setText(QString::fromStdString(report_->summary(12)).replace("; ", "\n"));  // one list a line
 }
 
 // A problem with the chosen files: said in the dialog, and nothing to apply.

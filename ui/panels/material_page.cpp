@@ -9,8 +9,8 @@
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QImage>
-#include <QPixmap>
 #include <QLabel>
+#include <QPixmap>
 #include <QPushButton>
 #include <QUndoStack>
 #include <QVBoxLayout>
@@ -39,8 +39,10 @@ QPixmap thumbnailOf(const Material& m, const Character& character) {
   if (!ref.present() || ref.image >= static_cast<int>(character.images.size())) return {};
   const ImageSource& source = character.images[ref.image];
   QImage image;
-  if (!source.path.empty()) image.load(QString::fromStdString(source.path));
-  else image.loadFromData(source.encoded.data(), static_cast<int>(source.encoded.size()));
+  if (!source.path.empty())
+    image.load(QString::fromStdString(source.path));
+  else
+    image.loadFromData(source.encoded.data(), static_cast<int>(source.encoded.size()));
   if (image.isNull()) return {};
   return QPixmap::fromImage(image.scaled(96, 96, Qt::KeepAspectRatio, Qt::SmoothTransformation));
 }
@@ -73,10 +75,12 @@ MaterialPage::MaterialPage(EditorDocument* document, QWidget* parent) : QWidget(
   baseColour_->setToolTip(tr("Base colour factor (multiplies the base colour texture) and opacity"));
   connect(baseColour_, &QPushButton::clicked, this, [this] { pickColour(tr("Base colour"), true, true); });
   form_->addRow(tr("Base colour"), baseColour_);
-  metallic_ = addFactor(tr("Metallic"), 1.0, 0.05, tr("0: dielectric (skin, cloth); 1: metal"), &Material::metallicFactor);
+  metallic_ =
+      addFactor(tr("Metallic"), 1.0, 0.05, tr("0: dielectric (skin, cloth); 1: metal"), &Material::metallicFactor);
   roughness_ = addFactor(tr("Roughness"), 1.0, 0.05, tr("0: mirror-like; 1: fully diffuse highlights"),
                          &Material::roughnessFactor);
-  normalScale_ = addFactor(tr("Normal strength"), 10.0, 0.1, tr("Scales the normal map's bumps"), &Material::normalScale);
+  normalScale_ =
+      addFactor(tr("Normal strength"), 10.0, 0.1, tr("Scales the normal map's bumps"), &Material::normalScale);
   occlusion_ = addFactor(tr("Occlusion"), 1.0, 0.05, tr("How much the occlusion map darkens ambient light"),
                          &Material::occlusionStrength);
   emissive_ = new QPushButton;
@@ -148,18 +152,21 @@ void MaterialPage::pickColour(const QString& what, bool withAlpha, bool base) {
   if (index_ < 0) return;
   const Material& m = document_->character().materials[index_];
   const QColor current = base ? toQColor(m.baseColorFactor) : toQColor(glm::vec4(m.emissiveFactor, 1.0f));
-  const QColor picked = QColorDialog::getColor(current, this, what,
-                                               withAlpha ? QColorDialog::ShowAlphaChannel : QColorDialog::ColorDialogOptions());
+  const QColor picked = QColorDialog::getColor(
+      current, this, what, withAlpha ? QColorDialog::ShowAlphaChannel : QColorDialog::ColorDialogOptions());
   if (!picked.isValid()) return;
   const glm::vec4 linear = fromQColor(picked);
   edit(what, [&](Material& e) {
-    if (base) e.baseColorFactor = linear;
-    else e.emissiveFactor = glm::vec3(linear);
+    if (base)
+      e.baseColorFactor = linear;
+    else
+      e.emissiveFactor = glm::vec3(linear);
   });
 }
 
 void MaterialPage::showColour(QPushButton* button, const QColor& colour) {
-  button->setText(colour.name(QColor::HexRgb) + (colour.alpha() < 255 ? QString(" (%1%)").arg(colour.alpha() * 100 / 255) : ""));
+  button->setText(colour.name(QColor::HexRgb) +
+                  (colour.alpha() < 255 ? QString(" (%1%)").arg(colour.alpha() * 100 / 255) : ""));
   button->setStyleSheet(QString("QPushButton { background: %1; color: %2; }")
                             .arg(colour.name(QColor::HexRgb), colour.lightnessF() > 0.55 ? "black" : "white"));
 }

@@ -40,8 +40,7 @@ class MaterialPage : public QWidget {
   QLabel* thumbnailLabel() const { return thumbnail_; }
 
  private:
-  QDoubleSpinBox* addFactor(const QString& label, double max, double step, const QString& tip,
-                            float Material::*field);
+  QDoubleSpinBox* addFactor(const QString& label, double max, double step, const QString& tip, float Material::*field);
   void edit(const QString& what, const std::function<void(Material&)>& change);
   void pickColour(const QString& what, bool withAlpha, bool base);
   void showColour(QPushButton* button, const QColor& colour);

@@ -51,8 +51,10 @@ PropertiesPanel::PropertiesPanel(EditorDocument* document, QWidget* parent)
   connect(document_, &EditorDocument::poseChanged, this, [this] {
     ++poseGeneration_;
     crossings_->setText(tr("-"));
-    if (pages_->currentIndex() == BonePage) showBoneAngles();
-    else if (pages_->currentIndex() == CharacterPage) showCharacter();
+    if (pages_->currentIndex() == BonePage)
+      showBoneAngles();
+    else if (pages_->currentIndex() == CharacterPage)
+      showCharacter();
   });
   connect(document_, &EditorDocument::clipsChanged, this, [this] {
     if (pages_->currentIndex() == CharacterPage) showCharacter();
@@ -86,18 +88,20 @@ QWidget* PropertiesPanel::makeCharacterPage() {
   skinning_->addItem(tr("Linear blend (LBS)"), int(SkinningMethod::Lbs));
   skinning_->addItem(tr("Dual quaternion (DQS)"), int(SkinningMethod::Dqs));
   skinning_->addItem(tr("Section cones"), int(SkinningMethod::Cones));
-  skinning_->setToolTip(tr("How the skin follows the bones. Linear blend thins bent joints and collapses twists; "
-                           "dual quaternions keep the joint's section; section cones also keep the bend's volume "
-                           "and push folds out of the neighbouring limb."));
+  skinning_->setToolTip(
+      tr("How the skin follows the bones. Linear blend thins bent joints and collapses twists; "
+         "dual quaternions keep the joint's section; section cones also keep the bend's volume "
+         "and push folds out of the neighbouring limb."));
   connect(skinning_, &QComboBox::activated, this, [this](int index) {
     const auto method = SkinningMethod(skinning_->itemData(index).toInt());
     if (method != document_->skinning()) document_->undoStack()->push(new SetSkinningCommand(document_, method));
   });
   form->addRow(tr("Skinning"), skinning_);
   helperBones_ = new QCheckBox(tr("Helper bones"));
-  helperBones_->setToolTip(tr("Small bones at the shoulders, elbows, hips and knees that turn half as far as the "
-                              "limb, and two twist bones in each forearm: linear blend skinning then keeps bent "
-                              "joints round and twisted forearms thick. A humanoid's only."));
+  helperBones_->setToolTip(
+      tr("Small bones at the shoulders, elbows, hips and knees that turn half as far as the "
+         "limb, and two twist bones in each forearm: linear blend skinning then keeps bent "
+         "joints round and twisted forearms thick. A humanoid's only."));
   connect(helperBones_, &QCheckBox::clicked, this, [this](bool on) {
     const std::string refusal = on ? helperBonesRefusal(document_->character()) : std::string();
     if (!refusal.empty()) {
@@ -110,8 +114,9 @@ QWidget* PropertiesPanel::makeCharacterPage() {
   form->addRow(QString(), helperBones_);
   form->addRow(tr("Weights"), makeWeightsRow());
   crossings_ = new QLabel(tr("-"));
-  crossings_->setToolTip(tr("Triangle pairs of the skin that cross each other at this pose (exact predicates): "
-                            "what a fold or a limb pressed into the body does to the mesh."));
+  crossings_->setToolTip(
+      tr("Triangle pairs of the skin that cross each other at this pose (exact predicates): "
+         "what a fold or a limb pressed into the body does to the mesh."));
   countCrossings_ = new QPushButton(tr("Count"));
   connect(countCrossings_, &QPushButton::clicked, this, &PropertiesPanel::countCrossings);
   connect(&crossingsWatcher_, &QFutureWatcher<long>::finished, this, [this] {
@@ -126,8 +131,9 @@ QWidget* PropertiesPanel::makeCharacterPage() {
   crossingsRow->addWidget(countCrossings_);
   form->addRow(tr("Skin crossings"), crossingsRow);
   layout->addWidget(box);
-  auto* hint = new QLabel(tr("Click a bone in the viewport or the scene tree to pose it; "
-                             "drag a ring of the gizmo or type angles."));
+  auto* hint =
+      new QLabel(tr("Click a bone in the viewport or the scene tree to pose it; "
+                    "drag a ring of the gizmo or type angles."));
   hint->setWordWrap(true);
   hint->setEnabled(false);
   layout->addWidget(hint);
@@ -161,7 +167,8 @@ void PropertiesPanel::showCharacter() {
   characterTriangles_->setText(count(c.triangleCount()));
   characterBones_->setText(QString::number(c.skeleton.boneCount()));
   QStringList clips;
-  for (const Clip& clip : c.clips) clips << QString("%1 (%2 s)").arg(QString::fromStdString(clip.name)).arg(clip.duration(), 0, 'f', 2);
+  for (const Clip& clip : c.clips)
+    clips << QString("%1 (%2 s)").arg(QString::fromStdString(clip.name)).arg(clip.duration(), 0, 'f', 2);
   // One line: a label whose height changes later is not re-laid out inside
   // the stacked pages; the timeline's clip box lists the clips anyway.
   characterClips_->setText(QString::number(clips.size()));
@@ -173,8 +180,8 @@ void PropertiesPanel::showCharacter() {
   smoothWeights_->setChecked(document_->weightSettings().smooth);
   const WeightReport& report = document_->weightReport();
   weightsReport_->setText(!document_->weightSettings().active() ? tr("the file's")
-                          : report.vertices > 0             ? QString::fromStdString(report.summary())
-                                                            : tr("rebuilt when the scene opened"));
+                          : report.vertices > 0                 ? QString::fromStdString(report.summary())
+                                                                : tr("rebuilt when the scene opened"));
 }
 
 QWidget* PropertiesPanel::makeWeightsRow() {
@@ -183,13 +190,15 @@ QWidget* PropertiesPanel::makeWeightsRow() {
   layout->setContentsMargins(0, 0, 0, 0);
   auto* boxes = new QHBoxLayout;
   regenerateWeights_ = new QCheckBox(tr("Regenerate"));
-  regenerateWeights_->setToolTip(tr("Rebuild the skin weights (survey 1.2.5): each vertex goes to the bone whose "
-                                    "cylinder is nearest and which it sees from inside the skin, then the bones "
-                                    "blend over two section radii at each joint. Undo gives the file's weights "
-                                    "back; the setting is saved with the scene."));
+  regenerateWeights_->setToolTip(
+      tr("Rebuild the skin weights (survey 1.2.5): each vertex goes to the bone whose "
+         "cylinder is nearest and which it sees from inside the skin, then the bones "
+         "blend over two section radii at each joint. Undo gives the file's weights "
+         "back; the setting is saved with the scene."));
   smoothWeights_ = new QCheckBox(tr("Smooth"));
-  smoothWeights_->setToolTip(tr("Bound how fast a weight may change along the skin, by the section of the bone's "
-                                "cone: fingers switch over a finger's width, the pelvis over the pelvis's."));
+  smoothWeights_->setToolTip(
+      tr("Bound how fast a weight may change along the skin, by the section of the bone's "
+         "cone: fingers switch over a finger's width, the pelvis over the pelvis's."));
   connect(regenerateWeights_, &QCheckBox::clicked, this, &PropertiesPanel::applyWeightBoxes);
   connect(smoothWeights_, &QCheckBox::clicked, this, &PropertiesPanel::applyWeightBoxes);
   boxes->addWidget(regenerateWeights_);
@@ -284,8 +293,7 @@ void PropertiesPanel::showSelection() {
   if (bone >= 0) {
     const Bone& b = character.skeleton.bone(bone);
     boneName_->setText(QString::fromStdString(b.name));
-    boneParent_->setText(b.parent >= 0 ? QString::fromStdString(character.skeleton.bone(b.parent).name)
-                                       : tr("(root)"));
+    boneParent_->setText(b.parent >= 0 ? QString::fromStdString(character.skeleton.bone(b.parent).name) : tr("(root)"));
     QStringList children;
     for (int child : character.skeleton.children(bone))
       children << QString::fromStdString(character.skeleton.bone(child).name);
@@ -297,9 +305,10 @@ void PropertiesPanel::showSelection() {
     meshName_->setText(QString::fromStdString(m.name));
     meshVertices_->setText(count(m.vertexCount()));
     meshTriangles_->setText(count(m.triangleCount()));
-    meshSkin_->setText(m.skin.empty() ? tr("rigid") : tr("%1 joints, up to %2 per vertex")
-                                                          .arg(m.skin.jointBones.size())
-                                                          .arg(m.skin.maxInfluences()));
+    meshSkin_->setText(
+        m.skin.empty()
+            ? tr("rigid")
+            : tr("%1 joints, up to %2 per vertex").arg(m.skin.jointBones.size()).arg(m.skin.maxInfluences()));
     meshMorphs_->setText(QString::number(m.morphTargets.size()));
     pages_->setCurrentIndex(MeshPage);
   } else if (document_->selectedMaterial() >= 0) {

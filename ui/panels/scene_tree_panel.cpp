@@ -31,8 +31,7 @@ SceneTreePanel::SceneTreePanel(EditorDocument* document, QWidget* parent)
   connect(document_, &EditorDocument::skeletonChanged, this, &SceneTreePanel::rebuild);
   connect(document_, &EditorDocument::selectionChanged, this, &SceneTreePanel::showSelection);
   connect(document_, &EditorDocument::poseChanged, this, &SceneTreePanel::showPoseEdits);
-  connect(tree_, &QTreeWidget::currentItemChanged, this,
-          [this](QTreeWidgetItem* item) { onCurrentItemChanged(item); });
+  connect(tree_, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* item) { onCurrentItemChanged(item); });
   rebuild();
 }
 
@@ -68,8 +67,8 @@ void SceneTreePanel::rebuild() {
     materials->setIcon(0, style()->standardIcon(QStyle::SP_DirIcon));
     for (size_t i = 0; i < character.materials.size(); ++i) {
       const Material& material = character.materials[i];
-      auto* item = new QTreeWidgetItem(materials, {QString::fromStdString(material.name),
-                                                   material.textured() ? tr("textured") : QString()});
+      auto* item = new QTreeWidgetItem(
+          materials, {QString::fromStdString(material.name), material.textured() ? tr("textured") : QString()});
       item->setData(0, KindRole, KindMaterial);
       item->setData(0, IndexRole, static_cast<int>(i));
       materialItems_.push_back(item);
@@ -105,10 +104,12 @@ void SceneTreePanel::showPoseEdits() {
 void SceneTreePanel::showSelection() {
   syncing_ = true;
   QTreeWidgetItem* item = nullptr;
-  if (document_->selectedBone() >= 0) item = boneItem(document_->selectedBone());
+  if (document_->selectedBone() >= 0)
+    item = boneItem(document_->selectedBone());
   else if (document_->selectedMesh() >= 0 && document_->selectedMesh() < static_cast<int>(meshItems_.size()))
     item = meshItems_[document_->selectedMesh()];
-  else if (document_->selectedMaterial() >= 0 && document_->selectedMaterial() < static_cast<int>(materialItems_.size()))
+  else if (document_->selectedMaterial() >= 0 &&
+           document_->selectedMaterial() < static_cast<int>(materialItems_.size()))
     item = materialItems_[document_->selectedMaterial()];
   tree_->setCurrentItem(item);
   if (item) tree_->scrollToItem(item);
@@ -119,10 +120,18 @@ void SceneTreePanel::onCurrentItemChanged(QTreeWidgetItem* item) {
   if (syncing_ || !item) return;
   const int index = item->data(0, IndexRole).toInt();
   switch (item->data(0, KindRole).toInt()) {
-    case KindBone: document_->selectBone(index); break;
-    case KindMesh: document_->selectMesh(index); break;
-    case KindMaterial: document_->selectMaterial(index); break;
-    default: document_->selectBone(-1); break;
+    case KindBone:
+      document_->selectBone(index);
+      break;
+    case KindMesh:
+      document_->selectMesh(index);
+      break;
+    case KindMaterial:
+      document_->selectMaterial(index);
+      break;
+    default:
+      document_->selectBone(-1);
+      break;
   }
 }
 

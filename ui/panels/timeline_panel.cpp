@@ -131,9 +131,9 @@ void TimelinePanel::showClip() {
   const int frames = std::max(0, int(std::ceil(duration / framePeriod() - 1e-3f)));
   slider_->setRange(0, frames);
   slider_->setTickInterval(std::max(1, fps_->value() / 2));
-  for (QWidget* w : {static_cast<QWidget*>(slider_), static_cast<QWidget*>(play_), static_cast<QWidget*>(toStart_),
-                     static_cast<QWidget*>(toEnd_), static_cast<QWidget*>(stepBack_),
-                     static_cast<QWidget*>(stepForward_)})
+  for (QWidget* w :
+       {static_cast<QWidget*>(slider_), static_cast<QWidget*>(play_), static_cast<QWidget*>(toStart_),
+        static_cast<QWidget*>(toEnd_), static_cast<QWidget*>(stepBack_), static_cast<QWidget*>(stepForward_)})
     w->setEnabled(hasAxis);
   if (!hasAxis) setPlaying(false);
   syncing_ = false;
@@ -147,10 +147,7 @@ void TimelinePanel::showTime() {
   syncing_ = true;
   slider_->setValue(frame);
   syncing_ = false;
-  timeLabel_->setText(tr("%1 / %2 s   frame %3")
-                          .arg(t, 0, 'f', 2)
-                          .arg(duration, 0, 'f', 2)
-                          .arg(frame, 3));
+  timeLabel_->setText(tr("%1 / %2 s   frame %3").arg(t, 0, 'f', 2).arg(duration, 0, 'f', 2).arg(frame, 3));
 }
 
 void TimelinePanel::onSliderMoved(int frame) {

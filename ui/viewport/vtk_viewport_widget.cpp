@@ -47,9 +47,8 @@ VtkViewportWidget::VtkViewportWidget(QWidget* parent)
   interactor_->EnableRenderOff();
   vtkNew<vtkCallbackCommand> onRender;
   onRender->SetClientData(this);
-  onRender->SetCallback([](vtkObject*, unsigned long, void* self, void*) {
-    static_cast<VtkViewportWidget*>(self)->requestRender();
-  });
+  onRender->SetCallback(
+      [](vtkObject*, unsigned long, void* self, void*) { static_cast<VtkViewportWidget*>(self)->requestRender(); });
   interactor_->AddObserver(vtkCommand::RenderEvent, onRender);
 
   auto style = vtkSmartPointer<DccCameraStyle>::New();
@@ -93,7 +92,6 @@ void VtkViewportWidget::addRenderer(vtkRenderer* renderer) {
   renderWindow_->AddRenderer(renderer);
   requestRender();
 }
-
 
 void VtkViewportWidget::requestRender() {
   fullFramePending_ = true;
@@ -184,8 +182,7 @@ void VtkViewportWidget::paintGL() {
   state->vtkglBindFramebuffer(GL_DRAW_FRAMEBUFFER, defaultFramebufferObject());
   QOpenGLContext::currentContext()->functions()->glDisable(GL_SCISSOR_TEST);
   const int* size = renderWindow_->GetSize();
-  renderWindow_->BlitDisplayFramebuffer(0, 0, 0, size[0], size[1], 0, 0, pw, ph, GL_COLOR_BUFFER_BIT,
-                                        GL_LINEAR);
+  renderWindow_->BlitDisplayFramebuffer(0, 0, 0, size[0], size[1], 0, 0, pw, ph, GL_COLOR_BUFFER_BIT, GL_LINEAR);
   clearAlpha();
   state->Pop();
   emit frameRendered();
@@ -228,8 +225,7 @@ void VtkViewportWidget::clearAlpha() {
 
 // --- events -----------------------------------------------------------------
 
-void VtkViewportWidget::setEventInformation(const QPointF& position, Qt::KeyboardModifiers modifiers,
-                                            int repeat) {
+void VtkViewportWidget::setEventInformation(const QPointF& position, Qt::KeyboardModifiers modifiers, int repeat) {
   const qreal ratio = devicePixelRatioF();
   interactor_->SetEventInformationFlipY(int(position.x() * ratio), int(position.y() * ratio),
                                         (modifiers & Qt::ControlModifier) ? 1 : 0,
@@ -241,10 +237,17 @@ void VtkViewportWidget::mousePressEvent(QMouseEvent* event) {
   setFocus(Qt::MouseFocusReason);
   setEventInformation(event->position(), event->modifiers());
   switch (event->button()) {
-    case Qt::LeftButton: interactor_->LeftButtonPressEvent(); break;
-    case Qt::MiddleButton: interactor_->MiddleButtonPressEvent(); break;
-    case Qt::RightButton: interactor_->RightButtonPressEvent(); break;
-    default: return;
+    case Qt::LeftButton:
+      interactor_->LeftButtonPressEvent();
+      break;
+    case Qt::MiddleButton:
+      interactor_->MiddleButtonPressEvent();
+      break;
+    case Qt::RightButton:
+      interactor_->RightButtonPressEvent();
+      break;
+    default:
+      return;
   }
   event->accept();
 }
@@ -258,10 +261,17 @@ void VtkViewportWidget::mouseMoveEvent(QMouseEvent* event) {
 void VtkViewportWidget::mouseReleaseEvent(QMouseEvent* event) {
   setEventInformation(event->position(), event->modifiers());
   switch (event->button()) {
-    case Qt::LeftButton: interactor_->LeftButtonReleaseEvent(); break;
-    case Qt::MiddleButton: interactor_->MiddleButtonReleaseEvent(); break;
-    case Qt::RightButton: interactor_->RightButtonReleaseEvent(); break;
-    default: return;
+    case Qt::LeftButton:
+      interactor_->LeftButtonReleaseEvent();
+      break;
+    case Qt::MiddleButton:
+      interactor_->MiddleButtonReleaseEvent();
+      break;
+    case Qt::RightButton:
+      interactor_->RightButtonReleaseEvent();
+      break;
+    default:
+      return;
   }
   event->accept();
 }
@@ -276,8 +286,10 @@ void VtkViewportWidget::mouseDoubleClickEvent(QMouseEvent* event) {
 void VtkViewportWidget::wheelEvent(QWheelEvent* event) {
   setEventInformation(event->position(), event->modifiers());
   const int delta = event->angleDelta().y();
-  if (delta > 0) interactor_->MouseWheelForwardEvent();
-  else if (delta < 0) interactor_->MouseWheelBackwardEvent();
+  if (delta > 0)
+    interactor_->MouseWheelForwardEvent();
+  else if (delta < 0)
+    interactor_->MouseWheelBackwardEvent();
   event->accept();
 }
 

@@ -19,8 +19,14 @@ namespace mq::cloth {
 
 struct Box {
   glm::vec3 min{1e30f}, max{-1e30f};
-  void extend(const glm::vec3& p) { min = glm::min(min, p); max = glm::max(max, p); }
-  void extend(const Box& o) { min = glm::min(min, o.min); max = glm::max(max, o.max); }
+  void extend(const glm::vec3& p) {
+    min = glm::min(min, p);
+    max = glm::max(max, p);
+  }
+  void extend(const Box& o) {
+    min = glm::min(min, o.min);
+    max = glm::max(max, o.max);
+  }
   // Branch-free (the six comparisons at once): traversals test many boxes
   // whose outcome does not follow a pattern.
   bool overlaps(const Box& o) const {
@@ -170,7 +176,7 @@ class AabbTree {
   std::vector<Box> leafBoxes_;   // the primitives' boxes in order_'s order
   std::vector<LeafQuad> leafQuads_;
   std::vector<GrandNode> grandNodes_;  // grandNodes_[0]: the root's, when the root is not a leaf
-  std::vector<glm::vec3> centres_;  // build()'s scratch
+  std::vector<glm::vec3> centres_;     // build()'s scratch
 };
 
 inline unsigned AabbTree::overlapMask(const LeafQuad& q, const Box& box) {
@@ -207,7 +213,8 @@ void AabbTree::query(const Box& box, Visit&& visit) const {
 
 template <class Visit, class Skip>
 void AabbTree::query(const Box& box, Visit&& visit, Skip&& skip) const {
-  queryPlaces(box, [&](uint32_t k) { visit(order_[k]); }, skip);
+  queryPlaces(
+      box, [&](uint32_t k) { visit(order_[k]); }, skip);
 }
 
 template <class Visit, class Skip>
@@ -321,16 +328,20 @@ void AabbTree::runJob(const PairJob& job, Visit&& visit) const {
 
 template <class Visit, class SkipWithin>
 void AabbTree::runJob(const PairJob& job, Visit&& visit, SkipWithin&& skipWithin) const {
-  runJobAtPlaces(job, [&](uint32_t i, uint32_t j) { visit(order_[i], order_[j]); }, skipWithin,
-                 [](int32_t, int32_t) { return false; });
+  runJobAtPlaces(
+      job, [&](uint32_t i, uint32_t j) { visit(order_[i], order_[j]); }, skipWithin,
+      [](int32_t, int32_t) { return false; });
 }
 
 template <class Visit, class SkipWithin, class SkipBetween>
 void AabbTree::runJobAtPlaces(const PairJob& job, Visit&& visit, SkipWithin&& skipWithin,
                               SkipBetween&& skipBetween) const {
-  runJobInQuads(job, [&](uint32_t i, uint32_t first, unsigned mask) {
-    for (; mask != 0; mask &= mask - 1) visit(i, first + uint32_t(__builtin_ctz(mask)));
-  }, skipWithin, skipBetween);
+  runJobInQuads(
+      job,
+      [&](uint32_t i, uint32_t first, unsigned mask) {
+        for (; mask != 0; mask &= mask - 1) visit(i, first + uint32_t(__builtin_ctz(mask)));
+      },
+      skipWithin, skipBetween);
 }
 
 template <class VisitQuad, class SkipWithin, class SkipBetween>

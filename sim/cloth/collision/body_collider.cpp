@@ -103,7 +103,8 @@ void BodyCollider::moveTo(float fraction) {
   updateSlotCorners();
   for (size_t t = 0; t < boxes.size(); ++t) {
     const uint32_t a = triangles_[3 * t], b = triangles_[3 * t + 1], c = triangles_[3 * t + 2];
-    const glm::vec3 back = (previous_[a] + previous_[b] + previous_[c] - current_[a] - current_[b] - current_[c]) / 3.0f;
+    const glm::vec3 back =
+        (previous_[a] + previous_[b] + previous_[c] - current_[a] - current_[b] - current_[c]) / 3.0f;
     boxes[t].extend(Box{boxes[t].min + back, boxes[t].max + back});
   }
   sweptTree_.refit(boxes);
@@ -151,7 +152,8 @@ bool BodyCollider::firstHitAlong(const glm::vec3& from, const glm::vec3& to, Bod
 }
 
 glm::vec3 BodyCollider::unitFaceNormal(uint32_t t) const {
-  const glm::vec3 &a = current_[triangles_[3 * t]], &b = current_[triangles_[3 * t + 1]], &c = current_[triangles_[3 * t + 2]];
+  const glm::vec3 &a = current_[triangles_[3 * t]], &b = current_[triangles_[3 * t + 1]],
+                  &c = current_[triangles_[3 * t + 2]];
   const glm::vec3 n = glm::cross(b - a, c - a);
   const float length = glm::length(n);
   return length > 0.0f ? n / length : glm::vec3(0.0f);
@@ -183,7 +185,8 @@ glm::vec3 BodyCollider::pseudoNormal(uint32_t t, const glm::vec3& w) const {
 }
 
 inline glm::vec3 BodyCollider::velocityAt(uint32_t t, const glm::vec3& w) const {
-  return w.x * velocity_[triangles_[3 * t]] + w.y * velocity_[triangles_[3 * t + 1]] + w.z * velocity_[triangles_[3 * t + 2]];
+  return w.x * velocity_[triangles_[3 * t]] + w.y * velocity_[triangles_[3 * t + 1]] +
+         w.z * velocity_[triangles_[3 * t + 2]];
 }
 
 inline float BodyCollider::considerTriangle(uint32_t t, const glm::vec3& p, Nearest& best) const {
@@ -224,13 +227,15 @@ inline __m128 dot(const Vec4& a, const Vec4& b) {
   return _mm_add_ps(_mm_add_ps(_mm_mul_ps(a.x, b.x), _mm_mul_ps(a.y, b.y)), _mm_mul_ps(a.z, b.z));
 }
 inline Vec4 cross(const Vec4& a, const Vec4& b) {
-  return {_mm_sub_ps(_mm_mul_ps(a.y, b.z), _mm_mul_ps(a.z, b.y)), _mm_sub_ps(_mm_mul_ps(a.z, b.x), _mm_mul_ps(a.x, b.z)),
+  return {_mm_sub_ps(_mm_mul_ps(a.y, b.z), _mm_mul_ps(a.z, b.y)),
+          _mm_sub_ps(_mm_mul_ps(a.z, b.x), _mm_mul_ps(a.x, b.z)),
           _mm_sub_ps(_mm_mul_ps(a.x, b.y), _mm_mul_ps(a.y, b.x))};
 }
 // Squared distance from the origin of `from` (p - the segment's start) to the segment along `edge`.
 inline __m128 segmentDistance2(const Vec4& from, const Vec4& edge) {
   // A zero-length edge gives 0 / 0: max() takes its second operand for a NaN, so t = 0.
-  const __m128 t = _mm_min_ps(_mm_max_ps(_mm_div_ps(dot(from, edge), dot(edge, edge)), _mm_setzero_ps()), _mm_set1_ps(1.0f));
+  const __m128 t =
+      _mm_min_ps(_mm_max_ps(_mm_div_ps(dot(from, edge), dot(edge, edge)), _mm_setzero_ps()), _mm_set1_ps(1.0f));
   const Vec4 off{_mm_sub_ps(from.x, _mm_mul_ps(t, edge.x)), _mm_sub_ps(from.y, _mm_mul_ps(t, edge.y)),
                  _mm_sub_ps(from.z, _mm_mul_ps(t, edge.z))};
   return dot(off, off);
@@ -258,11 +263,13 @@ void slotLowerBounds(const float (&corner)[3][3][4], const glm::vec3& p, float o
   const Vec4 n = cross(ab, ac);
   const __m128 n2 = dot(n, n), zero = _mm_setzero_ps();
   // Over the triangle: p left of each edge, seen along the normal.
-  const __m128 over = _mm_and_ps(_mm_and_ps(_mm_cmpge_ps(dot(cross(ab, pa), n), zero), _mm_cmpge_ps(dot(cross(bc, pb), n), zero)),
-                                 _mm_cmpge_ps(dot(cross(ca, pc), n), zero));
+  const __m128 over =
+      _mm_and_ps(_mm_and_ps(_mm_cmpge_ps(dot(cross(ab, pa), n), zero), _mm_cmpge_ps(dot(cross(bc, pb), n), zero)),
+                 _mm_cmpge_ps(dot(cross(ca, pc), n), zero));
   const __m128 height = dot(pa, n);
   const __m128 plane2 = _mm_div_ps(_mm_mul_ps(height, height), n2);
-  const __m128 edge2 = _mm_min_ps(_mm_min_ps(segmentDistance2(pa, ab), segmentDistance2(pb, bc)), segmentDistance2(pc, ca));
+  const __m128 edge2 =
+      _mm_min_ps(_mm_min_ps(segmentDistance2(pa, ab), segmentDistance2(pb, bc)), segmentDistance2(pc, ca));
   const __m128 longest2 = _mm_max_ps(_mm_max_ps(dot(ab, ab), dot(bc, bc)), dot(ca, ca));
   const __m128 sliver = _mm_cmplt_ps(n2, _mm_mul_ps(_mm_set1_ps(kSliver), _mm_mul_ps(longest2, longest2)));
   const __m128 bound = _mm_or_ps(_mm_and_ps(over, plane2), _mm_andnot_ps(over, edge2));
@@ -370,11 +377,13 @@ bool BodyCollider::nearestContactSince(const glm::vec3& p, BodyContact& contact,
 
 bool BodyCollider::provesNoneWithin(const BodyQuery& last, const glm::vec3& p, float radius) const {
   if (last.pose != pose_) return false;
-  const float nearest = last.found ? std::abs(last.contact.signedDistance) : last.clearance;  // from last.point, at least
+  const float nearest =
+      last.found ? std::abs(last.contact.signedDistance) : last.clearance;  // from last.point, at least
   return nearest - glm::length(p - last.point) - kBoundSlack > radius;
 }
 
-bool BodyCollider::firstHitAlong(const glm::vec3& from, const glm::vec3& to, BodyContact& contact, BodyQuery& last) const {
+bool BodyCollider::firstHitAlong(const glm::vec3& from, const glm::vec3& to, BodyContact& contact,
+                                 BodyQuery& last) const {
   if (last.missMove == move_ && last.missFrom == from && last.missTo == to) return false;
   if (firstHitAlong(from, to, contact)) return true;
   last.missMove = move_;
@@ -395,8 +404,10 @@ bool BodyCollider::contactAt(const glm::vec3& p, const Nearest& best, BodyContac
   contact.point = q;
   contact.signedDistance = inside ? -d : d;
   // Out of the body is along the shortest way to the surface.
-  if (d > 1e-6f) contact.normal = inside ? (q - p) / d : (p - q) / d;
-  else contact.normal = glm::length(side) > 0.0f ? glm::normalize(side) : unitFaceNormal(uint32_t(nearest));
+  if (d > 1e-6f)
+    contact.normal = inside ? (q - p) / d : (p - q) / d;
+  else
+    contact.normal = glm::length(side) > 0.0f ? glm::normalize(side) : unitFaceNormal(uint32_t(nearest));
   contact.velocity = velocityAt(uint32_t(nearest), weights);
   contact.triangle = int32_t(nearest);
   return true;

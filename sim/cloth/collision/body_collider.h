@@ -38,10 +38,10 @@ struct BodyQuery {
   glm::vec3 point{0.0f};
   float radius = 0.0f;
   bool found = false;
-  float clearance = 0.0f;  // when not found: the surface is no nearer than this (>= radius)
-  BodyContact contact;  // when found
-  float distance2 = 0.0f;      // when found: the nearest triangle's squared distance, as the search had it
-  glm::vec3 weights{0.0f};     // ... and the contact point's barycentric weights on it
+  float clearance = 0.0f;              // when not found: the surface is no nearer than this (>= radius)
+  BodyContact contact;                 // when found
+  float distance2 = 0.0f;              // when found: the nearest triangle's squared distance, as the search had it
+  glm::vec3 weights{0.0f};             // ... and the contact point's barycentric weights on it
   uint32_t queries = 0, searches = 0;  // counts for the stats: queries asked, and those that searched the body
   // The point's last segment without a hit (firstHitAlong()), and the move it was tested in.
   uint64_t missMove = 0;
@@ -67,7 +67,9 @@ class BodyCollider {
   // still vertex and leave it inside or on its far side.
   bool firstHitAlong(const glm::vec3& from, const glm::vec3& to, BodyContact& contact) const;
   // Nearest contact within the search radius; false when there is none.
-  bool nearestContact(const glm::vec3& p, BodyContact& contact) const { return nearestContact(p, contact, searchRadius_); }
+  bool nearestContact(const glm::vec3& p, BodyContact& contact) const {
+    return nearestContact(p, contact, searchRadius_);
+  }
   // ... within `radius` instead.
   bool nearestContact(const glm::vec3& p, BodyContact& contact, float radius) const {
     return nearestContact(p, contact, radius, -1);
@@ -137,12 +139,12 @@ class BodyCollider {
   bool contactAt(const glm::vec3& p, const Nearest& best, BodyContact& contact) const;
 
   std::vector<uint32_t> triangles_;
-  std::vector<int32_t> edgeNeighbour_;  // 3 per triangle: the triangle across edge (i, i+1), or -1
+  std::vector<int32_t> edgeNeighbour_;               // 3 per triangle: the triangle across edge (i, i+1), or -1
   std::vector<uint32_t> ringStart_, ringTriangles_;  // vertex -> triangles around it (CSR)
   std::vector<glm::vec3> from_, to_, current_, previous_, velocity_;
   float maxDisplacement_ = 0.0f;  // largest vertex move of the last moveTo()
   float maxSpeed_ = 0.0f;
-  WideTree tree_;       // the triangles' boxes now
+  WideTree tree_;  // the triangles' boxes now
   // For each node of tree_, the corners of the triangles in its slots (four
   // lanes: corner, axis, slot), for considerSlots().
   struct alignas(16) SlotCorners {

@@ -118,9 +118,9 @@ void BodyFeatureContact::updateTriangles(const ClothState& s, float thickness) {
       plane.normal = length > 0.0f ? normal / length : glm::vec3(0.0f);
       plane.offset = glm::dot(plane.normal, a);
       plane.centroid = (a + b + c) / 3.0f;
-      const float r2 = std::max({glm::dot(a - plane.centroid, a - plane.centroid),
-                                 glm::dot(b - plane.centroid, b - plane.centroid),
-                                 glm::dot(c - plane.centroid, c - plane.centroid)});
+      const float r2 =
+          std::max({glm::dot(a - plane.centroid, a - plane.centroid), glm::dot(b - plane.centroid, b - plane.centroid),
+                    glm::dot(c - plane.centroid, c - plane.centroid)});
       plane.reach = std::sqrt(r2) + thickness;
       boxes[t].extend(a);
       boxes[t].extend(b);
@@ -176,8 +176,7 @@ unsigned BodyFeatureContact::nearMaskScalar(const float (&run)[3][4], int count,
   return mask;
 }
 
-std::vector<BodyFeatureContact::Contact> BodyFeatureContact::findContacts(const ClothState& s,
-                                                                          const BodyCollider& body,
+std::vector<BodyFeatureContact::Contact> BodyFeatureContact::findContacts(const ClothState& s, const BodyCollider& body,
                                                                           float thickness) const {
   const std::vector<glm::vec3>& bodyX = body.positions();
   const float gap = kGapFraction * thickness, keep = gap + kReapplyMargin * thickness;
@@ -303,8 +302,8 @@ bool BodyFeatureContact::apply(ClothState& s, const BodyCollider& body, const Co
   return true;
 }
 
-int BodyFeatureContact::resolve(ClothState& s, const BodyCollider& body, float thickness,
-                                std::vector<uint8_t>& touched, uint8_t nearMark, uint8_t piercedMark) {
+int BodyFeatureContact::resolve(ClothState& s, const BodyCollider& body, float thickness, std::vector<uint8_t>& touched,
+                                uint8_t nearMark, uint8_t piercedMark) {
   if (body.empty() || triangles_.empty()) return 0;
   prepareBody(body);
   updateTriangles(s, thickness);

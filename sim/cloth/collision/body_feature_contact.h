@@ -32,8 +32,8 @@
 
 #include "sim/cloth/cloth_state.h"
 #include "sim/cloth/collision/aabb_tree.h"
-#include "sim/cloth/collision/wide_tree.h"
 #include "sim/cloth/collision/body_collider.h"
+#include "sim/cloth/collision/wide_tree.h"
 
 namespace mq::cloth {
 
@@ -48,8 +48,8 @@ class BodyFeatureContact {
   // the cloth vertices it moves get touched[v] = max(touched[v], mark), mark
   // = piercedMark where a body vertex was through the triangle, else nearMark.
   // Returns the number of body vertex - cloth triangle contacts found.
-  int resolve(ClothState& s, const BodyCollider& body, float thickness, std::vector<uint8_t>& touched,
-              uint8_t nearMark, uint8_t piercedMark);
+  int resolve(ClothState& s, const BodyCollider& body, float thickness, std::vector<uint8_t>& touched, uint8_t nearMark,
+              uint8_t piercedMark);
   // The pairs of the last resolve() (and those a little beyond its gap)
   // pushed apart again, against the same body pose, to a smaller gap (out of
   // the skin with the least displacement): after the elongation limit, which
@@ -106,7 +106,7 @@ class BodyFeatureContact {
   float maxDepth_ = kMaxDepth;
   std::vector<Plane> planes_;
   std::vector<Box> boxes_;  // the triangles' boxes now
-  WideTree tree_;  // over boxes_
+  WideTree tree_;           // over boxes_
   // The tree is refitted every call and rebuilt when its nodes' boxes have
   // grown by this factor since it was built (their sum of half-perimeters):
   // cloth keeps its neighbours, so a refitted tree stays good for long.

@@ -16,9 +16,7 @@ namespace {
 // surface's normal there; farther round the edge it is beyond the hem.
 constexpr float kOverBoundaryCos = 0.9f;
 
-uint64_t edgeKey(uint32_t a, uint32_t b) {
-  return a < b ? (uint64_t(a) << 32) | b : (uint64_t(b) << 32) | a;
-}
+uint64_t edgeKey(uint32_t a, uint32_t b) { return a < b ? (uint64_t(a) << 32) | b : (uint64_t(b) << 32) | a; }
 
 glm::vec3 unitOr(const glm::vec3& v, const glm::vec3& fallback) {
   const float length = glm::length(v);
@@ -88,12 +86,14 @@ void ClothSurfaceCollider::updateNormals() {
   vertexNormal_.assign(current_.size(), glm::vec3(0.0f));
   for (size_t t = 0; t < count; ++t) {
     const uint32_t v[3] = {triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]};
-    const glm::vec3 n = unitOr(glm::cross(current_[v[1]] - current_[v[0]], current_[v[2]] - current_[v[0]]), glm::vec3(0.0f));
+    const glm::vec3 n =
+        unitOr(glm::cross(current_[v[1]] - current_[v[0]], current_[v[2]] - current_[v[0]]), glm::vec3(0.0f));
     faceNormal_[t] = n;
     for (int k = 0; k < 3; ++k) {
       const glm::vec3 e1 = current_[v[(k + 1) % 3]] - current_[v[k]], e2 = current_[v[(k + 2) % 3]] - current_[v[k]];
       const float l1 = glm::length(e1), l2 = glm::length(e2);
-      if (l1 > 0.0f && l2 > 0.0f) vertexNormal_[v[k]] += std::acos(glm::clamp(glm::dot(e1, e2) / (l1 * l2), -1.0f, 1.0f)) * n;
+      if (l1 > 0.0f && l2 > 0.0f)
+        vertexNormal_[v[k]] += std::acos(glm::clamp(glm::dot(e1, e2) / (l1 * l2), -1.0f, 1.0f)) * n;
     }
   }
   for (glm::vec3& n : vertexNormal_) n = unitOr(n, glm::vec3(0.0f));
@@ -158,8 +158,10 @@ bool ClothSurfaceCollider::nearestContact(const glm::vec3& p, float radius, Surf
   contact.point = q;
   contact.signedDistance = behind ? -d : d;
   // Out is along the shortest way to the surface, through it from behind.
-  if (d > 1e-6f) contact.normal = behind ? -offset / d : offset / d;
-  else contact.normal = side != glm::vec3(0.0f) ? side : faceNormal_[t];
+  if (d > 1e-6f)
+    contact.normal = behind ? -offset / d : offset / d;
+  else
+    contact.normal = side != glm::vec3(0.0f) ? side : faceNormal_[t];
   contact.velocity = weights.x * velocity_[a] + weights.y * velocity_[b] + weights.z * velocity_[c];
   return true;
 }

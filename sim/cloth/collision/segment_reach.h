@@ -58,8 +58,8 @@ inline __m128 select(__m128 when, __m128 yes, __m128 no) {
 
 // Bit k set: lane k passes segmentsWithinReach. Inlined into its caller:
 // its lanes stay in registers.
-__attribute__((always_inline)) inline unsigned segmentsWithinReach(const Vec3x4& p0, const Vec3x4& p1, const Vec3x4& q0, const Vec3x4& q1,
-                                    __m128 reach) {
+__attribute__((always_inline)) inline unsigned segmentsWithinReach(const Vec3x4& p0, const Vec3x4& p1, const Vec3x4& q0,
+                                                                   const Vec3x4& q1, __m128 reach) {
   using namespace segment_reach_detail;
   const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f), half = _mm_set1_ps(0.5f);
   const __m128 eps = _mm_set1_ps(1e-12f), sign = _mm_set1_ps(-0.0f);
@@ -68,11 +68,12 @@ __attribute__((always_inline)) inline unsigned segmentsWithinReach(const Vec3x4&
   // Bounding balls (|p0 - p1| is sqrt(a): a difference's negation is exact).
   const Vec3x4 sum = sub(sub({_mm_add_ps(p0.x, p1.x), _mm_add_ps(p0.y, p1.y), _mm_add_ps(p0.z, p1.z)}, q0), q1);
   const Vec3x4 mid = {_mm_mul_ps(half, sum.x), _mm_mul_ps(half, sum.y), _mm_mul_ps(half, sum.z)};
-  const __m128 apart = _mm_sub_ps(_mm_sqrt_ps(dot(mid, mid)), _mm_mul_ps(half, _mm_add_ps(_mm_sqrt_ps(a), _mm_sqrt_ps(e))));
+  const __m128 apart =
+      _mm_sub_ps(_mm_sqrt_ps(dot(mid, mid)), _mm_mul_ps(half, _mm_add_ps(_mm_sqrt_ps(a), _mm_sqrt_ps(e))));
   // closestSegmentParameters, its branches as selects: the general case first.
   const __m128 denom = _mm_sub_ps(_mm_mul_ps(a, e), _mm_mul_ps(b, b));
-  const __m128 s0 = _mm_and_ps(_mm_cmpgt_ps(denom, eps),
-                               clamp01(_mm_div_ps(_mm_sub_ps(_mm_mul_ps(b, f), _mm_mul_ps(c, e)), denom)));
+  const __m128 s0 =
+      _mm_and_ps(_mm_cmpgt_ps(denom, eps), clamp01(_mm_div_ps(_mm_sub_ps(_mm_mul_ps(b, f), _mm_mul_ps(c, e)), denom)));
   const __m128 t0 = _mm_div_ps(_mm_add_ps(_mm_mul_ps(b, s0), f), e);
   const __m128 sAtT0 = clamp01(_mm_div_ps(_mm_xor_ps(c, sign), a)), sAtT1 = clamp01(_mm_div_ps(_mm_sub_ps(b, c), a));
   const __m128 below = _mm_cmplt_ps(t0, zero), above = _mm_cmpgt_ps(t0, one);
@@ -86,8 +87,8 @@ __attribute__((always_inline)) inline unsigned segmentsWithinReach(const Vec3x4&
   t = select(pointP, _mm_andnot_ps(pointQ, clamp01(_mm_div_ps(f, e))), t);
   const Vec3x4 d = sub(mix(p0, p1, s), mix(q0, q1, t));
   const __m128 l = _mm_sqrt_ps(dot(d, d));
-  const __m128 rejected = _mm_or_ps(_mm_cmpgt_ps(apart, reach),
-                                    _mm_or_ps(_mm_cmplt_ps(l, _mm_set1_ps(1e-9f)), _mm_cmpgt_ps(l, reach)));
+  const __m128 rejected =
+      _mm_or_ps(_mm_cmpgt_ps(apart, reach), _mm_or_ps(_mm_cmplt_ps(l, _mm_set1_ps(1e-9f)), _mm_cmpgt_ps(l, reach)));
   return unsigned(_mm_movemask_ps(rejected)) ^ 0xFu;
 }
 
@@ -102,7 +103,8 @@ inline unsigned segmentsApart(const Vec3x4& midOffset, const Vec3x4& halfP, cons
   using namespace segment_reach_detail;
   const __m128 sign = _mm_set1_ps(-0.0f);
   const __m128 length2 = dot(midOffset, midOffset), length = _mm_sqrt_ps(length2);
-  const __m128 projected = _mm_add_ps(_mm_andnot_ps(sign, dot(midOffset, halfP)), _mm_andnot_ps(sign, dot(midOffset, halfQ)));
+  const __m128 projected =
+      _mm_add_ps(_mm_andnot_ps(sign, dot(midOffset, halfP)), _mm_andnot_ps(sign, dot(midOffset, halfQ)));
   const __m128 grown = _mm_add_ps(_mm_mul_ps(_mm_set1_ps(1.001f), reach), _mm_set1_ps(1e-5f));
   // (|d|^2 - projected) / |d| > grown, without the division (|d| = 0 keeps the pair).
   return unsigned(_mm_movemask_ps(_mm_cmpgt_ps(_mm_sub_ps(length2, projected), _mm_mul_ps(length, grown))));

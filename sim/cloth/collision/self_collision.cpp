@@ -114,10 +114,10 @@ int SelfCollision::resolve(ClothState& s, const std::vector<glm::vec3>& x0, floa
   checkedVT_.assign(vertexTriangle_.size(), 0);
   checkedEE_.assign(edgeEdge_.size(), 0);
   uint32_t clock = 1;
-  auto stale = [&](uint32_t checked, const uint32_t (&v)[4]) {
+  auto stale = [&](uint32_t checked, const uint32_t(&v)[4]) {
     return moved_[v[0]] >= checked || moved_[v[1]] >= checked || moved_[v[2]] >= checked || moved_[v[3]] >= checked;
   };
-  auto touch = [&](const uint32_t (&v)[4]) {
+  auto touch = [&](const uint32_t(&v)[4]) {
     for (uint32_t k : v) moved_[k] = clock;
   };
   for (int pass = 0; pass < passes; ++pass) {

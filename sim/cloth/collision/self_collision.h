@@ -91,29 +91,29 @@ class SelfCollision {
   };
   struct EdgeEdge {
     uint32_t e0, e1;
-    glm::vec2 params;    // closest points at x0
-    glm::vec3 normal0;   // direction from edge 1 to edge 0 at x0
+    glm::vec2 params;   // closest points at x0
+    glm::vec3 normal0;  // direction from edge 1 to edge 0 at x0
   };
   // The candidate search, as stages (self_collision.cpp lists them; each is
   // in its file under self_collision/). Step: one step's shared state.
   struct Step;
   void findCandidates(const ClothState& s, const std::vector<glm::vec3>& x0, float thickness);
-  void measureMoves(Step& step) const;                  // element_boxes.cpp
-  void findElementBoxes(Step& step) const;              // element_boxes.cpp
-  void updateTrees(Step& step);                         // tree_update.cpp
-  void findConnectedPatches();                          // tree_update.cpp, after a build
-  void findVertexPlaces();                              // tree_update.cpp
-  void findVertexGroups();                              // tree_update.cpp
-  void findMotionBounds(Step& step);                    // motion_bounds.cpp
+  void measureMoves(Step& step) const;                                          // element_boxes.cpp
+  void findElementBoxes(Step& step) const;                                      // element_boxes.cpp
+  void updateTrees(Step& step);                                                 // tree_update.cpp
+  void findConnectedPatches();                                                  // tree_update.cpp, after a build
+  void findVertexPlaces();                                                      // tree_update.cpp
+  void findVertexGroups();                                                      // tree_update.cpp
+  void findMotionBounds(Step& step);                                            // motion_bounds.cpp
   void findFlatPatches(const ClothState& s, const std::vector<glm::vec3>& x0);  // flat_patches.cpp
-  void findVertexTriangleCandidates(const Step& step);  // vertex_triangle_candidates.cpp
-  void findEdgeEdgeCandidates(const Step& step);        // edge_edge_candidates.cpp
+  void findVertexTriangleCandidates(const Step& step);                          // vertex_triangle_candidates.cpp
+  void findEdgeEdgeCandidates(const Step& step);                                // edge_edge_candidates.cpp
   int applyVertexTriangle(ClothState& s, const VertexTriangle& c, float thickness) const;
   int applyEdgeEdge(ClothState& s, const EdgeEdge& c, float thickness) const;
 
   std::vector<uint32_t> triangles_;
   std::vector<std::pair<uint32_t, uint32_t>> edges_;
-  std::vector<uint32_t> triangleEdges_;  // 3 per triangle
+  std::vector<uint32_t> triangleEdges_;                 // 3 per triangle
   std::vector<std::array<uint32_t, 2>> edgeTriangles_;  // the (one or two) triangles of each edge
   size_t vertexCount_;
   AabbTree tree_;      // over the triangles' boxes
@@ -158,7 +158,7 @@ class SelfCollision {
   std::vector<glm::vec3> triangleNormals_;  // per triangle: its unit normals at the start and the end of the step
   PlaceNormals triangleNormalsByPlace_, edgeNormalsByPlace_;
   std::vector<glm::vec3> nodeNormalSums_, edgeNodeNormalSums_;  // per node of the trees: its normals' sum
-  std::vector<uint8_t> alignedNodes_, alignedEdgeNodes_;          // findFlatNodes()'s scratch
+  std::vector<uint8_t> alignedNodes_, alignedEdgeNodes_;        // findFlatNodes()'s scratch
   // Per triangle and edge (in their trees' order), and per node of the trees.
   std::vector<NodeMotion> triangleMotions_, edgeMotions_, nodeMotions_, edgeNodeMotions_;
   // Per place of the edge tree, as columns (see EdgeColumns::resize).

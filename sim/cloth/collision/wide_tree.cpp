@@ -8,7 +8,8 @@ namespace {
 
 // Splits order[first, first + count) at its middle along the longest axis of
 // the primitives' centres; returns the size of the first half.
-uint32_t medianSplit(std::vector<uint32_t>& order, uint32_t first, uint32_t count, const std::vector<glm::vec3>& centres) {
+uint32_t medianSplit(std::vector<uint32_t>& order, uint32_t first, uint32_t count,
+                     const std::vector<glm::vec3>& centres) {
   glm::vec3 lo(1e30f), hi(-1e30f);
   for (uint32_t k = first; k < first + count; ++k) {
     lo = glm::min(lo, centres[order[k]]);
@@ -63,12 +64,15 @@ int32_t WideTree::buildNode(std::vector<uint32_t>& order, uint32_t first, uint32
   }
   int32_t children[4] = {kNoChild, kNoChild, kNoChild, kNoChild};
   for (int g = 0; g < groups; ++g)
-    children[g] = groupCount[g] == 1 ? ~int32_t(order[groupFirst[g]]) : buildNode(order, groupFirst[g], groupCount[g], centres);
+    children[g] =
+        groupCount[g] == 1 ? ~int32_t(order[groupFirst[g]]) : buildNode(order, groupFirst[g], groupCount[g], centres);
   Node& node = nodes_[index];
   std::copy(children, children + 4, node.child);
   for (int k = 0; k < 4; ++k) {
-    if (children[k] >= 0) node.nodeSlots |= 1 << k;
-    else if (children[k] != kNoChild) node.primitiveSlots |= 1 << k;
+    if (children[k] >= 0)
+      node.nodeSlots |= 1 << k;
+    else if (children[k] != kNoChild)
+      node.primitiveSlots |= 1 << k;
   }
   return index;
 }

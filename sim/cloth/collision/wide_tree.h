@@ -76,10 +76,11 @@ class WideTree {
   // Two whole cache lines.
   struct alignas(64) Node {
     float minX[4], minY[4], minZ[4], maxX[4], maxY[4], maxZ[4];
-    int32_t child[4];  // >= 0: a node; kNoChild: empty; otherwise primitive ~child
+    int32_t child[4];                           // >= 0: a node; kNoChild: empty; otherwise primitive ~child
     int32_t nodeSlots = 0, primitiveSlots = 0;  // bit k: child[k] is a node / a primitive
   };
-  int32_t buildNode(std::vector<uint32_t>& order, uint32_t first, uint32_t count, const std::vector<glm::vec3>& centres);
+  int32_t buildNode(std::vector<uint32_t>& order, uint32_t first, uint32_t count,
+                    const std::vector<glm::vec3>& centres);
   // Squared distances from p to the four boxes of n (huge for empty slots).
   static void squaredDistances(const Node& n, const glm::vec3& p, float out[4]);
   // Bit k set when d2[k] <= bound.
@@ -97,9 +98,12 @@ inline void WideTree::squaredDistances(const Node& n, const glm::vec3& p, float 
 #ifdef MQ_WIDE_TREE_SSE
   const __m128 zero = _mm_setzero_ps();
   const __m128 px = _mm_set1_ps(p.x), py = _mm_set1_ps(p.y), pz = _mm_set1_ps(p.z);
-  const __m128 dx = _mm_max_ps(_mm_max_ps(_mm_sub_ps(_mm_load_ps(n.minX), px), _mm_sub_ps(px, _mm_load_ps(n.maxX))), zero);
-  const __m128 dy = _mm_max_ps(_mm_max_ps(_mm_sub_ps(_mm_load_ps(n.minY), py), _mm_sub_ps(py, _mm_load_ps(n.maxY))), zero);
-  const __m128 dz = _mm_max_ps(_mm_max_ps(_mm_sub_ps(_mm_load_ps(n.minZ), pz), _mm_sub_ps(pz, _mm_load_ps(n.maxZ))), zero);
+  const __m128 dx =
+      _mm_max_ps(_mm_max_ps(_mm_sub_ps(_mm_load_ps(n.minX), px), _mm_sub_ps(px, _mm_load_ps(n.maxX))), zero);
+  const __m128 dy =
+      _mm_max_ps(_mm_max_ps(_mm_sub_ps(_mm_load_ps(n.minY), py), _mm_sub_ps(py, _mm_load_ps(n.maxY))), zero);
+  const __m128 dz =
+      _mm_max_ps(_mm_max_ps(_mm_sub_ps(_mm_load_ps(n.minZ), pz), _mm_sub_ps(pz, _mm_load_ps(n.maxZ))), zero);
   _mm_storeu_ps(out, _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz)));
 #else
   for (int k = 0; k < 4; ++k) {

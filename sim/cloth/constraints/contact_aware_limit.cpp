@@ -9,8 +9,8 @@ namespace {
 
 // The limit with contact vertices heavy, in rounds that put back what went
 // in (see the header).
-ContactAwareLimitResult limitKeepingContactsOut(ClothState& state, const ContactSet& contacts,
-                                                StretchLimiter& limiter, const ContactAwareLimitSettings& settings,
+ContactAwareLimitResult limitKeepingContactsOut(ClothState& state, const ContactSet& contacts, StretchLimiter& limiter,
+                                                const ContactAwareLimitSettings& settings,
                                                 const std::vector<float>& freeInvMass) {
   const std::vector<uint8_t>& touched = contacts.touched;
   const float thickness = settings.thickness;
@@ -70,7 +70,8 @@ ContactAwareLimitResult limitStretchAroundContacts(ClothState& state, const Cont
         state.invMass[i] = 0.0f;
       else if (touched[i])
         state.invMass[i] = settings.contactInvMassScale * freeInvMass[i];
-    const StretchLimitResult r = limiter.limitByPositions(state, settings.maxStretch, settings.heldPassBudget, settings.h);
+    const StretchLimitResult r =
+        limiter.limitByPositions(state, settings.maxStretch, settings.heldPassBudget, settings.h);
     state.invMass = freeInvMass;
     heldPasses = r.passes;
     if (r.maxStretchAfter <= settings.maxStretch) return {true, heldPasses};

@@ -31,11 +31,11 @@ namespace mq::cloth {
 
 struct ContactAwareLimitSettings {
   float maxStretch = 1.1f;
-  int passBudget = 100;   // passes in all
+  int passBudget = 100;      // passes in all
   int heldPassBudget = 100;  // passes of the try with swept vertices held
-  float h = 0.0f;         // substep, s (velocities take the corrections / h)
+  float h = 0.0f;            // substep, s (velocities take the corrections / h)
   float contactInvMassScale = 0.05f;
-  int bodyRounds = 8;     // rounds with a body
+  int bodyRounds = 8;      // rounds with a body
   float thickness = 0.0f;  // the collision thickness, m
 };
 

@@ -28,7 +28,8 @@ SeamClosing::Result SeamClosing::close(ClothState& state, const std::vector<glm:
   }
   const std::vector<float> freeInvMass = state.invMass;
   std::vector<float> heavy = state.invMass;
-  for (const auto& [a, b] : seams_) heavy[a] = seamInvMassScale * freeInvMass[a], heavy[b] = seamInvMassScale * freeInvMass[b];
+  for (const auto& [a, b] : seams_)
+    heavy[a] = seamInvMassScale * freeInvMass[a], heavy[b] = seamInvMassScale * freeInvMass[b];
   Result result;
   constexpr int kRounds = 4;
   for (int round = 0; round < kRounds; ++round) {

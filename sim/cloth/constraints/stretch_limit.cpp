@@ -27,7 +27,8 @@ float maxSquaredStretchOf(const std::vector<glm::vec3>& x, const std::vector<Spr
   const size_t block = (count + kMeasureBlocks - 1) / kMeasureBlocks;
   auto body = [&](size_t b) {
     float m = 0.0f;
-    for (size_t i = b * block; i < std::min(count, (b + 1) * block); ++i) m = std::max(m, squaredStretchOf(x, springs[i]));
+    for (size_t i = b * block; i < std::min(count, (b + 1) * block); ++i)
+      m = std::max(m, squaredStretchOf(x, springs[i]));
     partial[b] = m;
   };
   if (count < 2 * kParallelGrain)

@@ -14,8 +14,7 @@ glm::mat3 tangentProjector(const glm::vec3& e, glm::vec3& t) {
 
 }  // namespace
 
-CantileverBending::CantileverBending(std::vector<CantileverLine> lines, size_t vertexCount)
-    : lines_(std::move(lines)) {
+CantileverBending::CantileverBending(std::vector<CantileverLine> lines, size_t vertexCount) : lines_(std::move(lines)) {
   std::vector<uint32_t> count(vertexCount + 1, 0);
   for (const auto& l : lines_) {
     ++count[l.i + 1];

@@ -62,7 +62,7 @@ class CantileverBending : public ForceTerm {
 
   std::vector<CantileverLine> lines_;
   std::vector<uint32_t> incidenceStart_;
-  std::vector<uint32_t> incidence_;  // 3 * line + slot
+  std::vector<uint32_t> incidence_;                  // 3 * line + slot
   std::vector<std::array<glm::mat3, 3>> jacobians_;  // implicit: J per line
   std::vector<float> weight_;                        // implicit: h^2 kc + h kd per line
   mutable std::vector<glm::vec3> perSlot_;           // 3 per line

@@ -16,7 +16,9 @@ constexpr float kStructuralScale = 0.8f;
 std::vector<Spring> makeSprings(const ClothTopology& topo, const ClothMesh& mesh, const Fabric& fabric,
                                 const ClothSettings& settings) {
   std::vector<Spring> springs;
-  auto add = [&](const SpringTopology& t, float k) { springs.push_back({t.a, t.b, t.restLength, k, fabric.damping * k}); };
+  auto add = [&](const SpringTopology& t, float k) {
+    springs.push_back({t.a, t.b, t.restLength, k, fabric.damping * k});
+  };
   for (const auto& t : topo.structural)
     add(t, kStructuralScale * fabric.stretchStiffness * t.area / (t.restLength * t.restLength));
   // Shear: a pure shear gamma stretches the quad diagonal by gamma/2, so
@@ -60,8 +62,8 @@ ClothForces::ClothForces(const ClothTopology& topology, const ClothMesh& mesh, c
     cantilever_ = std::make_unique<CantileverBending>(makeCantilevers(topology, fabric), n);
     terms_.push_back(cantilever_.get());
   }
-  external_ = std::make_unique<ExternalForces>(settings.gravity, settings.wind, settings.airDamping,
-                                               topology.vertexArea);
+  external_ =
+      std::make_unique<ExternalForces>(settings.gravity, settings.wind, settings.airDamping, topology.vertexArea);
   terms_.push_back(external_.get());
   sumStiffnessPerVertex(topology, n);
 }

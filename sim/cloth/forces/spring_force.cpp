@@ -58,7 +58,8 @@ void SpringForce::gather(const std::vector<glm::vec3>& perSpring, std::vector<gl
   });
 }
 
-[[gnu::always_inline]] inline glm::vec3 SpringForce::forceOf(const Spring& s, const ClothState& st, const SpringFrame& fr) {
+[[gnu::always_inline]] inline glm::vec3 SpringForce::forceOf(const Spring& s, const ClothState& st,
+                                                             const SpringFrame& fr) {
   const float relSpeed = glm::dot(st.v[s.a] - st.v[s.b], fr.d);
   return -(s.k * (fr.length - s.rest) + s.kd * relSpeed) * fr.d;
 }
@@ -81,7 +82,8 @@ double SpringForce::potentialEnergy(const ClothState& st) const {
   });
 }
 
-[[gnu::always_inline]] inline void SpringForce::linearise(size_t i, const ClothState& st, float h, const SpringFrame& fr) {
+[[gnu::always_inline]] inline void SpringForce::linearise(size_t i, const ClothState& st, float h,
+                                                          const SpringFrame& fr) {
   const Spring& s = springs_[i];
   // -h^2 K + h kd d d^T with K = -k [d d^T + lateral (I - d d^T)].
   const float lateral = fr.length > 1e-12f ? std::max(0.0f, 1.0f - s.rest / fr.length) : 0.0f;
@@ -232,7 +234,7 @@ __attribute__((target("avx2,fma"))) inline __m128 loadXyz(const float* p, int32_
 }
 
 __attribute__((target("avx2,fma"))) inline void loadNeighbours(const float* p, const int32_t* other, __m256& x,
-                                                                __m256& y, __m256& z) {
+                                                               __m256& y, __m256& z) {
   auto at = [&](int l) __attribute__((target("avx2,fma"))) { return loadXyz(p, other[l]); };
   const __m256 r0 = _mm256_insertf128_ps(_mm256_castps128_ps256(at(0)), at(4), 1);  // x0 y0 z0 . | x4 y4 z4 .
   const __m256 r1 = _mm256_insertf128_ps(_mm256_castps128_ps256(at(1)), at(5), 1);
@@ -307,8 +309,8 @@ void SpringForce::addProductRange(size_t begin, size_t end, glm::vec3* y) const 
       }
       for (; v < rangeEnd; v += kLanes) {
         const size_t b = v / kLanes;
-        blockProductAvx2(p, &laneVertex_[v], rowStart_[b], rowWidth_[b], rowOther_.data(), rowEx_.data(),
-                         rowEy_.data(), rowEz_.data(), rowBeta_.data(), &y->x);
+        blockProductAvx2(p, &laneVertex_[v], rowStart_[b], rowWidth_[b], rowOther_.data(), rowEx_.data(), rowEy_.data(),
+                         rowEz_.data(), rowBeta_.data(), &y->x);
       }
     }
     return;

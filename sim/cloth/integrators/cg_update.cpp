@@ -32,14 +32,15 @@ __attribute__((target("avx2"))) double updateGroupAvx2(const CgUpdate& u, size_t
   // dv and r element by element, as stored (x0 y0 z0 x1 ...).
   __m256 a[3];
   for (int k = 0; k < 3; ++k) {
-    _mm256_storeu_ps(dv + 8 * k, _mm256_add_ps(_mm256_loadu_ps(dv + 8 * k), _mm256_mul_ps(alpha, _mm256_loadu_ps(c + 8 * k))));
+    _mm256_storeu_ps(dv + 8 * k,
+                     _mm256_add_ps(_mm256_loadu_ps(dv + 8 * k), _mm256_mul_ps(alpha, _mm256_loadu_ps(c + 8 * k))));
     a[k] = _mm256_sub_ps(_mm256_loadu_ps(r + 8 * k), _mm256_mul_ps(alpha, _mm256_loadu_ps(q + 8 * k)));
     _mm256_storeu_ps(r + 8 * k, a[k]);
   }
   // r's eight vertices transposed into x, y and z vectors.
-  const __m256 m03 = _mm256_permute2f128_ps(a[0], a[1], 0x30);  // x0 y0 z0 x1 | x4 y4 z4 x5
-  const __m256 m14 = _mm256_permute2f128_ps(a[0], a[2], 0x21);  // y1 z1 x2 y2 | y5 z5 x6 y6
-  const __m256 m25 = _mm256_permute2f128_ps(a[1], a[2], 0x30);  // z2 x3 y3 z3 | z6 x7 y7 z7
+  const __m256 m03 = _mm256_permute2f128_ps(a[0], a[1], 0x30);             // x0 y0 z0 x1 | x4 y4 z4 x5
+  const __m256 m14 = _mm256_permute2f128_ps(a[0], a[2], 0x21);             // y1 z1 x2 y2 | y5 z5 x6 y6
+  const __m256 m25 = _mm256_permute2f128_ps(a[1], a[2], 0x30);             // z2 x3 y3 z3 | z6 x7 y7 z7
   const __m256 xy = _mm256_shuffle_ps(m14, m25, _MM_SHUFFLE(2, 1, 3, 2));  // x2 y2 x3 y3
   const __m256 yz = _mm256_shuffle_ps(m03, m14, _MM_SHUFFLE(1, 0, 2, 1));  // y0 z0 y1 z1
   const __m256 x = _mm256_shuffle_ps(m03, xy, _MM_SHUFFLE(2, 0, 3, 0));
@@ -47,7 +48,9 @@ __attribute__((target("avx2"))) double updateGroupAvx2(const CgUpdate& u, size_t
   const __m256 z = _mm256_shuffle_ps(yz, m25, _MM_SHUFFLE(3, 0, 3, 1));
   // z = P r with glm's order: (m[0][k] x + m[1][k] y) + m[2][k] z.
   const float* P = u.preconditioner->group(i / LaneBlocks::kLanes);
-  auto entry = [&](int col, int row) __attribute__((target("avx2"))) { return _mm256_loadu_ps(P + 8 * (3 * col + row)); };
+  auto entry = [&](int col, int row) __attribute__((target("avx2"))) {
+    return _mm256_loadu_ps(P + 8 * (3 * col + row));
+  };
   auto row = [&](int k) __attribute__((target("avx2"))) {
     return _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(entry(0, k), x), _mm256_mul_ps(entry(1, k), y)),
                          _mm256_mul_ps(entry(2, k), z));

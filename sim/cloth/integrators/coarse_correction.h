@@ -67,12 +67,12 @@ class CoarseCorrection {
   std::vector<uint32_t> patchOf_;
   std::vector<uint32_t> patchStart_, patchVertices_;  // CSR: each patch's vertices, in vertex order
   size_t patchCount_ = 0, order_ = 0;
-  std::vector<double> matrix_;      // dense storage, lower triangle used
+  std::vector<double> matrix_;         // dense storage, lower triangle used
   std::vector<uint32_t> firstColumn_;  // envelope: first non-zero column per row
-  std::vector<uint8_t> dead_;       // unknowns with no stiffness (a pinned patch)
+  std::vector<uint8_t> dead_;          // unknowns with no stiffness (a pinned patch)
   static constexpr uint32_t kFree = ~0u;
-  std::vector<uint32_t> filterOf_;  // per vertex: kFree (S = I) or its index in filters_
-  std::vector<glm::mat3> filters_;  // S of the pinned and contact vertices
+  std::vector<uint32_t> filterOf_;         // per vertex: kFree (S = I) or its index in filters_
+  std::vector<glm::mat3> filters_;         // S of the pinned and contact vertices
   std::vector<glm::dmat3> patchDiagonal_;  // A_c's diagonal blocks while assembling
   std::vector<double> rhs_, x_;
 };

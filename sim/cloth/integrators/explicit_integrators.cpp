@@ -23,9 +23,12 @@ float explicitStableStep(const ClothState& s, const ClothForces& forces, float r
 
 std::unique_ptr<Integrator> makeIntegrator(const ClothSettings& settings) {
   switch (settings.integrator) {
-    case IntegratorKind::SymplecticEuler: return std::make_unique<SymplecticEuler>();
-    case IntegratorKind::Verlet: return std::make_unique<VelocityVerlet>();
-    case IntegratorKind::RK4: return std::make_unique<RungeKutta4>();
+    case IntegratorKind::SymplecticEuler:
+      return std::make_unique<SymplecticEuler>();
+    case IntegratorKind::Verlet:
+      return std::make_unique<VelocityVerlet>();
+    case IntegratorKind::RK4:
+      return std::make_unique<RungeKutta4>();
     case IntegratorKind::ImplicitEuler:
       return std::make_unique<ImplicitEuler>(settings.cgMaxIterations, settings.cgTolerance,
                                              settings.cgPreconditioner == CgPreconditioner::TwoLevel);

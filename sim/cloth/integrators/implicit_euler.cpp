@@ -83,9 +83,10 @@ IntegratorReport ImplicitEuler::step(ClothState& s, float h, ClothForces& forces
     external.setStep(h);
     const size_t springCount = springs.springs().size();
     // By value: the job runs in solve(), after this block's locals are gone.
-    const int springPhase = job.add((springCount + kParallelBlock - 1) / kParallelBlock, -1, [&, springCount](size_t b) {
-      springs.prepareStepSprings(s, h, b * kParallelBlock, std::min(springCount, (b + 1) * kParallelBlock));
-    });
+    const int springPhase =
+        job.add((springCount + kParallelBlock - 1) / kParallelBlock, -1, [&, springCount](size_t b) {
+          springs.prepareStepSprings(s, h, b * kParallelBlock, std::min(springCount, (b + 1) * kParallelBlock));
+        });
     prepared = job.add((n + kParallelBlock - 1) / kParallelBlock, springPhase, [&](size_t b) {
       for (size_t i = b * kParallelBlock; i < std::min(n, (b + 1) * kParallelBlock); ++i) {
         f_[i] = b_[i] = glm::vec3(0.0f);
@@ -159,8 +160,7 @@ IntegratorReport ImplicitEuler::solve(const ClothState& s, ClothForces& forces, 
   auto addRestriction = [&](PhasedJob& job, int after) {
     if (!twoLevel_) return;
     job.add(patchBlocks, after, [&](size_t b) {
-      coarse_.restrictResidual(r_, b * kPatchesPerBlock,
-                               std::min(coarse_.patchCount(), (b + 1) * kPatchesPerBlock));
+      coarse_.restrictResidual(r_, b * kPatchesPerBlock, std::min(coarse_.patchCount(), (b + 1) * kPatchesPerBlock));
     });
   };
   // z = P r is z_ (block Jacobi) plus the coarse level's per-patch part.

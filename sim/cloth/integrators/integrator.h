@@ -12,7 +12,7 @@
 namespace mq::cloth {
 
 struct IntegratorReport {
-  int solverIterations = 0;   // CG iterations (implicit), 0 for explicit
+  int solverIterations = 0;  // CG iterations (implicit), 0 for explicit
   float solverResidual = 0.0f;
 };
 

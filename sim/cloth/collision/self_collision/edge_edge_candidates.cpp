@@ -46,8 +46,8 @@ inline unsigned SelfCollision::EdgeColumns::withinReach(uint32_t i, uint32_t fir
   auto column = [&](const std::vector<float>& c) { return _mm_loadu_ps(&c[first]); };
   // The exact test takes the edge of lower index first: per lane, the own
   // edge or the other's.
-  const __m128 ownFirst = _mm_castsi128_ps(_mm_cmplt_epi32(
-      _mm_set1_epi32(int(edge[i])), _mm_loadu_si128(reinterpret_cast<const __m128i*>(&edge[first]))));
+  const __m128 ownFirst = _mm_castsi128_ps(
+      _mm_cmplt_epi32(_mm_set1_epi32(int(edge[i])), _mm_loadu_si128(reinterpret_cast<const __m128i*>(&edge[first]))));
   auto pick = [&](const std::vector<float>& c, bool firstEdge) {
     const __m128 a = own(c), b = column(c);
     return firstEdge ? _mm_or_ps(_mm_and_ps(ownFirst, a), _mm_andnot_ps(ownFirst, b))
@@ -179,12 +179,15 @@ void SelfCollision::findEdgeEdgeCandidates(const Step& step) {
     ThreadPool::shared().parallelBlocks(jobs.size(), [&](size_t j) {
       // The neighbours and the cheap bound above for four pairs at once,
       // then the exact test's distance conditions (few pairs pass them).
-      edgeTree_.runJobInQuads(jobs[j], [&](uint32_t placeI, uint32_t first, unsigned mask) {
-        mask &= columns.apartOrNeighbours(placeI, first, thickness) ^ 0xFu;
-        if (mask != 0) mask &= columns.withinReach(placeI, first, thickness);
-        for (; mask != 0; mask &= mask - 1)
-          testEdgeEdge(placeI, first + uint32_t(__builtin_ctz(mask)), found[j], kScreened);
-      }, flatEdgePatch, outOfReach);
+      edgeTree_.runJobInQuads(
+          jobs[j],
+          [&](uint32_t placeI, uint32_t first, unsigned mask) {
+            mask &= columns.apartOrNeighbours(placeI, first, thickness) ^ 0xFu;
+            if (mask != 0) mask &= columns.withinReach(placeI, first, thickness);
+            for (; mask != 0; mask &= mask - 1)
+              testEdgeEdge(placeI, first + uint32_t(__builtin_ctz(mask)), found[j], kScreened);
+          },
+          flatEdgePatch, outOfReach);
     });
   }
   // In order of the first edge, then the other (the jobs' order depends on the tree).

@@ -35,7 +35,6 @@ float smallestAlignment(const float* x, const float* y, const float* z, size_t c
   return smallest;
 }
 
-
 namespace {
 
 // A triangle's unit normal; zero when it has collapsed (no patch holding it is flat).
@@ -72,8 +71,8 @@ void findFlatNodes(const AabbTree& tree, const std::vector<uint8_t>& connected, 
     }
     const float length = glm::length(sums[i]);
     if (!candidate || !(length > 1e-6f)) continue;
-    aligned[i] = smallestAlignment(&normals.x[first], &normals.y[first], &normals.z[first], count,
-                                   sums[i] / length) >= kFlatCosine;
+    aligned[i] = smallestAlignment(&normals.x[first], &normals.y[first], &normals.z[first], count, sums[i] / length) >=
+                 kFlatCosine;
     flat[i] = aligned[i] && connected[i];
   }
 }

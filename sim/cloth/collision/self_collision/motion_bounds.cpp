@@ -64,12 +64,18 @@ void SelfCollision::findMotionBounds(Step& step) {
   // they cost more than they leave out.
   step.bounded = motionBounds_ && step.deviation > 2.0f * step.thickness;
   if (step.bounded) {
-    findElementMotions(tree_, [&](uint32_t t) {
-      return std::array<uint32_t, 3>{triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]};
-    }, step.x0, step.move, triangleMotions_);
-    findElementMotions(edgeTree_, [&](uint32_t e) {
-      return std::array<uint32_t, 2>{edges_[e].first, edges_[e].second};
-    }, step.x0, step.move, edgeMotions_);
+    findElementMotions(
+        tree_,
+        [&](uint32_t t) {
+          return std::array<uint32_t, 3>{triangles_[3 * t], triangles_[3 * t + 1], triangles_[3 * t + 2]};
+        },
+        step.x0, step.move, triangleMotions_);
+    findElementMotions(
+        edgeTree_,
+        [&](uint32_t e) {
+          return std::array<uint32_t, 2>{edges_[e].first, edges_[e].second};
+        },
+        step.x0, step.move, edgeMotions_);
     // The two trees' serial bottom-up sweeps at once.
     ThreadPool::shared().parallelBlocks(2, [&](size_t which) {
       if (which == 0)

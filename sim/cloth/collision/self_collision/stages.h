@@ -155,8 +155,8 @@ inline __m128 row(const glm::vec3& p) { return _mm_setr_ps(p.x, p.y, p.z, 0.0f);
 
 inline bool withinReach(const NodeMotion& a, const NodeMotion& b, float thickness) {
 #ifdef __SSE2__
-  return withinReach(row(a.startMin), row(a.startMax), row(a.moveMin), row(a.moveMax), row(b.startMin),
-                     row(b.startMax), row(b.moveMin), row(b.moveMax), thickness);
+  return withinReach(row(a.startMin), row(a.startMax), row(a.moveMin), row(a.moveMax), row(b.startMin), row(b.startMax),
+                     row(b.moveMin), row(b.moveMax), thickness);
 #else
   const glm::vec4 gap = glm::max(glm::max(a.startMin - b.startMax, b.startMin - a.startMax), glm::vec4(0.0f));
   const glm::vec4 far = glm::max(glm::abs(a.moveMax - b.moveMin), glm::abs(b.moveMax - a.moveMin));

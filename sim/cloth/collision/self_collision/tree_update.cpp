@@ -56,15 +56,13 @@ void SelfCollision::updateTrees(Step& step) {
   bool rebuild = tree_.empty() || edgeTree_.empty();
   if (!rebuild) {
     float sizes[2];
-    ThreadPool::shared().parallelBlocks(2, [&](size_t which) {
-      sizes[which] = which == 0 ? edgeTree_.refit(edgeBoxes) : tree_.refit(boxes);
-    });
+    ThreadPool::shared().parallelBlocks(
+        2, [&](size_t which) { sizes[which] = which == 0 ? edgeTree_.refit(edgeBoxes) : tree_.refit(boxes); });
     rebuild = sizes[0] > kRebuildGrowth * builtSizes_[0] || sizes[1] > kRebuildGrowth * builtSizes_[1];
   }
   if (rebuild) {
-    ThreadPool::shared().parallelBlocks(2, [&](size_t which) {
-      builtSizes_[which] = which == 0 ? edgeTree_.build(edgeBoxes) : tree_.build(boxes);
-    });
+    ThreadPool::shared().parallelBlocks(
+        2, [&](size_t which) { builtSizes_[which] = which == 0 ? edgeTree_.build(edgeBoxes) : tree_.build(boxes); });
     findConnectedPatches();
   }
   // The swept boxes checked on each pair in the trees' order (read in sequence).

@@ -122,20 +122,24 @@ void SelfCollision::findVertexTriangleCandidates(const Step& step) {
       run.placeCount = placeless ? 0 : placeEnd - run.placeFirst;
       // The run's box, motion and places hold each group's: its walk leaves
       // out no node a group's walk keeps.
-      tree_.queryEntries(run.box, kRunSplit, [&](int32_t node) { return skipped(node, run); }, entries);
+      tree_.queryEntries(
+          run.box, kRunSplit, [&](int32_t node) { return skipped(node, run); }, entries);
       for (size_t g = g0; g < g1; ++g) {
         const GroupQuery& group = groups[g - g0];
         // Each vertex against a leaf's four boxes and screens at once.
-        tree_.queryLeavesFrom(entries, group.box, [&](int32_t leaf) {
-          const uint32_t first = tree_.nodeInfo(leaf).first;
-          for (uint32_t k = group.begin; k < group.end; ++k) {
-            const VertexQuery& q = queries[k];
-            unsigned mask = tree_.leafOverlaps(leaf, q.box);
-            if (mask != 0)
-              mask &= triangleColumns_.screenFour(first, q.vertex, q.flat, x0[q.vertex], move[q.vertex], thickness);
-            for (; mask != 0; mask &= mask - 1) testVertexTriangle(q, first + uint32_t(__builtin_ctz(mask)), out);
-          }
-        }, [&](int32_t node) { return skipped(node, group); });
+        tree_.queryLeavesFrom(
+            entries, group.box,
+            [&](int32_t leaf) {
+              const uint32_t first = tree_.nodeInfo(leaf).first;
+              for (uint32_t k = group.begin; k < group.end; ++k) {
+                const VertexQuery& q = queries[k];
+                unsigned mask = tree_.leafOverlaps(leaf, q.box);
+                if (mask != 0)
+                  mask &= triangleColumns_.screenFour(first, q.vertex, q.flat, x0[q.vertex], move[q.vertex], thickness);
+                for (; mask != 0; mask &= mask - 1) testVertexTriangle(q, first + uint32_t(__builtin_ctz(mask)), out);
+              }
+            },
+            [&](int32_t node) { return skipped(node, group); });
       }
     });
   }
