@@ -66,4 +66,13 @@ glm::vec3 eulerDegreesFromQuat(const glm::quat& q) {
   return glm::degrees(glm::vec3(x, y, z));
 }
 
+glm::quat editAfterWorldRotation(const glm::quat& editBefore, const glm::quat& worldRotationBefore,
+                                 const glm::vec3& worldAxis, float radians) {
+  // world = beforeEdit * edit, so turning the world rotation by (axis, angle)
+  // turns the edit about the same axis seen in the beforeEdit frame.
+  const glm::quat beforeEdit = worldRotationBefore * glm::inverse(editBefore);
+  const glm::vec3 localAxis = glm::normalize(glm::inverse(beforeEdit) * worldAxis);
+  return glm::normalize(glm::angleAxis(radians, localAxis) * editBefore);
+}
+
 }  // namespace mq

@@ -26,4 +26,10 @@ glm::quat slerpShortest(glm::quat a, glm::quat b, float t);
 glm::quat quatFromEulerDegrees(const glm::vec3& degrees);
 glm::vec3 eulerDegreesFromQuat(const glm::quat& q);
 
+// The rotation edit (a bone's local rotation on top of its parent's) that
+// turns the bone by `radians` about the world axis `worldAxis` through its
+// joint, given its edit and world rotation before the turn (a gizmo drag).
+glm::quat editAfterWorldRotation(const glm::quat& editBefore, const glm::quat& worldRotationBefore,
+                                 const glm::vec3& worldAxis, float radians);
+
 }  // namespace mq

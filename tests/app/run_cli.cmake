@@ -1,5 +1,6 @@
 # Runs one mannequin-cli command and checks its exit code and output.
 #   -DCLI=<exe> -DARGS="a;b;c" -DEXPECT_EXIT=<n> [-DEXPECT_OUTPUT=<regex>] [-DEXPECT_FILE=<path>]
+#   [-DIMAGE_CHECK=<mannequin_image_check> -DIMAGE_BASELINE=<name>]: the file, a PNG, matches that baseline
 set(arg_list ${ARGS})
 if(EXPECT_FILE)
   file(REMOVE "${EXPECT_FILE}")
@@ -15,4 +16,12 @@ if(EXPECT_OUTPUT AND NOT "${out}${err}" MATCHES "${EXPECT_OUTPUT}")
 endif()
 if(EXPECT_FILE AND NOT EXISTS "${EXPECT_FILE}")
   message(FATAL_ERROR "${EXPECT_FILE} was not written")
+endif()
+if(IMAGE_BASELINE)
+  execute_process(COMMAND "${IMAGE_CHECK}" "${EXPECT_FILE}" "${IMAGE_BASELINE}" RESULT_VARIABLE image_status
+                  OUTPUT_VARIABLE image_out ERROR_VARIABLE image_err)
+  if(NOT image_status EQUAL 0)
+    message(FATAL_ERROR "${image_out}${image_err}")
+  endif()
+  message("${image_out}")
 endif()

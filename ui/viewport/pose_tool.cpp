@@ -30,8 +30,7 @@ float wrapAngle(float a) {
 
 }  // namespace
 
-PoseTool::PoseTool(EditorDocument* document, render::SceneView* scene, VtkViewportWidget* viewport,
-                   QObject* parent)
+PoseTool::PoseTool(EditorDocument* document, render::SceneView* scene, VtkViewportWidget* viewport, QObject* parent)
     : QObject(parent), document_(document), scene_(scene), viewport_(viewport) {
   gizmo_.attach(viewport_->renderWindow(), scene_->renderer());
   viewport_->installEventFilter(this);
@@ -41,19 +40,9 @@ PoseTool::PoseTool(EditorDocument* document, render::SceneView* scene, VtkViewpo
   connect(document_, &EditorDocument::skeletonChanged, this, &PoseTool::updateGizmo);
 }
 
-glm::quat PoseTool::editAfterWorldRotation(const glm::quat& editBefore, const glm::quat& worldRotationBefore,
-                                           const glm::vec3& worldAxis, float radians) {
-  // world = beforeEdit * edit, so turning the world rotation by (axis, angle)
-  // turns the edit about the same axis seen in the beforeEdit frame.
-  const glm::quat beforeEdit = worldRotationBefore * glm::inverse(editBefore);
-  const glm::vec3 localAxis = glm::normalize(glm::inverse(beforeEdit) * worldAxis);
-  return glm::normalize(glm::angleAxis(radians, localAxis) * editBefore);
-}
-
 glm::quat PoseTool::boneWorldRotation(int bone) const {
   const glm::mat4& m = document_->posed().worldFromBone()[bone];
-  const glm::mat3 r(glm::normalize(glm::vec3(m[0])), glm::normalize(glm::vec3(m[1])),
-                    glm::normalize(glm::vec3(m[2])));
+  const glm::mat3 r(glm::normalize(glm::vec3(m[0])), glm::normalize(glm::vec3(m[1])), glm::normalize(glm::vec3(m[2])));
   return glm::normalize(glm::quat_cast(r));
 }
 
@@ -71,10 +60,14 @@ glm::vec2 PoseTool::projectToDisplay(const glm::vec3& world) const { return worl
 bool PoseTool::eventFilter(QObject* watched, QEvent* event) {
   if (watched != viewport_) return false;
   switch (event->type()) {
-    case QEvent::MouseButtonPress: return onPress(static_cast<QMouseEvent*>(event));
-    case QEvent::MouseMove: return onMove(static_cast<QMouseEvent*>(event));
-    case QEvent::MouseButtonRelease: return onRelease(static_cast<QMouseEvent*>(event));
-    default: return false;
+    case QEvent::MouseButtonPress:
+      return onPress(static_cast<QMouseEvent*>(event));
+    case QEvent::MouseMove:
+      return onMove(static_cast<QMouseEvent*>(event));
+    case QEvent::MouseButtonRelease:
+      return onRelease(static_cast<QMouseEvent*>(event));
+    default:
+      return false;
   }
 }
 

@@ -29,18 +29,11 @@ class PoseTool : public QObject {
   Q_OBJECT
 
  public:
-  PoseTool(EditorDocument* document, render::SceneView* scene, VtkViewportWidget* viewport,
-           QObject* parent = nullptr);
+  PoseTool(EditorDocument* document, render::SceneView* scene, VtkViewportWidget* viewport, QObject* parent = nullptr);
 
   RotationGizmo& gizmo() { return gizmo_; }
   // Places the gizmo on the selected bone's joint (after pose or selection changes).
   void updateGizmo();
-
-  // The rotation edit that turns the selected bone by `radians` about the
-  // world axis `worldAxis` through its joint, given its edit and world
-  // rotation before the turn. Shared by gizmo drags and tests.
-  static glm::quat editAfterWorldRotation(const glm::quat& editBefore, const glm::quat& worldRotationBefore,
-                                          const glm::vec3& worldAxis, float radians);
 
  signals:
   void bonePicked(int bone);
