@@ -8,7 +8,8 @@
 # seeds and from what earlier runs kept (build-fuzz/corpus/<target>). A crash, leak, timeout or
 # out-of-memory stops the target and leaves the input in
 # build-fuzz/findings/<target>/; copy it into tests/fuzz/regressions/<target>/
-# once fixed, where ctest replays it in the normal build.
+# once fixed, where ctest replays it in the normal build (an input mutated
+# from a ../shared asset goes in as a .patch of it: tests/fuzz/replay_main.cpp).
 set -euo pipefail
 top="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${MANNEQUIN_FUZZ_BUILD_DIR:-$top/build-fuzz}"
