@@ -88,7 +88,28 @@ GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent)
   scroll->setWidget(content);
   outer->addWidget(scroll);
 
-  // Garments
+  buildGarmentGroup(layout);
+  buildMeasurementGroup(layout);
+  buildFabricGroup(layout);
+  buildSimulationGroup(layout);
+  buildPinGroup(layout);
+  buildColliderGroup(layout);
+  buildDisplayGroup(layout);
+
+  status_ = new QLabel;
+  status_->setWordWrap(true);
+  layout->addWidget(status_);
+  layout->addStretch(1);
+
+  connect(tool_, &GarmentTool::sceneChanged, this, &GarmentPanel::refresh);
+  connect(tool_, &GarmentTool::currentGarmentChanged, this, &GarmentPanel::refresh);
+  connect(tool_, &GarmentTool::selectionChanged, this, &GarmentPanel::refreshStatus);
+  connect(tool_, &GarmentTool::simulationChanged, this, &GarmentPanel::refreshStatus);
+  refresh();
+}
+
+// The garment list, add and remove, the layer.
+void GarmentPanel::buildGarmentGroup(QVBoxLayout* layout) {
   auto* garments = new QGroupBox(tr("Garments"));
   auto* garmentLayout = new QVBoxLayout(garments);
   list_ = new QListWidget;
@@ -124,8 +145,10 @@ GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent)
   connect(list_, &QListWidget::currentRowChanged, this, [this](int row) {
     if (!refreshing_) tool_->setCurrentGarment(row);
   });
+}
 
-  // Measurements (rebuilt per garment type)
+// The measurements (rebuilt per garment type) and the particle distance.
+void GarmentPanel::buildMeasurementGroup(QVBoxLayout* layout) {
   auto* measurementBox = new QGroupBox(tr("Measurements"));
   auto* measurementLayout = new QVBoxLayout(measurementBox);
   measurements_ = new QWidget;
@@ -145,12 +168,12 @@ GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent)
   layout->addWidget(measurementBox);
   connect(particleDistance_, &QDoubleSpinBox::valueChanged, this, [this](double mm) {
     if (refreshing_) return;
-    if (lastField_ != 50) lastMergeKey_ = GarmentEditCommand::nextMergeKey();
-    lastField_ = 50;
-    tool_->setParticleDistance(tool_->currentGarment(), float(mm / 1000.0), lastMergeKey_);
+    tool_->setParticleDistance(tool_->currentGarment(), float(mm / 1000.0), mergeKeyFor(50));
   });
+}
 
-  // Fabric
+// The fabric preset and its fields (kFabricFields).
+void GarmentPanel::buildFabricGroup(QVBoxLayout* layout) {
   auto* fabricBox = new QGroupBox(tr("Fabric"));
   auto* fabricForm = new QFormLayout(fabricBox);
   fabricCombo_ = new QComboBox;
@@ -179,8 +202,10 @@ GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent)
     });
   }
   layout->addWidget(fabricBox);
+}
 
-  // Simulation
+// The integrator, self collisions, frames, and Simulate, Bake, Export and Reset.
+void GarmentPanel::buildSimulationGroup(QVBoxLayout* layout) {
   auto* simBox = new QGroupBox(tr("Simulation"));
   auto* simLayout = new QVBoxLayout(simBox);
   auto* simForm = new QFormLayout;
@@ -197,9 +222,7 @@ GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent)
   simForm->addRow(tr("Cloth frames"), clothFps_);
   connect(clothFps_, &QSpinBox::valueChanged, this, [this](int fps) {
     if (refreshing_) return;
-    if (lastField_ != 51) lastMergeKey_ = GarmentEditCommand::nextMergeKey();
-    lastField_ = 51;
-    tool_->setClothFps(float(fps), lastMergeKey_);
+    tool_->setClothFps(float(fps), mergeKeyFor(51));
   });
   bakeFrames_ = new QSpinBox;
   bakeFrames_->setRange(1, 100000);
@@ -211,9 +234,7 @@ GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent)
   simForm->addRow(tr("Bake length"), bakeFrames_);
   connect(bakeFrames_, &QSpinBox::valueChanged, this, [this](int frames) {
     if (refreshing_) return;
-    if (lastField_ != 52) lastMergeKey_ = GarmentEditCommand::nextMergeKey();
-    lastField_ = 52;
-    tool_->setBakeFrames(frames, lastMergeKey_);
+    tool_->setBakeFrames(frames, mergeKeyFor(52));
   });
   simForm->setRowVisible(bakeFrames_, false);
   simForm_ = simForm;
@@ -263,8 +284,10 @@ GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent)
   exportMenu->addAction(tr("Point Cache 2 (.pc2, Blender's Mesh Cache)..."), this, [exportInto] { exportInto(true); });
   exportBake_->setMenu(exportMenu);
   layout->addWidget(simBox);
+}
 
-  // Pins
+// Vertex selection and pins.
+void GarmentPanel::buildPinGroup(QVBoxLayout* layout) {
   auto* pinBox = new QGroupBox(tr("Pins"));
   auto* pinLayout = new QVBoxLayout(pinBox);
   select_ = new QPushButton(tr("Select vertices"));
@@ -294,10 +317,10 @@ GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent)
   connect(attach_, &QComboBox::activated, this,
           [this](int index) { tool_->setPinsFollowBody(tool_->currentGarment(), index == 0); });
   layout->addWidget(pinBox);
+}
 
-  buildColliderGroup(layout);
-
-  // Display
+// Overlays.
+void GarmentPanel::buildDisplayGroup(QVBoxLayout* layout) {
   auto* displayBox = new QGroupBox(tr("Display"));
   auto* displayLayout = new QVBoxLayout(displayBox);
   stretch_ = new QCheckBox(tr("Stretch overlay (grey 1.0 to red 1.1)"));
@@ -312,17 +335,12 @@ GarmentPanel::GarmentPanel(GarmentTool* tool, QWidget* parent) : QWidget(parent)
   connect(stretch_, &QCheckBox::toggled, tool_, &GarmentTool::setStretchVisible);
   connect(showPins_, &QCheckBox::toggled, tool_, &GarmentTool::setPinsVisible);
   layout->addWidget(displayBox);
+}
 
-  status_ = new QLabel;
-  status_->setWordWrap(true);
-  layout->addWidget(status_);
-  layout->addStretch(1);
-
-  connect(tool_, &GarmentTool::sceneChanged, this, &GarmentPanel::refresh);
-  connect(tool_, &GarmentTool::currentGarmentChanged, this, &GarmentPanel::refresh);
-  connect(tool_, &GarmentTool::selectionChanged, this, &GarmentPanel::refreshStatus);
-  connect(tool_, &GarmentTool::simulationChanged, this, &GarmentPanel::refreshStatus);
-  refresh();
+int GarmentPanel::mergeKeyFor(int field) {
+  if (lastField_ != field) lastMergeKey_ = GarmentEditCommand::nextMergeKey();
+  lastField_ = field;
+  return lastMergeKey_;
 }
 
 QDoubleSpinBox* GarmentPanel::measurementField(const QString& name) const {
@@ -409,9 +427,7 @@ void GarmentPanel::rebuildMeasurements() {
         connect(spin, &QDoubleSpinBox::valueChanged, this,
                 [this, name, index = int(measurementFields_.size())](double v) {
                   if (refreshing_) return;
-                  if (lastField_ != index + 1) lastMergeKey_ = GarmentEditCommand::nextMergeKey();
-                  lastField_ = index + 1;
-                  tool_->setMeasurement(tool_->currentGarment(), name, float(v), lastMergeKey_);
+                  tool_->setMeasurement(tool_->currentGarment(), name, float(v), mergeKeyFor(index + 1));
                 });
         auto* label = new QLabel(QString::fromStdString(p.name).replace('_', ' '));
         label->setToolTip(QString::fromStdString(p.help));
@@ -457,9 +473,7 @@ void GarmentPanel::editFabric(int field, const std::function<void(Fabric&, doubl
   if (refreshing_ || current < 0) return;
   Fabric fabric = tool_->scene().garments[current].solverFabric();
   change(fabric, value);
-  if (lastField_ != field) lastMergeKey_ = GarmentEditCommand::nextMergeKey();
-  lastField_ = field;
-  tool_->setFabric(current, fabric, lastMergeKey_);
+  tool_->setFabric(current, fabric, mergeKeyFor(field));
 }
 
 // ---- Colliders ----
@@ -600,9 +614,7 @@ void GarmentPanel::editCollider(int field) {
   if (c.shape != cloth::PrimitiveCollider::Shape::Plane) c.radius = float(colliderRadius_->value());
   const double friction = colliderFriction_->value();
   c.friction = friction <= colliderFriction_->minimum() ? -1.0f : float(friction);
-  if (lastField_ != field) lastMergeKey_ = GarmentEditCommand::nextMergeKey();
-  lastField_ = field;
-  if (!tool_->setCollider(current, c, lastMergeKey_)) refresh();
+  if (!tool_->setCollider(current, c, mergeKeyFor(field))) refresh();
 }
 
 QString GarmentPanel::statusText() const { return status_->text(); }

@@ -77,7 +77,17 @@ class GarmentPanel : public QWidget {
   void refreshFabric();
   void refreshStatus();
   void editFabric(int field, const std::function<void(Fabric&, double)>& change, double value);
+  // The dock's groups, top to bottom.
+  void buildGarmentGroup(QVBoxLayout* layout);
+  void buildMeasurementGroup(QVBoxLayout* layout);
+  void buildFabricGroup(QVBoxLayout* layout);
+  void buildSimulationGroup(QVBoxLayout* layout);
+  void buildPinGroup(QVBoxLayout* layout);
   void buildColliderGroup(QVBoxLayout* layout);
+  void buildDisplayGroup(QVBoxLayout* layout);
+  // The undo merge key for an edit of `field` (a spin box's steps merge;
+  // another field starts a new key).
+  int mergeKeyFor(int field);
   void refreshColliders();
   void editCollider(int field);
 

@@ -100,7 +100,27 @@ HairPanel::HairPanel(HairTool* tool, QWidget* parent) : QWidget(parent), tool_(t
       tool_->useBuiltinStyle(styleCombo_->itemText(index));
   });
 
-  // Primitives
+  layout->addWidget(makePrimitiveGroup());
+  layout->addWidget(makeStrandGroup());
+  layout->addWidget(makeShadingGroup());
+  layout->addWidget(makeDynamicsGroup());
+  layout->addWidget(makeScalpGroup());
+
+  status_ = new QLabel;
+  status_->setWordWrap(true);
+  layout->addWidget(status_);
+  layout->addStretch(1);
+
+  connect(tool_, &HairTool::styleChanged, this, &HairPanel::refresh);
+  // Not a full refresh: the hair arrives while the user may be typing.
+  connect(tool_, &HairTool::hairRegrown, this, &HairPanel::refreshStrandCounts);
+  connect(tool_, &HairTool::selectionChanged, this, &HairPanel::refresh);
+  connect(tool_, &HairTool::scalpChanged, this, &HairPanel::refreshScalp);
+  refresh();
+}
+
+// The flow primitives: the list, add and delete, the selected one's fields.
+QWidget* HairPanel::makePrimitiveGroup() {
   auto* primitives = new QGroupBox(tr("Flow primitives"));
   auto* primitiveLayout = new QVBoxLayout(primitives);
   list_ = new QListWidget;
@@ -141,7 +161,6 @@ HairPanel::HairPanel(HairTool* tool, QWidget* parent) : QWidget(parent), tool_(t
   vectorRow(axis_, 1.0, tr("Axis / direction"));
   vectorRow(position_, 0.6, tr("Position (m, head)"));
   primitiveLayout->addLayout(primitiveForm);
-  layout->addWidget(primitives);
 
   connect(strength_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
     editPrimitive(tr("Primitive strength"), kStrength, [&](HairStyle& s) {
@@ -174,8 +193,11 @@ HairPanel::HairPanel(HairTool* tool, QWidget* parent) : QWidget(parent), tool_(t
       });
     });
   }
+  return primitives;
+}
 
-  // Strands
+// The strands: density, length, their shape and colour.
+QWidget* HairPanel::makeStrandGroup() {
   auto* strands = new QGroupBox(tr("Strands"));
   auto* strandForm = new QFormLayout(strands);
   density_ = addSpin(1.0, 400.0, 5.0, 0);
@@ -204,7 +226,6 @@ HairPanel::HairPanel(HairTool* tool, QWidget* parent) : QWidget(parent), tool_(t
   displayCount_ = new QLabel;
   strandForm->addRow(tr("Display at most"), displayLimit_);
   strandForm->addRow(displayCount_);
-  layout->addWidget(strands);
   connect(displayLimit_, &QSpinBox::valueChanged, this, [this](int limit) {
     if (!refreshing_) tool_->setDisplayStrandLimit(size_t(limit));
   });
@@ -219,10 +240,11 @@ HairPanel::HairPanel(HairTool* tool, QWidget* parent) : QWidget(parent), tool_(t
           [this](double v) { editField(tr("Hair frizz"), kFrizz, [&](HairStyle& s) { s.frizz = float(v); }); });
   connect(rootColor_, &QPushButton::clicked, this, [this] { pickColor(true); });
   connect(tipColor_, &QPushButton::clicked, this, [this] { pickColor(false); });
+  return strands;
+}
 
-  layout->addWidget(makeShadingGroup());
-
-  // View and dynamics
+// What the viewport shows and the strand dynamics.
+QWidget* HairPanel::makeDynamicsGroup() {
   auto* dynamics = new QGroupBox(tr("View and dynamics"));
   auto* dynamicsLayout = new QVBoxLayout(dynamics);
   handles_ = new QCheckBox(tr("Show primitive handles"));
@@ -237,27 +259,13 @@ HairPanel::HairPanel(HairTool* tool, QWidget* parent) : QWidget(parent), tool_(t
   dynamicsLayout->addWidget(shadowMaps_);
   dynamicsLayout->addWidget(simulate_);
   dynamicsLayout->addWidget(bake_);
-  layout->addWidget(dynamics);
   connect(handles_, &QCheckBox::toggled, tool_, &HairTool::setHandlesVisible);
   connect(shadowMaps_, &QCheckBox::toggled, tool_, &HairTool::setOpacityShadowMaps);
   connect(simulate_, &QCheckBox::toggled, tool_, &HairTool::setSimulating);
   connect(bake_, &QPushButton::clicked, this, [this] {
     status_->setText(tool_->bake() ? tr("Baked: the clip plays the simulated hair.") : tr("Bake cancelled."));
   });
-
-  layout->addWidget(makeScalpGroup());
-
-  status_ = new QLabel;
-  status_->setWordWrap(true);
-  layout->addWidget(status_);
-  layout->addStretch(1);
-
-  connect(tool_, &HairTool::styleChanged, this, &HairPanel::refresh);
-  // Not a full refresh: the hair arrives while the user may be typing.
-  connect(tool_, &HairTool::hairRegrown, this, &HairPanel::refreshStrandCounts);
-  connect(tool_, &HairTool::selectionChanged, this, &HairPanel::refresh);
-  connect(tool_, &HairTool::scalpChanged, this, &HairPanel::refreshScalp);
-  refresh();
+  return dynamics;
 }
 
 // The shading model and the physical fibre's pigments and roughness. Every

@@ -64,8 +64,12 @@ class HairPanel : public QWidget {
   void refreshPrimitiveFields();
   void refreshScalp();
   void refreshScalpStatus();
-  QWidget* makeScalpGroup();
+  // The dock's groups.
+  QWidget* makePrimitiveGroup();
+  QWidget* makeStrandGroup();
   QWidget* makeShadingGroup();
+  QWidget* makeDynamicsGroup();
+  QWidget* makeScalpGroup();
   void refreshShading();
   void chooseScalpMode(int mode);
   // Applies `change` to a copy of the scalp region and pushes it (merging
