@@ -2,9 +2,15 @@
 
 #include <cmath>
 
+#include <Eigen/Dense>
+
 #include "core/hair/source_sum.h"
 
 namespace mq {
+
+struct FlowField::Factorisation {
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+};
 
 namespace {
 
@@ -57,7 +63,7 @@ void FlowField::setObstacle(const SurfacePanels& panels, const std::vector<uint8
       const float q = glm::dot(d, d) + core2_[j];
       a(i, j) = kInvFourPi * glm::dot(d, panels.normals[i]) / (q * std::sqrt(q));
     }
-  lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(a);
+  lu_ = std::make_shared<const Factorisation>(Factorisation{Eigen::PartialPivLU<Eigen::MatrixXd>(a)});
   solveStrengths();
 }
 
@@ -105,7 +111,7 @@ void FlowField::solveStrengths() {
     target_[i] = scalpPanel_[i] ? scalpOutflow_ : 0.0f;
     rhs[i] = target_[i] - glm::dot(primitiveVelocity(panels_.centers[i]), panels_.normals[i]);
   }
-  const Eigen::VectorXd q = lu_.solve(rhs);
+  const Eigen::VectorXd q = lu_->lu.solve(rhs);
   for (int j = 0; j < n; ++j) {
     flux_[j] = float(q[j]);
     weight_[j] = float(q[j]) * kInvFourPi;

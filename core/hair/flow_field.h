@@ -17,9 +17,9 @@
 // volumetric Perlin field perturbs the directions.
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
-#include <Eigen/Dense>
 #include <glm/glm.hpp>
 
 #include "core/hair/body_proxy.h"
@@ -59,7 +59,10 @@ class FlowField {
 
   SurfacePanels panels_;
   std::vector<uint8_t> scalpPanel_;
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  // The panel matrix's LU factors (Eigen, kept out of this header): shared
+  // between copies, as it only changes with the obstacle.
+  struct Factorisation;
+  std::shared_ptr<const Factorisation> lu_;
   std::vector<float> flux_, target_;
   std::vector<glm::vec3> sourcePositions_;
   // Sources as padded structure of arrays for the vectorised sum: position,
