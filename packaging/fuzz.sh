@@ -48,11 +48,15 @@ for target in "${targets[@]}"; do
   for seed in "${seeds[@]}"; do
     if [ -d "$seed" ]; then cp -n "$seed"/* "$corpus"/; else cp -n "$seed" "$corpus"/; fi
   done
+  # Assimp reads a few inputs a second at full length under ASan: shorter
+  # inputs (the small seed in tests/fuzz/seeds/assimp) reach its parsers' branches faster.
+  max_len=600000
+  [ "$target" = assimp ] && max_len=65536
   dict="$top/tests/fuzz/$target.dict"
   [ -f "$dict" ] || dict="$top/tests/fuzz/json.dict"
   echo "== fuzz_$target"
   if ! "$build/tests/fuzz/fuzz_$target" "$corpus" -runs="$runs" -max_total_time="$seconds" -dict="$dict" -timeout=10 -rss_limit_mb=3072 \
-      -max_len=600000 -print_final_stats=1 -artifact_prefix="$findings/" 2>"$build/fuzz_$target.log"; then
+      -max_len="$max_len" -print_final_stats=1 -artifact_prefix="$findings/" 2>"$build/fuzz_$target.log"; then
     status=1
     echo "fuzz_$target: FOUND a problem, see $build/fuzz_$target.log and $findings/"
   fi

@@ -22,7 +22,9 @@
 namespace mq {
 namespace {
 
-enum ChildExit { kSucceeded = 0, kFailed = 1, kOutOfMemory = 2 };
+// Exit codes of our own, apart from the ones a runtime uses when it stops a
+// process (1 from AddressSanitizer, for instance): any other code is a crash.
+enum ChildExit { kSucceeded = 0, kFailed = 97, kOutOfMemory = 98 };
 
 [[noreturn]] void runChild(const std::function<bool()>& work, const IsolationLimits& limits) {
   // The parent reports what happened; the library's own diagnostics would only repeat it.
@@ -77,7 +79,8 @@ IsolatedOutcome runIsolated(const std::function<bool()>& work, const IsolationLi
   const int code = WIFEXITED(status) ? WEXITSTATUS(status) : kFailed;
   if (code == kSucceeded) return {true, ""};
   if (code == kOutOfMemory) return {false, "ran out of memory (limit " + gibibytes(limits.memoryBytes) + ")"};
-  return {false, "failed"};
+  if (code == kFailed) return {false, "failed"};
+  return {false, "crashed (exit code " + std::to_string(code) + ")"};
 }
 
 }  // namespace mq

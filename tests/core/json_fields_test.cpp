@@ -1,6 +1,8 @@
 // Hand-edited JSON: parse errors give the place, fields give their path.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 #include <nlohmann/json.hpp>
 
 #include "core/hair/hairstyle_json.h"
@@ -125,6 +127,9 @@ TEST(IsolatedRun, ReportsSuccessFailureCrashAndTimeout) {
       },
       quick);
   EXPECT_EQ(hang.problem, "took longer than 0 s");
+  // A runtime that stops the process with an exit code of its own (a
+  // sanitizer's report) is a crash, not a failure to read.
+  EXPECT_EQ(runIsolated([]() -> bool { std::_Exit(1); }).problem, "crashed (exit code 1)");
 }
 
 }  // namespace
