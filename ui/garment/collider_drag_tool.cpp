@@ -16,6 +16,7 @@
 #include "ui/garment/garment_edit_command.h"
 #include "ui/garment/garment_tool.h"
 #include "ui/main_window.h"
+#include "ui/viewport/mouse_routing.h"
 #include "ui/viewport/viewport_geometry.h"
 #include "ui/viewport/vtk_viewport_widget.h"
 
@@ -72,16 +73,8 @@ void ColliderDragTool::updateGizmo() {
 
 bool ColliderDragTool::eventFilter(QObject* watched, QEvent* event) {
   if (watched != window_->viewport()) return false;
-  switch (event->type()) {
-    case QEvent::MouseButtonPress:
-      return onPress(static_cast<QMouseEvent*>(event));
-    case QEvent::MouseMove:
-      return onMove(static_cast<QMouseEvent*>(event));
-    case QEvent::MouseButtonRelease:
-      return onRelease(static_cast<QMouseEvent*>(event));
-    default:
-      return false;
-  }
+  return routeMouseEvent(this, event, &ColliderDragTool::onPress, &ColliderDragTool::onMove,
+                         &ColliderDragTool::onRelease);
 }
 
 // The parameter along the dragged arrow's line of the point nearest the line of sight.

@@ -49,6 +49,7 @@
 #include "ui/garment/held_drape.h"
 #include "ui/jobs/long_job.h"
 #include "ui/main_window.h"
+#include "ui/viewport/mouse_routing.h"
 #include "ui/viewport/vtk_viewport_widget.h"
 
 namespace mq::ui {
@@ -1457,16 +1458,7 @@ void GarmentTool::setSelectMode(bool on) {
 
 bool GarmentTool::eventFilter(QObject* watched, QEvent* event) {
   if (watched != window_->viewport() || current_ < 0) return false;
-  switch (event->type()) {
-    case QEvent::MouseButtonPress:
-      return onPress(static_cast<QMouseEvent*>(event));
-    case QEvent::MouseMove:
-      return onMove(static_cast<QMouseEvent*>(event));
-    case QEvent::MouseButtonRelease:
-      return onRelease(static_cast<QMouseEvent*>(event));
-    default:
-      return false;
-  }
+  return routeMouseEvent(this, event, &GarmentTool::onPress, &GarmentTool::onMove, &GarmentTool::onRelease);
 }
 
 // Rubber band: a plain left drag in select mode, or Ctrl+Alt+left drag at

@@ -27,6 +27,7 @@
 #include "ui/hair/hair_panel.h"
 #include "ui/hair/hair_style_command.h"
 #include "ui/main_window.h"
+#include "ui/viewport/mouse_routing.h"
 #include "ui/viewport/vtk_viewport_widget.h"
 
 namespace mq::ui {
@@ -528,16 +529,7 @@ QPoint HairTool::toDisplay(const QPointF& position) const {
 
 bool HairTool::eventFilter(QObject* watched, QEvent* event) {
   if (watched != window_->viewport() || !style_ || !groom_) return false;
-  switch (event->type()) {
-    case QEvent::MouseButtonPress:
-      return onPress(static_cast<QMouseEvent*>(event));
-    case QEvent::MouseMove:
-      return onMove(static_cast<QMouseEvent*>(event));
-    case QEvent::MouseButtonRelease:
-      return onRelease(static_cast<QMouseEvent*>(event));
-    default:
-      return false;
-  }
+  return routeMouseEvent(this, event, &HairTool::onPress, &HairTool::onMove, &HairTool::onRelease);
 }
 
 bool HairTool::onPress(QMouseEvent* event) {

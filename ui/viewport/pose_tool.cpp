@@ -12,6 +12,7 @@
 #include "render/scene_view.h"
 #include "ui/document/editor_document.h"
 #include "ui/document/pose_commands.h"
+#include "ui/viewport/mouse_routing.h"
 #include "ui/viewport/viewport_geometry.h"
 #include "ui/viewport/vtk_viewport_widget.h"
 
@@ -59,16 +60,7 @@ glm::vec2 PoseTool::projectToDisplay(const glm::vec3& world) const { return worl
 
 bool PoseTool::eventFilter(QObject* watched, QEvent* event) {
   if (watched != viewport_) return false;
-  switch (event->type()) {
-    case QEvent::MouseButtonPress:
-      return onPress(static_cast<QMouseEvent*>(event));
-    case QEvent::MouseMove:
-      return onMove(static_cast<QMouseEvent*>(event));
-    case QEvent::MouseButtonRelease:
-      return onRelease(static_cast<QMouseEvent*>(event));
-    default:
-      return false;
-  }
+  return routeMouseEvent(this, event, &PoseTool::onPress, &PoseTool::onMove, &PoseTool::onRelease);
 }
 
 bool PoseTool::onPress(QMouseEvent* event) {
