@@ -78,7 +78,7 @@ void Character::scaleUniformly(float factor) {
       for (float& d : t.positionDeltas) d *= factor;
     scaleTranslation(mesh.boneFromMesh, factor);
     for (glm::mat4& m : mesh.skin.inverseBind) scaleTranslation(m, factor);
-    mesh.sectionCones.reset();
+    mesh.dropSkinningBindings();
     if (mesh.implicitBody) mesh.implicitBody = scaledBody(*mesh.implicitBody, factor);
   }
   for (SkinBinding& skin : skinsBeforeHelpers)

@@ -80,6 +80,9 @@ struct Mesh {
   int material = -1;  // index into Character::materials; -1: none (baseColor)
 
   size_t vertexCount() const { return positions.size() / 3; }
+  // Forgets what the skinning methods bound on the skin (after the weights,
+  // the skeleton or the rest shape changed): prepareSkinning binds again.
+  void dropSkinningBindings() { sectionCones.reset(); }
   size_t triangleCount() const { return triangles.size() / 3; }
   // The submeshes, or one covering the whole mesh with `material`.
   std::vector<Submesh> drawRanges() const;

@@ -130,7 +130,7 @@ class HelperBuilder {
       addHalfAngle(c_.skeleton.bone(roles.upperArm[side]).parent, roles.upperArm[side]);
       addTwists(roles.forearm[side], roles.hand[side]);
     }
-    for (Mesh& mesh : c_.meshes) mesh.sectionCones.reset();
+    for (Mesh& mesh : c_.meshes) mesh.dropSkinningBindings();
     return added_;
   }
 
@@ -262,7 +262,7 @@ void removeHelperBones(Character& character) {
   for (const HelperBone& h : character.helperBones) first = std::min(first, h.bone);
   for (size_t m = 0; m < character.meshes.size() && m < character.skinsBeforeHelpers.size(); ++m) {
     character.meshes[m].skin = character.skinsBeforeHelpers[m];
-    character.meshes[m].sectionCones.reset();
+    character.meshes[m].dropSkinningBindings();
   }
   Skeleton skeleton;
   for (int b = 0; b < first; ++b) skeleton.addBone(character.skeleton.bone(b));

@@ -394,6 +394,7 @@ WeightReport regenerateWeights(Character& character, const WeightSettings& setti
   if (helpers) removeHelperBones(character);
   for (Mesh& mesh : character.meshes) {
     const WeightReport r = regenerateMeshWeights(mesh, character.skeleton, settings, pool);
+    mesh.dropSkinningBindings();  // the cones' creases follow the dominant bones
     total.vertices += r.vertices;
     total.blendedBefore += r.blendedBefore;
     total.blendedAfter += r.blendedAfter;

@@ -7,6 +7,7 @@
 #include "core/io/character_import.h"
 #include "core/scene/scene_document.h"
 #include "core/skin_test_util.h"
+#include "core/skinning/section_cones.h"
 #include "core/skinning/weight_regeneration.h"
 #include "core/util/error.h"
 #include "core/util/thread_pool.h"
@@ -112,6 +113,24 @@ TEST(WeightRegeneration, RestPoseAndThreadsAreUnchanged) {
   posed.evaluate(c, -1, 0.0f, nullptr, nullptr);
   const std::vector<float>& rest = c.meshes[0].positions;
   for (size_t i = 0; i < rest.size(); ++i) ASSERT_NEAR(posed.meshes()[0].positions[i], rest[i], 1e-6f);
+}
+
+TEST(WeightRegeneration, ConesBoundOnTheOldWeightsAreDropped) {
+  // The cones' creases are bound from each vertex's dominant bone: cones
+  // bound on the file's weights must not outlive them.
+  Character c = makeDefaultMannequin();
+  c.skinning = SkinningMethod::Cones;
+  prepareSkinning(c);
+  ASSERT_TRUE(c.meshes[0].sectionCones);
+  WeightSettings settings;
+  settings.regenerate = true;
+  regenerateWeights(c, settings, &ThreadPool::shared());
+  EXPECT_FALSE(c.meshes[0].sectionCones);
+  prepareSkinning(c);
+  ASSERT_TRUE(c.meshes[0].sectionCones);
+  const std::shared_ptr<const SectionCones> fresh = bindSectionCones(c.meshes[0], c.skeleton);
+  EXPECT_EQ(c.meshes[0].sectionCones->creaseJoint, fresh->creaseJoint);
+  EXPECT_EQ(c.meshes[0].sectionCones->creaseBound, fresh->creaseBound);
 }
 
 TEST(WeightRegeneration, MannequinHandStaysOnItsChainAndHelpersComeBack) {

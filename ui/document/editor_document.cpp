@@ -143,7 +143,10 @@ void EditorDocument::setWeightSettings(const WeightSettings& settings) {
   if (settings == scene_.weights) return;
   const bool helpers = helperBones();
   if (helpers) removeHelperBones(character_);
-  for (size_t m = 0; m < character_.meshes.size(); ++m) character_.meshes[m].skin = fileSkins_[m];
+  for (size_t m = 0; m < character_.meshes.size(); ++m) {
+    character_.meshes[m].skin = fileSkins_[m];
+    character_.meshes[m].dropSkinningBindings();
+  }
   weightReport_ = regenerateWeights(character_, settings, &ThreadPool::shared());
   if (helpers) addHelperBones(character_);
   scene_.weights = settings;
