@@ -16,23 +16,18 @@
 namespace mq::cli {
 namespace {
 
-// The clip the options ask for: --motion adds one, --clip picks one,
-// otherwise the scene's current clip.
+// The clip the options ask for: --motion adds one and plays it, --clip
+// picks one, otherwise the scene's current clip.
 int chooseClip(const Args& args, LoadedScene& scene) {
-  int clip = scene.clipIndex;
   if (args.has("--motion")) {
     BoneMatchReport match;
-    clip = addMotion(scene.character, args.option("--motion"), {args.option("--map"), args.has("--in-place")}, &match);
+    scene.clipIndex =
+        addMotion(scene.character, args.option("--motion"), {args.option("--map"), args.has("--in-place")}, &match);
     printMotionMatch(args.option("--motion"), match);
   } else if (args.has("--map") || args.has("--in-place")) {
     throw Error(std::string(args.has("--map") ? "--map" : "--in-place") + " needs --motion");
   }
-  if (args.has("--clip")) {
-    if (args.option("--clip") == "rest") return -1;  // the rest pose plus the document's pose edits
-    clip = scene.character.findClip(args.option("--clip"));
-    if (clip < 0) throw Error("'" + scene.character.name + "' has no clip '" + args.option("--clip") + "'");
-  }
-  return clip;
+  return clipOption(args, scene, args.positional()[0]);
 }
 
 // {"bones": [{"name", "head": [x, y, z]}]}: each bone's world-space origin.

@@ -38,17 +38,6 @@ render::LookMode parseLook(const std::string& name) {
   return mode;
 }
 
-int chooseClip(const Args& args, const LoadedScene& scene, const std::string& file) {
-  if (!args.has("--clip")) return scene.clipIndex;
-  const std::string wanted = args.option("--clip");
-  if (wanted == "rest") return -1;  // the rest pose, as the editor's --clip rest
-  const int clip = scene.character.findClip(wanted);
-  if (clip >= 0) return clip;
-  std::string names;
-  for (const Clip& c : scene.character.clips) names += (names.empty() ? "" : ", ") + c.name;
-  throw FileError(file, "no clip '" + wanted + "' (clips: " + (names.empty() ? "none" : names) + ")");
-}
-
 void placeCamera(render::SceneView& view, const ViewSettings& settings, const ImageSize& size) {
   view.frameAll(static_cast<double>(size.width) / size.height);
   if (settings.hasCamera) view.setCamera(settings.cameraPosition, settings.cameraFocus);
@@ -89,7 +78,7 @@ int runRender(const std::vector<std::string>& argv) {
   applySkinningOption(args, scene);
   if (scene.character.skeleton.boneCount() == 0 && scene.character.meshes.empty())
     throw FileError(file, "has no character to render");
-  const int clip = chooseClip(args, scene, file);
+  const int clip = clipOption(args, scene, file);
   const float time = static_cast<float>(args.number("--time", scene.document.time));
 
   PosedCharacter posed;

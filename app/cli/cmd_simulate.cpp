@@ -155,7 +155,7 @@ json phaseProfile(const RunResult& r, const SceneCloth& cloth, int frames) {
 int runSimulate(const std::vector<std::string>& argv) {
   const cli::Args args(argv);
   args.allowOnly({"--frames", "--fps", "--stats-json", "--export-dir", "--export-format", "--layers", "--skinning",
-                  "--helper-bones", "--regenerate-weights", "--smooth-weights", "--scale"});
+                  "--helper-bones", "--regenerate-weights", "--smooth-weights", "--scale", "--clip"});
   const std::string format = args.option("--export-format", "obj");
   if (format != "obj" && format != "pc2") throw Error("--export-format expects obj or pc2");
   const std::string layers = args.option("--layers", "on");
@@ -174,6 +174,7 @@ int runSimulate(const std::vector<std::string>& argv) {
   cli::printMotionMatch(scene);
   applyScaleOption(args, scene);
   applySkinningOption(args, scene);
+  scene.clipIndex = cli::clipOption(args, scene, path);
   const json& garmentsSection = scene.document.garments;
   const bool hasGarments = garmentsSection.is_array() && !garmentsSection.empty();
   if (scene.document.cloth.is_null() && !hasGarments && !scene.document.hair.is_null())
@@ -251,13 +252,14 @@ int runSimulate(const std::vector<std::string>& argv) {
   }
   std::cout << "simulated " << frames << " frames of " << now.vertices << " cloth vertices in " << r.seconds << " s ("
             << 1000.0 * r.seconds / frames << " ms/frame), max stretch " << r.maxStretch << ", penetrating vertices "
-            << now.penetratingVertices << "\n";
+            << now.penetratingVertices << ", on " << cli::clipLabel(scene, scene.clipIndex) << "\n";
   return 0;
 }
 
 const cli::Registration reg(
     {"simulate",
-     "SCENE --frames N [--fps F] [--stats-json OUT] [--export-dir DIR [--export-format obj|pc2]]\n"
+     "SCENE --frames N [--fps F] [--clip NAME|INDEX|rest] [--stats-json OUT] [--export-dir DIR [--export-format "
+     "obj|pc2]]\n"
      "         [--layers on|off] [--skinning lbs|dqs|cones] [--helper-bones] [--regenerate-weights] [--smooth-weights] "
      "[--scale S]",
      "run the scene's cloth (sheet and garments) and hair headless; stats as JSON, frames as OBJ/PLY\n"

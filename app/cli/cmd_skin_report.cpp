@@ -1,5 +1,5 @@
 // mannequin-cli skin-report FILE|SCENE [--skinning M] [--json] [--no-poses] [--no-clips]
-//                           [--no-intersections] [--clip-fps F]
+//                           [--no-intersections] [--clip-fps F] [--clip NAME|INDEX|rest]
 // How well a skinning method keeps the body's shape: the skin metrics on the
 // standard test poses of a humanoid and over each clip.
 #include <cmath>
@@ -85,7 +85,7 @@ void printTable(const std::string& file, const SkinReport& r, std::ostream& out)
 int runSkinReport(const std::vector<std::string>& argv) {
   const Args args(argv);
   args.allowOnly({"--skinning", "--helper-bones", "--regenerate-weights", "--smooth-weights", "--scale", "--json",
-                  "--no-poses", "--no-clips", "--no-intersections", "--clip-fps"});
+                  "--no-poses", "--no-clips", "--no-intersections", "--clip-fps", "--clip"});
   if (args.positional().size() != 1) throw Error("skin-report needs exactly one FILE");
   const std::string file = args.positional()[0];
   LoadedScene scene = openScene(file);
@@ -98,6 +98,11 @@ int runSkinReport(const std::vector<std::string>& argv) {
   options.clips = !args.has("--no-clips");
   options.intersections = !args.has("--no-intersections");
   options.clipFps = float(args.number("--clip-fps", 30.0));
+  if (args.has("--clip")) {
+    if (args.has("--no-clips")) throw Error("--clip and --no-clips exclude each other");
+    options.clip = clipOption(args, scene, file);
+    options.edits = &scene.edits;
+  }
   if (!(options.clipFps > 0.0f && options.clipFps <= 1000.0f)) throw Error("--clip-fps must be between 0 and 1000");
   const SkinReport report = measureSkinning(scene.character, options, &ThreadPool::shared());
   if (args.has("--json"))
@@ -110,7 +115,7 @@ int runSkinReport(const std::vector<std::string>& argv) {
 static Registration reg({"skin-report",
                          "FILE [--skinning lbs|dqs|cones] [--helper-bones] [--regenerate-weights] [--smooth-weights] "
                          "[--scale S] [--json] [--no-poses] [--no-clips] [--no-intersections]\n"
-                         "         [--clip-fps F]",
+                         "         [--clip-fps F] [--clip NAME|INDEX|rest]",
                          "skin metrics (outer section M1, twist section M2, local volume M3, self-intersections M4) "
                          "on a humanoid's test poses and over each clip",
                          runSkinReport});

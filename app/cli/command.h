@@ -59,6 +59,14 @@ std::string withHelperBones(const Character& character);
 // Throws mq::Error for a scale that is not a positive number.
 void applyScaleOption(const Args& args, LoadedScene& scene);
 
+// --clip NAME|INDEX|rest: the clip to play, -1 for rest (the rest pose with
+// the document's pose edits); without it, the scene's clip (-1 when the
+// document names none). Throws mq::FileError naming `file` and the clips it
+// has for an unknown clip.
+int clipOption(const Args& args, const LoadedScene& scene, const std::string& file);
+// "clip 'walk'", or "the rest pose" for -1 (for summaries).
+std::string clipLabel(const LoadedScene& scene, int clip);
+
 // "motion walk.bvh: matched 19 of 31 bones; unmatched: ..." on stderr, beside
 // the load warnings, so that --json output on stdout stays valid.
 void printMotionMatch(const std::string& bvhPath, const BoneMatchReport& match);

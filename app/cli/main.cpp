@@ -119,6 +119,22 @@ void applyScaleOption(const Args& args, LoadedScene& scene) {
   prepareSkinning(scene.character);
 }
 
+int clipOption(const Args& args, const LoadedScene& scene, const std::string& file) {
+  if (!args.has("--clip")) return scene.clipIndex;
+  const std::string wanted = args.option("--clip");
+  if (wanted == "rest") return -1;
+  const int clip = scene.character.findClip(wanted);
+  if (clip >= 0) return clip;
+  std::string names;
+  for (const Clip& c : scene.character.clips) names += (names.empty() ? "" : ", ") + c.name;
+  throw FileError(file, "no clip '" + wanted + "' (clips: " + (names.empty() ? "none" : names) + ")");
+}
+
+std::string clipLabel(const LoadedScene& scene, int clip) {
+  if (clip < 0 || clip >= int(scene.character.clips.size())) return "the rest pose";
+  return "clip '" + scene.character.clips[clip].name + "'";
+}
+
 void printMotionMatch(const std::string& bvhPath, const BoneMatchReport& match) {
   std::cerr << "motion " << bvhPath << ": " << match.summary() << "\n";
 }

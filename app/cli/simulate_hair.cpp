@@ -91,7 +91,8 @@ void simulateSceneHair(const LoadedScene& scene, int frames, float fps, const st
   std::cout << "simulated hair: " << hair.groom().strands().strandCount() << " strands (" << hair.groom().guideCount()
             << " guides) over " << frames << " frames in " << seconds << " s (" << 1000.0 * seconds / frames
             << " ms/frame), max length error " << maxLengthError << ", points inside the body " << maxInside
-            << (exportDir.empty() ? "" : ", wrote " + exportDir + "/hair_*.ply") << "\n";
+            << (exportDir.empty() ? "" : ", wrote " + exportDir + "/hair_*.ply") << ", on "
+            << clipLabel(scene, scene.clipIndex) << "\n";
 }
 
 int simulateHairOnly(const LoadedScene& scene, const std::string& path, int frames, const Args& args) {

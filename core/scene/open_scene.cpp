@@ -51,7 +51,7 @@ LoadedScene resolveSceneDocument(const SceneDocument& document, const std::strin
   if (!document.clip.empty()) {
     scene.clipIndex = scene.character.findClip(document.clip);
     if (scene.clipIndex < 0) throw Error("the character has no clip '" + document.clip + "'");
-  } else if (scene.clipIndex < 0 && !scene.character.clips.empty()) {
+  } else if (scene.clipIndex < 0 && document.firstClipWhenNone && !scene.character.clips.empty()) {
     scene.clipIndex = 0;
   }
   scene.edits = poseEditsFromNames(document.poseRotations, scene.character.skeleton);
@@ -92,7 +92,9 @@ void applyMaterialOverrides(const std::map<std::string, MaterialOverride>& overr
 }
 
 LoadedScene openScene(const std::string& fileOrDefault) {
-  if (fileOrDefault == "default") return resolveSceneDocument(SceneDocument{}, "");
+  SceneDocument bare;  // a character without a document: it plays its first clip
+  bare.firstClipWhenNone = true;
+  if (fileOrDefault == "default") return resolveSceneDocument(bare, "");
   if (isSceneDocumentPath(fileOrDefault)) {
     const SceneDocument document = loadSceneDocument(fileOrDefault);
     try {
@@ -103,9 +105,8 @@ LoadedScene openScene(const std::string& fileOrDefault) {
       throw FileError(fileOrDefault, e.what());
     }
   }
-  SceneDocument document;
-  document.character = fileOrDefault;
-  return resolveSceneDocument(document, "");
+  bare.character = fileOrDefault;
+  return resolveSceneDocument(bare, "");
 }
 
 }  // namespace mq

@@ -50,7 +50,10 @@ struct SceneDocument {
   std::string motionFile;             // BVH applied to the character, optional
   std::string motionMapFile;          // bone-name map for the BVH, optional
   bool motionInPlace = false;         // the root's horizontal travel dropped
-  std::string clip;                   // clip name or index; "" = the first clip
+  std::string clip;                   // clip name or index; "" = none, the rest pose with the pose edits
+  // Not saved: a document made for a bare character file (or "default")
+  // plays the file's first clip when `clip` is "".
+  bool firstClipWhenNone = false;
   float time = 0.0f;
   std::map<std::string, glm::quat> poseRotations;  // bone name -> local rotation edit
   ViewSettings view;

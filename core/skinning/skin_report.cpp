@@ -60,8 +60,8 @@ class Measurer {
     if (world) *world = posed_.worldFromBone();
     return body_.weld(posed_.meshes());
   }
-  std::vector<float> posedAt(int clip, float time) {
-    posed_.evaluate(character_, clip, time, nullptr, pool_);
+  std::vector<float> posedAt(int clip, float time, const PoseEdits* edits = nullptr) {
+    posed_.evaluate(character_, clip, time, edits, pool_);
     return body_.weld(posed_.meshes());
   }
   // M6 over the meshes built from an implicit body, from the last
@@ -233,16 +233,25 @@ void measureShoulder(Measurer& m, const Character& character, const HumanoidBone
   }
 }
 
-ClipMeasure measureClip(Measurer& m, const Character& character, int clip, float fps) {
-  const Clip& c = character.clips[clip];
+// clip -1: the rest pose with `edits`, as one frame.
+ClipMeasure measureClip(Measurer& m, const Character& character, int clip, float fps, const PoseEdits* edits) {
   ClipMeasure cm;
-  cm.name = c.name.empty() ? std::to_string(clip) : c.name;
-  const int frames = std::max(1, int(std::floor(c.duration() * fps + 1e-4f)) + 1);
+  int frames = 1;
+  float start = 0.0f;
+  if (clip >= 0) {
+    const Clip& c = character.clips[clip];
+    cm.name = c.name.empty() ? std::to_string(clip) : c.name;
+    frames = std::max(1, int(std::floor(c.duration() * fps + 1e-4f)) + 1);
+    start = c.startTime();
+    edits = nullptr;
+  } else {
+    cm.name = "rest";
+  }
   long total = 0;
   cm.worstIntersections = -1;
   for (int f = 0; f < frames; ++f) {
-    const float time = c.startTime() + f / fps;
-    const std::vector<float> posed = m.posedAt(clip, time);
+    const float time = start + f / fps;
+    const std::vector<float> posed = m.posedAt(clip, time, edits);
     const long pairs = m.intersections(posed);
     total += std::max(0L, pairs);
     if (pairs > cm.worstIntersections) cm.worstIntersections = pairs, cm.worstTime = time;
@@ -278,9 +287,11 @@ SkinReport measureSkinning(const Character& character, const SkinReportOptions& 
       report.notes.push_back(std::string("no test poses: ") + e.what());
     }
   }
-  if (options.clips)
+  if (options.clips && options.clip != SkinReportOptions::kEveryClip)
+    report.clips.push_back(measureClip(m, character, options.clip, options.clipFps, options.edits));
+  else if (options.clips)
     for (int c = 0; c < int(character.clips.size()); ++c)
-      report.clips.push_back(measureClip(m, character, c, options.clipFps));
+      report.clips.push_back(measureClip(m, character, c, options.clipFps, nullptr));
   return report;
 }
 

@@ -44,8 +44,13 @@ struct SkinReport {
 };
 
 struct SkinReportOptions {
+  static constexpr int kEveryClip = -2;
   bool poses = true;
   bool clips = true;
+  // Which clip "clips" measures: every one, one clip's index, or -1 for the
+  // rest pose with `edits` (one frame, reported as the clip "rest").
+  int clip = kEveryClip;
+  const PoseEdits* edits = nullptr;
   bool intersections = true;  // M4 (the slowest measure)
   float clipFps = 30.0f;
 };

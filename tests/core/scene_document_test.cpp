@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/scene/open_scene.h"
 #include "core/scene/scene_document.h"
 #include "core/util/error.h"
 
@@ -63,6 +64,14 @@ void expectFileError(const std::string& text, const std::string& fragment) {
     EXPECT_EQ(e.path(), "scene.mqscene");
     EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
   }
+}
+
+TEST(SceneDocument, NoClipIsTheRestPoseButABareCharacterPlaysItsFirstClip) {
+  SceneDocument doc;  // the built-in mannequin, with its walk and arm raise
+  EXPECT_EQ(resolveSceneDocument(doc, "").clipIndex, -1);
+  doc.clip = "arm_raise";
+  EXPECT_EQ(resolveSceneDocument(doc, "").clipIndex, 1);
+  EXPECT_EQ(openScene("default").clipIndex, 0);
 }
 
 TEST(SceneDocument, BadDocumentsFailClearly) {
