@@ -288,10 +288,32 @@ double edgeMove(const float* wa, const float* wb, int joints, double length, con
   return excess > kConvergedExcess ? move : 0.0;
 }
 
+// The steps of a run, reported to the callbacks; a cancel unwinds the run.
+struct Cancelled {};
+class Steps {
+ public:
+  Steps(const WeightCallbacks* callbacks, int total) : callbacks_(callbacks), total_(total) {}
+  // One step done (or `count`); throws Cancelled when asked to stop.
+  void done(int count = 1) {
+    done_ = std::min(total_, done_ + count);
+    if (!callbacks_) return;
+    if (callbacks_->progress) callbacks_->progress(done_, total_);
+    if (callbacks_->cancelled && callbacks_->cancelled()) throw Cancelled{};
+  }
+
+ private:
+  const WeightCallbacks* callbacks_;
+  int total_, done_ = 0;
+};
+
+constexpr int kStagesPerMesh = 3;  // cones, rigid assignment, blend
+
+int stepsOf(const WeightSettings& settings) { return kStagesPerMesh + (settings.smooth ? settings.passes : 0); }
+
 // Jacobi passes of the cone-threshold smoothing; returns the passes run and
 // the largest excess left.
 std::pair<int, double> smoothWelded(WeldedWeights& w, const std::vector<Edge>& edges,
-                                    const std::vector<double>& lengths, int maxPasses) {
+                                    const std::vector<double>& lengths, int maxPasses, Steps& steps) {
   std::vector<double> delta(w.weights.size());
   std::vector<int> moves(w.positions.size());
   int pass = 0;
@@ -321,7 +343,9 @@ std::pair<int, double> smoothWelded(WeldedWeights& w, const std::vector<Edge>& e
       for (int j = 0; j < w.joints; ++j)
         w.of(v)[j] = float(std::max(0.0, double(w.of(v)[j]) + delta[v * size_t(w.joints) + j] / moves[v]));
     }
+    steps.done();
   }
+  steps.done(maxPasses - pass);  // converged early
   return {pass, largest > kConvergedExcess ? largest : 0.0};
 }
 
@@ -361,8 +385,10 @@ std::string WeightReport::summary() const {
   return out.str();
 }
 
-WeightReport regenerateMeshWeights(Mesh& mesh, const Skeleton& skeleton, const WeightSettings& settings,
-                                   ThreadPool* pool) {
+namespace {
+
+WeightReport regenerateInSteps(Mesh& mesh, const Skeleton& skeleton, const WeightSettings& settings, ThreadPool* pool,
+                               Steps& steps) {
   WeightReport report;
   if (mesh.skin.empty() || !settings.active()) return report;
   WeldedWeights w = weldWeights(mesh);
@@ -372,13 +398,18 @@ WeightReport regenerateMeshWeights(Mesh& mesh, const Skeleton& skeleton, const W
   const std::vector<double> radii = cylinderRadii(cones, w);
   const std::vector<Edge> edges = uniqueEdges(w);
   const std::vector<double> lengths = transitionLengths(cones, radii, settings.transition);
+  steps.done();
   if (settings.regenerate) {
     const SurfaceSegmentQuery surface(mesh.positions, mesh.triangles);
     assignRigidly(w, cones, radii, skinJointParents(mesh.skin, skeleton), surface, settings.axialWeight, pool);
+    steps.done();
     blendRegions(w, edges, lengths);
+    steps.done();
+  } else {
+    steps.done(2);
   }
   if (settings.smooth) {
-    const auto [passes, excess] = smoothWelded(w, edges, lengths, settings.passes);
+    const auto [passes, excess] = smoothWelded(w, edges, lengths, settings.passes, steps);
     report.passes = passes;
     report.largestExcess = excess;
   }
@@ -387,13 +418,12 @@ WeightReport regenerateMeshWeights(Mesh& mesh, const Skeleton& skeleton, const W
   return report;
 }
 
-WeightReport regenerateWeights(Character& character, const WeightSettings& settings, ThreadPool* pool) {
-  WeightReport total;
-  if (!settings.active()) return total;
+void regenerateAll(Character& character, const WeightSettings& settings, ThreadPool* pool, Steps& steps,
+                   WeightReport& total) {
   const bool helpers = !character.helperBones.empty();
   if (helpers) removeHelperBones(character);
   for (Mesh& mesh : character.meshes) {
-    const WeightReport r = regenerateMeshWeights(mesh, character.skeleton, settings, pool);
+    const WeightReport r = regenerateInSteps(mesh, character.skeleton, settings, pool, steps);
     mesh.dropSkinningBindings();  // the cones' creases follow the dominant bones
     total.vertices += r.vertices;
     total.blendedBefore += r.blendedBefore;
@@ -402,6 +432,45 @@ WeightReport regenerateWeights(Character& character, const WeightSettings& setti
     total.largestExcess = std::max(total.largestExcess, r.largestExcess);
   }
   if (helpers) addHelperBones(character);
+}
+
+}  // namespace
+
+SkinningSnapshot::SkinningSnapshot(const Character& c)
+    : skeleton_(c.skeleton), helperBones_(c.helperBones), skinsBeforeHelpers_(c.skinsBeforeHelpers) {
+  for (const Mesh& mesh : c.meshes) skins_.push_back(mesh.skin);
+}
+
+void SkinningSnapshot::restore(Character& c) const {
+  c.skeleton = skeleton_;
+  c.helperBones = helperBones_;
+  c.skinsBeforeHelpers = skinsBeforeHelpers_;
+  for (size_t m = 0; m < c.meshes.size() && m < skins_.size(); ++m) {
+    c.meshes[m].skin = skins_[m];
+    c.meshes[m].dropSkinningBindings();
+  }
+}
+
+WeightReport regenerateMeshWeights(Mesh& mesh, const Skeleton& skeleton, const WeightSettings& settings,
+                                   ThreadPool* pool) {
+  Steps steps(nullptr, stepsOf(settings));
+  return regenerateInSteps(mesh, skeleton, settings, pool, steps);
+}
+
+WeightReport regenerateWeights(Character& character, const WeightSettings& settings, ThreadPool* pool,
+                               const WeightCallbacks* callbacks) {
+  WeightReport total;
+  if (!settings.active()) return total;
+  const SkinningSnapshot before(character);
+  Steps steps(callbacks, stepsOf(settings) * int(character.meshes.size()));
+  try {
+    regenerateAll(character, settings, pool, steps, total);
+  } catch (const Cancelled&) {
+    before.restore(character);
+    WeightReport cancelled;
+    cancelled.cancelled = true;
+    return cancelled;
+  }
   return total;
 }
 

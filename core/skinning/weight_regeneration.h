@@ -31,15 +31,15 @@
 // back after, so their weights come from the new ones.
 
 #include <cstddef>
+#include <functional>
 #include <string>
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "core/character/character.h"
+
 namespace mq {
 
-struct Character;
-struct Mesh;
-class Skeleton;
 class ThreadPool;
 
 struct WeightSettings {
@@ -64,16 +64,40 @@ struct WeightReport {
   size_t blendedBefore = 0, blendedAfter = 0;  // vertices with a second weight > 0.05
   int passes = 0;                              // smoothing passes of the slowest mesh
   double largestExcess = 0.0;                  // the worst edge's |dw| - threshold left, 0 when converged
+  bool cancelled = false;                      // stopped on request: nothing was changed
 
   std::string summary() const;
+};
+
+// What a regeneration changes in a character (its skeleton, for the helper
+// bones, and its skins), to put back (a cancelled run, an editor's undo).
+class SkinningSnapshot {
+ public:
+  explicit SkinningSnapshot(const Character& character);
+  void restore(Character& character) const;
+
+ private:
+  Skeleton skeleton_;
+  std::vector<HelperBone> helperBones_;
+  std::vector<SkinBinding> skinsBeforeHelpers_, skins_;
+};
+
+// For an editor: how far a run is, and a way to stop it. Both are called on
+// the calling thread between steps (a mesh's stages, each smoothing pass).
+struct WeightCallbacks {
+  std::function<void(int done, int total)> progress;
+  std::function<bool()> cancelled;
 };
 
 // Rewrites `mesh.skin` as the settings say (a mesh without a skin is left).
 WeightReport regenerateMeshWeights(Mesh& mesh, const Skeleton& skeleton, const WeightSettings& settings,
                                    ThreadPool* pool);
 // Every skinned mesh of the character; helper bones come back afterwards.
-// The skinning caches are the caller's to rebuild (prepareSkinning).
-WeightReport regenerateWeights(Character& character, const WeightSettings& settings, ThreadPool* pool);
+// The skinning caches are the caller's to rebuild (prepareSkinning). When
+// `callbacks` cancels, the character is left as it was and the report says
+// `cancelled`.
+WeightReport regenerateWeights(Character& character, const WeightSettings& settings, ThreadPool* pool,
+                               const WeightCallbacks* callbacks = nullptr);
 
 // The "weights" object of a scene document's skinning section:
 //   {"regenerate": bool, "smooth": bool, "axial_weight": 0..100,

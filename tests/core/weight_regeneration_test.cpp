@@ -7,6 +7,7 @@
 #include "core/io/character_import.h"
 #include "core/scene/scene_document.h"
 #include "core/skin_test_util.h"
+#include "core/skinning/helper_bones.h"
 #include "core/skinning/section_cones.h"
 #include "core/skinning/weight_regeneration.h"
 #include "core/util/error.h"
@@ -131,6 +132,38 @@ TEST(WeightRegeneration, ConesBoundOnTheOldWeightsAreDropped) {
   const std::shared_ptr<const SectionCones> fresh = bindSectionCones(c.meshes[0], c.skeleton);
   EXPECT_EQ(c.meshes[0].sectionCones->creaseJoint, fresh->creaseJoint);
   EXPECT_EQ(c.meshes[0].sectionCones->creaseBound, fresh->creaseBound);
+}
+
+TEST(WeightRegeneration, ProgressCountsUpAndACancelChangesNothing) {
+  Character c = makeDefaultMannequin();
+  ASSERT_GT(addHelperBones(c), 0);
+  const Character before = c;
+  WeightSettings settings;
+  settings.regenerate = settings.smooth = true;
+
+  int calls = 0, last = 0, total = 0;
+  WeightCallbacks callbacks;
+  callbacks.progress = [&](int done, int all) {
+    EXPECT_GE(done, last);
+    last = done, total = all, ++calls;
+  };
+  callbacks.cancelled = [&] { return calls == 2; };  // during the rigid assignment
+  const WeightReport stopped = regenerateWeights(c, settings, &ThreadPool::shared(), &callbacks);
+  EXPECT_TRUE(stopped.cancelled);
+  EXPECT_EQ(c.skeleton.boneCount(), before.skeleton.boneCount());
+  EXPECT_EQ(c.helperBones.size(), before.helperBones.size());
+  EXPECT_EQ(c.meshes[0].skin.weights, before.meshes[0].skin.weights);
+  EXPECT_EQ(c.meshes[0].skin.joints, before.meshes[0].skin.joints);
+  EXPECT_EQ(c.skinsBeforeHelpers[0].weights, before.skinsBeforeHelpers[0].weights);
+
+  calls = last = 0;
+  callbacks.cancelled = [] { return false; };
+  const WeightReport done = regenerateWeights(c, settings, &ThreadPool::shared(), &callbacks);
+  EXPECT_FALSE(done.cancelled);
+  EXPECT_EQ(last, total);
+  EXPECT_GT(calls, 3);
+  EXPECT_NE(c.meshes[0].skin.weights, before.meshes[0].skin.weights);
+  EXPECT_EQ(c.helperBones.size(), before.helperBones.size());
 }
 
 TEST(WeightRegeneration, MannequinHandStaysOnItsChainAndHelpersComeBack) {

@@ -16,6 +16,7 @@
 #include <QLabel>
 #include <QMimeData>
 #include <QMouseEvent>
+#include <QProgressDialog>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSlider>
@@ -629,6 +630,33 @@ class EditorSmokeTest : public QObject {
     QVERIFY(box->isChecked());
     QVERIFY2(maxDifference(helped, allPositions(*doc())) < 1e-5f, "the reopened document poses differently");
     QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));
+  }
+
+  void weightRebuildShowsProgressAndCanBeCancelled() {
+    QCheckBox* box = window_->properties()->regenerateWeightsBox();
+    QVERIFY(!box->isChecked());
+    const std::vector<float> fileSkin = doc()->character().meshes[0].skin.weights;
+    const int commands = doc()->undoStack()->index();
+    // Cancel the rebuild as soon as its progress dialog shows (the rebuild
+    // runs events between its steps).
+    bool shown = false;
+    int largestValue = 0;
+    QTimer poll;
+    poll.setInterval(10);
+    connect(&poll, &QTimer::timeout, [&] {
+      auto* dialog = window_->properties()->findChild<QProgressDialog*>("weightsProgress");
+      if (!dialog || !dialog->isVisible()) return;
+      largestValue = std::max(largestValue, dialog->value());
+      if (largestValue > 0) shown = true, dialog->cancel();
+    });
+    poll.start();
+    box->click();
+    poll.stop();
+    QVERIFY2(shown, "no progress was shown during the rebuild");
+    QVERIFY(!box->isChecked());
+    QVERIFY(!doc()->weightSettings().active());
+    QCOMPARE(doc()->undoStack()->index(), commands);
+    QCOMPARE(doc()->character().meshes[0].skin.weights, fileSkin);
   }
 
   void regeneratedWeightsAreUndoableAndSaved() {

@@ -139,15 +139,22 @@ std::string EditorDocument::setHelperBones(bool on) {
   return {};
 }
 
-void EditorDocument::setWeightSettings(const WeightSettings& settings) {
-  if (settings == scene_.weights) return;
+bool EditorDocument::setWeightSettings(const WeightSettings& settings, const WeightCallbacks* callbacks) {
+  if (settings == scene_.weights) return true;
+  const SkinningSnapshot before(character_);
   const bool helpers = helperBones();
   if (helpers) removeHelperBones(character_);
   for (size_t m = 0; m < character_.meshes.size(); ++m) {
     character_.meshes[m].skin = fileSkins_[m];
     character_.meshes[m].dropSkinningBindings();
   }
-  weightReport_ = regenerateWeights(character_, settings, &ThreadPool::shared());
+  WeightReport report = regenerateWeights(character_, settings, &ThreadPool::shared(), callbacks);
+  if (report.cancelled) {
+    before.restore(character_);
+    prepareSkinning(character_);
+    return false;
+  }
+  weightReport_ = report;
   if (helpers) addHelperBones(character_);
   scene_.weights = settings;
   prepareSkinning(character_);
@@ -155,6 +162,7 @@ void EditorDocument::setWeightSettings(const WeightSettings& settings) {
   emit weightsChanged();
   emit poseChanged();
   emit documentChanged();
+  return true;
 }
 
 void EditorDocument::evaluatePose() { posed_.evaluate(character_, clipIndex_, time_, &edits_, &ThreadPool::shared()); }

@@ -89,9 +89,10 @@ class EditorDocument : public QObject {
   bool helperBones() const { return !character_.helperBones.empty(); }
   std::string setHelperBones(bool on);
   // Rebuilt skin weights (weight_regeneration.h), saved in the document;
-  // inactive settings give the file's weights back.
+  // inactive settings give the file's weights back. `callbacks` report the
+  // rebuild's progress and may cancel it: false then, and nothing changed.
   const WeightSettings& weightSettings() const { return scene_.weights; }
-  void setWeightSettings(const WeightSettings& settings);
+  bool setWeightSettings(const WeightSettings& settings, const WeightCallbacks* callbacks = nullptr);
   // What the last rebuild did (empty for the file's weights).
   const WeightReport& weightReport() const { return weightReport_; }
 

@@ -53,11 +53,22 @@ void SetHelperBonesCommand::undo() { document_->setHelperBones(!on_); }
 void SetHelperBonesCommand::redo() { document_->setHelperBones(on_); }
 
 SetWeightSettingsCommand::SetWeightSettingsCommand(EditorDocument* document, const WeightSettings& after)
-    : document_(document), before_(document->weightSettings()), after_(after) {
+    : SetWeightSettingsCommand(document, document->weightSettings(), after, false) {}
+
+SetWeightSettingsCommand::SetWeightSettingsCommand(EditorDocument* document, const WeightSettings& before,
+                                                   const WeightSettings& after, bool applied)
+    : document_(document), before_(before), after_(after), skipRedo_(applied) {
   setText(after.active() ? QObject::tr("Rebuild weights") : QObject::tr("File weights"));
 }
 
 void SetWeightSettingsCommand::undo() { document_->setWeightSettings(before_); }
-void SetWeightSettingsCommand::redo() { document_->setWeightSettings(after_); }
+
+void SetWeightSettingsCommand::redo() {
+  if (skipRedo_) {
+    skipRedo_ = false;
+    return;
+  }
+  document_->setWeightSettings(after_);
+}
 
 }  // namespace mq::ui

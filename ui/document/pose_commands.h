@@ -77,15 +77,20 @@ class SetHelperBonesCommand : public QUndoCommand {
 };
 
 // Rebuilds the skin weights with other settings (or gives the file's back).
+// A panel that rebuilt them already, with progress, passes `before` and
+// `applied`: the first redo then has nothing to do.
 class SetWeightSettingsCommand : public QUndoCommand {
  public:
   SetWeightSettingsCommand(EditorDocument* document, const WeightSettings& after);
+  SetWeightSettingsCommand(EditorDocument* document, const WeightSettings& before, const WeightSettings& after,
+                           bool applied);
   void undo() override;
   void redo() override;
 
  private:
   EditorDocument* document_;
   WeightSettings before_, after_;
+  bool skipRedo_ = false;
 };
 
 }  // namespace mq::ui

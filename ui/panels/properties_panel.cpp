@@ -11,6 +11,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLocale>
+#include <QProgressDialog>
 #include <QPushButton>
 #include <QStackedWidget>
 #include <QUndoStack>
@@ -215,10 +216,27 @@ void PropertiesPanel::applyWeightBoxes() {
   WeightSettings settings = document_->weightSettings();
   settings.regenerate = regenerateWeights_->isChecked();
   settings.smooth = smoothWeights_->isChecked();
-  if (settings == document_->weightSettings()) return;
-  QApplication::setOverrideCursor(Qt::WaitCursor);  // about a second on the mannequin
-  document_->undoStack()->push(new SetWeightSettingsCommand(document_, settings));
-  QApplication::restoreOverrideCursor();
+  const WeightSettings before = document_->weightSettings();
+  if (settings == before) return;
+  // About a second on the mannequin, longer on a big skin: the dialog shows
+  // after a moment, with a Cancel that leaves the weights as they were.
+  QProgressDialog progress(tr("Rebuilding the skin weights..."), tr("Cancel"), 0, 100, this);
+  progress.setObjectName("weightsProgress");
+  progress.setWindowModality(Qt::WindowModal);
+  progress.setMinimumDuration(300);
+  WeightCallbacks callbacks;
+  callbacks.progress = [&](int done, int total) {
+    progress.setMaximum(total);
+    progress.setValue(done);
+    QCoreApplication::processEvents();
+  };
+  callbacks.cancelled = [&] { return progress.wasCanceled(); };
+  if (!document_->setWeightSettings(settings, &callbacks)) {
+    regenerateWeights_->setChecked(before.regenerate);
+    smoothWeights_->setChecked(before.smooth);
+    return;
+  }
+  document_->undoStack()->push(new SetWeightSettingsCommand(document_, before, settings, true));
 }
 
 QWidget* PropertiesPanel::makeBonePage() {
