@@ -74,15 +74,24 @@ void dropEmpty(Influences& list) {
   list.erase(std::remove_if(list.begin(), list.end(), [](const auto& i) { return i.second <= 0.0f; }), list.end());
 }
 
-// A vertex shared by `parent` and `driver` gives the half-angle joint twice
-// the smaller of their weights.
-void moveToHalfAngle(std::vector<Influences>& influences, int parent, int driver, int helper) {
+// A vertex shared by `parent` and `driver` moves onto the stages between
+// them (parent, helpers[0..n), driver, turning by 0, 1/(n+1), ... 1 of the
+// driver's rotation): its place t = driver / (parent + driver) falls between
+// two stages, which share the pair's weight linearly. With one helper, a
+// 50/50 vertex follows the half angle alone.
+void moveToStages(std::vector<Influences>& influences, int parent, int driver, const std::vector<int>& helpers) {
+  const int last = int(helpers.size()) + 1;
+  auto jointOfStage = [&](int stage) { return stage == 0 ? parent : stage == last ? driver : helpers[stage - 1]; };
   for (Influences& list : influences) {
-    const float shared = std::min(weightIn(list, parent), weightIn(list, driver));
-    if (shared <= 0.0f) continue;
-    addWeight(list, parent, -shared);
-    addWeight(list, driver, -shared);
-    addWeight(list, helper, 2.0f * shared);
+    const float p = weightIn(list, parent), d = weightIn(list, driver);
+    if (p <= 0.0f || d <= 0.0f) continue;
+    const float x = d / (p + d) * float(last);
+    const int below = std::min(int(x), last - 1);
+    const float upper = x - float(below);
+    setWeight(list, parent, 0.0f);
+    setWeight(list, driver, 0.0f);
+    addWeight(list, jointOfStage(below), (p + d) * (1.0f - upper));
+    addWeight(list, jointOfStage(below + 1), (p + d) * upper);
     dropEmpty(list);
   }
 }
@@ -117,6 +126,11 @@ void spreadOverTwist(const Mesh& mesh, std::vector<Influences>& influences, int 
   }
 }
 
+// Elbow helpers: two, at a third and two thirds of the forearm's rotation,
+// so that a forearm twisted half a turn keeps 0.75 of its section at the
+// elbow under linear blending (one half-angle helper keeps 0.5).
+constexpr int kElbowStages = 2;
+
 class HelperBuilder {
  public:
   HelperBuilder(Character& character)
@@ -124,7 +138,7 @@ class HelperBuilder {
 
   int build(const HumanoidBones& roles) {
     for (int side = 0; side < 2; ++side) {
-      addHalfAngle(roles.upperArm[side], roles.forearm[side]);
+      addHalfAngle(roles.upperArm[side], roles.forearm[side], kElbowStages);
       addHalfAngle(roles.thigh[side], roles.shin[side]);
       addHalfAngle(c_.skeleton.bone(roles.thigh[side]).parent, roles.thigh[side]);
       addHalfAngle(c_.skeleton.bone(roles.upperArm[side]).parent, roles.upperArm[side]);
@@ -150,22 +164,30 @@ class HelperBuilder {
     return index;
   }
 
-  void addHalfAngle(int parent, int driver) {
+  // `stages` helpers at the joint turning 1/(stages+1), 2/(stages+1), ...
+  // of the driver's rotation: "_half" for one, "_third1", "_third2" for two.
+  void addHalfAngle(int parent, int driver, int stages = 1) {
     if (parent < 0 || driver < 0 || c_.skeleton.bone(driver).parent != parent) return;
-    const Bone& d = c_.skeleton.bone(driver);
-    HelperBone helper;
-    helper.kind = HelperBone::Kind::HalfAngle;
-    helper.driver = driver;
-    helper.share = 0.5f;
-    helper.bone = addBone(d.name + "_half", parent, d.rest, d.parentFromOffset);
-    c_.helperBones.push_back(helper);
+    std::vector<int> bones;
+    for (int i = 0; i < stages; ++i) {
+      const Bone& d = c_.skeleton.bone(driver);  // addBone reallocates: look it up each time
+      HelperBone helper;
+      helper.kind = HelperBone::Kind::HalfAngle;
+      helper.driver = driver;
+      helper.share = float(i + 1) / float(stages + 1);
+      const std::string suffix = stages == 1 ? "_half" : "_third" + std::to_string(i + 1);
+      helper.bone = addBone(d.name + suffix, parent, d.rest, d.parentFromOffset);
+      c_.helperBones.push_back(helper);
+      bones.push_back(helper.bone);
+    }
     for (Mesh& mesh : c_.meshes) {
       const int jp = jointOf(mesh.skin, parent), jd = jointOf(mesh.skin, driver);
       if (mesh.skin.empty() || jp < 0 || jd < 0) continue;
-      // At rest the helper sits where its driver does: same bind.
-      const int jh = addJoint(mesh.skin, helper.bone, mesh.skin.inverseBind[jd]);
+      // At rest the helpers sit where their driver does: same bind.
+      std::vector<int> joints;
+      for (int bone : bones) joints.push_back(addJoint(mesh.skin, bone, mesh.skin.inverseBind[jd]));
       std::vector<Influences> influences = influencesOf(mesh.skin, mesh.vertexCount());
-      moveToHalfAngle(influences, jp, jd, jh);
+      moveToStages(influences, jp, jd, joints);
       setInfluences(mesh.skin, influences);
     }
   }

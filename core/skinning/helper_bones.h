@@ -2,15 +2,17 @@
 // Helper bones at the joints (survey 1.2.5, "ajout d'os": small bones added
 // at the joints split a large rotation between bones into smaller ones, which
 // linear blend skinning interpolates without collapsing). On a humanoid:
-//   - a half-angle bone at each shoulder, elbow, hip and knee: a sibling of
-//     the upper arm (forearm, thigh, shin) at its joint that turns half as
-//     far as it, from its rest;
+//   - a half-angle bone at each shoulder, hip and knee: a sibling of the
+//     upper arm (thigh, shin) at its joint that turns half as far as it, from
+//     its rest; at each elbow two such bones, turning a third and two thirds
+//     as far as the forearm (a forearm twisted half a turn then keeps 0.75 of
+//     its section under linear blending, against 0.5 with one);
 //   - two twist bones along each forearm, at a third and two thirds of it,
 //     taking that share of the hand's twist about the forearm's axis
 //     (swing-twist split).
 // Skin weights move onto them: a vertex shared by a bone and its parent
-// (the forearm and the upper arm) gives the helper twice the smaller of the
-// two weights (a 50/50 vertex follows the half angle alone), and the
+// (the forearm and the upper arm) moves onto the two stages its blend falls
+// between (a 50/50 vertex follows the half angle alone), and the
 // forearm's weight spreads over its twist bones by the vertex's place along
 // the forearm. A half-angle bone at the wrist is not added: measured, it
 // rounds a bent wrist but adds crossings and thins the wrist twist

@@ -105,7 +105,13 @@ foreach(pose "elbow 120" "knee 120")
   expect_compare("${cesiumHelpers}" "CesiumMan lbs + helper bones" "${pose}" thickness ">=" 0.85)
 endforeach()
 expect_compare("${helpers}" "lbs + helper bones" "wrist twist 180" twist_section ">=" 0.6)
-expect_compare("${helpers}" "lbs + helper bones" "elbow 120" intersections "<=" 20)
+# The elbow's two stages keep a forearm twisted half a turn at 0.75 (one
+# half-angle bone kept 0.5); they fold the inner elbow a little more (the
+# brief's LBS+H target for crossings at 120 degrees is <= 100).
+foreach(name helpers cesiumHelpers)
+  expect_compare("${${name}}" "${name}" "forearm twist 180" twist_section ">=" 0.7)
+endforeach()
+expect_compare("${helpers}" "lbs + helper bones" "elbow 120" intersections "<=" 50)
 expect_compare("${helpers}" "lbs + helper bones" "hip 90" local_volume ">=" 0.8)
 
 # Regenerated weights with helper bones under plain LBS (the exportable path):

@@ -33,10 +33,10 @@ TEST(HelperBones, TwistAboutRecoversTheTwistOfASwingTwist) {
 TEST(HelperBones, MannequinGetsShoulderElbowHipKneeAndTwistBones) {
   Character c = mannequin();
   const int before = c.skeleton.boneCount();
-  EXPECT_EQ(addHelperBones(c), 12);
-  EXPECT_EQ(c.skeleton.boneCount(), before + 12);
-  for (const char* name :
-       {"forearm_l_half", "shin_r_half", "thigh_l_half", "upperarm_r_half", "forearm_l_twist1", "forearm_r_twist2"})
+  EXPECT_EQ(addHelperBones(c), 14);
+  EXPECT_EQ(c.skeleton.boneCount(), before + 14);
+  for (const char* name : {"forearm_l_third1", "forearm_r_third2", "shin_r_half", "thigh_l_half", "upperarm_r_half",
+                           "forearm_l_twist1", "forearm_r_twist2"})
     EXPECT_GE(c.skeleton.findBone(name), 0) << name;
   // Twice is once.
   std::string why;
@@ -69,15 +69,56 @@ TEST(HelperBones, RestPoseStillGivesTheRestMesh) {
   EXPECT_LT(worst, 1e-5f * 2.0f);  // 1e-5 of the body's ~2 m diagonal
 }
 
-TEST(HelperBones, HalfAngleBoneTurnsHalfAsFar) {
+TEST(HelperBones, HalfAngleBoneTurnsHalfAsFarAndElbowThirdsAThird) {
   Character c = mannequin();
   addHelperBones(c);
-  const int forearm = c.skeleton.findBone("forearm_l"), half = c.skeleton.findBone("forearm_l_half");
+  const int shin = c.skeleton.findBone("shin_l"), half = c.skeleton.findBone("shin_l_half");
+  const int forearm = c.skeleton.findBone("forearm_l");
+  const int third1 = c.skeleton.findBone("forearm_l_third1"), third2 = c.skeleton.findBone("forearm_l_third2");
   Pose pose = c.skeleton.restPose();
+  pose[shin].rotation = pose[shin].rotation * glm::angleAxis(glm::radians(120.0f), glm::vec3(1, 0, 0));
   pose[forearm].rotation = pose[forearm].rotation * glm::angleAxis(glm::radians(120.0f), glm::vec3(1, 0, 0));
   driveHelperBones(c.helperBones, c.skeleton, pose);
-  EXPECT_NEAR(angleDegrees(pose[half].rotation, c.skeleton.bone(forearm).rest.rotation), 60.0f, 0.01f);
-  EXPECT_NEAR(glm::distance(pose[half].translation, pose[forearm].translation), 0.0f, 1e-6f);
+  EXPECT_NEAR(angleDegrees(pose[half].rotation, c.skeleton.bone(shin).rest.rotation), 60.0f, 0.01f);
+  EXPECT_NEAR(glm::distance(pose[half].translation, pose[shin].translation), 0.0f, 1e-6f);
+  EXPECT_NEAR(angleDegrees(pose[third1].rotation, c.skeleton.bone(forearm).rest.rotation), 40.0f, 0.01f);
+  EXPECT_NEAR(angleDegrees(pose[third2].rotation, c.skeleton.bone(forearm).rest.rotation), 80.0f, 0.01f);
+}
+
+TEST(HelperBones, ElbowVerticesSplitTheirWeightBetweenNeighbouringStages) {
+  // A vertex with upper arm u and forearm f sits at t = f / (u + f) along the
+  // stages upper arm (0), third1 (1/3), third2 (2/3), forearm (1).
+  Character c = mannequin();
+  const Character file = c;
+  addHelperBones(c);
+  const SkinBinding& before = file.meshes[0].skin;
+  const SkinBinding& after = c.meshes[0].skin;
+  const int upper = c.skeleton.findBone("upperarm_l"), forearm = c.skeleton.findBone("forearm_l");
+  const int third1 = c.skeleton.findBone("forearm_l_third1"), third2 = c.skeleton.findBone("forearm_l_third2");
+  const int twist1 = c.skeleton.findBone("forearm_l_twist1"), twist2 = c.skeleton.findBone("forearm_l_twist2");
+  auto weightOfBone = [](const SkinBinding& skin, size_t v, int bone) {
+    float w = 0.0f;
+    for (int i = 0; i < skin.influencesPerVertex; ++i)
+      if (skin.jointBones[skin.joints[v * skin.influencesPerVertex + i]] == bone)
+        w += skin.weights[v * skin.influencesPerVertex + i];
+    return w;
+  };
+  int checked = 0;
+  for (size_t v = 0; v < c.meshes[0].vertexCount(); ++v) {
+    const float u = weightOfBone(before, v, upper), f = weightOfBone(before, v, forearm);
+    if (u < 0.05f || f < 0.05f || u + f < 0.999f) continue;  // only the elbow's two bones
+    const float x = 3.0f * f / (u + f);
+    const float expected[4] = {std::max(0.0f, 1.0f - x), std::max(0.0f, 1.0f - std::abs(x - 1.0f)),
+                               std::max(0.0f, 1.0f - std::abs(x - 2.0f)), std::max(0.0f, x - 2.0f)};
+    const int bones[3] = {upper, third1, third2};
+    // The forearm's stage spreads further over the forearm's twist bones.
+    const float forearmStage =
+        weightOfBone(after, v, forearm) + weightOfBone(after, v, twist1) + weightOfBone(after, v, twist2);
+    for (int s = 0; s < 3; ++s) ASSERT_NEAR(weightOfBone(after, v, bones[s]), expected[s], 1e-4f) << v << " " << s;
+    ASSERT_NEAR(forearmStage, expected[3], 1e-4f) << v;
+    ++checked;
+  }
+  EXPECT_GT(checked, 100);
 }
 
 TEST(HelperBones, TwistBonesTakeAThirdAndTwoThirdsOfTheHandsTwist) {
