@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Fuzzes Mannequin's readers with libFuzzer under AddressSanitizer and
 # UndefinedBehaviorSanitizer (Debian's clang-14), one target after another.
-#   ./packaging/fuzz.sh [--runs N] [--seconds S] [--jobs J] [TARGET ...]
+#   ./packaging/fuzz.sh [--runs N] [--seconds S] [--jobs J] [--timeout T] [TARGET ...]
 # Targets (tests/fuzz/fuzz_<target>.cpp): gltf bvh scene hairstyle garment
 # motion_map assimp; all of them by default. Each runs N executions (default
 # 1,000,000; stopped after S seconds if given and sooner), starting from its
@@ -10,19 +10,23 @@
 # build-fuzz/findings/<target>/; copy it into tests/fuzz/regressions/<target>/
 # once fixed, where ctest replays it in the normal build (an input mutated
 # from a ../shared asset goes in as a .patch of it: tests/fuzz/replay_main.cpp).
+# --timeout T: seconds one input may take (default 10); libFuzzer counts wall
+# time, so a fuzzer sharing a busy machine (run under nice) needs more.
 set -euo pipefail
 top="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${MANNEQUIN_FUZZ_BUILD_DIR:-$top/build-fuzz}"
 runs=1000000
 seconds=0
 jobs="$(nproc)"
+timeout=10
 targets=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --runs) runs="$2"; shift 2 ;;
     --seconds) seconds="$2"; shift 2 ;;
     --jobs) jobs="$2"; shift 2 ;;
-    -h|--help) sed -n '2,13p' "$0"; exit 0 ;;
+    --timeout) timeout="$2"; shift 2 ;;
+    -h|--help) sed -n '2,15p' "$0"; exit 0 ;;
     *) targets+=("$1"); shift ;;
   esac
 done
@@ -55,7 +59,7 @@ for target in "${targets[@]}"; do
   dict="$top/tests/fuzz/$target.dict"
   [ -f "$dict" ] || dict="$top/tests/fuzz/json.dict"
   echo "== fuzz_$target"
-  if ! "$build/tests/fuzz/fuzz_$target" "$corpus" -runs="$runs" -max_total_time="$seconds" -dict="$dict" -timeout=10 -rss_limit_mb=3072 \
+  if ! "$build/tests/fuzz/fuzz_$target" "$corpus" -runs="$runs" -max_total_time="$seconds" -dict="$dict" -timeout="$timeout" -rss_limit_mb=3072 \
       -max_len="$max_len" -print_final_stats=1 -artifact_prefix="$findings/" 2>"$build/fuzz_$target.log"; then
     status=1
     echo "fuzz_$target: FOUND a problem, see $build/fuzz_$target.log and $findings/"
