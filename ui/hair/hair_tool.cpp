@@ -4,11 +4,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include <QCoreApplication>
 #include <QDockWidget>
 #include <QLabel>
 #include <QMouseEvent>
-#include <QProgressDialog>
 #include <QSettings>
 #include <QStatusBar>
 #include <QUndoStack>
@@ -26,6 +24,7 @@
 #include "ui/document/editor_document.h"
 #include "ui/hair/hair_panel.h"
 #include "ui/hair/hair_style_command.h"
+#include "ui/jobs/step_progress.h"
 #include "ui/main_window.h"
 #include "ui/viewport/mouse_routing.h"
 #include "ui/viewport/vtk_viewport_widget.h"
@@ -496,17 +495,13 @@ bool HairTool::bake() {
   if (!style_ || !groom_) return false;
   EditorDocument* document = window_->document();
   ensureDynamics();
-  QProgressDialog progress(tr("Simulating the hair over the clip..."), tr("Cancel"), 0, 100, window_);
-  progress.setWindowModality(Qt::WindowModal);
-  progress.setMinimumDuration(0);
+  StepProgress progress(window_, tr("Simulating the hair over the clip..."), 0);
   HairBakeCallbacks callbacks;
   callbacks.progress = [&](int done, int total) {
-    progress.setMaximum(total);
-    progress.setValue(done);
     window_->showProgress(tr("Baking hair"), total > 0 ? 100 * done / total : -1);
-    QCoreApplication::processEvents();
+    progress.step(done, total);
   };
-  callbacks.cancelled = [&] { return progress.wasCanceled(); };
+  callbacks.cancelled = [&] { return progress.cancelled(); };
   HairBake result =
       bakeHair(document->character(), document->clipIndex(), leadingStrands(groom_->strands(), groom_->guideCount()),
                characterHairParams(), {}, callbacks, rig_.get());

@@ -11,7 +11,6 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLocale>
-#include <QProgressDialog>
 #include <QPushButton>
 #include <QStackedWidget>
 #include <QUndoStack>
@@ -23,6 +22,7 @@
 #include "core/skinning/skin_metrics.h"
 #include "ui/document/editor_document.h"
 #include "ui/document/pose_commands.h"
+#include "ui/jobs/step_progress.h"
 #include "ui/panels/material_page.h"
 
 namespace mq::ui {
@@ -220,17 +220,11 @@ void PropertiesPanel::applyWeightBoxes() {
   if (settings == before) return;
   // About a second on the mannequin, longer on a big skin: the dialog shows
   // after a moment, with a Cancel that leaves the weights as they were.
-  QProgressDialog progress(tr("Rebuilding the skin weights..."), tr("Cancel"), 0, 100, this);
-  progress.setObjectName("weightsProgress");
-  progress.setWindowModality(Qt::WindowModal);
-  progress.setMinimumDuration(300);
+  StepProgress progress(this, tr("Rebuilding the skin weights..."), 300);
+  progress.dialog().setObjectName("weightsProgress");
   WeightCallbacks callbacks;
-  callbacks.progress = [&](int done, int total) {
-    progress.setMaximum(total);
-    progress.setValue(done);
-    QCoreApplication::processEvents();
-  };
-  callbacks.cancelled = [&] { return progress.wasCanceled(); };
+  callbacks.progress = [&](int done, int total) { progress.step(done, total); };
+  callbacks.cancelled = [&] { return progress.cancelled(); };
   if (!document_->setWeightSettings(settings, &callbacks)) {
     regenerateWeights_->setChecked(before.regenerate);
     smoothWeights_->setChecked(before.smooth);
