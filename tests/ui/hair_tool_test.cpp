@@ -18,6 +18,7 @@
 #include <QListWidget>
 #include <QLocale>
 #include <QMouseEvent>
+#include <QProgressDialog>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSpinBox>
@@ -25,6 +26,7 @@
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 #include <QUndoStack>
 
 #include <vtkRenderer.h>
@@ -498,6 +500,29 @@ class HairToolTest : public QObject {
     limit->setValue(int(HairTool::kDefaultDisplayStrandLimit));
     waitForHair();
     QCOMPARE(tool_->strandCount(), std::min(wanted, HairTool::kDefaultDisplayStrandLimit));
+  }
+
+  void aBakeShowsProgressAndCanBeCancelled() {
+    QString error;
+    QVERIFY2(window_->openFileNow(MANNEQUIN_SOURCE_DIR "/resources/scenes/hair_bob.json", &error), qPrintable(error));
+    waitForHair();
+    QVERIFY(doc()->clipIndex() >= 0);  // the walk
+    // Cancel as soon as the dialog has moved: the bake stops, keeps nothing.
+    bool shown = false;
+    QTimer poll;
+    poll.setInterval(10);
+    connect(&poll, &QTimer::timeout, [&] {
+      for (QProgressDialog* dialog : window_->findChildren<QProgressDialog*>())
+        if (dialog->isVisible() && dialog->value() > 0) shown = true, dialog->cancel();
+    });
+    poll.start();
+    QVERIFY(!tool_->bake());
+    poll.stop();
+    QVERIFY2(shown, "no progress was shown during the bake");
+    QVERIFY(!tool_->hasBake());
+    // Left alone, it bakes the clip.
+    QVERIFY2(tool_->bake(), qPrintable(tool_->lastError()));
+    QVERIFY(tool_->hasBake());
   }
 };
 
