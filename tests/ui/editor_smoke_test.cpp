@@ -607,7 +607,7 @@ class EditorSmokeTest : public QObject {
     box->click();
     QVERIFY(doc()->helperBones());
     QCOMPARE(doc()->undoStack()->index(), commands + 1);
-    QCOMPARE(doc()->character().skeleton.boneCount(), bones + 12);
+    QCOMPARE(doc()->character().skeleton.boneCount(), bones + 14);
     const std::vector<float> helped = allPositions(*doc());
     QVERIFY2(maxDifference(plain, helped) > 0.005f, "helper bones at a 120-degree elbow moved nothing");
     QVERIFY(doc()->poseEdits().rotations.count(forearm) == 1);  // the pose is kept
