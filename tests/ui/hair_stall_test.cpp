@@ -252,9 +252,12 @@ class HairStallTest : public QObject {
   // hair twice per round, so a spike from another process is twice as
   // likely to fall in it as in the other edits (CI saw 508 ms once where
   // this machine measures 380 ms).
+  // The better of three rounds counts: one round is about one software-GL
+  // frame of the whole groom (300-340 ms here), which the machine's load
+  // moves by tens of milliseconds either side of the limit.
   void togglingOpacityShadowMapsDoesNotStall() {
     double best = INFINITY;
-    for (int round = 0; round < 2; ++round) {
+    for (int round = 0; round < 3; ++round) {
       probe_.start();
       panel()->shadowMapsBox()->setChecked(true);
       waitUntilHairShown();
