@@ -6,6 +6,7 @@ set -euo pipefail
 top="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$top/packaging/install-deps.sh"
 "$top/packaging/build.sh"
+"$top/packaging/install-test-tools.sh"
 build="${MANNEQUIN_BUILD_DIR:-$top/build}"
 cd "$build"
 export LIBGL_ALWAYS_SOFTWARE=1

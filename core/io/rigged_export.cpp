@@ -38,7 +38,8 @@ void addSkeleton(GltfWriter& writer, const Skeleton& skeleton) {
   }
 }
 
-// JOINTS_0 / WEIGHTS_0: the four heaviest influences of each vertex.
+// JOINTS_0 / WEIGHTS_0: the four heaviest influences of each vertex. An
+// unused slot names joint 0: glTF wants a zero weight on a zero joint index.
 void addSkinAttributes(GltfWriter& writer, const SkinBinding& skin, size_t vertices, json& attributes) {
   SkinBinding four = skin;
   four.limitInfluences(4);
@@ -47,8 +48,9 @@ void addSkinAttributes(GltfWriter& writer, const SkinBinding& skin, size_t verti
   std::vector<float> weights(4 * vertices, 0.0f);
   for (size_t v = 0; v < vertices; ++v)
     for (int i = 0; i < k; ++i) {
-      joints[4 * v + i] = four.joints[v * k + i];
-      weights[4 * v + i] = four.weights[v * k + i];
+      const float weight = four.weights[v * k + i];
+      joints[4 * v + i] = weight > 0.0f ? four.joints[v * k + i] : 0;
+      weights[4 * v + i] = weight;
     }
   attributes["JOINTS_0"] =
       writer.addAccessor(joints.data(), vertices, "VEC4", 4, GltfWriter::kUnsignedShort, GltfWriter::kArrayBuffer);
