@@ -352,7 +352,7 @@ bool MainWindow::exportPosedMesh(const QString& path, QString* error) {
   std::vector<const Mesh*> meshes;
   for (const Mesh& m : character.meshes) meshes.push_back(&m);
   try {
-    mq::exportPosedMesh(meshes, document_->posed().meshes(), path.toStdString());
+    mq::exportPosedMesh(meshes, document_->posed().meshes(), path.toStdString(), &character);
   } catch (const std::exception& e) {
     if (error) *error = QString::fromUtf8(e.what());
     return false;

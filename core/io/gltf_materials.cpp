@@ -103,6 +103,11 @@ Material readMaterial(const Document& doc, const json& m, int index, Character& 
     doc.fail("material '" + material.name + "' has an unknown alphaMode '" + alphaMode + "'");
   material.alphaCutoff = m.value("alphaCutoff", 0.5f);
   material.doubleSided = m.value("doubleSided", false);
+  // Our own export marks the surfaces it shaded as skin.
+  if (m.contains("extras") && m["extras"].is_object()) {
+    const json& flag = m["extras"].value("mannequin_skin", json());
+    material.skin = flag.is_boolean() && flag.get<bool>();
+  }
   return material;
 }
 

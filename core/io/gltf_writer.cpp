@@ -40,7 +40,13 @@ GltfWriter::GltfWriter(const char* generator)
 int GltfWriter::addAccessor(const void* data, size_t count, const char* type, int components, int componentType,
                             int target) {
   const size_t componentSize = componentType == kFloat || componentType == kUnsignedInt ? 4 : 2;
-  const size_t bytes = count * components * componentSize;
+  const int view = addBufferView(data, count * components * componentSize, target);
+  gltf_["accessors"].push_back(
+      {{"bufferView", view}, {"componentType", componentType}, {"count", count}, {"type", type}});
+  return static_cast<int>(gltf_["accessors"].size()) - 1;
+}
+
+int GltfWriter::addBufferView(const void* data, size_t bytes, int target) {
   const size_t offset = buffer_.size();
   buffer_.resize(offset + bytes);
   if (bytes) std::memcpy(buffer_.data() + offset, data, bytes);
@@ -48,11 +54,14 @@ int GltfWriter::addAccessor(const void* data, size_t count, const char* type, in
   nlohmann::json view = {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes}};
   if (target) view["target"] = target;
   gltf_["bufferViews"].push_back(view);
-  gltf_["accessors"].push_back({{"bufferView", gltf_["bufferViews"].size() - 1},
-                                {"componentType", componentType},
-                                {"count", count},
-                                {"type", type}});
-  return static_cast<int>(gltf_["accessors"].size()) - 1;
+  return static_cast<int>(gltf_["bufferViews"].size()) - 1;
+}
+
+void GltfWriter::useExtension(const char* name) {
+  nlohmann::json& used = gltf_["extensionsUsed"];
+  for (const auto& e : used)
+    if (e == name) return;
+  used.push_back(name);
 }
 
 void GltfWriter::writeGltf(std::ostream& out) {

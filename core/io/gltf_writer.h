@@ -23,6 +23,10 @@ class GltfWriter {
   // ("SCALAR", "VEC3", "MAT4", ...) with `components` each; returns its index.
   // target 0: no bufferView target (animation and skin data).
   int addAccessor(const void* data, size_t count, const char* type, int components, int componentType, int target = 0);
+  // A new bufferView over `bytes` bytes (an embedded image); returns its index.
+  int addBufferView(const void* data, size_t bytes, int target = 0);
+  // Names an extension in extensionsUsed (once).
+  void useExtension(const char* name);
 
   void writeGltf(std::ostream& out);
   void writeGlb(std::ostream& out);

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/io/file_bytes.h"
+#include "core/io/gltf_material_export.h"
 #include "core/io/gltf_writer.h"
 #include "core/util/atomic_file.h"
 #include "core/util/error.h"
@@ -97,8 +98,12 @@ void writePly(std::ostream& out, const std::vector<const Mesh*>& meshes, const s
 
 // --- glTF 2.0 (static meshes, world space) --------------------------------
 
-void buildGltf(GltfWriter& writer, const std::vector<const Mesh*>& meshes, const std::vector<PosedMesh>& posed) {
+// materials: the character whose materials the meshes use, or null.
+void buildGltf(GltfWriter& writer, const std::vector<const Mesh*>& meshes, const std::vector<PosedMesh>& posed,
+               const Character* materials) {
   nlohmann::json& gltf = writer.json();
+  if (materials) addGltfMaterials(writer, *materials);  // a missing image leaves its texture out
+  const size_t materialCount = materials ? materials->materials.size() : 0;
   for (size_t m = 0; m < meshes.size(); ++m) {
     const Mesh& mesh = *meshes[m];
     const PosedMesh& p = posed[m];
@@ -116,20 +121,17 @@ void buildGltf(GltfWriter& writer, const std::vector<const Mesh*>& meshes, const
     if (mesh.uvs.size() == 2 * n)
       attributes["TEXCOORD_0"] =
           writer.addAccessor(mesh.uvs.data(), n, "VEC2", 2, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
-    nlohmann::json primitive = {{"attributes", attributes}, {"mode", 4}};
-    if (!mesh.triangles.empty())
-      primitive["indices"] = writer.addAccessor(mesh.triangles.data(), mesh.triangles.size(), "SCALAR", 1,
-                                                GltfWriter::kUnsignedInt, GltfWriter::kElementArrayBuffer);
-    gltf["meshes"].push_back({{"name", mesh.name}, {"primitives", {primitive}}});
+    gltf["meshes"].push_back(
+        {{"name", mesh.name}, {"primitives", gltfPrimitives(writer, mesh, attributes, materialCount)}});
     gltf["nodes"].push_back({{"name", mesh.name}, {"mesh", m}});
     gltf["scenes"][0]["nodes"].push_back(m);
   }
 }
 
 void writeGltf(std::ostream& out, const std::vector<const Mesh*>& meshes, const std::vector<PosedMesh>& posed,
-               bool binary) {
+               const Character* materials, bool binary) {
   GltfWriter writer("mannequin posed-mesh export");
-  buildGltf(writer, meshes, posed);
+  buildGltf(writer, meshes, posed, materials);
   if (binary)
     writer.writeGlb(out);
   else
@@ -144,7 +146,7 @@ bool isMeshExportPath(const std::string& path) {
 }
 
 void exportPosedMesh(const std::vector<const Mesh*>& meshes, const std::vector<PosedMesh>& posed,
-                     const std::string& path) {
+                     const std::string& path, const Character* materials) {
   if (meshes.size() != posed.size()) throw Error("exportPosedMesh: mesh and posed-mesh counts differ");
   for (size_t m = 0; m < meshes.size(); ++m)
     if (posed[m].positions.size() != meshes[m]->positions.size())
@@ -156,10 +158,10 @@ void exportPosedMesh(const std::vector<const Mesh*>& meshes, const std::vector<P
     writeFileAtomically(
         path, [&](std::ostream& out) { writePly(out, meshes, posed); }, true);
   else if (ext == "gltf")
-    writeFileAtomically(path, [&](std::ostream& out) { writeGltf(out, meshes, posed, false); });
+    writeFileAtomically(path, [&](std::ostream& out) { writeGltf(out, meshes, posed, materials, false); });
   else if (ext == "glb")
     writeFileAtomically(
-        path, [&](std::ostream& out) { writeGltf(out, meshes, posed, true); }, true);
+        path, [&](std::ostream& out) { writeGltf(out, meshes, posed, materials, true); }, true);
   else
     throw FileError(path, "cannot export to '." + ext + "' (use .obj, .ply, .gltf or .glb)");
 }
@@ -167,7 +169,7 @@ void exportPosedMesh(const std::vector<const Mesh*>& meshes, const std::vector<P
 void exportPosedCharacter(const Character& character, const PosedCharacter& posed, const std::string& path) {
   std::vector<const Mesh*> meshes;
   for (const Mesh& m : character.meshes) meshes.push_back(&m);
-  exportPosedMesh(meshes, posed.meshes(), path);
+  exportPosedMesh(meshes, posed.meshes(), path, &character);
 }
 
 }  // namespace mq

@@ -3,7 +3,7 @@
 // triangles, vertices in importer order, no welding) to OBJ, PLY, glTF or GLB,
 // chosen by the file extension. PLY is binary little-endian (float xyz +
 // normals, int triangle lists); glTF/GLB hold static meshes (one node per
-// mesh, no skin; .gltf embeds its buffer as a data URI). Files are written
+// mesh, no skin, with their materials; .gltf embeds its buffer as a data URI). Files are written
 // atomically (temporary file, then rename); failures throw FileError naming
 // the file.
 
@@ -16,8 +16,10 @@
 namespace mq {
 
 // meshes[i] gives the topology (triangles, uvs, names) of posed[i].
+// materials: the character whose materials the meshes use (glTF writes
+// them, textures embedded), or null.
 void exportPosedMesh(const std::vector<const Mesh*>& meshes, const std::vector<PosedMesh>& posed,
-                     const std::string& path);
+                     const std::string& path, const Character* materials = nullptr);
 
 // Convenience: every mesh of a posed character.
 void exportPosedCharacter(const Character& character, const PosedCharacter& posed, const std::string& path);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/io/file_bytes.h"
+#include "core/io/gltf_material_export.h"
 #include "core/io/gltf_writer.h"
 #include "core/util/atomic_file.h"
 #include "core/util/error.h"
@@ -58,16 +59,42 @@ void addSkinAttributes(GltfWriter& writer, const SkinBinding& skin, size_t verti
       writer.addAccessor(weights.data(), vertices, "VEC4", 4, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
 }
 
-void addMesh(GltfWriter& writer, const Mesh& mesh, int boneCount) {
+int addPositionAccessor(GltfWriter& writer, const std::vector<float>& positions) {
+  const int accessor = writer.addAccessor(positions.data(), positions.size() / 3, "VEC3", 3, GltfWriter::kFloat,
+                                          GltfWriter::kArrayBuffer);
+  const Aabb box = boundsOf(positions);  // the spec requires POSITION min/max, targets' too
+  writer.json()["accessors"][accessor]["min"] = {box.min.x, box.min.y, box.min.z};
+  writer.json()["accessors"][accessor]["max"] = {box.max.x, box.max.y, box.max.z};
+  return accessor;
+}
+
+// The mesh's morph targets on each of its primitives, their default weights
+// and their names (extras.targetNames, which Blender and three.js read).
+void addMorphTargets(GltfWriter& writer, const Mesh& mesh, json& primitives, json& gltfMesh) {
+  if (mesh.morphTargets.empty()) return;
+  const size_t n = mesh.vertexCount();
+  json targets = json::array(), names = json::array();
+  for (const MorphTarget& target : mesh.morphTargets) {
+    json attributes = {{"POSITION", addPositionAccessor(writer, target.positionDeltas)}};
+    if (target.normalDeltas.size() == 3 * n)
+      attributes["NORMAL"] =
+          writer.addAccessor(target.normalDeltas.data(), n, "VEC3", 3, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
+    targets.push_back(attributes);
+    names.push_back(target.name);
+  }
+  for (json& primitive : primitives) primitive["targets"] = targets;
+  std::vector<float> weights = mesh.morphWeights;
+  weights.resize(mesh.morphTargets.size(), 0.0f);
+  gltfMesh["weights"] = weights;
+  gltfMesh["extras"]["targetNames"] = names;
+}
+
+// Returns the index of the node that holds the mesh.
+int addMesh(GltfWriter& writer, const Mesh& mesh, int boneCount, size_t materialCount) {
   json& gltf = writer.json();
   const size_t n = mesh.vertexCount();
   json attributes;
-  const int position =
-      writer.addAccessor(mesh.positions.data(), n, "VEC3", 3, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
-  const Aabb box = boundsOf(mesh.positions);
-  gltf["accessors"][position]["min"] = {box.min.x, box.min.y, box.min.z};
-  gltf["accessors"][position]["max"] = {box.max.x, box.max.y, box.max.z};
-  attributes["POSITION"] = position;
+  attributes["POSITION"] = addPositionAccessor(writer, mesh.positions);
   if (mesh.normals.size() == 3 * n)
     attributes["NORMAL"] =
         writer.addAccessor(mesh.normals.data(), n, "VEC3", 3, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
@@ -76,12 +103,12 @@ void addMesh(GltfWriter& writer, const Mesh& mesh, int boneCount) {
         writer.addAccessor(mesh.uvs.data(), n, "VEC2", 2, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
   const bool skinned = !mesh.skin.empty();
   if (skinned) addSkinAttributes(writer, mesh.skin, n, attributes);
-  json primitive = {{"attributes", attributes}, {"mode", 4}};
-  if (!mesh.triangles.empty())
-    primitive["indices"] = writer.addAccessor(mesh.triangles.data(), mesh.triangles.size(), "SCALAR", 1,
-                                              GltfWriter::kUnsignedInt, GltfWriter::kElementArrayBuffer);
+  json primitives = gltfPrimitives(writer, mesh, attributes, materialCount);
+  json gltfMesh = {{"name", mesh.name}};
+  addMorphTargets(writer, mesh, primitives, gltfMesh);
+  gltfMesh["primitives"] = primitives;
   const int meshIndex = int(gltf["meshes"].size());
-  gltf["meshes"].push_back({{"name", mesh.name}, {"primitives", {primitive}}});
+  gltf["meshes"].push_back(gltfMesh);
 
   json node = {{"name", mesh.name}, {"mesh", meshIndex}};
   const int nodeIndex = int(gltf["nodes"].size());
@@ -104,18 +131,62 @@ void addMesh(GltfWriter& writer, const Mesh& mesh, int boneCount) {
       gltf["scenes"][0]["nodes"].push_back(nodeIndex);
   }
   gltf["nodes"].push_back(node);
+  return nodeIndex;
 }
 
-// One animation per clip: every bone's node transform sampled at fps.
-void addClip(GltfWriter& writer, const Character& character, int clipIndex, float fps) {
-  const Clip& clip = character.clips[clipIndex];
+// Sample times of an animation: on the clip's axis (to pose the character)
+// and in the file (from 0 for a take).
+struct Samples {
+  std::vector<float> clipTimes, fileTimes;
+};
+
+Samples clipSamples(const Clip& clip, float fps) {
   const int frames = std::max(1, int(std::ceil(clip.duration() * fps - 1e-4f))) + 1;
-  std::vector<float> times(frames);
-  for (int f = 0; f < frames; ++f) times[f] = std::min(clip.startTime() + f / fps, clip.endTime());
+  Samples s;
+  for (int f = 0; f < frames; ++f) s.clipTimes.push_back(std::min(clip.startTime() + f / fps, clip.endTime()));
+  s.fileTimes = s.clipTimes;
+  return s;
+}
+
+Samples takeSamples(const ExportTake& take) {
+  Samples s;
+  for (int f = 0; f < take.frames; ++f) {
+    s.clipTimes.push_back(take.start + f / take.fps);
+    s.fileTimes.push_back(f / take.fps);
+  }
+  return s;
+}
+
+// One animation being written: its sample times and its channels.
+class AnimationBuilder {
+ public:
+  AnimationBuilder(GltfWriter& writer, const std::vector<float>& times) : writer_(writer) {
+    input_ = writer.addAccessor(times.data(), times.size(), "SCALAR", 1, GltfWriter::kFloat);
+    writer.json()["accessors"][input_]["min"] = {times.front()};
+    writer.json()["accessors"][input_]["max"] = {times.back()};
+  }
+  void addChannel(int node, const char* path, const std::vector<float>& values, const char* type, int size) {
+    const int output = writer_.addAccessor(values.data(), values.size() / size, type, size, GltfWriter::kFloat);
+    samplers_.push_back({{"input", input_}, {"output", output}, {"interpolation", "LINEAR"}});
+    channels_.push_back({{"sampler", samplers_.size() - 1}, {"target", {{"node", node}, {"path", path}}}});
+  }
+  void finish(const std::string& name) {
+    writer_.json()["animations"].push_back({{"name", name}, {"samplers", samplers_}, {"channels", channels_}});
+  }
+
+ private:
+  GltfWriter& writer_;
+  int input_ = -1;
+  json samplers_ = json::array(), channels_ = json::array();
+};
+
+// Every bone's node transform at each sample of `clipIndex` (-1: the rest pose).
+void addBoneChannels(AnimationBuilder& animation, const Character& character, int clipIndex,
+                     const std::vector<float>& times, const PoseEdits* edits) {
   const int bones = character.skeleton.boneCount();
   std::vector<std::vector<float>> translations(bones), rotations(bones), scales(bones);
   for (float t : times) {
-    const Pose pose = samplePose(character, clipIndex, t);
+    const Pose pose = samplePose(character, clipIndex, t, edits);
     for (int b = 0; b < bones; ++b) {
       const Trs node = nodeTransform(character.skeleton.bone(b), pose[b]);
       translations[b].insert(translations[b].end(), {node.translation.x, node.translation.y, node.translation.z});
@@ -130,22 +201,110 @@ void addClip(GltfWriter& writer, const Character& character, int clipIndex, floa
       scales[b].insert(scales[b].end(), {node.scale.x, node.scale.y, node.scale.z});
     }
   }
-  const int input = writer.addAccessor(times.data(), times.size(), "SCALAR", 1, GltfWriter::kFloat);
-  json& gltf = writer.json();
-  gltf["accessors"][input]["min"] = {times.front()};
-  gltf["accessors"][input]["max"] = {times.back()};
-  json samplers = json::array(), channels = json::array();
-  auto addChannel = [&](int bone, const char* path, const std::vector<float>& values, const char* type, int size) {
-    const int output = writer.addAccessor(values.data(), values.size() / size, type, size, GltfWriter::kFloat);
-    samplers.push_back({{"input", input}, {"output", output}, {"interpolation", "LINEAR"}});
-    channels.push_back({{"sampler", samplers.size() - 1}, {"target", {{"node", bone}, {"path", path}}}});
-  };
   for (int b = 0; b < bones; ++b) {
-    addChannel(b, "translation", translations[b], "VEC3", 3);
-    addChannel(b, "rotation", rotations[b], "VEC4", 4);
-    addChannel(b, "scale", scales[b], "VEC3", 3);
+    animation.addChannel(b, "translation", translations[b], "VEC3", 3);
+    animation.addChannel(b, "rotation", rotations[b], "VEC4", 4);
+    animation.addChannel(b, "scale", scales[b], "VEC3", 3);
   }
-  gltf["animations"].push_back({{"name", clip.name}, {"samplers", samplers}, {"channels", channels}});
+}
+
+// The morph weights of the meshes the clip animates, at each sample.
+void addMorphChannels(AnimationBuilder& animation, const Character& character, int clipIndex,
+                      const std::vector<float>& times, const std::vector<int>& meshNodes) {
+  if (clipIndex < 0) return;
+  const Clip& clip = character.clips[clipIndex];
+  for (const MorphChannel& channel : clip.morphChannels) {
+    if (channel.mesh < 0 || channel.mesh >= int(character.meshes.size())) continue;
+    const Mesh& mesh = character.meshes[channel.mesh];
+    if (mesh.morphTargets.empty()) continue;
+    std::vector<std::vector<float>> meshWeights(character.meshes.size());
+    std::vector<float> values;  // samples x targets, as glTF lays out weights
+    for (float t : times) {
+      meshWeights[channel.mesh] = mesh.morphWeights;
+      meshWeights[channel.mesh].resize(mesh.morphTargets.size(), 0.0f);
+      clip.applyToMorphWeights(t, meshWeights);
+      values.insert(values.end(), meshWeights[channel.mesh].begin(), meshWeights[channel.mesh].end());
+    }
+    animation.addChannel(meshNodes[channel.mesh], "weights", values, "SCALAR", 1);
+  }
+}
+
+// A baked surface as a mesh in world space: frame 0 as its base, frame f as
+// morph target f - 1; returns its node.
+int addBakedSurface(GltfWriter& writer, const BakedSurface& surface) {
+  json& gltf = writer.json();
+  const std::vector<float>& base = surface.frames.front();
+  const size_t n = base.size() / 3;
+  const bool lines = surface.triangles.empty();
+  json attributes = {{"POSITION", addPositionAccessor(writer, base)}};
+  std::vector<float> baseNormals;
+  if (!lines) {
+    computeVertexNormals(base, surface.triangles, baseNormals);
+    attributes["NORMAL"] =
+        writer.addAccessor(baseNormals.data(), n, "VEC3", 3, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
+  }
+  json targets = json::array();
+  std::vector<float> delta(base.size()), normals, normalDelta(base.size());
+  for (size_t f = 1; f < surface.frames.size(); ++f) {
+    for (size_t k = 0; k < base.size(); ++k) delta[k] = surface.frames[f][k] - base[k];
+    json target = {{"POSITION", addPositionAccessor(writer, delta)}};
+    if (!lines) {
+      computeVertexNormals(surface.frames[f], surface.triangles, normals);
+      for (size_t k = 0; k < base.size(); ++k) normalDelta[k] = normals[k] - baseNormals[k];
+      target["NORMAL"] =
+          writer.addAccessor(normalDelta.data(), n, "VEC3", 3, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
+    }
+    targets.push_back(target);
+  }
+  const std::vector<uint32_t>& indices = lines ? surface.lines : surface.triangles;
+  const glm::vec4& c = surface.color;
+  gltf["materials"].push_back(
+      {{"name", surface.name},
+       {"pbrMetallicRoughness",
+        {{"baseColorFactor", {c.x, c.y, c.z, c.w}}, {"metallicFactor", 0.0f}, {"roughnessFactor", 0.8f}}},
+       {"doubleSided", true}});
+  json primitive = {{"attributes", attributes},
+                    {"mode", lines ? 1 : 4},
+                    {"material", gltf["materials"].size() - 1},
+                    {"indices", writer.addAccessor(indices.data(), indices.size(), "SCALAR", 1,
+                                                   GltfWriter::kUnsignedInt, GltfWriter::kElementArrayBuffer)}};
+  json mesh = {{"name", surface.name}, {"primitives", json::array()}};
+  if (!targets.empty()) {
+    primitive["targets"] = targets;
+    mesh["weights"] = std::vector<float>(targets.size(), 0.0f);
+  }
+  mesh["primitives"].push_back(primitive);
+  gltf["meshes"].push_back(mesh);
+  const int node = int(gltf["nodes"].size());
+  gltf["nodes"].push_back({{"name", surface.name}, {"mesh", gltf["meshes"].size() - 1}});
+  gltf["scenes"][0]["nodes"].push_back(node);
+  return node;
+}
+
+// Frame f shows morph target f - 1 alone (frame 0: the base); linear
+// interpolation between two frames blends their two targets.
+void addBakedChannel(AnimationBuilder& animation, int node, size_t frames) {
+  if (frames < 2) return;
+  const size_t targets = frames - 1;
+  std::vector<float> values(frames * targets, 0.0f);
+  for (size_t f = 1; f < frames; ++f) values[f * targets + (f - 1)] = 1.0f;
+  animation.addChannel(node, "weights", values, "SCALAR", 1);
+}
+
+void checkBaked(const std::string& path, const RiggedExportOptions& options) {
+  if (options.baked.empty()) return;
+  if (!options.take) throw FileError(path, "baked surfaces need a take (the frames they were simulated on)");
+  for (const BakedSurface& s : options.baked) {
+    if (int(s.frames.size()) != options.take->frames)
+      throw FileError(path, "'" + s.name + "' has " + std::to_string(s.frames.size()) + " frames, the take " +
+                                std::to_string(options.take->frames));
+    for (const auto& frame : s.frames)
+      if (frame.size() != s.frames.front().size() || frame.empty())
+        throw FileError(path, "'" + s.name + "' changes its vertex count between frames");
+    const size_t n = s.frames.front().size() / 3;
+    for (uint32_t i : s.triangles.empty() ? s.lines : s.triangles)
+      if (i >= n) throw FileError(path, "'" + s.name + "' indexes a vertex it does not have");
+  }
 }
 
 }  // namespace
@@ -155,16 +314,42 @@ bool isRiggedExportPath(const std::string& path) {
   return ext == "gltf" || ext == "glb";
 }
 
-void exportRiggedCharacter(const Character& character, const std::string& path, float fps) {
+std::vector<std::string> exportRiggedCharacter(const Character& character, const std::string& path,
+                                               const RiggedExportOptions& options) {
   if (!isRiggedExportPath(path)) throw FileError(path, "a rigged export is glTF: use .gltf or .glb");
+  const float fps = options.take ? options.take->fps : options.fps;
   if (!(fps > 0.0f && fps <= 1000.0f)) throw FileError(path, "the animation rate must be between 0 and 1000 fps");
+  if (options.take && options.take->frames < 1) throw FileError(path, "a take needs at least one frame");
+  checkBaked(path, options);
   GltfWriter writer("mannequin rigged export");
   addSkeleton(writer, character.skeleton);
-  for (const Mesh& mesh : character.meshes) addMesh(writer, mesh, character.skeleton.boneCount());
-  for (int c = 0; c < int(character.clips.size()); ++c) addClip(writer, character, c, fps);
+  std::vector<std::string> warnings = addGltfMaterials(writer, character);
+  std::vector<int> meshNodes;
+  for (const Mesh& mesh : character.meshes)
+    meshNodes.push_back(addMesh(writer, mesh, character.skeleton.boneCount(), character.materials.size()));
+  if (options.take) {
+    const ExportTake& take = *options.take;
+    const int clip = take.clip >= 0 && take.clip < int(character.clips.size()) ? take.clip : -1;
+    const Samples samples = takeSamples(take);
+    AnimationBuilder animation(writer, samples.fileTimes);
+    addBoneChannels(animation, character, clip, samples.clipTimes, take.edits);
+    addMorphChannels(animation, character, clip, samples.clipTimes, meshNodes);
+    for (const BakedSurface& surface : options.baked)
+      addBakedChannel(animation, addBakedSurface(writer, surface), surface.frames.size());
+    animation.finish(take.name);
+  } else {
+    for (int c = 0; c < int(character.clips.size()); ++c) {
+      const Samples samples = clipSamples(character.clips[c], fps);
+      AnimationBuilder animation(writer, samples.fileTimes);
+      addBoneChannels(animation, character, c, samples.clipTimes, nullptr);
+      addMorphChannels(animation, character, c, samples.clipTimes, meshNodes);
+      animation.finish(character.clips[c].name);
+    }
+  }
   const bool binary = fileExtension(path) == "glb";
   writeFileAtomically(
       path, [&](std::ostream& out) { binary ? writer.writeGlb(out) : writer.writeGltf(out); }, binary);
+  return warnings;
 }
 
 }  // namespace mq
