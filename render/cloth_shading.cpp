@@ -17,6 +17,7 @@
 #include <vtkUniforms.h>
 #include <vtkUnsignedCharArray.h>
 
+#include "core/garment/fabric_color.h"
 #include "core/mesh/mesh.h"
 #include "render/surface_mapper.h"
 
@@ -101,31 +102,23 @@ const char* kFragmentImpl = R"(//VTK::Light::Impl
 
 ClothShading clothShadingForFabric(const std::string& fabric) {
   ClothShading s;
+  s.color = fabricColor(fabric);
   if (fabric == "velvet") {
-    s.color = {0.45f, 0.05f, 0.12f};
     s.minnaertK = 0.55f;
   } else if (fabric == "satin") {
-    s.color = {0.75f, 0.68f, 0.55f};
     s.minnaertK = 0.7f;
   } else if (fabric == "silk") {
-    s.color = {0.8f, 0.75f, 0.9f};
     s.minnaertK = 0.75f;
   } else if (fabric == "wool") {
-    s.color = {0.55f, 0.5f, 0.42f};
     s.minnaertK = 0.9f;
   } else if (fabric == "denim") {
-    s.color = {0.2f, 0.3f, 0.5f};
     s.ribbed = true;  // twill lines
     s.ribSpacing = 0.004f;
     s.ribDepth = 0.35f;
   } else if (fabric == "leather") {
-    s.color = {0.35f, 0.2f, 0.1f};
     s.minnaertK = 1.15f;
   } else if (fabric == "rib-knit") {
-    s.color = {0.7f, 0.7f, 0.72f};
     s.ribbed = true;
-  } else {
-    s.color = {0.85f, 0.85f, 0.82f};  // cotton
   }
   return s;
 }

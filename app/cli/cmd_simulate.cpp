@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/command.h"
+#include "app/cli/scene_cloth.h"
 #include "app/cli/simulate_garments.h"
 #include "app/cli/simulate_hair.h"
 #include "core/character/posed_character.h"
@@ -28,38 +29,10 @@ namespace {
 
 using nlohmann::json;
 using namespace mq;
-
-// The body the cloth collides with: all of the character's meshes, posed.
-class PosedBody {
- public:
-  PosedBody(const LoadedScene& scene) : scene_(scene) {}
-  bool empty() const { return scene_.character.meshes.empty(); }
-  // rest: the rest pose without edits (where garment patterns are placed).
-  void pose(float time, std::vector<float>& positions, std::vector<uint32_t>* triangles, bool rest = false) {
-    posed_.evaluate(scene_.character, rest ? -1 : scene_.clipIndex, rest ? 0.0f : time, rest ? nullptr : &scene_.edits,
-                    &ThreadPool::shared());
-    positions = concatenatedPositions(posed_.meshes());
-    if (triangles) *triangles = concatenatedTriangles(scene_.character);
-  }
-
- private:
-  const LoadedScene& scene_;
-  PosedCharacter posed_;
-};
+using cli::makeSheet;
+using cli::PosedBody;
 
 json vec3Json(const glm::vec3& v) { return json::array({v.x, v.y, v.z}); }
-
-// The sheet of the document's "cloth" section (when it has one).
-std::unique_ptr<cloth::ClothSimulator> makeSheet(const cloth::ClothSceneSpec& spec, const std::vector<float>& body,
-                                                 const std::vector<uint32_t>& bodyTriangles) {
-  if (!spec.hasSheet) return nullptr;
-  std::vector<uint32_t> pinned;
-  auto sim = std::make_unique<cloth::ClothSimulator>(cloth::buildClothMesh(spec, pinned), spec.fabric, spec.settings);
-  for (const auto& c : spec.colliders) sim->addCollider(c);
-  for (uint32_t v : pinned) sim->pinVertex(v);
-  if (!bodyTriangles.empty()) sim->setBody(body, bodyTriangles);
-  return sim;
-}
 
 struct RunResult {
   double seconds = 0.0;

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/garment/fabric_color.h"
 #include "core/garment/garment_json.h"
 #include "core/util/error.h"
 #include "sim/cloth/baked_cloth.h"
@@ -140,6 +141,19 @@ void SimulatedGarments::recordFrame(float fps) {
 void SimulatedGarments::exportPointCaches(const std::string& dir) const {
   for (size_t i = 0; i < recorded_.size(); ++i)
     recorded_[i].exportPointCache(dir, cloth::garmentFileStem(garments_[i].name, i));
+}
+
+std::vector<BakedSurface> SimulatedGarments::bakedSurfaces() const {
+  std::vector<BakedSurface> surfaces;
+  for (size_t i = 0; i < recorded_.size(); ++i) {
+    BakedSurface s;
+    s.name = garments_[i].name;
+    s.triangles = recorded_[i].triangles();
+    for (size_t f = 0; f < recorded_[i].frameCount(); ++f) s.frames.push_back(recorded_[i].frame(f));
+    s.color = glm::vec4(fabricColor(garments_[i].fabric), 1.0f);
+    surfaces.push_back(std::move(s));
+  }
+  return surfaces;
 }
 
 void SimulatedGarments::addTo(ClothNow& now) const {

@@ -10,6 +10,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "core/garment/garment.h"
+#include "core/io/rigged_export.h"
 #include "sim/cloth/baked_cloth.h"
 #include "sim/cloth/cloth_scene_io.h"
 #include "sim/garment/garment_simulation.h"
@@ -58,6 +59,8 @@ class SimulatedGarments {
   void recordFrame(float fps);
   // The recorded frames, <dir>/garment<i>_<name>.pc2 and .obj per garment (BakedCloth::exportPointCache).
   void exportPointCaches(const std::string& dir) const;
+  // The recorded frames, one surface per garment, coloured by its fabric.
+  std::vector<BakedSurface> bakedSurfaces() const;
   void addTo(ClothNow& now) const;
   // Per garment: name, layer, vertices, welded, sewing_steps, seam_gap, max_stretch,
   // penetrating_vertices, inside_inner_vertices (now and max_: in any measured frame), bbox.

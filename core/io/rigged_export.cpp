@@ -237,6 +237,9 @@ int addBakedSurface(GltfWriter& writer, const BakedSurface& surface) {
   const size_t n = base.size() / 3;
   const bool lines = surface.triangles.empty();
   json attributes = {{"POSITION", addPositionAccessor(writer, base)}};
+  if (surface.colors.size() == base.size())
+    attributes["COLOR_0"] =
+        writer.addAccessor(surface.colors.data(), n, "VEC3", 3, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
   std::vector<float> baseNormals;
   if (!lines) {
     computeVertexNormals(base, surface.triangles, baseNormals);
