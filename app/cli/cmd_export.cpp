@@ -97,7 +97,7 @@ int exportTake(const Args& args, LoadedScene& scene, const std::string& path, co
   const int clip = scene.clipIndex;
   options.take = ExportTake{clip >= 0 ? scene.character.clips[clip].name : "rest",
                             clip,
-                            takeStart(scene, request.fps),
+                            takeFrameTime(scene, 0, request.fps),
                             request.fps,
                             request.frames,
                             &scene.edits};

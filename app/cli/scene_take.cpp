@@ -49,7 +49,7 @@ std::vector<BakedSurface> recordCloth(const LoadedScene& scene, const std::strin
   }
   const bool moving = !body.empty() && spec.animateBody;
   for (int f = 0; f < request.frames; ++f) {
-    if (moving) body.pose(takeStart(scene, request.fps) + f * dt, bodyPositions, nullptr);
+    if (moving) body.pose(takeFrameTime(scene, f, request.fps), bodyPositions, nullptr);
     if (sheet) {
       if (moving) sheet->updateBody(bodyPositions);
       sheet->step(dt);
@@ -99,7 +99,7 @@ BakedSurface recordHair(const LoadedScene& scene, const TakeRequest& request) {
   const float dt = 1.0f / request.fps;
   hair.settle(scene.document.time, kSettleSeconds, request.fps);
   for (int f = 0; f < request.frames; ++f) {
-    hair.step(takeStart(scene, request.fps) + f * dt, dt);
+    hair.step(takeFrameTime(scene, f, request.fps), dt);
     const std::vector<float>& points = hair.updateAllStrands();
     s.frames.emplace_back(points.begin(), points.begin() + long(floats));
   }

@@ -25,7 +25,11 @@ struct TakeRequest {
 std::vector<BakedSurface> recordSceneTake(const LoadedScene& scene, const std::string& path,
                                           const TakeRequest& request);
 
-// The clip time of frame 0 of a take (one step after the document's time).
-inline float takeStart(const LoadedScene& scene, float fps) { return scene.document.time + 1.0f / fps; }
+// The clip time of frame f of a take (f + 1 steps after the document's
+// time), computed as simulate computes it: the cloth's contacts amplify a
+// rounding difference in the body's pose to centimetres within a second.
+inline float takeFrameTime(const LoadedScene& scene, int f, float fps) {
+  return scene.document.time + float(f + 1) / fps;
+}
 
 }  // namespace mq::cli

@@ -1,16 +1,20 @@
-// mannequin_obj_diff A.obj B.obj TOLERANCE: compares the vertices of two OBJ
-// files in order; prints the largest distance; exit 0 when within tolerance,
-// 1 when not, 2 when the files differ in vertex count or cannot be read.
+// mannequin_obj_diff A.obj B.obj TOLERANCE [--tail]: compares the vertices of
+// two OBJ files in order (--tail: B with the last vertices of A, as many as B
+// has: the last mesh of a posed scene); prints the largest distance; exit 0
+// when within tolerance, 1 when not, 2 when the files differ in vertex count
+// or cannot be read.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 #include <vector>
 
 #include "obj_vertices.h"
 
 int main(int argc, char** argv) {
-  if (argc != 4) {
-    std::fprintf(stderr, "usage: mannequin_obj_diff A.obj B.obj TOLERANCE\n");
+  const bool tail = argc == 5 && std::string(argv[4]) == "--tail";
+  if (argc != 4 && !tail) {
+    std::fprintf(stderr, "usage: mannequin_obj_diff A.obj B.obj TOLERANCE [--tail]\n");
     return 2;
   }
   std::vector<double> a, b;
@@ -18,6 +22,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "cannot read %s or %s\n", argv[1], argv[2]);
     return 2;
   }
+  if (tail && a.size() > b.size()) a.erase(a.begin(), a.end() - long(b.size()));
   if (a.size() != b.size() || a.empty()) {
     std::fprintf(stderr, "vertex counts differ: %zu vs %zu\n", a.size() / 3, b.size() / 3);
     return 2;

@@ -2,7 +2,7 @@
 # imports the exported mesh (OBJ, frame 1), gives it a Mesh Cache modifier
 # reading the .pc2, and compares every frame's evaluated vertices with the
 # cache's samples. Not part of the test suite (Blender is not
-# a build dependency); run by hand:
+# a build dependency); tests/blender/roundtrip.sh runs it, or by hand:
 #
 #   mannequin-cli simulate resources/scenes/garment_tshirt_walk.json --frames 10 \
 #       --export-dir /tmp/pc2 --export-format pc2
