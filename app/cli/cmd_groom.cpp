@@ -55,11 +55,12 @@ int countOption(const Args& args, const std::string& name, double fallback, doub
 
 int runGroom(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--strands", "--points", "--style", "--out", "--stats-json", "--seed"});
+  args.allowOnly({"--strands", "--points", "--style", "--out", "--stats-json", "--seed", "--scale"});
   if (args.positional().size() != 1) throw Error("groom needs exactly one SCENE (or 'default')");
   const auto start = std::chrono::steady_clock::now();
-  const LoadedScene scene = openScene(args.positional()[0]);
+  LoadedScene scene = openScene(args.positional()[0]);
   printMotionMatch(scene);
+  applyScaleOption(args, scene);
   HairSection section = hairSectionOf(scene);
   if (args.has("--style")) {
     section.style = builtinHairStyle(args.option("--style"));

@@ -8,6 +8,7 @@
 
 #include "core/character/posed_character.h"
 #include "core/hair/scalp.h"
+#include "core/hair/static_head.h"
 #include "core/util/error.h"
 
 namespace mq {
@@ -365,10 +366,45 @@ void addBodyCapsules(const Character& character, int head, const DrivenVertices&
   if (spine >= 0) addFromTo(spine, chest);
 }
 
+// The head ellipsoid shrunk so that the roots sit on or outside it (at most
+// by 15%), as the proxy's first shape.
+BodyProxy finishHeadProxy(Ellipsoid e, const std::vector<glm::vec3>& scalpPoints) {
+  float smallest = 1.0f;
+  for (const glm::vec3& p : scalpPoints) smallest = std::min(smallest, glm::length(scaledLocal(e, p, 0.0f)));
+  e.radii *= std::max(smallest * 0.995f, 0.85f);
+  BodyProxy proxy;
+  proxy.ellipsoids.push_back(e);
+  return proxy;
+}
+
+// A static mesh's head: an ellipsoid fitted in the world's axes to the
+// vertices at its top. No capsules: there are no bones to find the neck and
+// shoulders by.
+BodyProxy fitStaticHeadProxy(const Character& character, const std::vector<glm::vec3>& scalpPoints) {
+  PosedCharacter rest;
+  rest.evaluate(character, -1, 0.0f, nullptr, nullptr);
+  const std::vector<std::vector<uint8_t>> head = staticHeadVertices(character);
+  std::vector<glm::vec3> headPoints;
+  glm::vec3 centre(0.0f);
+  for (size_t m = 0; m < head.size(); ++m)
+    for (size_t v = 0; v < head[m].size(); ++v)
+      if (head[m][v]) {
+        const std::vector<float>& p = rest.meshes()[m].positions;
+        headPoints.emplace_back(p[3 * v], p[3 * v + 1], p[3 * v + 2]);
+        centre += headPoints.back();
+      }
+  if (headPoints.size() < 10) throw Error("the mesh of '" + character.name + "' has too few vertices for a head");
+  centre /= float(headPoints.size());
+  BodyProxy proxy = finishHeadProxy(fitEllipsoid(headPoints, glm::mat3(1.0f), centre), scalpPoints);
+  proxy.updateBounds();
+  return proxy;
+}
+
 }  // namespace
 
 BodyProxy fitBodyProxy(const Character& character, const std::string& headBone,
                        const std::vector<glm::vec3>& scalpPoints) {
+  if (character.skeleton.boneCount() == 0) return fitStaticHeadProxy(character, scalpPoints);
   const int head = character.skeleton.findBone(headBone);
   if (head < 0) throw Error("character '" + character.name + "' has no bone named '" + headBone + "'");
   std::vector<glm::mat4> worldFromBone;
@@ -380,14 +416,8 @@ BodyProxy fitBodyProxy(const Character& character, const std::string& headBone,
   if (headPoints.size() < 10)
     throw Error("bone '" + headBone + "' of character '" + character.name + "' drives too few vertices for a head");
 
-  Ellipsoid e = fitEllipsoid(headPoints, orthonormalRotation(worldFromBone[head]), origin(worldFromBone[head]));
-  // Shrink so that the roots sit on or outside the proxy (at most by 15%).
-  float smallest = 1.0f;
-  for (const glm::vec3& p : scalpPoints) smallest = std::min(smallest, glm::length(scaledLocal(e, p, 0.0f)));
-  e.radii *= std::max(smallest * 0.995f, 0.85f);
-
-  BodyProxy proxy;
-  proxy.ellipsoids.push_back(e);
+  BodyProxy proxy = finishHeadProxy(
+      fitEllipsoid(headPoints, orthonormalRotation(worldFromBone[head]), origin(worldFromBone[head])), scalpPoints);
   addBodyCapsules(character, head, verts, worldFromBone, proxy);
   proxy.updateBounds();
   return proxy;

@@ -75,8 +75,10 @@ BodyProxy sphereProxy(const glm::vec3& center, float radius);
 // bone's frame fitted (least squares) to the vertices the head bone drives,
 // shrunk so that the scalp vertices (`scalpPoints`, world space, may be
 // empty) lie on or outside it; capsules around the neck, chest, clavicles
-// and upper arms (bones found by walking from the head bone). Throws
-// mq::Error when the head bone does not exist or drives no vertex.
+// and upper arms (bones found by walking from the head bone). A character
+// without bones gets the head alone, fitted to the top of its mesh
+// (static_head.h). Throws mq::Error when the head bone does not exist or
+// drives no vertex.
 BodyProxy fitBodyProxy(const Character& character, const std::string& headBone,
                        const std::vector<glm::vec3>& scalpPoints);
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/character/posed_character.h"
+#include "core/hair/static_head.h"
 #include "core/util/error.h"
 
 namespace mq {
@@ -109,30 +110,37 @@ ScalpRegion automaticScalpRegion(const Character& character) {
   if (head >= 0) region.bone = character.skeleton.bone(head).name;
   if (hasTaggedScalp(character)) return region;
   if (character.meshes.empty()) throw Error("there is no character mesh to grow hair on");
-  if (head < 0) throw Error("character '" + character.name + "' has no head bone to grow hair on");
+  // The head's vertices: those the head bone drives, or for a mesh without
+  // bones those at its top.
+  const bool staticMesh = character.skeleton.boneCount() == 0;
+  if (head < 0 && !staticMesh) throw Error("character '" + character.name + "' has no head bone to grow hair on");
+  if (staticMesh) region.bone.clear();
+  const std::vector<std::vector<uint8_t>> staticHead =
+      staticMesh ? staticHeadVertices(character) : std::vector<std::vector<uint8_t>>{};
+  auto isHead = [&](size_t m, uint32_t v) {
+    return staticMesh ? staticHead[m][v] != 0
+                      : drivenBy(character.skeleton, dominantBone(character.meshes[m], v), head);
+  };
   PosedCharacter rest;
   rest.evaluate(character, -1, 0.0f, nullptr, nullptr);
-  // The mesh the head drives most, and the centre of the head's vertices.
+  // The mesh with most of the head, and the centre of the head's vertices.
   int bestMesh = -1;
-  size_t bestCount = 0;
+  size_t bestCount = 0, total = 0;
   glm::dvec3 centreSum(0.0);
   for (size_t m = 0; m < character.meshes.size(); ++m) {
     size_t count = 0;
-    for (size_t v = 0; v < character.meshes[m].vertexCount(); ++v)
-      if (drivenBy(character.skeleton, dominantBone(character.meshes[m], v), head)) {
+    for (uint32_t v = 0; v < character.meshes[m].vertexCount(); ++v)
+      if (isHead(m, v)) {
         ++count;
-        centreSum += glm::dvec3(vertexOf(rest.meshes()[m].positions, uint32_t(v)));
+        centreSum += glm::dvec3(vertexOf(rest.meshes()[m].positions, v));
       }
+    total += count;
     if (count > bestCount) {
       bestCount = count;
       bestMesh = int(m);
     }
   }
-  if (bestMesh < 0) throw Error("the head bone of character '" + character.name + "' drives no vertex");
-  size_t total = 0;
-  for (size_t m = 0; m < character.meshes.size(); ++m)
-    for (size_t v = 0; v < character.meshes[m].vertexCount(); ++v)
-      total += drivenBy(character.skeleton, dominantBone(character.meshes[m], v), head);
+  if (bestMesh < 0) throw Error("the head of character '" + character.name + "' has no vertex");
   const glm::vec3 centre = glm::vec3(centreSum / double(total));
   const float tilt = glm::radians(25.0f);
   const glm::vec3 axis(0.0f, std::cos(tilt), -std::sin(tilt));  // up and back: the character faces +Z
@@ -142,15 +150,15 @@ ScalpRegion automaticScalpRegion(const Character& character) {
   region.kind = ScalpRegion::Kind::Faces;
   region.mesh = bestMesh;
   for (uint32_t f = 0; f < mesh.triangleCount(); ++f) {
-    bool driven = true;
+    bool onHead = true;
     glm::vec3 faceCentre(0.0f);
     for (int k = 0; k < 3; ++k) {
       const uint32_t v = mesh.triangles[3 * f + k];
-      driven &= drivenBy(character.skeleton, dominantBone(mesh, v), head);
+      onHead &= isHead(size_t(bestMesh), v);
       faceCentre += vertexOf(positions, v) / 3.0f;
     }
     const glm::vec3 d = faceCentre - centre;
-    if (driven && glm::dot(d, axis) >= cosLimit * glm::length(d)) region.faces.push_back(f);
+    if (onHead && glm::dot(d, axis) >= cosLimit * glm::length(d)) region.faces.push_back(f);
   }
   if (region.faces.empty())
     throw Error("no face on the top of the head of character '" + character.name + "' to grow hair on");

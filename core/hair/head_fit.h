@@ -39,7 +39,9 @@ int findHeadBone(const Character& character);
 // when the character has some; else the faces of the mesh the head bone
 // drives most, on the top and back of the head: their centres within 75
 // degrees of an axis tilted 25 degrees back from up, seen from the centre of
-// the head's vertices. Throws mq::Error when the character has no head.
+// the head's vertices. A character without bones (a static mesh) has its
+// head found from the mesh's top (static_head.h), and a region without a
+// bone. Throws mq::Error when the character has no head.
 ScalpRegion automaticScalpRegion(const Character& character);
 
 }  // namespace mq

@@ -1,0 +1,137 @@
+// Hair on meshes without bones: the MakeHuman head scan of ../shared/assets
+// (an OBJ in decimetres) and the mannequin written out as a static OBJ.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+#include "core/character/default_mannequin.h"
+#include "core/character/posed_character.h"
+#include "core/hair/character_groom.h"
+#include "core/hair/hairstyle_json.h"
+#include "core/hair/static_head.h"
+#include "core/io/character_import.h"
+#include "core/mesh/triangle_ray_caster.h"
+
+namespace mq {
+namespace {
+
+Character headScan() {
+  Character head =
+      importCharacter(std::string(MANNEQUIN_SHARED_DIR) + "/assets/heads/makehuman_hm08_head/makehuman_head.obj");
+  head.scaleUniformly(0.1f);  // decimetres
+  return head;
+}
+
+// A mesh that is not closed (the scan is open at the neck) holds a point when
+// rays up, left and right all cross it an odd number of times.
+class OpenMeshInside {
+ public:
+  explicit OpenMeshInside(const Mesh& mesh) : caster_(mesh.positions, mesh.triangles) {}
+  bool contains(const glm::vec3& p) const {
+    for (const glm::vec3& d : {glm::vec3(0, 1, 0), glm::vec3(1, 0, 0), glm::vec3(-1, 0, 0)})
+      if (crossings(p, d) % 2 == 0) return false;
+    return true;
+  }
+
+ private:
+  int crossings(const glm::vec3& p, const glm::vec3& d) const {
+    int n = 0;
+    for (float t = caster_.firstHit(p, d, 0.0f); t >= 0.0f && n < 64; t = caster_.firstHit(p, d, t + 1e-5f)) ++n;
+    return n;
+  }
+  TriangleRayCaster caster_;
+};
+
+// Distance from p to triangle abc (the closest point by Voronoi regions).
+float triangleDistance(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+  const glm::vec3 n = glm::cross(b - a, c - a);
+  const float area2 = glm::dot(n, n);
+  if (area2 > 0.0f) {
+    const glm::vec3 q = p - n * (glm::dot(p - a, n) / area2);  // projection on the plane
+    const float u = glm::dot(glm::cross(c - b, q - b), n), v = glm::dot(glm::cross(a - c, q - c), n),
+                w = glm::dot(glm::cross(b - a, q - a), n);
+    if (u >= 0.0f && v >= 0.0f && w >= 0.0f) return glm::length(p - q);
+  }
+  auto segment = [&](const glm::vec3& s, const glm::vec3& e) {
+    const float t = glm::clamp(glm::dot(p - s, e - s) / std::max(glm::dot(e - s, e - s), 1e-20f), 0.0f, 1.0f);
+    return glm::length(p - (s + t * (e - s)));
+  };
+  return std::min({segment(a, b), segment(b, c), segment(c, a)});
+}
+
+float surfaceDistance(const Mesh& mesh, const glm::vec3& p) {
+  float best = 1e30f;
+  for (size_t t = 0; t < mesh.triangleCount(); ++t)
+    best = std::min(best,
+                    triangleDistance(p, mesh.position(mesh.triangles[3 * t]), mesh.position(mesh.triangles[3 * t + 1]),
+                                     mesh.position(mesh.triangles[3 * t + 2])));
+  return best;
+}
+
+TEST(StaticHead, AHeadAloneIsAllHeadAndABodyOnlyAtItsTop) {
+  const Character head = headScan();
+  ASSERT_EQ(head.skeleton.boneCount(), 0);
+  const auto flags = staticHeadVertices(head);
+  EXPECT_EQ(std::count(flags[0].begin(), flags[0].end(), 1), long(head.meshes[0].vertexCount()));
+
+  Character body = makeDefaultMannequin();
+  body.skeleton = Skeleton();  // the same surface as a static mesh
+  for (Mesh& m : body.meshes) m.skin = SkinBinding();
+  body.clips.clear();
+  const auto bodyFlags = staticHeadVertices(body);
+  const Mesh& skin = body.meshes[0];
+  float lowest = 1e30f;
+  size_t count = 0;
+  for (size_t v = 0; v < skin.vertexCount(); ++v)
+    if (bodyFlags[0][v]) {
+      lowest = std::min(lowest, skin.position(v).y);
+      ++count;
+    }
+  EXPECT_GT(count, 100u);
+  EXPECT_LT(count, skin.vertexCount() / 5);
+  EXPECT_GT(lowest, 1.45f);  // the mannequin is 1.75 m tall: nothing below the chin
+}
+
+// Every built-in style grows on the scan: roots on its surface, on the top
+// and back of the head. Known limit: the hair flows around an ellipsoid
+// fitted to the scan, which a real head is not; near the parting strands run
+// up to 7 mm under the scan's surface (2 to 5% of the points today). The
+// bound holds that figure until the proxy follows the scan.
+TEST(StaticHead, HairGrowsOnTheHeadScan) {
+  const Character head = headScan();
+  const Mesh& mesh = head.meshes[0];
+  const OpenMeshInside inside(mesh);
+  for (const std::string& name : builtinHairStyleNames()) {
+    HairSection section;
+    section.style = builtinHairStyle(name);
+    section.style.guideCount = 300;
+    section.fitToHead = true;
+    section.strands = 3000;
+    std::unique_ptr<HairGroom> groom = makeSectionGroom(head, section);
+    groom->grow(section.style, section.strands);
+    const Strands& s = groom->strands();
+    ASSERT_EQ(s.strandCount(), 3000u) << name;
+    float worstRoot = 0.0f;
+    size_t pointsInside = 0, pointsTested = 0;
+    for (size_t k = 0; k < s.strandCount(); ++k) {
+      const float* p = s.strand(k);
+      if (k % 10 == 0) worstRoot = std::max(worstRoot, surfaceDistance(mesh, {p[0], p[1], p[2]}));
+      for (int i = 1; i < s.pointsPerStrand; i += 3, ++pointsTested)
+        pointsInside += inside.contains({p[3 * i], p[3 * i + 1], p[3 * i + 2]});
+    }
+    EXPECT_LT(worstRoot, 0.01f) << name;  // on the scan, as the CLI tests hold the mannequin's roots
+    EXPECT_LT(pointsInside, pointsTested * 6 / 100) << name;
+    // The roots cover the top and back of the head, down to the nape (the
+    // scan, 0.23 m tall, goes down to the neck).
+    float lowestRoot = 1e30f;
+    for (size_t k = 0; k < s.strandCount(); ++k) lowestRoot = std::min(lowestRoot, s.strand(k)[1]);
+    Aabb box = boundsOf(mesh.positions);
+    EXPECT_GT(lowestRoot, box.min.y + 0.25f * (box.max.y - box.min.y)) << name;
+    std::printf("%s: %zu of %zu strand points inside the scan\n", name.c_str(), pointsInside, pointsTested);
+  }
+}
+
+}  // namespace
+}  // namespace mq
