@@ -138,6 +138,12 @@ void MainWindow::createActions() {
   exportAction_->setStatusTip(tr("Write the posed meshes as OBJ or PLY"));
   connect(exportAction_, &QAction::triggered, this, &MainWindow::exportWithDialog);
 
+  exportAnimatedAction_ = new QAction(tr("Export &Animated glTF..."), this);
+  exportAnimatedAction_->setShortcut(QKeySequence(tr("Ctrl+Shift+E")));
+  exportAnimatedAction_->setStatusTip(
+      tr("Write the character rigged with its clips, or with the garment and hair bakes, as glTF for other programs"));
+  connect(exportAnimatedAction_, &QAction::triggered, this, &MainWindow::exportAnimatedWithDialog);
+
   quitAction_ = new QAction(tr("&Quit"), this);
   quitAction_->setShortcut(QKeySequence::Quit);
   connect(quitAction_, &QAction::triggered, this, &QWidget::close);
@@ -230,6 +236,7 @@ void MainWindow::createMenus() {
   file->addAction(saveAction_);
   file->addAction(saveAsAction_);
   file->addAction(exportAction_);
+  file->addAction(exportAnimatedAction_);
   file->addSeparator();
   file->addAction(quitAction_);
   rebuildRecentMenu();

@@ -93,6 +93,11 @@ class MainWindow : public QMainWindow {
   // write, or is not a scene document yet; then `documentsDir`.
   static QString saveAsProposal(const QString& documentPath, const QString& characterName, const QString& documentsDir);
   bool exportPosedMesh(const QString& path, QString* error = nullptr);
+  // The character rigged to glTF/GLB (core/io/rigged_export.h): with a
+  // garment or hair bake, one take of the baked frames with the garments and
+  // the hair guides as morph-target surfaces; without, every clip at 30 fps.
+  // Returns what was written (for the status bar), empty with `error` on failure.
+  QString exportAnimatedGltf(const QString& path, QString* error = nullptr);
   void frameAll();
   void setSkeletonVisible(bool visible);
   // Dock layout and window size from the last session (QSettings); the
@@ -140,6 +145,7 @@ class MainWindow : public QMainWindow {
   bool save();
   bool saveAs();
   void exportWithDialog();
+  void exportAnimatedWithDialog();
   bool maybeDiscardChanges();
   // The document as a scene file at `path`: referenced files relative to
   // it, or absolute (recovery copies live apart from the document).
@@ -188,6 +194,7 @@ class MainWindow : public QMainWindow {
   QAction* saveAction_ = nullptr;
   QAction* saveAsAction_ = nullptr;
   QAction* exportAction_ = nullptr;
+  QAction* exportAnimatedAction_ = nullptr;
   QAction* applyMotionAction_ = nullptr;
   QAction* quitAction_ = nullptr;
   QAction* undoAction_ = nullptr;

@@ -27,11 +27,14 @@
 
 #include "core/io/json_fields.h"
 #include "core/io/mesh_export.h"
+#include "core/io/rigged_export.h"
 #include "render/scene_view.h"
 #include "ui/document/autosave.h"
 #include "ui/document/document_loader.h"
 #include "ui/document/editor_document.h"
 #include "ui/document/motion_commands.h"
+#include "ui/garment/garment_tool.h"
+#include "ui/hair/hair_tool.h"
 #include "ui/motion/apply_motion_dialog.h"
 
 namespace mq::ui {
@@ -76,7 +79,8 @@ void MainWindow::setBusy(bool busy, const QString& message) {
   busy_ = busy;
   progress_->setRange(0, 0);  // busy indicator: the loaders report no fraction
   progress_->setVisible(busy);
-  for (QAction* a : {newAction_, openAction_, applyMotionAction_, saveAction_, saveAsAction_, exportAction_})
+  for (QAction* a :
+       {newAction_, openAction_, applyMotionAction_, saveAction_, saveAsAction_, exportAction_, exportAnimatedAction_})
     a->setEnabled(!busy);
   recentMenu_->setEnabled(!busy);
   if (busy)
@@ -368,6 +372,63 @@ void MainWindow::exportWithDialog() {
   if (QFileInfo(path).suffix().isEmpty()) path += filter.contains("ply") ? ".ply" : ".obj";
   QString error;
   if (!exportPosedMesh(path, &error) && reportError) reportError(tr("Could not export"), error);
+}
+
+namespace {
+
+std::vector<float> frameTimes(float start, float fps, int frames) {
+  std::vector<float> times;
+  for (int f = 0; f < frames; ++f) times.push_back(start + f / fps);
+  return times;
+}
+
+}  // namespace
+
+QString MainWindow::exportAnimatedGltf(const QString& path, QString* error) {
+  const Character& character = document_->character();
+  const auto* garments = findChild<GarmentTool*>();
+  const auto* hair = findChild<HairTool*>();
+  const std::optional<GarmentTool::BakeForExport> cloth = garments ? garments->bakeForExport() : std::nullopt;
+  const bool hairBaked = hair && hair->hasBake();
+  RiggedExportOptions options;
+  // The bakes play as one take on the time axis of the garment bake, or of
+  // the hair bake alone; without a bake, every clip is written.
+  if (cloth || hairBaked) {
+    ExportTake take;
+    take.clip = cloth ? cloth->clip : document_->clipIndex();
+    take.start = cloth ? cloth->start : hair->bakeStart();
+    take.fps = cloth ? cloth->fps : hair->bakeFps();
+    take.frames = cloth ? cloth->frames : hair->bakeFrameCount();
+    take.name = take.clip >= 0 && take.clip < int(character.clips.size()) ? character.clips[take.clip].name : "rest";
+    take.edits = &document_->poseEdits();
+    options.take = take;
+    if (cloth) options.baked = cloth->surfaces;
+    if (hairBaked) options.baked.push_back(*hair->bakedGuides(frameTimes(take.start, take.fps, take.frames)));
+  }
+  std::vector<std::string> warnings;
+  try {
+    warnings = exportRiggedCharacter(character, path.toStdString(), options);
+  } catch (const std::exception& e) {
+    if (error) *error = QString::fromUtf8(e.what());
+    return QString();
+  }
+  QString summary =
+      options.take ? tr("%1 frames of %2").arg(options.take->frames).arg(QString::fromStdString(options.take->name))
+                   : tr("%n clip(s)", "", int(character.clips.size()));
+  for (const BakedSurface& s : options.baked) summary += ", " + QString::fromStdString(s.name);
+  for (const std::string& w : warnings) summary += "; " + QString::fromStdString(w);
+  statusBar()->showMessage(tr("Exported %1 (%2)").arg(path, summary), 8000);
+  return summary;
+}
+
+void MainWindow::exportAnimatedWithDialog() {
+  QString filter;
+  QString path = QFileDialog::getSaveFileName(this, tr("Export Animated glTF"), QString(),
+                                              tr("glTF binary (*.glb);;glTF with embedded data (*.gltf)"), &filter);
+  if (path.isEmpty()) return;
+  if (QFileInfo(path).suffix().isEmpty()) path += filter.contains("gltf)") ? ".gltf" : ".glb";
+  QString error;
+  if (exportAnimatedGltf(path, &error).isEmpty() && reportError) reportError(tr("Could not export"), error);
 }
 
 void MainWindow::addRecentFile(const QString& path) {

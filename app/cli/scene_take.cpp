@@ -65,25 +65,6 @@ std::vector<BakedSurface> recordCloth(const LoadedScene& scene, const std::strin
   return surfaces;
 }
 
-// The first `strands` strands of the groom as line segments, coloured from
-// root to tip as the style says.
-BakedSurface hairLines(const SceneHair& hair, size_t strands) {
-  const int points = hair.groom().strands().pointsPerStrand;
-  const HairStyle& style = hair.style();
-  BakedSurface s;
-  s.name = "hair";
-  s.color = glm::vec4(0.5f * (style.rootColor + style.tipColor), 1.0f);
-  for (size_t k = 0; k < strands; ++k)
-    for (int i = 0; i < points; ++i) {
-      const uint32_t v = uint32_t(k * points + i);
-      if (i + 1 < points) s.lines.insert(s.lines.end(), {v, v + 1});
-      const float along = points > 1 ? float(i) / float(points - 1) : 0.0f;
-      const glm::vec3 c = glm::mix(style.rootColor, style.tipColor, along);
-      s.colors.insert(s.colors.end(), {c.x, c.y, c.z});
-    }
-  return s;
-}
-
 BakedSurface recordHair(const LoadedScene& scene, const TakeRequest& request) {
   constexpr float kSettleSeconds = 0.5f;  // as simulate settles
   SceneHair hair(scene, sceneHairSection(scene));
@@ -95,7 +76,8 @@ BakedSurface recordHair(const LoadedScene& scene, const TakeRequest& request) {
   checkMemoryBudget(
       "the hair's frames (" + std::to_string(strands) + " strands x " + std::to_string(request.frames) + " frames)",
       4.0 * double(floats) * request.frames);
-  BakedSurface s = hairLines(hair, strands);
+  BakedSurface s =
+      strandLines(strands, hair.groom().strands().pointsPerStrand, hair.style().rootColor, hair.style().tipColor);
   const float dt = 1.0f / request.fps;
   hair.settle(scene.document.time, kSettleSeconds, request.fps);
   for (int f = 0; f < request.frames; ++f) {

@@ -18,21 +18,10 @@
 #include <string>
 #include <vector>
 
-#include <glm/glm.hpp>
-
 #include "core/character/character.h"
+#include "core/io/baked_surface.h"
 
 namespace mq {
-
-// A surface simulated outside the skeleton, world-space positions per frame.
-struct BakedSurface {
-  std::string name;
-  std::vector<uint32_t> triangles;          // a cloth mesh, or
-  std::vector<uint32_t> lines;              // index pairs: hair strands (glTF mode LINES)
-  std::vector<std::vector<float>> frames;   // 3 floats per vertex, every frame the same size
-  std::vector<float> colors;                // linear RGB per vertex (COLOR_0), may be empty
-  glm::vec4 color{0.8f, 0.8f, 0.8f, 1.0f};  // linear RGBA of its material
-};
 
 struct ExportTake {
   std::string name;    // the animation's name

@@ -31,9 +31,11 @@
 
 #include <vtkActor.h>
 
+#include "core/character/posed_character.h"
 #include "core/garment/fabric.h"
 #include "core/garment/garment.h"
 #include "core/garment/parametric_garments.h"
+#include "core/io/character_import.h"
 #include "core/mesh/mesh.h"
 #include "render/collider_actors.h"
 #include "render/scene_view.h"
@@ -449,6 +451,21 @@ class GarmentToolTest : public QObject {
     QVERIFY(!tool_->exportBake(blocker.fileName() + "/inside"));
     QVERIFY2(tool_->lastError().contains("not_a_folder"), qPrintable(tool_->lastError()));
     QDir(exportDir).removeRecursively();
+
+    // File > Export Animated glTF: the character playing the baked range,
+    // the garment as a morph-target surface showing each baked frame.
+    QTemporaryDir gltfDir;
+    const QString gltf = gltfDir.filePath("take.glb");
+    QString error;
+    const QString summary = window_->exportAnimatedGltf(gltf, &error);
+    QVERIFY2(!summary.isEmpty(), qPrintable(error));
+    QVERIFY2(summary.contains(QString("%1 frames").arg(frames)), qPrintable(summary));
+    const Character take = importCharacter(gltf.toStdString());
+    QCOMPARE(take.meshes.size(), doc()->character().meshes.size() + 1);
+    QCOMPARE(take.clips.size(), size_t(1));
+    PosedCharacter played;
+    played.evaluate(take, 0, (frames - 1) / tool_->scene().cloth.fps, nullptr, nullptr);
+    QVERIFY(maxDifference(played.meshes().back().positions, last) < 1e-5f);
 
     // The stretch overlay has a value per vertex.
     QTest::mouseClick(panel()->stretchCheck(), Qt::LeftButton);

@@ -24,6 +24,7 @@
 #include <vtkRenderer.h>
 
 #include "core/character/posed_character.h"
+#include "core/garment/fabric_color.h"
 #include "core/garment/garment_json.h"
 #include "core/garment/parametric_garments.h"
 #include "core/garment/pin_remap.h"
@@ -905,6 +906,25 @@ void GarmentTool::loadBakeBeside(const QString& documentPath) {
     lastError_ = tr("The saved bake could not be read: %1").arg(e.what());
     emit simulationChanged();
   }
+}
+
+std::optional<GarmentTool::BakeForExport> GarmentTool::bakeForExport() const {
+  if (!bake_ || bakedFrameCount() == 0) return std::nullopt;
+  BakeForExport out;
+  out.clip = bake_->clip;
+  out.start = bake_->start;
+  out.fps = bake_->garments[0].fps();
+  out.frames = bakedFrameCount();
+  for (size_t g = 0; g < bake_->garments.size(); ++g) {
+    const bool garment = g < scene_.garments.size();
+    BakedSurface s;
+    s.name = garment ? scene_.garments[g].name : "sheet";
+    s.triangles = bake_->garments[g].triangles();
+    for (size_t f = 0; f < bake_->garments[g].frameCount(); ++f) s.frames.push_back(bake_->garments[g].frame(f));
+    s.color = glm::vec4(fabricColor(garment ? scene_.garments[g].fabric : scene_.cloth.fabricPreset), 1.0f);
+    out.surfaces.push_back(std::move(s));
+  }
+  return out;
 }
 
 int GarmentTool::bakedFrameCount() const {

@@ -54,6 +54,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/io/baked_surface.h"
 #include "sim/cloth/collision/primitive_collider.h"
 #include "sim/garment/garment_simulation.h"
 #include "ui/garment/garment_scene.h"
@@ -197,6 +198,16 @@ class GarmentTool : public QObject {
   // pointCache: one Point Cache 2 file per garment instead (<stem>.pc2 and
   // the mesh it deforms, <stem>.obj: BakedCloth::exportPointCache).
   bool exportBake(const QString& dir, bool pointCache = false);
+  // The bake for an animated glTF: its clip (-1 none), first frame's time,
+  // fps and frame count, and one surface per garment (the sheet last),
+  // coloured by fabric. Null without a bake.
+  struct BakeForExport {
+    int clip = -1;
+    float start = 0.0f, fps = 30.0f;
+    int frames = 0;
+    std::vector<BakedSurface> surfaces;
+  };
+  std::optional<BakeForExport> bakeForExport() const;
   // How often sewing ran from the placed panels (Simulate or Bake), and how
   // often a kept sewn or draped state was used instead.
   int sewingRuns() const { return sewingRuns_; }

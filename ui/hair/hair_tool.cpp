@@ -95,6 +95,15 @@ HairTool::~HairTool() {
 
 size_t HairTool::strandCount() const { return groom_ ? groom_->strands().strandCount() : 0; }
 
+std::optional<BakedSurface> HairTool::bakedGuides(const std::vector<float>& times) const {
+  if (!bake_ || bake_->frameCount() == 0 || !style_) return std::nullopt;
+  const int points = bake_->pointsPerStrand;
+  const size_t guides = bake_->frames[0].size() / (3 * size_t(std::max(points, 1)));
+  BakedSurface s = strandLines(guides, points, style_->rootColor, style_->tipColor);
+  for (float t : times) s.frames.push_back(*bake_->frameAt(t));
+  return s;
+}
+
 bool HairTool::backgroundWorkPending() const { return worker_->busy(); }
 
 void HairTool::finishBackgroundWork() { worker_->finish(); }

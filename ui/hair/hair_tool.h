@@ -27,6 +27,7 @@
 
 #include "core/hair/hairstyle.h"
 #include "core/hair/scalp.h"
+#include "core/io/baked_surface.h"
 #include "render/hair_handles.h"
 #include "sim/hair/hair_bake.h"
 #include "ui/hair/hair_style_command.h"
@@ -57,6 +58,13 @@ class HairTool : public QObject {
   ~HairTool() override;
 
   bool hasHair() const { return style_.has_value(); }
+  // The baked guides at clip times `times` (each the bake's nearest frame)
+  // as coloured lines, for an animated glTF; null without a bake.
+  std::optional<BakedSurface> bakedGuides(const std::vector<float>& times) const;
+  // The bake's own frames: its first frame's time, fps and frame count.
+  float bakeStart() const { return bake_ ? bake_->startTime : 0.0f; }
+  float bakeFps() const { return bake_ ? bake_->fps : 0.0f; }
+  int bakeFrameCount() const { return bake_ ? bake_->frameCount() : 0; }
   // The style being edited (valid when hasHair()).
   const HairStyle& style() const { return *style_; }
   // Strands in the groom on screen (the last finished one).
