@@ -588,15 +588,20 @@ int SceneView::pickBone(int x, int y) {
     const int bone = m.skeleton.nearestBoneOnScreen(m.renderer, x, y, kSkeletonTolerance);
     if (bone >= 0) return bone;
   }
+  const std::optional<glm::vec3> hit = pickSurface(x, y);
+  return hit ? m.skeleton.nearestBoneTo(*hit) : -1;
+}
+
+std::optional<glm::vec3> SceneView::pickSurface(int x, int y) {
+  Impl& m = *impl_;
+  if (!m.renderer->GetRenderWindow()) return std::nullopt;
   vtkNew<vtkCellPicker> picker;
   picker->SetTolerance(0.0005);
   picker->PickFromListOn();
   m.forEachPart([&](MeshActor& mesh, size_t p) { picker->AddPickList(mesh.parts[p]); });
-  if (picker->Pick(x, y, 0.0, m.renderer) && picker->GetCellId() >= 0) {
-    const double* p = picker->GetPickPosition();
-    return m.skeleton.nearestBoneTo(glm::vec3(p[0], p[1], p[2]));
-  }
-  return -1;
+  if (!picker->Pick(x, y, 0.0, m.renderer) || picker->GetCellId() < 0) return std::nullopt;
+  const double* p = picker->GetPickPosition();
+  return glm::vec3(p[0], p[1], p[2]);
 }
 
 void SceneView::add(ClothActor& cloth) { addProp(cloth.actor()); }

@@ -8,6 +8,7 @@
 // arrays; setCharacter() is the only call that rebuilds the actors.
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -116,6 +117,9 @@ class SceneView {
   // hit on the character, or, off the surface, the bone drawn nearest the
   // click within a few pixels; -1 if none. Needs the renderer in a window.
   int pickBone(int x, int y);
+  // The point of the character's surface under display position (x, y),
+  // world space; none off the character. Needs the renderer in a window.
+  std::optional<glm::vec3> pickSurface(int x, int y);
 
   // Adds a garment or a groom; the caller keeps the actor alive while shown.
   // These keep VTK out of callers that only compose a scene (mannequin-cli).

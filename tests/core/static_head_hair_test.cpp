@@ -10,6 +10,7 @@
 #include "core/character/posed_character.h"
 #include "core/hair/character_groom.h"
 #include "core/hair/hairstyle_json.h"
+#include "core/hair/scalp_paint.h"
 #include "core/hair/static_head.h"
 #include "core/io/character_import.h"
 #include "core/mesh/triangle_ray_caster.h"
@@ -131,6 +132,63 @@ TEST(StaticHead, HairGrowsOnTheHeadScan) {
     EXPECT_GT(lowestRoot, box.min.y + 0.25f * (box.max.y - box.min.y)) << name;
     std::printf("%s: %zu of %zu strand points inside the scan\n", name.c_str(), pointsInside, pointsTested);
   }
+}
+
+// The brush: dabs add the faces near the cursor, erasing takes them away,
+// and hair grows on what was painted.
+TEST(ScalpPaint, DabsAddAndEraseFacesAndHairGrowsThere) {
+  const Character head = headScan();
+  const Mesh& mesh = head.meshes[0];
+  // The top of the scan: its highest vertex.
+  glm::vec3 top = mesh.position(0);
+  for (size_t v = 1; v < mesh.vertexCount(); ++v)
+    if (mesh.position(v).y > top.y) top = mesh.position(v);
+  const std::vector<std::vector<float>> shown = {mesh.positions};
+  ASSERT_EQ(meshUnderBrush(shown, top), 0);
+
+  ScalpRegion region;
+  region.kind = ScalpRegion::Kind::Faces;
+  region = paintScalp(region, 0, mesh.triangles, mesh.positions, top, 0.03f, false);
+  ASSERT_GT(region.faces.size(), 10u);
+  for (uint32_t f : region.faces) {
+    glm::vec3 centre(0.0f);
+    for (int k = 0; k < 3; ++k) centre += mesh.position(mesh.triangles[3 * f + k]) / 3.0f;
+    EXPECT_LE(glm::length(centre - top), 0.03f + 1e-6f);
+  }
+  const glm::vec3 back = top + glm::vec3(0.0f, -0.03f, -0.05f);  // a second dab behind
+  const ScalpRegion twoDabs = paintScalp(region, 0, mesh.triangles, mesh.positions, back, 0.03f, false);
+  EXPECT_GT(twoDabs.faces.size(), region.faces.size());
+  const ScalpRegion erased = paintScalp(twoDabs, 0, mesh.triangles, mesh.positions, top, 0.03f, true);
+  EXPECT_EQ(erased.faces.size(), twoDabs.faces.size() - region.faces.size());  // the first dab's faces, erased
+  for (uint32_t f : erased.faces) EXPECT_FALSE(std::binary_search(region.faces.begin(), region.faces.end(), f));
+
+  HairSection section;
+  section.style = builtinHairStyle("bob");
+  section.style.guideCount = 100;
+  section.fitToHead = true;
+  section.scalp = twoDabs;
+  section.scalpGiven = true;
+  std::unique_ptr<HairGroom> groom = makeSectionGroom(head, section);
+  groom->grow(section.style, 1000);
+  const float scalpArea = groom->scalp().area();
+  EXPECT_GT(scalpArea, 0.002f);  // two dabs of 3 cm: a few tens of cm^2
+  EXPECT_LT(scalpArea, 0.01f);
+  for (size_t k = 0; k < groom->strands().strandCount(); ++k) {
+    const float* root = groom->strands().strand(k);
+    EXPECT_LT(std::min(glm::length(glm::vec3(root[0], root[1], root[2]) - top),
+                       glm::length(glm::vec3(root[0], root[1], root[2]) - back)),
+              0.045f);
+  }
+}
+
+// A region of another kind becomes the same faces, ready for the brush.
+TEST(ScalpPaint, TheMannequinsTaggedScalpAsFacesIsTheSameScalp) {
+  const Character mannequin = makeDefaultMannequin();
+  const ScalpRegion tagged;
+  const ScalpRegion faces = scalpAsFaces(mannequin, tagged);
+  EXPECT_EQ(faces.kind, ScalpRegion::Kind::Faces);
+  EXPECT_GT(faces.faces.size(), 100u);
+  EXPECT_NEAR(extractScalp(mannequin, faces).area(), extractScalp(mannequin, tagged).area(), 1e-6f);
 }
 
 }  // namespace

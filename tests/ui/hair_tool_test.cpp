@@ -33,6 +33,7 @@
 
 #include "core/hair/hair_groom.h"
 #include "core/hair/hairstyle_json.h"
+#include "core/io/character_import.h"
 #include "render/scene_view.h"
 #include "test_window.h"
 #include "ui/document/editor_document.h"
@@ -523,6 +524,80 @@ class HairToolTest : public QObject {
     // Left alone, it bakes the clip.
     QVERIFY2(tool_->bake(), qPrintable(tool_->lastError()));
     QVERIFY(tool_->hasBake());
+    // File > Export Animated glTF takes the bake: the guides as a lines mesh
+    // whose frames play in one take with the body.
+    const QString gltf = dir_.filePath("hair_take.glb");
+    const QString summary = window_->exportAnimatedGltf(gltf, &error);
+    QVERIFY2(summary.contains("hair"), qPrintable(summary + error));
+    const Character take = importCharacter(gltf.toStdString());
+    QCOMPARE(take.meshes.size(), doc()->character().meshes.size() + 1);
+    QVERIFY(take.meshes.back().triangles.empty());  // lines
+    QCOMPARE(take.clips.size(), size_t(1));
+  }
+
+  // The scalp brush: a Ctrl+stroke erases the faces under it, a stroke paints
+  // faces in, each one undo step; the hair grows where the scalp now is.
+  void paintingTheScalpIsOneUndoStepAStroke() {
+    tool_->dock()->show();
+    tool_->dock()->raise();
+    QApplication::processEvents();
+    doc()->setClip(-1);  // the rest pose
+    renderNow();
+    // The top of the head and the front of the face, as shown.
+    const std::vector<float>& body = doc()->posed().meshes()[0].positions;
+    float headTop = -1e9f;
+    for (size_t k = 1; k < body.size(); k += 3) headTop = std::max(headTop, body[k]);
+    // The upper front of the head (the hairline), where the view sees the scalp.
+    glm::vec3 top(0.0f, -1e9f, 0.0f);
+    for (size_t k = 0; k + 2 < body.size(); k += 3)
+      if (body[k + 1] > headTop - 0.15f && body[k + 1] + body[k + 2] > top.y + top.z)
+        top = {body[k], body[k + 1], body[k + 2]};
+    glm::vec3 face(0.0f, 0.0f, -1e9f);
+    for (size_t k = 0; k + 2 < body.size(); k += 3)
+      if (body[k + 1] > headTop - 0.15f && std::abs(body[k]) < 0.02f && body[k + 2] > face.z)
+        face = {body[k], body[k + 1], body[k + 2]};
+    panel()->brushRadiusBox()->setValue(3.0);
+    QCOMPARE(tool_->brushRadius(), 0.03f);
+    panel()->scalpPaintButton()->click();
+    QVERIFY(tool_->paintingScalp());
+    QWidget* viewport = window_->viewport();
+    auto stroke = [&](const glm::vec3& at, Qt::KeyboardModifiers modifiers) {
+      const QPoint p = toWidget(at);
+      const qreal ratio = viewport->devicePixelRatioF();
+      const std::optional<glm::vec3> hit = window_->sceneView()->pickSurface(
+          int(p.x() * ratio), int(viewport->height() * ratio) - 1 - int(p.y() * ratio));
+      QVERIFY2(hit && glm::length(*hit - at) < 0.03f, "the stroke's point is not on the character as shown");
+      sendMouse(viewport, QEvent::MouseButtonPress, p, Qt::LeftButton, Qt::LeftButton, modifiers);
+      for (int step = 1; step <= 3; ++step)
+        sendMouse(viewport, QEvent::MouseMove, p + QPoint(2 * step, 0), Qt::NoButton, Qt::LeftButton, modifiers);
+      sendMouse(viewport, QEvent::MouseButtonRelease, p + QPoint(6, 0), Qt::LeftButton, Qt::NoButton, modifiers);
+      waitForHair();
+    };
+    const float areaBefore = tool_->scalpArea();
+    const int commands = doc()->undoStack()->index();
+    stroke(top, Qt::ControlModifier);
+    QCOMPARE(doc()->undoStack()->index(), commands + 1);
+    QCOMPARE(tool_->scalp().kind, ScalpRegion::Kind::Faces);
+    const float erased = tool_->scalpArea();
+    QVERIFY2(erased < areaBefore - 1e-4f, qPrintable(QString("%1 -> %2 m2").arg(areaBefore).arg(erased)));
+    stroke(face, Qt::NoModifier);
+    QCOMPARE(doc()->undoStack()->index(), commands + 2);
+    QVERIFY(tool_->scalpArea() > erased + 1e-4f);
+    QCOMPARE(panel()->scalpModeCombo()->currentIndex(), int(HairPanel::ScalpPainted));
+    // Some root now grows on the face, within the brush of where it was painted.
+    float nearest = 1e9f;
+    const std::vector<float> roots = rootPoints(*tool_);
+    for (size_t k = 0; k + 2 < roots.size(); k += 3)
+      nearest = std::min(nearest, glm::length(glm::vec3(roots[k], roots[k + 1], roots[k + 2]) - face));
+    QVERIFY2(nearest < 0.04f, qPrintable(QString("nearest root %1 m from the painted face").arg(nearest)));
+    doc()->undoStack()->undo();
+    waitForHair();
+    QCOMPARE(tool_->scalpArea(), erased);
+    doc()->undoStack()->undo();
+    waitForHair();
+    QCOMPARE(tool_->scalpArea(), areaBefore);
+    panel()->scalpPaintButton()->click();
+    QVERIFY(!tool_->paintingScalp());
   }
 };
 

@@ -351,10 +351,11 @@ QWidget* HairPanel::makeScalpGroup() {
   scalpMode_->addItem(tr("Tagged scalp"));
   scalpMode_->addItem(tr("Head bone cone"));
   scalpMode_->addItem(tr("Automatic"));
+  scalpMode_->addItem(tr("Painted"));
   scalpMode_->setToolTip(
       tr("Tagged: the character's scalp vertices (the default mannequin). Head bone cone: the "
          "faces the bone drives within an angle of an axis. Automatic: the tagged scalp, else "
-         "the top and back of the head."));
+         "the top and back of the head. Painted: the faces painted with the brush."));
   scalpBone_ = new QComboBox;
   scalpAxisPreset_ = new QComboBox;
   scalpAxisPreset_->addItem(tr("Up"));
@@ -367,13 +368,30 @@ QWidget* HairPanel::makeScalpGroup() {
   }
   scalpAngle_ = addSpin(1.0, 180.0, 5.0, 1);
   scalpAngle_->setSuffix(QString::fromUtf8("°"));
+  scalpPaint_ = new QPushButton(tr("Paint"));
+  scalpPaint_->setCheckable(true);
+  scalpPaint_->setToolTip(
+      tr("Drag on the character to add faces to the scalp, Ctrl+drag to erase them "
+         "(middle or Alt+drag orbits). One undo step a stroke."));
+  brushRadius_ = addSpin(0.5, 20.0, 0.5, 1);
+  brushRadius_->setSuffix(tr(" cm"));
+  brushRadius_->setValue(tool_->brushRadius() * 100.0);
+  brushRadius_->setToolTip(
+      tr("The brush's radius: faces whose centre is this close to the cursor's point are painted"));
+  auto* brushRow = new QHBoxLayout;
+  brushRow->addWidget(scalpPaint_);
+  brushRow->addWidget(brushRadius_);
   scalpStatus_ = new QLabel;
   form->addRow(tr("Region"), scalpMode_);
   form->addRow(tr("Bone"), scalpBone_);
   form->addRow(tr("Axis"), scalpAxisPreset_);
   form->addRow(QString(), axisRow);
   form->addRow(tr("Angle"), scalpAngle_);
+  form->addRow(tr("Brush"), brushRow);
   form->addRow(scalpStatus_);
+  connect(scalpPaint_, &QPushButton::toggled, this, [this](bool on) { tool_->setPaintingScalp(on); });
+  connect(brushRadius_, &QDoubleSpinBox::valueChanged, this,
+          [this](double cm) { tool_->setBrushRadius(float(cm) / 100.0f); });
 
   connect(scalpMode_, &QComboBox::currentIndexChanged, this, [this](int mode) {
     if (!refreshing_) chooseScalpMode(mode);
@@ -412,6 +430,9 @@ void HairPanel::chooseScalpMode(int mode) {
       after.axis = kAxisUpBack;
       after.angleDegrees = kDefaultConeAngle;
     }
+  } else if (mode == ScalpPainted) {
+    after = tool_->scalpAsFaces();  // the same faces, ready for the brush
+    scalpPaint_->setChecked(true);
   } else {
     after = tool_->automaticScalp();
   }
@@ -448,9 +469,11 @@ void HairPanel::refreshScalp() {
     QSignalBlocker block(scalpMode_);
     if (auto* model = qobject_cast<QStandardItemModel*>(scalpMode_->model()))
       model->item(ScalpTagged)->setEnabled(tool_->characterHasTaggedScalp());
+    const bool automatic = scalp.kind == ScalpRegion::Kind::Faces && tool_->scalpIsAutomatic();
     scalpMode_->setCurrentIndex(scalp.kind == ScalpRegion::Kind::Tagged ? ScalpTagged
                                 : cone                                  ? ScalpBoneCone
-                                                                        : ScalpAutomatic);
+                                : automatic                             ? ScalpAutomatic
+                                                                        : ScalpPainted);
   }
   {
     QSignalBlocker block(scalpBone_);
@@ -473,6 +496,8 @@ void HairPanel::refreshScalp() {
     scalpAngle_->setValue(scalp.angleDegrees);
   }
   scalpMode_->setEnabled(hair);
+  scalpPaint_->setEnabled(hair);
+  if (!hair && scalpPaint_->isChecked()) scalpPaint_->setChecked(false);
   for (QWidget* w : std::initializer_list<QWidget*>{scalpBone_, scalpAxisPreset_, scalpAxis_[0], scalpAxis_[1],
                                                     scalpAxis_[2], scalpAngle_})
     w->setEnabled(hair && cone);

@@ -43,8 +43,11 @@ class HairPanel : public QWidget {
   QCheckBox* shadowMapsBox() const { return shadowMaps_; }
   QSpinBox* displayLimitBox() const { return displayLimit_; }
   QLabel* displayCountLabel() const { return displayCount_; }
-  // Scalp group: mode (ScalpMode order), bone, axis preset, axis, angle.
-  enum ScalpMode { ScalpTagged, ScalpBoneCone, ScalpAutomatic };
+  // Scalp group: mode (ScalpMode order), bone, axis preset, axis, angle,
+  // and the brush: Paint (checkable) and its radius (cm).
+  enum ScalpMode { ScalpTagged, ScalpBoneCone, ScalpAutomatic, ScalpPainted };
+  QPushButton* scalpPaintButton() const { return scalpPaint_; }
+  QDoubleSpinBox* brushRadiusBox() const { return brushRadius_; }
   QComboBox* scalpModeCombo() const { return scalpMode_; }
   QComboBox* scalpBoneCombo() const { return scalpBone_; }
   QComboBox* scalpAxisPresetCombo() const { return scalpAxisPreset_; }
@@ -101,6 +104,8 @@ class HairPanel : public QWidget {
   QComboBox *scalpMode_, *scalpBone_, *scalpAxisPreset_;
   QDoubleSpinBox* scalpAxis_[3];
   QDoubleSpinBox* scalpAngle_;
+  QPushButton* scalpPaint_;
+  QDoubleSpinBox* brushRadius_;
   QLabel* scalpStatus_;
   QComboBox* shadingModel_;
   QDoubleSpinBox *melanin_, *pheomelanin_, *roughness_;

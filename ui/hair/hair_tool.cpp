@@ -16,6 +16,7 @@
 #include "core/hair/hairstyle_json.h"
 #include "core/hair/head_fit.h"
 #include "core/hair/root_sampling.h"
+#include "core/hair/scalp_paint.h"
 #include "core/util/error.h"
 #include "render/hair_actor.h"
 #include "render/scene_view.h"
@@ -351,6 +352,13 @@ bool HairTool::characterHasTaggedScalp() const {
   return false;
 }
 
+ScalpRegion HairTool::scalpAsFaces() const { return mq::scalpAsFaces(window_->document()->character(), scalp_); }
+
+bool HairTool::scalpIsAutomatic() const {
+  const ScalpRegion automatic = automaticScalp();
+  return automatic.kind == scalp_.kind && automatic.mesh == scalp_.mesh && automatic.faces == scalp_.faces;
+}
+
 ScalpRegion HairTool::automaticScalp() const {
   try {
     return automaticScalpRegion(window_->document()->character());
@@ -536,7 +544,55 @@ bool HairTool::eventFilter(QObject* watched, QEvent* event) {
   return routeMouseEvent(this, event, &HairTool::onPress, &HairTool::onMove, &HairTool::onRelease);
 }
 
+// ---- Scalp painting ----
+
+void HairTool::setPaintingScalp(bool on) {
+  painting_ = on;
+  stroke_.reset();
+  window_->statusBar()->showMessage(
+      on ? tr("Paint the scalp: drag on the character to add, Ctrl+drag to erase; middle or Alt+drag orbits")
+         : QString(),
+      on ? 0 : 1);
+}
+
+bool HairTool::dab(const glm::vec3& world) {
+  EditorDocument* document = window_->document();
+  const Character& character = document->character();
+  std::vector<std::vector<float>> shown;
+  for (const PosedMesh& mesh : document->posed().meshes()) shown.push_back(mesh.positions);
+  const int mesh = meshUnderBrush(shown, world);
+  if (mesh < 0) return false;
+  if (!stroke_) stroke_ = mq::scalpAsFaces(character, scalp_);
+  stroke_ =
+      paintScalp(*stroke_, mesh, character.meshes[mesh].triangles, shown[mesh], world, brushRadius_, strokeErases_);
+  return true;
+}
+
+bool HairTool::paintScalpAt(const glm::vec3& world, bool erase, int mergeKey) {
+  stroke_.reset();
+  strokeErases_ = erase;
+  const bool hit = dab(world) && editScalp(*stroke_, erase ? tr("Erase scalp") : tr("Paint scalp"), mergeKey);
+  stroke_.reset();
+  return hit;
+}
+
+bool HairTool::onPaintPress(QMouseEvent* event) {
+  const bool erase = event->modifiers() == Qt::ControlModifier;
+  if (event->button() != Qt::LeftButton || (event->modifiers() != Qt::NoModifier && !erase)) return false;
+  const QPoint display = toDisplay(event->position());
+  const std::optional<glm::vec3> hit = window_->sceneView()->pickSurface(display.x(), display.y());
+  if (!hit) return false;  // off the character: the camera moves
+  stroke_.reset();
+  strokeErases_ = erase;
+  strokeKey_ = HairStyleCommand::nextMergeKey();
+  strokeClock_.start();
+  strokeAppliedMs_ = -kPaintApplyMs;
+  dab(*hit);
+  return true;
+}
+
 bool HairTool::onPress(QMouseEvent* event) {
+  if (painting_ && dock_->isVisible()) return onPaintPress(event);
   if (event->button() != Qt::LeftButton || event->modifiers() != Qt::NoModifier || !dock_->isVisible()) return false;
   const QPoint display = toDisplay(event->position());
   const HandleHit hit = handles_->pick(display.x(), display.y());
@@ -559,6 +615,15 @@ QString HairTool::dragText() const {
 }
 
 bool HairTool::onMove(QMouseEvent* event) {
+  if (stroke_) {
+    const QPoint display = toDisplay(event->position());
+    if (const std::optional<glm::vec3> hit = window_->sceneView()->pickSurface(display.x(), display.y())) dab(*hit);
+    if (strokeClock_.elapsed() - strokeAppliedMs_ >= kPaintApplyMs) {
+      strokeAppliedMs_ = strokeClock_.elapsed();
+      editScalp(*stroke_, strokeErases_ ? tr("Erase scalp") : tr("Paint scalp"), strokeKey_);
+    }
+    return true;
+  }
   if (!dragging_.valid()) return false;
   const QPoint display = toDisplay(event->position());
   HairStyle after = *style_;
@@ -574,6 +639,13 @@ bool HairTool::onMove(QMouseEvent* event) {
 }
 
 bool HairTool::onRelease(QMouseEvent* event) {
+  if (stroke_) {
+    const ScalpRegion region = *stroke_;
+    stroke_.reset();
+    if (region.faces != scalp_.faces || region.mesh != scalp_.mesh || region.kind != scalp_.kind)
+      editScalp(region, strokeErases_ ? tr("Erase scalp") : tr("Paint scalp"), strokeKey_);
+    return true;
+  }
   if (!dragging_.valid()) return false;
   // The drag's last step: same style, not live, so the children regrow.
   if (dragMoved_) editStyle(*style_, dragText(), dragKey_, false);

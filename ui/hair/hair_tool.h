@@ -22,6 +22,7 @@
 #include <memory>
 #include <optional>
 
+#include <QElapsedTimer>
 #include <QObject>
 #include <QPoint>
 
@@ -118,11 +119,29 @@ class HairTool : public QObject {
   // The region automaticScalpRegion() picks (a tagged or bone-cone default
   // when it cannot: the character has no head).
   ScalpRegion automaticScalp() const;
+  // The current scalp as a face list (what the brush paints on).
+  ScalpRegion scalpAsFaces() const;
+  // The current scalp is the face list automaticScalp() picks.
+  bool scalpIsAutomatic() const;
   // The head bone found on the character (empty when none).
   std::string headBoneName() const;
   std::vector<std::string> boneNames() const;
   // The current scalp's area (m^2; 0 without a groom).
   float scalpArea() const;
+  // Painting the scalp with a brush (the Scalp group's Paint button): while
+  // on, a left drag on the character adds the faces under the brush to the
+  // scalp and a Ctrl+left drag erases them (core/hair/scalp_paint.h), on any
+  // mesh, a static head scan included; one undo step a stroke, the hair
+  // regrowing as the stroke goes (at most every kPaintApplyMs). A drag that
+  // starts off the character orbits as usual.
+  void setPaintingScalp(bool on);
+  bool paintingScalp() const { return painting_; }
+  void setBrushRadius(float metres) { brushRadius_ = metres; }
+  float brushRadius() const { return brushRadius_; }
+  // One dab at a world point on the character as shown, applied at once
+  // (tests, scripts); false when nothing is under it or the scalp would be empty.
+  bool paintScalpAt(const glm::vec3& world, bool erase, int mergeKey = 0);
+  static constexpr int kPaintApplyMs = 120;
 
   // Primitive selection (shown by the panel and the handles).
   PrimitiveRef selectedPrimitive() const { return selected_; }
@@ -210,6 +229,18 @@ class HairTool : public QObject {
   std::optional<HairBake> bake_;
   bool simulating_ = false;
   float lastTime_ = 0.0f;
+
+  // Scalp painting
+  bool painting_ = false;
+  float brushRadius_ = 0.02f;          // metres
+  std::optional<ScalpRegion> stroke_;  // the stroke's region, applied every kPaintApplyMs
+  bool strokeErases_ = false;
+  int strokeKey_ = 0;
+  qint64 strokeAppliedMs_ = 0;
+  QElapsedTimer strokeClock_;
+  // Adds one dab to the stroke's region; false when it is not on the character.
+  bool dab(const glm::vec3& world);
+  bool onPaintPress(QMouseEvent* event);
 
   // Handle drag
   PrimitiveRef dragging_;
