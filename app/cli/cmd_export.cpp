@@ -13,11 +13,13 @@
 #include "app/cli/command.h"
 #include "app/cli/scene_take.h"
 #include "core/character/posed_character.h"
+#include "core/io/file_bytes.h"
 #include "core/io/mesh_export.h"
 #include "core/io/rigged_export.h"
 #include "core/scene/open_scene.h"
 #include "core/util/error.h"
 #include "core/util/thread_pool.h"
+#include "sim/cloth/point_cache.h"
 
 namespace mq::cli {
 namespace {
@@ -86,10 +88,37 @@ TakeRequest takeRequest(const Args& args, const LoadedScene& scene, const std::s
   return request;
 }
 
+// --point-cache DIR/NAME.pc2|.mdd: per baked surface NAME_<surface>.pc2 (or
+// .mdd) with every frame, and NAME_<surface>.obj, the mesh it deforms.
+void writePointCaches(const std::vector<BakedSurface>& surfaces, const std::string& path, float fps) {
+  const std::filesystem::path target(path);
+  const std::string ext = fileExtension(path);
+  if (ext != "pc2" && ext != "mdd") throw Error("--point-cache writes .pc2 or .mdd files: " + path);
+  std::error_code ec;
+  if (!target.parent_path().empty()) std::filesystem::create_directories(target.parent_path(), ec);
+  if (ec) throw FileError(target.parent_path().string(), "cannot create the directory: " + ec.message());
+  for (const BakedSurface& s : surfaces) {
+    const std::filesystem::path stem = target.parent_path() / (target.stem().string() + "_" + surfaceFileStem(s.name));
+    cloth::PointCache cache;
+    cache.pointCount = s.frames.front().size() / 3;
+    cache.samples = s.frames;
+    if (ext == "pc2")
+      cloth::writePointCache(stem.string() + ".pc2", cache);
+    else
+      cloth::writeMdd(stem.string() + ".mdd", cache, fps);
+    writeSurfaceObj(s, stem.string() + ".obj");
+    std::cout << "wrote " << stem.string() << "." << ext << " and " << stem.string() << ".obj (" << s.name << ", "
+              << s.frames.size() << " frames of " << cache.pointCount << " points)\n";
+  }
+}
+
 // export SCENE --with garments,hair: the character rigged, playing the
 // scene's clip, with the simulated garments and hair as baked surfaces.
 int exportTake(const Args& args, LoadedScene& scene, const std::string& path, const std::string& out) {
-  if (!isRiggedExportPath(out)) throw Error("--with writes glTF: use --out OUT.gltf or OUT.glb");
+  const std::string caches = args.option("--point-cache");
+  if (out.empty() && caches.empty())
+    throw Error("--with needs --out OUT.glb|OUT.gltf, --point-cache OUT.pc2|OUT.mdd or both");
+  if (!out.empty() && !isRiggedExportPath(out)) throw Error("--with writes glTF: use --out OUT.gltf or OUT.glb");
   if (!isSceneDocumentPath(path)) throw FileError(path, "--with needs a scene document (.mqscene or .json)");
   scene.clipIndex = clipOption(args, scene, path);
   const TakeRequest request = takeRequest(args, scene, path);
@@ -102,6 +131,8 @@ int exportTake(const Args& args, LoadedScene& scene, const std::string& path, co
                             request.frames,
                             &scene.edits};
   options.baked = recordSceneTake(scene, path, request);
+  if (!caches.empty()) writePointCaches(options.baked, caches, request.fps);
+  if (out.empty()) return 0;
   printWarnings(exportRiggedCharacter(scene.character, out, options), out);
   std::cout << "wrote " << out << " (" << request.frames << " frames at " << request.fps << " fps of "
             << clipLabel(scene, clip) << ": " << scene.character.skeleton.boneCount() << " bones"
@@ -115,10 +146,13 @@ int exportTake(const Args& args, LoadedScene& scene, const std::string& path, co
 int runExport(const std::vector<std::string>& argv) {
   const Args args(argv);
   args.allowOnly({"--out", "--clip", "--fps", "--skinning", "--helper-bones", "--regenerate-weights",
-                  "--smooth-weights", "--scale", "--rigged", "--with", "--frames", "--hair-strands"});
+                  "--smooth-weights", "--scale", "--rigged", "--with", "--frames", "--hair-strands", "--point-cache"});
   if (args.positional().size() != 1) throw Error("export needs exactly one FILE");
   const std::string out = args.option("--out");
-  if (out.empty() || !isMeshExportPath(out)) throw Error("export needs --out OUT.obj, .ply, .gltf or .glb");
+  if ((out.empty() && !args.has("--with")) || (!out.empty() && !isMeshExportPath(out)))
+    throw Error("export needs --out OUT.obj, .ply, .gltf or .glb");
+  if (args.has("--point-cache") && !args.has("--with"))
+    throw Error("--point-cache writes simulated surfaces: it goes with --with garments,hair");
   LoadedScene scene = openScene(args.positional()[0]);
   printMotionMatch(scene);
   applyScaleOption(args, scene);
@@ -170,11 +204,13 @@ static Registration reg(
     {"export",
      "FILE --out OUT.obj|.ply|.gltf|.glb [--clip NAME|INDEX --fps F | --clip rest] [--skinning lbs|dqs|cones]\n"
      "         [--helper-bones] [--regenerate-weights] [--smooth-weights] [--scale S] [--rigged [--fps F]]\n"
-     "         [--with garments,hair [--clip C] [--frames N] [--fps F] [--hair-strands guides|all|N]]",
+     "         [--with garments,hair [--clip C] [--frames N] [--fps F] [--hair-strands guides|all|N]\n"
+     "          [--point-cache OUT.pc2|OUT.mdd]]",
      "write the rest pose, or every frame of a clip (OUT_0000.obj ...), as meshes; --rigged: the\n"
      "skeleton, skins, materials and every clip (sampled at F fps, 30 by default) as one glTF or GLB;\n"
      "--with (a scene document): the character playing its clip from the document's time for N frames\n"
-     "at F fps, its garments and/or hair simulated as simulate does and stored as per-frame morph targets",
+     "at F fps, its garments and/or hair simulated as simulate does and stored as per-frame morph targets;\n"
+     "--point-cache: each simulated surface as a PC2 or MDD point cache beside an OBJ of the mesh it deforms",
      runExport});
 
 }  // namespace

@@ -24,4 +24,12 @@ struct BakedSurface {
 // to tip; no frames yet.
 BakedSurface strandLines(size_t strands, int pointsPerStrand, const glm::vec3& rootColor, const glm::vec3& tipColor);
 
+// The surface's first frame as OBJ (triangles as faces, strands as `l`
+// polylines), the mesh a point cache of its frames deforms. Atomic; throws
+// FileError naming the path.
+void writeSurfaceObj(const BakedSurface& surface, const std::string& path);
+
+// A file-name-safe form of the surface's name ("T-shirt" stays, "my coat" -> "my_coat").
+std::string surfaceFileStem(const std::string& name);
+
 }  // namespace mq

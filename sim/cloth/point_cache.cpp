@@ -1,5 +1,6 @@
 #include "sim/cloth/point_cache.h"
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -17,15 +18,29 @@ namespace {
 constexpr char kSignature[12] = {'P', 'O', 'I', 'N', 'T', 'C', 'A', 'C', 'H', 'E', '2', '\0'};
 constexpr int32_t kVersion = 1;
 
-}  // namespace
-
-void writePointCache(const std::string& path, const PointCache& cache) {
+void checkSamples(const PointCache& cache) {
   for (size_t s = 0; s < cache.samples.size(); ++s)
     if (cache.samples[s].size() != 3 * cache.pointCount)
       throw Error("point cache sample " + std::to_string(s) + " has " + std::to_string(cache.samples[s].size()) +
                   " values for " + std::to_string(cache.pointCount) + " points");
   if (cache.pointCount > size_t(INT32_MAX) || cache.samples.size() > size_t(INT32_MAX))
-    throw Error("point cache too large for PC2's 32-bit counts");
+    throw Error("point cache too large for 32-bit counts");
+}
+
+// MDD is big-endian.
+void putBigEndian(std::string& out, uint32_t v) {
+  for (int shift = 24; shift >= 0; shift -= 8) out.push_back(char((v >> shift) & 0xFF));
+}
+
+uint32_t bigEndianAt(const std::vector<uint8_t>& bytes, size_t offset) {
+  return uint32_t(bytes[offset]) << 24 | uint32_t(bytes[offset + 1]) << 16 | uint32_t(bytes[offset + 2]) << 8 |
+         uint32_t(bytes[offset + 3]);
+}
+
+}  // namespace
+
+void writePointCache(const std::string& path, const PointCache& cache) {
+  checkSamples(cache);
   ByteWriter out;
   out.raw(kSignature, sizeof kSignature);
   out.i32(kVersion);
@@ -67,6 +82,50 @@ PointCache readPointCache(const std::string& path) {
     cache.samples.push_back(in.floats(3 * uint64_t(points), "sample " + std::to_string(s)));
     for (float v : cache.samples.back())
       if (!std::isfinite(v)) in.fail("sample " + std::to_string(s) + " has a non-finite position");
+  }
+  return cache;
+}
+
+void writeMdd(const std::string& path, const PointCache& cache, float fps) {
+  checkSamples(cache);
+  if (!(fps > 0.0f) || !std::isfinite(fps)) throw Error("an MDD file needs a positive frame rate");
+  std::string out;
+  out.reserve(8 + 4 * cache.samples.size() * (1 + 3 * cache.pointCount));
+  putBigEndian(out, uint32_t(cache.samples.size()));
+  putBigEndian(out, uint32_t(cache.pointCount));
+  for (size_t f = 0; f < cache.samples.size(); ++f) putBigEndian(out, std::bit_cast<uint32_t>(float(f) / fps));
+  for (const std::vector<float>& sample : cache.samples)
+    for (float v : sample) putBigEndian(out, std::bit_cast<uint32_t>(v));
+  writeFileAtomically(
+      path, [&](std::ostream& stream) { stream.write(out.data(), std::streamsize(out.size())); }, /*binary=*/true);
+}
+
+PointCache readMdd(const std::string& path) {
+  const std::vector<uint8_t> bytes = readFileBytes(path);
+  if (bytes.size() < 8) throw FileError(path, "truncated: an MDD file starts with two 4-byte counts");
+  const uint64_t frames = bigEndianAt(bytes, 0), points = bigEndianAt(bytes, 4);
+  // Compared by division: two corrupt counts cannot overflow the product.
+  const uint64_t perFrame = 4 + 12 * points;
+  if ((bytes.size() - 8) / perFrame != frames || (bytes.size() - 8) % perFrame != 0)
+    throw FileError(path, "holds " + std::to_string(bytes.size() - 8) + " bytes after its counts; " +
+                              std::to_string(frames) + " frames of " + std::to_string(points) + " points need " +
+                              std::to_string(perFrame * frames));
+  PointCache cache;
+  cache.pointCount = size_t(points);
+  float lastTime = -INFINITY;
+  for (uint64_t f = 0; f < frames; ++f) {
+    const float time = std::bit_cast<float>(bigEndianAt(bytes, 8 + 4 * f));
+    if (!(time > lastTime) || !std::isfinite(time)) throw FileError(path, "frame times must be finite and increase");
+    lastTime = time;
+  }
+  size_t offset = 8 + 4 * frames;
+  for (uint64_t f = 0; f < frames; ++f) {
+    std::vector<float>& sample = cache.samples.emplace_back(3 * points);
+    for (float& v : sample) {
+      v = std::bit_cast<float>(bigEndianAt(bytes, offset));
+      offset += 4;
+      if (!std::isfinite(v)) throw FileError(path, "frame " + std::to_string(f) + " has a non-finite position");
+    }
   }
   return cache;
 }

@@ -1,5 +1,5 @@
 #pragma once
-// Point Cache 2 (.pc2): every frame's vertex positions of one mesh, the
+// Point caches: every frame's vertex positions of one mesh, the
 // format Blender's Mesh Cache modifier, 3ds Max and Maya read to play a
 // simulated cloth on the mesh it was exported with.
 //
@@ -26,5 +26,13 @@ void writePointCache(const std::string& path, const PointCache& cache);
 // another version, counts the file is too short for, non-finite values,
 // trailing bytes).
 PointCache readPointCache(const std::string& path);
+
+// MDD, LightWave's point cache, which Blender's Mesh Cache modifier also
+// reads. Big-endian: int32 frame count, int32 point count, float32 time of
+// each frame (seconds, frame f at f / fps), then frames x points x (x, y, z)
+// float32. Atomic; throws as writePointCache does.
+void writeMdd(const std::string& path, const PointCache& cache, float fps);
+// Strict like readPointCache; the frame times are checked to increase.
+PointCache readMdd(const std::string& path);
 
 }  // namespace mq::cloth

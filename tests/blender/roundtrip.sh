@@ -80,4 +80,11 @@ echo "== T-shirt point cache (PC2) through Blender's Mesh Cache modifier"
 blender -b --python-exit-code 1 --python "$top/tests/blender/pc2_in_blender.py" -- "$work/pc2/garment0_T-shirt" \
   > "$work/blender.log" 2>&1 || status=1
 grep -iE "difference|error" "$work/blender.log" || true
+
+echo "== the wavy hair's guides as an MDD point cache (export --point-cache)"
+"$cli" export "$top/resources/scenes/hair_wavy.json" --with hair --frames 10 --fps 30 \
+  --point-cache "$work/mdd/take.mdd" >/dev/null
+blender -b --python-exit-code 1 --python "$top/tests/blender/pc2_in_blender.py" -- "$work/mdd/take_hair" mdd \
+  > "$work/blender.log" 2>&1 || status=1
+grep -iE "difference|error" "$work/blender.log" || true
 exit $status

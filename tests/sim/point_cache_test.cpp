@@ -1,6 +1,7 @@
-// Point Cache 2 files (sim/cloth/point_cache.h) and the bake's export as one.
+// Point Cache 2 and MDD files (sim/cloth/point_cache.h) and the bake's export as one.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -88,6 +89,30 @@ TEST(PointCache, DamagedFilesAreRefusedWithTheirProblem) {
   damaged = bytes;
   damaged.push_back(0);
   EXPECT_NE(problem(damaged), "accepted");
+}
+
+TEST(PointCache, MddRoundTripIsExactAndBigEndian) {
+  TempDir dir;
+  const fs::path file = dir.path / "cloth.mdd";
+  writeMdd(file.string(), twoFrames(), 24.0f);
+  const std::vector<char> bytes = bytesOf(file);
+  ASSERT_EQ(bytes.size(), 8u + 2 * 4 + 2 * 3 * 12);
+  EXPECT_EQ(bytes[3], 2);  // frames, big-endian
+  EXPECT_EQ(bytes[7], 3);  // points
+  uint32_t secondTime = 0;
+  for (int k = 0; k < 4; ++k) secondTime = secondTime << 8 | uint8_t(bytes[12 + k]);
+  EXPECT_EQ(std::bit_cast<float>(secondTime), 1.0f / 24.0f);
+  const PointCache back = readMdd(file.string());
+  EXPECT_EQ(back.pointCount, 3u);
+  EXPECT_EQ(back.samples, twoFrames().samples);
+  for (size_t length : {size_t(0), size_t(7), size_t(12), bytes.size() - 1}) {
+    writeBytes(dir.path / "cut.mdd", {bytes.begin(), bytes.begin() + long(length)});
+    EXPECT_THROW(readMdd((dir.path / "cut.mdd").string()), FileError) << "cut at " << length;
+  }
+  std::vector<char> damaged = bytes;
+  damaged[4] = 0x7f;  // a huge point count
+  writeBytes(dir.path / "huge.mdd", damaged);
+  EXPECT_THROW(readMdd((dir.path / "huge.mdd").string()), FileError);
 }
 
 TEST(PointCache, SampleOfTheWrongSizeIsNotWritten) {
