@@ -11,6 +11,7 @@ packages=(
   libassimp-dev nlohmann-json3-dev libstb-dev
   libgtest-dev libgmock-dev libbenchmark-dev clang-format-14
   xvfb xauth xdotool libgl1-mesa-dri libglx-mesa0
+  help2man dpkg-dev desktop-file-utils
 )
 
 missing=()

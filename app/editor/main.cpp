@@ -21,61 +21,76 @@
 #include "ui/theme.h"
 #include "ui/viewport/vtk_viewport_widget.h"
 
+namespace {
+
+// The editor's command line (its man page is made from --help).
+struct EditorOptions {
+  const QCommandLineOption screenshot{"screenshot", "Save a picture of the window to OUT.png and quit.", "OUT.png"};
+  const QCommandLineOption size{"size", "Window size, WIDTHxHEIGHT (default 1600x1000).", "WxH", "1600x1000"};
+  const QCommandLineOption select{
+      "select", "Select a bone (shows the rotation gizmo on it), a material or a mesh by NAME.", "NAME"};
+  const QCommandLineOption clip{"clip", "Show clip NAME (or index; rest: the rest pose).", "NAME"};
+  const QCommandLineOption time{"time", "Go to SECONDS into the clip.", "SECONDS"};
+  const QCommandLineOption map{"map", "Bone-name map for a BVH FILE (see core/io/bvh_import.h).", "MAP"};
+  const QCommandLineOption addGarment{"add-garment", "Add a built-in garment: tshirt, skirt or trousers (repeatable).",
+                                      "TYPE"};
+  const QCommandLineOption bakeGarments{"bake-garments", "Bake the garments over the clip before the screenshot."};
+  const QCommandLineOption simulateGarments{
+      "simulate-garments", "Simulate the garments (and the sheet) live for N steps before the screenshot.", "N"};
+  const QCommandLineOption exportBake{"export-bake", "After --bake-garments, write the bake as OBJ sequences into DIR.",
+                                      "DIR"};
+  const QCommandLineOption garmentStretch{"garment-stretch", "Show the garments' stretch overlay."};
+  const QCommandLineOption saveAs{"save-as", "Save the scene document to FILE once set up.", "FILE"};
+
+  void describe(QCommandLineParser& parser) const {
+    parser.setApplicationDescription("Mannequin: pose, animate, groom and dress virtual humans.");
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addPositionalArgument("FILE",
+                                 "default, a character (.gltf .glb .fbx .dae), a motion (.bvh) "
+                                 "or a scene document (.mqscene)",
+                                 "[FILE]");
+    parser.addOptions({addGarment, bakeGarments, simulateGarments, exportBake, garmentStretch, saveAs, map, screenshot,
+                       select, clip, time, size});
+  }
+};
+
+// --help and --version print and exit without a display: a QApplication
+// would need one, and the man page is made from them at build time.
+void answerHelpOrVersion(QCommandLineParser& parser, int& argc, char** argv) {
+  QStringList arguments;
+  for (int i = 0; i < argc; ++i) arguments << QString::fromLocal8Bit(argv[i]);
+  if (!parser.parse(arguments) || !(parser.isSet("help") || parser.isSet("version"))) return;
+  QCoreApplication app(argc, argv);
+  parser.process(app);  // prints and exits
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   // The viewport bridge needs this before QApplication exists.
   QSurfaceFormat::setDefaultFormat(mq::ui::VtkViewportWidget::defaultFormat());
-  QApplication app(argc, argv);
-  QApplication::setApplicationName("Mannequin");
-  QApplication::setOrganizationName("Mannequin");
-  QApplication::setApplicationVersion("0.1");
-  mq::ui::applyEditorTheme(app);
-
+  QCoreApplication::setApplicationName("Mannequin");
+  QCoreApplication::setOrganizationName("Mannequin");
+  QCoreApplication::setApplicationVersion(MANNEQUIN_VERSION);
   QCommandLineParser parser;
-  parser.setApplicationDescription("Mannequin: pose, animate, groom and dress virtual humans.");
-  parser.addHelpOption();
-  parser.addVersionOption();
-  parser.addPositionalArgument("FILE",
-                               "default, a character (.gltf .glb .fbx .dae), a motion (.bvh) "
-                               "or a scene document (.mqscene)");
-  const QCommandLineOption screenshot("screenshot", "Save a picture of the window to OUT.png and quit.", "OUT.png");
-  const QCommandLineOption size("size", "Window size, WIDTHxHEIGHT (default 1600x1000).", "WxH", "1600x1000");
-  const QCommandLineOption select(
-      "select", "Select a bone (shows the rotation gizmo on it), a material or a mesh by NAME.", "NAME");
-  const QCommandLineOption clip("clip", "Show clip NAME (or index; rest: the rest pose).", "NAME");
-  const QCommandLineOption timeOption("time", "Go to SECONDS into the clip.", "SECONDS");
-  const QCommandLineOption map("map", "Bone-name map for a BVH FILE (see core/io/bvh_import.h).", "MAP");
-  const QCommandLineOption addGarment("add-garment", "Add a built-in garment: tshirt, skirt or trousers (repeatable).",
-                                      "TYPE");
-  const QCommandLineOption bakeGarments("bake-garments", "Bake the garments over the clip before the screenshot.");
-  const QCommandLineOption garmentStretch("garment-stretch", "Show the garments' stretch overlay.");
-  const QCommandLineOption saveAs("save-as", "Save the scene document to FILE once set up.", "FILE");
-  parser.addOption(addGarment);
-  parser.addOption(bakeGarments);
-  const QCommandLineOption simulateGarments(
-      "simulate-garments", "Simulate the garments (and the sheet) live for N steps before the screenshot.", "N");
-  parser.addOption(simulateGarments);
-  const QCommandLineOption exportBake("export-bake", "After --bake-garments, write the bake as OBJ sequences into DIR.",
-                                      "DIR");
-  parser.addOption(exportBake);
-  parser.addOption(garmentStretch);
-  parser.addOption(saveAs);
-  parser.addOption(map);
-  parser.addOption(screenshot);
-  parser.addOption(select);
-  parser.addOption(clip);
-  parser.addOption(timeOption);
-  parser.addOption(size);
+  const EditorOptions options;
+  options.describe(parser);
+  answerHelpOrVersion(parser, argc, argv);
+
+  QApplication app(argc, argv);
+  mq::ui::applyEditorTheme(app);
   parser.process(app);
   const QStringList files = parser.positionalArguments();
   const QString file = files.isEmpty() ? QString("default") : files.first();
 
   mq::ui::MainWindow window;
-  const QStringList wh = parser.value(size).split('x');
+  const QStringList wh = parser.value(options.size).split('x');
   window.resize(wh.value(0).toInt() > 0 ? wh.value(0).toInt() : 1600,
                 wh.value(1).toInt() > 0 ? wh.value(1).toInt() : 1000);
-  const bool takeScreenshot = parser.isSet(screenshot);
+  const bool takeScreenshot = parser.isSet(options.screenshot);
   // Screenshots use the default layout, so they look the same everywhere.
-  if (!takeScreenshot && !parser.isSet(size)) window.restoreWindowState();
+  if (!takeScreenshot && !parser.isSet(options.size)) window.restoreWindowState();
   if (takeScreenshot) {
     // No dialogs in batch mode: errors go to stderr.
     window.reportError = [](const QString&, const QString& message) {
@@ -86,17 +101,17 @@ int main(int argc, char** argv) {
 
   // Once the file is open: the scripted actions, then the screenshot.
   mq::ui::ScriptedSession session;
-  session.clip = parser.value(clip);
-  session.setTime = parser.isSet(timeOption);
-  session.time = parser.value(timeOption).toDouble();
-  session.select = parser.value(select);
-  session.addGarments = parser.values(addGarment);
+  session.clip = parser.value(options.clip);
+  session.setTime = parser.isSet(options.time);
+  session.time = parser.value(options.time).toDouble();
+  session.select = parser.value(options.select);
+  session.addGarments = parser.values(options.addGarment);
   session.bakes = int(parser.optionNames().count("bake-garments"));
-  session.exportBakeDir = parser.value(exportBake);
-  session.simulateSteps = parser.value(simulateGarments).toInt();
-  session.showStretch = parser.isSet(garmentStretch);
-  session.saveAs = parser.value(saveAs);
-  session.screenshot = parser.value(screenshot);
+  session.exportBakeDir = parser.value(options.exportBake);
+  session.simulateSteps = parser.value(options.simulateGarments).toInt();
+  session.showStretch = parser.isSet(options.garmentStretch);
+  session.saveAs = parser.value(options.saveAs);
+  session.screenshot = parser.value(options.screenshot);
   auto afterLoad = [&window, session] {
     QObject::connect(
         &window, &mq::ui::MainWindow::loadFinished, &window, [&window, session](bool ok) { session.run(window, ok); },
@@ -105,7 +120,7 @@ int main(int argc, char** argv) {
 
   if (mq::ui::isMotionFile(file)) {
     // A motion alone is shown on the default mannequin.
-    const QString mapPath = parser.value(map);
+    const QString mapPath = parser.value(options.map);
     QObject::connect(
         &window, &mq::ui::MainWindow::loadFinished, &window,
         [&window, file, mapPath, afterLoad](bool) {
