@@ -9,6 +9,7 @@
 // and --save-as script the garment tool
 // (documentation pictures, test scenes).
 #include <cstdio>
+#include <cstdlib>
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -61,6 +62,11 @@ void answerHelpOrVersion(QCommandLineParser& parser, int& argc, char** argv) {
   QStringList arguments;
   for (int i = 0; i < argc; ++i) arguments << QString::fromLocal8Bit(argv[i]);
   if (!parser.parse(arguments) || !(parser.isSet("help") || parser.isSet("version"))) return;
+  if (parser.isSet("version")) {
+    std::printf("Mannequin %s\nLicence: GPL-3.0-or-later (it links CGAL's GPL packages); see LICENSE.\n",
+                MANNEQUIN_VERSION);
+    std::exit(0);
+  }
   QCoreApplication app(argc, argv);
   parser.process(app);  // prints and exits
 }
