@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "core/skeleton/skeleton_from_joints.h"
+
 namespace mq {
 namespace {
 
@@ -13,11 +15,7 @@ namespace {
 // 0.82 H, hip joints at 0.53 H, knees at 0.285 H, ankles at 0.04 H; upper arm
 // 0.17 H, forearm 0.145 H, hand 0.105 H, thigh and shin 0.245 H.
 
-struct BoneSpec {
-  std::string name;
-  std::string parent;
-  glm::vec3 head, tail;  // rest joint and child joint, world space
-};
+using BoneSpec = JointSpec;  // rest joint and child joint, world space
 
 constexpr float kArmAngle = glm::radians(45.0f);  // A-pose: arms 45 deg below horizontal
 
@@ -66,35 +64,6 @@ std::vector<BoneSpec> allBoneSpecs() {
       specs.push_back({mirroredName(s.name), mirroredName(s.parent), mirrored(s.head), mirrored(s.tail)});
   }
   return specs;
-}
-
-// World rest orientation: +Y along the bone, +X = Y x forward (forward is +Z,
-// or +Y for bones that point forward), +Z completes the frame.
-glm::mat3 restFrame(const BoneSpec& s) {
-  const glm::vec3 y = glm::normalize(s.tail - s.head);
-  const glm::vec3 forward = std::abs(y.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
-  const glm::vec3 x = glm::normalize(glm::cross(y, forward));
-  return glm::mat3(x, y, glm::cross(x, y));
-}
-
-Skeleton buildSkeleton(const std::vector<BoneSpec>& specs) {
-  Skeleton skeleton;
-  std::vector<glm::mat3> frames;
-  for (const BoneSpec& s : specs) {
-    Bone bone;
-    bone.name = s.name;
-    bone.parent = skeleton.findBone(s.parent);
-    const glm::mat3 frame = restFrame(s);
-    glm::mat3 parentFrame(1.0f);
-    glm::vec3 parentHead(0.0f);
-    if (bone.parent >= 0) parentFrame = frames[bone.parent], parentHead = specs[bone.parent].head;
-    const glm::mat3 parentFromWorld = glm::transpose(parentFrame);
-    bone.rest.translation = parentFromWorld * (s.head - parentHead);
-    bone.rest.rotation = glm::normalize(glm::quat_cast(parentFromWorld * frame));
-    skeleton.addBone(bone);
-    frames.push_back(frame);
-  }
-  return skeleton;
 }
 
 // ---- Body -------------------------------------------------------------------
@@ -199,7 +168,7 @@ class BodyBuilder {
 
 }  // namespace
 
-Skeleton makeMannequinSkeleton() { return buildSkeleton(allBoneSpecs()); }
+Skeleton makeMannequinSkeleton() { return skeletonFromJoints(allBoneSpecs()); }
 
 ImplicitBody makeMannequinBody(const Skeleton& skeleton) {
   const std::vector<BoneSpec> specs = allBoneSpecs();

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/character/character.h"
+#include "core/character/auto_rig.h"
 #include "core/character/posed_character.h"
 #include "core/skeleton/humanoid_roles.h"
 #include "core/util/error.h"
@@ -70,6 +71,15 @@ glm::vec3 BodyMeasurements::torsoAxisAt(float y) const {
 }
 
 BodyMeasurements measureBody(const Character& character) {
+  if (character.skeleton.boneCount() == 0) {  // a static mesh: measured on its auto-rig
+    Character rigged = character;
+    try {
+      autoRigHumanoid(rigged);
+    } catch (const Error& e) {
+      throw Error("character '" + character.name + "' has no skeleton, and " + e.what());
+    }
+    return measureBody(rigged);
+  }
   const Skeleton& skeleton = character.skeleton;
   RestBody body = restBody(character);
   HumanoidBones roles;

@@ -38,6 +38,8 @@ struct BodyMeasurements {
 // Throws mq::Error naming the character and the missing role when the
 // skeleton lacks one of pelvis, spine, chest, neck, upper arms, forearms,
 // hands, thighs, shins or feet, or when the character does not face +Z.
+// A character without bones (a static mesh) is measured on its auto-rig
+// (core/character/auto_rig.h); the bone names are then the auto-rig's.
 BodyMeasurements measureBody(const Character& character);
 
 }  // namespace mq
