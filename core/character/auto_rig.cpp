@@ -151,20 +151,25 @@ Arm findArm(const Body& body, float side, const std::string& name) {
   const float tipT = glm::dot(axis.tip - axis.centre, axis.direction);
   const float reach = 0.1f * h;  // twice a thick arm's radius
   std::vector<float> radii;
-  float shoulderT = tipT - 0.42f * h;  // the mannequin's arm length, when no torso shows
+  std::vector<glm::vec3> centres;  // of the arm's slabs, tip first
+  Arm arm;
+  arm.tip = axis.tip;
+  arm.shoulder = axis.centre + (tipT - 0.42f * h) * axis.direction;  // the mannequin's arm, when no torso shows
   for (float t = tipT - 0.1f * h; t > tipT - 0.6f * h; t -= kStep * h) {
     std::vector<float> sorted = radii;
     const float typical = radii.size() >= 8 ? median(sorted) : 1e30f;
     const Slab slab = slabAt(body, axis, t, reach, 1.5f * typical);
-    if (slab.radius > 1.8f * typical && std::abs(axis.direction.x) > 0.2f) {
-      shoulderT = (slab.contact.x - axis.centre.x) / axis.direction.x;
+    if (slab.radius > 1.8f * typical && centres.size() >= 8) {
+      // The upper arm's own axis, through its last slabs' centres, carried to the torso's first point.
+      const glm::vec3 a = centres[centres.size() - 8], b = centres.back();
+      const glm::vec3 d = glm::normalize(b - a);
+      const float along = std::abs(d.x) > 0.2f ? (slab.contact.x - b.x) / d.x : 0.0f;
+      arm.shoulder = b + std::max(along, 0.0f) * d;
       break;
     }
     radii.push_back(slab.radius);
+    centres.push_back(centreAcross(body, axis.centre + t * axis.direction, axis.direction, 1.3f * slab.radius));
   }
-  Arm arm;
-  arm.tip = axis.tip;
-  arm.shoulder = axis.centre + shoulderT * axis.direction;
   const glm::vec3 out = glm::normalize(arm.tip - arm.shoulder);
   const float length = glm::length(arm.tip - arm.shoulder);
   arm.elbow = centreAcross(body, arm.shoulder + kElbow * length * out, out, 0.06f * h);
@@ -183,6 +188,21 @@ float crotchHeight(const Body& body) {
     if (onMidline >= 3) return body.y(f);
   }
   return body.y(0.47f);
+}
+
+// The hip joints: at the widest the hips are (the greater trochanters),
+// within a tenth of the height above the crotch; arms are out of reach.
+float hipHeight(const Body& body, float crotchY) {
+  const float h = body.height;
+  float best = crotchY + 0.05f * h, widest = -1.0f;
+  for (float y = crotchY; y < crotchY + 0.1f * h; y += kStep * h) {
+    float lo = 1e30f, hi = -1e30f;
+    for (const glm::vec3& p : body.points)
+      if (std::abs(p.y - y) <= kStep * h && std::abs(p.x - body.midX) < kLegReach * h)
+        lo = std::min(lo, p.x), hi = std::max(hi, p.x);
+    if (hi > lo && hi - lo > widest + 1e-4f * h) widest = hi - lo, best = y;
+  }
+  return best;
 }
 
 // The neck: the narrowest cross-section between the shoulders and the top.
@@ -206,9 +226,10 @@ std::vector<JointSpec> jointsOf(const Body& body, const std::string& name) {
         body, y, [&](const glm::vec3& p) { return std::abs(p.x - body.midX) < 0.08f * h; },
         glm::vec3(body.midX, y, body.midZ));
   };
-  const Arm arms[2] = {findArm(body, 1.0f, name), findArm(body, -1.0f, name)};  // the character's left is +X
+  Arm arms[2] = {findArm(body, 1.0f, name), findArm(body, -1.0f, name)};  // the character's left is +X
   const float shoulderY = 0.5f * (arms[0].shoulder.y + arms[1].shoulder.y);
-  const float hipY = crotchHeight(body) + 0.04f * h;
+  for (Arm& arm : arms) arm.shoulder.z = midline(arm.shoulder.y).z;  // in the torso's plane
+  const float hipY = hipHeight(body, crotchHeight(body));
   const float neckY = neckHeight(body, shoulderY);
   auto alongSpine = [&](float f) { return midline(hipY + f * (shoulderY - hipY)); };
   const glm::vec3 neck = midline(shoulderY + 0.015f * h), headBase = midline(neckY + 0.02f * h);
@@ -265,9 +286,71 @@ float segmentDistance(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b
   return glm::length(p - (a + t * ab));
 }
 
-// Each vertex follows its nearest bone: a start that weight regeneration
-// replaces (it rewrites only meshes that have a skin).
-void bindRigidly(Mesh& mesh, const Skeleton& skeleton, const std::vector<JointSpec>& joints) {
+// The bone each vertex belongs to, by the region it lies in: the head and
+// neck above their joints, an arm beyond its shoulder and near its axis, a
+// leg below the hips on its side, the torso by height (a clavicle at the top
+// corners). Regions, not nearest segments: a short bone (a clavicle) would
+// otherwise take the jaw, and the garments measure each bone's vertices.
+class RegionBinder {
+ public:
+  RegionBinder(const Body& body, const std::vector<JointSpec>& joints) : body_(body), joints_(joints) {}
+
+  int boneOf(const glm::vec3& p) const {
+    const float h = body_.height, x = p.x - body_.midX;
+    const int side = x >= 0.0f ? 0 : 1;
+    const char* s = side == 0 ? "_l" : "_r";
+    if (const int arm = armBone(p, s); arm >= 0) return arm;
+    if (p.y >= joint("head").head.y && std::abs(x) < 0.15f * h) return index("head");
+    if (p.y >= joint("neck").head.y &&
+        std::abs(x) < std::abs(joint(std::string("upperarm") + s).head.x - body_.midX) * 0.6f)
+      return index("neck");
+    const float hipY = std::min(joint("thigh_l").head.y, joint("thigh_r").head.y);
+    if (p.y < hipY - 0.02f * h && std::abs(x) < kLegReach * h) return nearest(p, {"thigh", "shin", "foot", "toes"}, s);
+    const JointSpec& chest = joint("chest");
+    if (p.y >= chest.head.y + 0.6f * (chest.tail.y - chest.head.y) &&
+        std::abs(x) > 0.5f * std::abs(joint(std::string("clavicle") + s).tail.x - body_.midX))
+      return index(std::string("clavicle") + s);
+    if (p.y < joint("spine").head.y) return index("pelvis");
+    return p.y < chest.head.y ? index("spine") : index("chest");
+  }
+
+ private:
+  int index(const std::string& name) const {
+    for (size_t i = 0; i < joints_.size(); ++i)
+      if (joints_[i].name == name) return int(i);
+    throw Error("auto-rig: no joint named " + name);
+  }
+  const JointSpec& joint(const std::string& name) const { return joints_[index(name)]; }
+
+  // The arm bone holding p, or -1 when p is not on that side's arm.
+  int armBone(const glm::vec3& p, const char* s) const {
+    const glm::vec3 shoulder = joint(std::string("upperarm") + s).head, tip = joint(std::string("hand") + s).tail;
+    const glm::vec3 out = glm::normalize(tip - shoulder);
+    const float u = glm::dot(p - shoulder, out);
+    const float side = shoulder.x >= body_.midX ? 1.0f : -1.0f;
+    if (u <= 0.0f || side * (p.x - shoulder.x) < -0.02f * body_.height) return -1;
+    if (segmentDistance(p, shoulder, tip) > 0.06f * body_.height) return -1;
+    const float elbow = glm::dot(joint(std::string("forearm") + s).head - shoulder, out);
+    const float wrist = glm::dot(joint(std::string("hand") + s).head - shoulder, out);
+    return index(std::string(u < elbow ? "upperarm" : u < wrist ? "forearm" : "hand") + s);
+  }
+
+  int nearest(const glm::vec3& p, std::initializer_list<const char*> names, const char* s) const {
+    int best = -1;
+    float bestDistance = 1e30f;
+    for (const char* name : names) {
+      const JointSpec& j = joint(std::string(name) + s);
+      const float d = segmentDistance(p, j.head, j.tail);
+      if (d < bestDistance) bestDistance = d, best = index(std::string(name) + s);
+    }
+    return best;
+  }
+
+  const Body& body_;
+  const std::vector<JointSpec>& joints_;
+};
+
+void bindByRegions(Mesh& mesh, const Skeleton& skeleton, const RegionBinder& regions) {
   const size_t n = mesh.vertexCount();
   SkinBinding& skin = mesh.skin;
   skin = SkinBinding();
@@ -276,15 +359,7 @@ void bindRigidly(Mesh& mesh, const Skeleton& skeleton, const std::vector<JointSp
   for (int b = 0; b < skeleton.boneCount(); ++b) skin.jointBones.push_back(b);
   skin.weights.assign(n, 1.0f);
   skin.joints.resize(n);
-  for (size_t v = 0; v < n; ++v) {
-    int best = 0;
-    float bestDistance = 1e30f;
-    for (size_t b = 0; b < joints.size(); ++b) {
-      const float d = segmentDistance(mesh.position(v), joints[b].head, joints[b].tail);
-      if (d < bestDistance) bestDistance = d, best = int(b);
-    }
-    skin.joints[v] = uint16_t(best);
-  }
+  for (size_t v = 0; v < n; ++v) skin.joints[v] = uint16_t(regions.boneOf(mesh.position(v)));
 }
 
 // Static meshes hold their placement in boneFromMesh: the skin wants world space.
@@ -305,7 +380,7 @@ void bakePlacement(Mesh& mesh) {
 
 }  // namespace
 
-void autoRigHumanoid(Character& character, ThreadPool* pool) {
+void autoRigHumanoid(Character& character, bool blend, ThreadPool* pool) {
   if (character.skeleton.boneCount() > 0)
     throw Error("'" + character.name + "' already has a skeleton (" + std::to_string(character.skeleton.boneCount()) +
                 " bones)");
@@ -313,14 +388,16 @@ void autoRigHumanoid(Character& character, ThreadPool* pool) {
   const Body body = measureStance(character);
   const std::vector<JointSpec> joints = jointsOf(body, character.name);
   character.skeleton = skeletonFromJoints(joints);
+  const RegionBinder regions(body, joints);
   for (Mesh& mesh : character.meshes) {
     bakePlacement(mesh);
     mesh.attachBone = -1;
-    bindRigidly(mesh, character.skeleton, joints);
+    bindByRegions(mesh, character.skeleton, regions);
     mesh.dropSkinningBindings();
   }
-  WeightSettings settings;
-  settings.regenerate = true;
+  if (!blend) return;
+  WeightSettings settings;  // blended across the joints, as a skin to pose
+  settings.smooth = true;
   regenerateWeights(character, settings, pool);
 }
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/character/character.h"
 #include "core/character/auto_rig.h"
+#include "core/character/character.h"
 #include "core/character/posed_character.h"
 #include "core/skeleton/humanoid_roles.h"
 #include "core/util/error.h"
@@ -74,7 +74,7 @@ BodyMeasurements measureBody(const Character& character) {
   if (character.skeleton.boneCount() == 0) {  // a static mesh: measured on its auto-rig
     Character rigged = character;
     try {
-      autoRigHumanoid(rigged);
+      autoRigHumanoid(rigged, /*blend=*/false);  // each vertex's region is what is measured
     } catch (const Error& e) {
       throw Error("character '" + character.name + "' has no skeleton, and " + e.what());
     }

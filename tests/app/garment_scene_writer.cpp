@@ -1,5 +1,5 @@
 // mannequin_garment_scene CHARACTER TYPE CLIP OUT.json [NAME=VALUE ...]:
-// writes a scene document that plays CLIP on CHARACTER ("default" or a
+// writes a scene document that plays CLIP (rest: none) on CHARACTER ("default" or a
 // character file) wearing the built-in garment TYPE made for it
 // (makeParametricGarment with the given measurements, 3 cm edges, cotton) with the solver settings of resources/scenes/
 // garment_tshirt_walk.json, so `mannequin-cli simulate` can run a built-in
@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
     garment.targetEdgeLength = 0.03f;
     mq::SceneDocument document;
     document.character = characterPath;
-    document.clip = argv[3];
+    document.clip = std::string(argv[3]) == "rest" ? "" : argv[3];  // rest: the rest pose
     document.garments = nlohmann::json::array({mq::garmentToJson(garment)});
     document.cloth = {{"integrator", "implicit_euler"}, {"self_collisions", false}, {"thickness", 0.004},
                       {"stretch_limit", "position"},    {"max_stretch", 1.1},       {"fps", 30},
