@@ -146,7 +146,8 @@ int exportTake(const Args& args, LoadedScene& scene, const std::string& path, co
 int runExport(const std::vector<std::string>& argv) {
   const Args args(argv);
   args.allowOnly({"--out", "--clip", "--fps", "--skinning", "--helper-bones", "--regenerate-weights",
-                  "--smooth-weights", "--scale", "--rigged", "--with", "--frames", "--hair-strands", "--point-cache"});
+                  "--smooth-weights", "--scale", "--auto-rig", "--rigged", "--with", "--frames", "--hair-strands",
+                  "--point-cache"});
   if (args.positional().size() != 1) throw Error("export needs exactly one FILE");
   const std::string out = args.option("--out");
   if ((out.empty() && !args.has("--with")) || (!out.empty() && !isMeshExportPath(out)))
@@ -155,7 +156,7 @@ int runExport(const std::vector<std::string>& argv) {
     throw Error("--point-cache writes simulated surfaces: it goes with --with garments,hair");
   LoadedScene scene = openScene(args.positional()[0]);
   printMotionMatch(scene);
-  applyScaleOption(args, scene);
+  applyCharacterOptions(args, scene);
   applySkinningOption(args, scene);
   if (args.has("--with")) return exportTake(args, scene, args.positional()[0], out);  // a sheet needs no character
   if (scene.character.meshes.empty())
@@ -203,7 +204,8 @@ int runExport(const std::vector<std::string>& argv) {
 static Registration reg(
     {"export",
      "FILE --out OUT.obj|.ply|.gltf|.glb [--clip NAME|INDEX --fps F | --clip rest] [--skinning lbs|dqs|cones]\n"
-     "         [--helper-bones] [--regenerate-weights] [--smooth-weights] [--scale S] [--rigged [--fps F]]\n"
+     "         [--helper-bones] [--regenerate-weights] [--smooth-weights] [--scale S] [--auto-rig] [--rigged [--fps "
+     "F]]\n"
      "         [--with garments,hair [--clip C] [--frames N] [--fps F] [--hair-strands guides|all|N]\n"
      "          [--point-cache OUT.pc2|OUT.mdd]]",
      "write the rest pose, or every frame of a clip (OUT_0000.obj ...), as meshes; --rigged: the\n"

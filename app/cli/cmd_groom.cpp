@@ -55,12 +55,12 @@ int countOption(const Args& args, const std::string& name, double fallback, doub
 
 int runGroom(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--strands", "--points", "--style", "--out", "--stats-json", "--seed", "--scale"});
+  args.allowOnly({"--strands", "--points", "--style", "--out", "--stats-json", "--seed", "--scale", "--auto-rig"});
   if (args.positional().size() != 1) throw Error("groom needs exactly one SCENE (or 'default')");
   const auto start = std::chrono::steady_clock::now();
   LoadedScene scene = openScene(args.positional()[0]);
   printMotionMatch(scene);
-  applyScaleOption(args, scene);
+  applyCharacterOptions(args, scene);
   HairSection section = hairSectionOf(scene);
   if (args.has("--style")) {
     section.style = builtinHairStyle(args.option("--style"));

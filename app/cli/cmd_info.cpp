@@ -120,11 +120,11 @@ void printText(const Character& c, std::ostream& out) {
 
 int runInfo(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--json", "--scale"});
+  args.allowOnly({"--json", "--scale", "--auto-rig"});
   if (args.positional().size() != 1) throw Error("info needs exactly one FILE");
   LoadedScene scene = openScene(args.positional()[0]);
   printMotionMatch(scene);
-  applyScaleOption(args, scene);
+  applyCharacterOptions(args, scene);
   for (const std::string& warning : loadNotices(scene)) std::cerr << "warning: " << warning << "\n";
   const std::optional<nlohmann::json> bake =
       scene.documentPath.empty() ? std::nullopt : describeSavedBake(scene.documentPath);
@@ -142,7 +142,7 @@ int runInfo(const std::vector<std::string>& argv) {
 }
 
 static Registration reg(
-    {"info", "FILE [--json] [--scale S]",
+    {"info", "FILE [--json] [--scale S] [--auto-rig]",
      "meshes (vertices, triangles), bones (name, parent), max influences, materials, clips (name, duration),\n"
      "and the garment bake the editor saved beside a scene document (NAME.mqbake)",
      runInfo});

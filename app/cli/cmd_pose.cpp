@@ -44,7 +44,7 @@ void writeJoints(const Skeleton& skeleton, const std::vector<glm::mat4>& worldFr
 int runPose(const std::vector<std::string>& argv) {
   const Args args(argv);
   args.allowOnly({"--time", "--clip", "--motion", "--map", "--in-place", "--out", "--skinning", "--helper-bones",
-                  "--regenerate-weights", "--smooth-weights", "--joints-out", "--scale"});
+                  "--regenerate-weights", "--smooth-weights", "--joints-out", "--scale", "--auto-rig"});
   if (args.positional().size() != 1) throw Error("pose needs exactly one FILE");
   const std::string out = args.option("--out");
   if (out.empty()) throw Error("pose needs --out OUT.obj, .ply, .gltf or .glb");
@@ -52,7 +52,7 @@ int runPose(const std::vector<std::string>& argv) {
 
   LoadedScene scene = openScene(args.positional()[0]);
   printMotionMatch(scene);
-  applyScaleOption(args, scene);
+  applyCharacterOptions(args, scene);
   applySkinningOption(args, scene);
   if (scene.character.meshes.empty())
     throw Error("'" + scene.character.name +
@@ -77,7 +77,7 @@ static Registration reg({"pose",
                          "FILE --time T [--clip NAME|INDEX|rest] [--motion BVH [--map MAP] [--in-place]]\n"
                          "         --out OUT.obj|.ply|.gltf|.glb [--skinning lbs|dqs|cones] [--helper-bones] "
                          "[--regenerate-weights] [--smooth-weights]\n"
-                         "         [--scale S] [--joints-out JOINTS.json]",
+                         "         [--scale S] [--auto-rig] [--joints-out JOINTS.json]",
                          "write the posed mesh at time T in world space (OBJ, PLY, glTF or GLB)", runPose,
                          "--motion applies a BVH to the character: its joints drive the bones of the same name,\n"
                          "then of the same humanoid role; --map MAP pairs them by a file of 'bvh_joint bone' lines\n"

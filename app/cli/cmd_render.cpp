@@ -52,6 +52,7 @@ int runRender(const std::vector<std::string>& argv) {
                   "--skeleton",
                   "--look",
                   "--scale",
+                  "--auto-rig",
                   "--hair",
                   "--hair-shadow",
                   "--skinning",
@@ -74,7 +75,7 @@ int runRender(const std::vector<std::string>& argv) {
 
   LoadedScene scene = openScene(file);
   printMotionMatch(scene);
-  applyScaleOption(args, scene);
+  applyCharacterOptions(args, scene);
   applySkinningOption(args, scene);
   if (scene.character.skeleton.boneCount() == 0 && scene.character.meshes.empty())
     throw FileError(file, "has no character to render");
@@ -126,7 +127,7 @@ Registration reg({"render",
                   "FILE --out OUT.png [--time T] [--clip NAME|INDEX|rest] [--size WxH] [--skeleton]\n"
                   "         [--look auto|skin|mannequin|plain] [--hair auto|simulate|rigid|off]\n"
                   "         [--hair-shadow count|maps] [--skinning lbs|dqs|cones] [--helper-bones] "
-                  "[--regenerate-weights] [--smooth-weights] [--scale S]\n"
+                  "[--regenerate-weights] [--smooth-weights] [--scale S] [--auto-rig]\n"
                   "         [--skin-preset skin1|skin2|light|medium|tan|dark]\n"
                   "         [--hair-shader kajiya-kay|physical] [--hair-pigment black|brown|blond|red|grey]\n"
                   "         [--melanin M] [--pheomelanin P] [--hair-roughness R] [--weights BONE] [--cones]",

@@ -128,7 +128,7 @@ json phaseProfile(const RunResult& r, const SceneCloth& cloth, int frames) {
 int runSimulate(const std::vector<std::string>& argv) {
   const cli::Args args(argv);
   args.allowOnly({"--frames", "--fps", "--stats-json", "--export-dir", "--export-format", "--layers", "--skinning",
-                  "--helper-bones", "--regenerate-weights", "--smooth-weights", "--scale", "--clip"});
+                  "--helper-bones", "--regenerate-weights", "--smooth-weights", "--scale", "--auto-rig", "--clip"});
   const std::string format = args.option("--export-format", "obj");
   if (format != "obj" && format != "pc2") throw Error("--export-format expects obj or pc2");
   const std::string layers = args.option("--layers", "on");
@@ -145,7 +145,7 @@ int runSimulate(const std::vector<std::string>& argv) {
     throw FileError(path, "not a valid scene document: " + jsonProblem(e));
   }
   cli::printMotionMatch(scene);
-  applyScaleOption(args, scene);
+  applyCharacterOptions(args, scene);
   applySkinningOption(args, scene);
   scene.clipIndex = cli::clipOption(args, scene, path);
   const json& garmentsSection = scene.document.garments;
@@ -234,7 +234,7 @@ const cli::Registration reg(
      "SCENE --frames N [--fps F] [--clip NAME|INDEX|rest] [--stats-json OUT] [--export-dir DIR [--export-format "
      "obj|pc2]]\n"
      "         [--layers on|off] [--skinning lbs|dqs|cones] [--helper-bones] [--regenerate-weights] [--smooth-weights] "
-     "[--scale S]",
+     "[--scale S] [--auto-rig]",
      "run the scene's cloth (sheet and garments) and hair headless; stats as JSON, frames as OBJ/PLY\n"
      "(one file per frame), or with --export-format pc2 one Point Cache 2 file per cloth and its mesh",
      runSimulate});

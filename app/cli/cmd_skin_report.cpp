@@ -84,13 +84,13 @@ void printTable(const std::string& file, const SkinReport& r, std::ostream& out)
 
 int runSkinReport(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--skinning", "--helper-bones", "--regenerate-weights", "--smooth-weights", "--scale", "--json",
-                  "--no-poses", "--no-clips", "--no-intersections", "--clip-fps", "--clip"});
+  args.allowOnly({"--skinning", "--helper-bones", "--regenerate-weights", "--smooth-weights", "--scale", "--auto-rig",
+                  "--json", "--no-poses", "--no-clips", "--no-intersections", "--clip-fps", "--clip"});
   if (args.positional().size() != 1) throw Error("skin-report needs exactly one FILE");
   const std::string file = args.positional()[0];
   LoadedScene scene = openScene(file);
   printMotionMatch(scene);
-  applyScaleOption(args, scene);
+  applyCharacterOptions(args, scene);
   applySkinningOption(args, scene);
   if (scene.character.meshes.empty()) throw Error("'" + file + "' has no skin to measure");
   SkinReportOptions options;
@@ -114,7 +114,7 @@ int runSkinReport(const std::vector<std::string>& argv) {
 
 static Registration reg({"skin-report",
                          "FILE [--skinning lbs|dqs|cones] [--helper-bones] [--regenerate-weights] [--smooth-weights] "
-                         "[--scale S] [--json] [--no-poses] [--no-clips] [--no-intersections]\n"
+                         "[--scale S] [--auto-rig] [--json] [--no-poses] [--no-clips] [--no-intersections]\n"
                          "         [--clip-fps F] [--clip NAME|INDEX|rest]",
                          "skin metrics (outer section M1, twist section M2, local volume M3, self-intersections M4) "
                          "on a humanoid's test poses and over each clip",

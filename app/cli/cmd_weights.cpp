@@ -36,14 +36,14 @@ WeightSettings settingsFrom(const Args& args, WeightSettings settings) {
 int runWeights(const std::vector<std::string>& argv) {
   const Args args(argv);
   args.allowOnly({"--out", "--regenerate", "--smooth", "--helper-bones", "--transition", "--axial-weight", "--passes",
-                  "--fps", "--scale"});
+                  "--fps", "--scale", "--auto-rig"});
   if (args.positional().size() != 1) throw Error("weights needs exactly one FILE");
   const std::string out = args.option("--out");
   const bool toScene = isSceneDocumentPath(out);
   if (out.empty() || !(toScene || isRiggedExportPath(out)))
     throw Error("weights needs --out OUT.glb, OUT.gltf (a rigged character) or OUT.mqscene (a scene document)");
   LoadedScene scene = openScene(args.positional()[0]);
-  applyScaleOption(args, scene);
+  applyCharacterOptions(args, scene);
   if (scene.character.meshes.empty() || scene.character.maxInfluences() == 0)
     throw Error("'" + scene.character.name + "' has no skinned mesh whose weights could be rebuilt");
   const WeightSettings settings = settingsFrom(args, scene.document.weights);
@@ -74,7 +74,7 @@ int runWeights(const std::vector<std::string>& argv) {
 static Registration reg(
     {"weights",
      "FILE [--regenerate] [--smooth] [--helper-bones] [--transition L] [--axial-weight A] [--passes N]\n"
-     "         [--scale S] --out OUT.glb|OUT.gltf|OUT.mqscene [--fps F]",
+     "         [--scale S] [--auto-rig] --out OUT.glb|OUT.gltf|OUT.mqscene [--fps F]",
      "rebuild the skin weights (the survey's regeneration and smoothing) and write them as a rigged glTF\n"
      "or into a scene document",
      runWeights,

@@ -55,9 +55,12 @@ class Args {
 void applySkinningOption(const Args& args, LoadedScene& scene);
 // " with N helper bones" for a character that has them, else "" (for summaries).
 std::string withHelperBones(const Character& character);
-// --scale S: the character file's units to metres (0.01 for centimetres).
-// Throws mq::Error for a scale that is not a positive number.
-void applyScaleOption(const Args& args, LoadedScene& scene);
+// --scale S: the character file's units to metres (0.01 for centimetres);
+// --auto-rig: a mesh without bones gets a humanoid skeleton and skin
+// (core/character/auto_rig.h), to pose and to play motions on. Throws
+// mq::Error for a scale that is not a positive number or a mesh the auto-rig
+// refuses.
+void applyCharacterOptions(const Args& args, LoadedScene& scene);
 
 // --clip NAME|INDEX|rest: the clip to play, -1 for rest (the rest pose with
 // the document's pose edits); without it, the scene's clip (-1 when the

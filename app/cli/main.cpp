@@ -4,6 +4,8 @@
 #include <iostream>
 
 #include "app/cli/command.h"
+
+#include "core/character/auto_rig.h"
 #include "core/character/posed_character.h"
 #include "core/io/json_fields.h"
 #include "core/scene/open_scene.h"
@@ -37,7 +39,8 @@ Args::Args(const std::vector<std::string>& args) {
                                                  "--smooth-weights",
                                                  "--regenerate",
                                                  "--smooth",
-                                                 "--cones"};
+                                                 "--cones",
+                                                 "--auto-rig"};
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a.rfind("--", 0) == 0 && a.size() > 2) {
@@ -110,12 +113,23 @@ std::string withHelperBones(const Character& character) {
   return " with " + std::to_string(character.helperBones.size()) + " helper bones";
 }
 
-void applyScaleOption(const Args& args, LoadedScene& scene) {
-  if (!args.has("--scale")) return;
-  const double factor = args.number("--scale", 1.0);
-  if (!(factor > 0.0) || !std::isfinite(factor) || factor > 1e4) throw Error("--scale expects a positive number");
-  scene.character.scaleUniformly(static_cast<float>(factor));
-  scene.document.scale *= static_cast<float>(factor);
+void applyCharacterOptions(const Args& args, LoadedScene& scene) {
+  if (args.has("--scale")) {
+    const double factor = args.number("--scale", 1.0);
+    if (!(factor > 0.0) || !std::isfinite(factor) || factor > 1e4) throw Error("--scale expects a positive number");
+    scene.character.scaleUniformly(static_cast<float>(factor));
+    scene.document.scale *= static_cast<float>(factor);
+  }
+  if (args.has("--auto-rig") && !scene.document.autoRig) {
+    try {
+      autoRigHumanoid(scene.character, true, &ThreadPool::shared());
+    } catch (const Error& e) {
+      throw Error(std::string("--auto-rig: ") + e.what());
+    }
+    scene.document.autoRig = true;
+    scene.fileSkins.clear();
+    for (const Mesh& mesh : scene.character.meshes) scene.fileSkins.push_back(mesh.skin);
+  }
   prepareSkinning(scene.character);
 }
 

@@ -1,5 +1,6 @@
 #include "core/scene/open_scene.h"
 
+#include "core/character/auto_rig.h"
 #include "core/character/default_mannequin.h"
 #include "core/character/posed_character.h"
 #include "core/io/bvh_import.h"
@@ -39,6 +40,13 @@ LoadedScene resolveSceneDocument(const SceneDocument& document, const std::strin
     scene.character = importCharacter(resolveDocumentPath(documentPath, document.character));
   }
   if (document.scale != 1.0f) scene.character.scaleUniformly(document.scale);
+  if (document.autoRig) {
+    try {
+      autoRigHumanoid(scene.character, true, &ThreadPool::shared());
+    } catch (const Error& e) {
+      throw Error(std::string("auto_rig: ") + e.what());
+    }
+  }
   if (!document.motionFile.empty()) {
     MotionOptions options;
     if (!document.motionMapFile.empty())

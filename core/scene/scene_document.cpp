@@ -125,6 +125,10 @@ SceneDocument fromJson(const json& root) {
     if (!std::isfinite(doc.scale) || doc.scale <= 0.0f || doc.scale > 1e4f)
       throw Error("\"scale\" must be positive and at most 10000");
   }
+  if (root.contains("auto_rig")) {
+    if (!root["auto_rig"].is_boolean()) throw Error("\"auto_rig\" must be true or false");
+    doc.autoRig = root["auto_rig"].get<bool>();
+  }
   if (root.contains("materials")) {
     if (!root["materials"].is_object()) throw Error("\"materials\" must map material names to changes");
     for (const auto& [name, changes] : root["materials"].items())
@@ -183,6 +187,7 @@ json toJson(const SceneDocument& doc) {
   if (doc.helperBones) root["skinning"]["helper_bones"] = true;
   if (doc.weights.active()) root["skinning"]["weights"] = toJson(doc.weights);
   if (doc.scale != 1.0f) root["scale"] = doc.scale;
+  if (doc.autoRig) root["auto_rig"] = true;
   json materials = json::object();
   for (const auto& [name, changes] : doc.materials)
     if (!changes.empty()) materials[name] = changes.toJson();

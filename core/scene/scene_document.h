@@ -16,6 +16,7 @@
 //                  "weights": {"regenerate": bool, "smooth": bool, ...}},
 //                                      (weight_regeneration.h; absent: the file's)
 //     "scale": 0.01,   the character file's units to metres (absent: 1)
+//     "auto_rig": true,   give a mesh without bones a humanoid skeleton (auto_rig.h; absent: false)
 //     "materials": {"<name>": {...}},   user changes to the file's materials
 //                                       (core/material/material_override.h)
 //     "hair": {...}, "garments": [...], "cloth": {...}, "colliders": [...] }
@@ -61,6 +62,7 @@ struct SceneDocument {
   bool helperBones = false;                           // add helper bones at the joints (helper_bones.h) on open
   WeightSettings weights;                             // regenerate or smooth the file's weights on open
   float scale = 1.0f;                                 // applied to the character at load (its file's units to metres)
+  bool autoRig = false;                               // a mesh without bones gets a humanoid skeleton on open
   std::map<std::string, MaterialOverride> materials;  // by material name
   // Sections owned by other modules (null when absent).
   nlohmann::json hair;

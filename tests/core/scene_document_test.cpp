@@ -33,6 +33,7 @@ TEST(SceneDocument, RoundTripKeepsEverything) {
   doc.view.cameraPosition = {1, 2, 3};
   doc.hair = {{"style", "bob"}};
   doc.helperBones = true;
+  doc.autoRig = true;
   const fs::path path = scratchDir() / "round.mqscene";
   saveSceneDocument(doc, path.string());
   const SceneDocument back = loadSceneDocument(path.string());
@@ -48,6 +49,7 @@ TEST(SceneDocument, RoundTripKeepsEverything) {
   EXPECT_EQ(back.hair["style"], "bob");
   EXPECT_TRUE(back.garments.is_null());
   EXPECT_TRUE(back.helperBones);
+  EXPECT_TRUE(back.autoRig);
 }
 
 TEST(SceneDocument, NullCharacterMeansNone) {
@@ -84,6 +86,7 @@ TEST(SceneDocument, BadDocumentsFailClearly) {
   expectFileError(R"({"format":"mannequin-scene","version":1,"animation":{"time":"soon"}})", "number");
   expectFileError(R"({"format":"mannequin-scene","version":1,"skinning":{"helper_bones":"yes"}})",
                   "skinning.helper_bones must be true or false");
+  expectFileError(R"({"format":"mannequin-scene","version":1,"auto_rig":1})", "\"auto_rig\" must be true or false");
   expectFileError(R"({"format":"mannequin-scene","version":1,"motion":{"file":"a.bvh","inPlace":"yes"}})",
                   "\"motion\".\"inPlace\" must be true or false");
 }

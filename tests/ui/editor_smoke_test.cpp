@@ -739,6 +739,40 @@ class EditorSmokeTest : public QObject {
     QCOMPARE(window_->sceneView()->sectionConeCount(), 0);
   }
 
+  // A static body (the mannequin's surface as an OBJ) gets a skeleton from
+  // the Auto-rig box: one undo step, saved with the scene, and gone again on undo.
+  void autoRigGivesAStaticBodyBones() {
+    QTemporaryDir dir;
+    const QString obj = dir.filePath("body.obj");
+    QString error;
+    QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));
+    QVERIFY2(window_->exportPosedMesh(obj, &error), qPrintable(error));
+    QVERIFY2(window_->openFileNow(obj, &error), qPrintable(error));
+    QCOMPARE(doc()->character().skeleton.boneCount(), 0);
+    doc()->selectBone(-1);  // the character page
+    QCheckBox* box = window_->properties()->autoRigBox();
+    QVERIFY(box->isVisibleTo(window_->properties()));
+    QVERIFY(!box->isChecked());
+    const int commands = doc()->undoStack()->index();
+    box->click();
+    QCOMPARE(doc()->character().skeleton.boneCount(), 21);
+    QVERIFY(doc()->autoRigged() && box->isChecked());
+    QCOMPARE(doc()->undoStack()->index(), commands + 1);
+    QVERIFY(doc()->character().maxInfluences() > 1);  // blended across the joints
+    const QString scene = dir.filePath("rigged.mqscene");
+    QVERIFY2(window_->saveDocument(scene, &error), qPrintable(error));
+    doc()->undoStack()->undo();
+    QCOMPARE(doc()->character().skeleton.boneCount(), 0);
+    QVERIFY(!box->isChecked());
+    doc()->undoStack()->redo();
+    QCOMPARE(doc()->character().skeleton.boneCount(), 21);
+    QVERIFY2(window_->openFileNow(scene, &error), qPrintable(error));
+    QCOMPARE(doc()->character().skeleton.boneCount(), 21);  // "auto_rig": true
+    QVERIFY(doc()->autoRigged());
+    QVERIFY2(window_->openFileNow("default", &error), qPrintable(error));
+    QVERIFY(!window_->properties()->autoRigBox()->isVisibleTo(window_->properties()));  // it has its bones
+  }
+
   void exportWritesTheMesh() {
     QTemporaryDir dir;
     const QString path = dir.filePath("posed.obj");

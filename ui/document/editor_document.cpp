@@ -5,8 +5,10 @@
 #include <QLocale>
 #include <QUndoStack>
 
+#include "core/character/auto_rig.h"
 #include "core/character/posed_character.h"
 #include "core/skinning/section_cones.h"
+#include "core/util/error.h"
 #include "core/util/thread_pool.h"
 
 namespace mq::ui {
@@ -130,6 +132,48 @@ std::string EditorDocument::setHelperBones(bool on) {
     if (selectedBone_ >= bones) selectedBone_ = -1;
   }
   scene_.helperBones = on;
+  prepareSkinning(character_);
+  evaluatePose();
+  emit skeletonChanged();
+  emit selectionChanged();
+  emit poseChanged();
+  emit documentChanged();
+  return {};
+}
+
+std::string EditorDocument::setAutoRig(bool on) {
+  if (on == scene_.autoRig) return {};
+  if (on) {
+    if (character_.skeleton.boneCount() > 0) return "the character has its own skeleton";
+    Character rigged = character_;
+    try {
+      autoRigHumanoid(rigged, true, &ThreadPool::shared());
+    } catch (const Error& e) {
+      return e.what();
+    }
+    unrigged_ = std::move(character_);
+    character_ = std::move(rigged);
+  } else {
+    if (unrigged_) {
+      character_ = std::move(*unrigged_);
+      unrigged_.reset();
+    } else {  // rigged when the document opened: the mesh keeps its place, the bones go
+      character_.skeleton = Skeleton();
+      character_.helperBones.clear();
+      character_.skinsBeforeHelpers.clear();
+      for (Mesh& mesh : character_.meshes) mesh.skin = SkinBinding(), mesh.dropSkinningBindings();
+    }
+    character_.clips.clear();  // their channels drive bones that are gone
+    clipIndex_ = -1;
+    emit clipChanged(clipIndex_);
+  }
+  scene_.autoRig = on;
+  scene_.helperBones = false;
+  scene_.weights = WeightSettings();
+  edits_ = PoseEdits();
+  fileSkins_.clear();
+  for (const Mesh& mesh : character_.meshes) fileSkins_.push_back(mesh.skin);
+  selectedBone_ = -1;
   prepareSkinning(character_);
   evaluatePose();
   emit skeletonChanged();

@@ -88,6 +88,12 @@ class EditorDocument : public QObject {
   // returns why; removing gives the weights back.
   bool helperBones() const { return !character_.helperBones.empty(); }
   std::string setHelperBones(bool on);
+  // A mesh without bones given a humanoid skeleton (core/character/auto_rig.h;
+  // saved as "auto_rig"); off, the mesh goes back to no bones, and the clips
+  // and pose edits made on the rig go with it. Returns why it cannot (the
+  // mesh has bones of its own, or is not a standing person).
+  bool autoRigged() const { return scene_.autoRig; }
+  std::string setAutoRig(bool on);
   // Rebuilt skin weights (weight_regeneration.h), saved in the document;
   // inactive settings give the file's weights back. `callbacks` report the
   // rebuild's progress and may cancel it: false then, and nothing changed.
@@ -164,6 +170,7 @@ class EditorDocument : public QObject {
   int selectedMaterial_ = -1;
   std::vector<Material> fileMaterials_;
   std::vector<SkinBinding> fileSkins_;
+  std::optional<Character> unrigged_;  // the mesh before the auto-rig, when the editor rigged it
   WeightReport weightReport_;
   bool unsavedSectionChanges_ = false;  // changes outside the undo stack
   QUndoStack* undoStack_ = nullptr;

@@ -22,6 +22,7 @@
 #include "core/skinning/skin_metrics.h"
 #include "ui/document/editor_document.h"
 #include "ui/document/pose_commands.h"
+#include "ui/document/snapshot_command.h"
 #include "ui/jobs/step_progress.h"
 #include "ui/panels/material_page.h"
 
@@ -113,6 +114,23 @@ QWidget* PropertiesPanel::makeCharacterPage() {
     if (on != document_->helperBones()) document_->undoStack()->push(new SetHelperBonesCommand(document_, on));
   });
   form->addRow(QString(), helperBones_);
+  autoRig_ = new QCheckBox(tr("Auto-rig"));
+  autoRig_->setToolTip(
+      tr("Give a mesh without bones (an OBJ, PLY or STL body) a humanoid skeleton placed from its "
+         "shape, to pose it and play motions on it. It must stand upright, face +Z and hold its "
+         "arms away from the body."));
+  connect(autoRig_, &QCheckBox::clicked, this, [this](bool on) {
+    const std::string refusal = document_->setAutoRig(on);
+    if (!refusal.empty()) {
+      autoRig_->setChecked(!on);
+      autoRig_->setToolTip(QString::fromStdString(refusal));
+      return;
+    }
+    EditorDocument* document = document_;
+    document_->undoStack()->push(new SnapshotCommand<bool>([document](const bool& rig) { document->setAutoRig(rig); },
+                                                           !on, on, on ? tr("Auto-rig") : tr("Remove the auto-rig")));
+  });
+  form->addRow(QString(), autoRig_);
   form->addRow(tr("Weights"), makeWeightsRow());
   crossings_ = new QLabel(tr("-"));
   crossings_->setToolTip(
@@ -177,6 +195,8 @@ void PropertiesPanel::showCharacter() {
   characterEdits_->setText(QString::number(document_->poseEdits().rotations.size()));
   skinning_->setCurrentIndex(skinning_->findData(int(document_->skinning())));
   helperBones_->setChecked(document_->helperBones());
+  autoRig_->setChecked(document_->autoRigged());
+  autoRig_->setVisible(document_->autoRigged() || c.skeleton.boneCount() == 0);
   regenerateWeights_->setChecked(document_->weightSettings().regenerate);
   smoothWeights_->setChecked(document_->weightSettings().smooth);
   const WeightReport& report = document_->weightReport();

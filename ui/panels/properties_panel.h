@@ -34,6 +34,7 @@ class PropertiesPanel : public QWidget {
   QPushButton* resetButton() const { return resetBone_; }
   QComboBox* skinningBox() const { return skinning_; }
   QCheckBox* helperBonesBox() const { return helperBones_; }
+  QCheckBox* autoRigBox() const { return autoRig_; }
   QCheckBox* regenerateWeightsBox() const { return regenerateWeights_; }
   QCheckBox* smoothWeightsBox() const { return smoothWeights_; }
   QLabel* weightsLabel() const { return weightsReport_; }
@@ -73,6 +74,7 @@ class PropertiesPanel : public QWidget {
   QLabel* characterEdits_ = nullptr;
   QComboBox* skinning_ = nullptr;
   QCheckBox* helperBones_ = nullptr;
+  QCheckBox* autoRig_ = nullptr;
   QCheckBox* regenerateWeights_ = nullptr;
   QCheckBox* smoothWeights_ = nullptr;
   QLabel* weightsReport_ = nullptr;
