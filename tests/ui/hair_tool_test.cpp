@@ -558,8 +558,11 @@ class HairToolTest : public QObject {
         face = {body[k], body[k + 1], body[k + 2]};
     panel()->brushRadiusBox()->setValue(3.0);
     QCOMPARE(tool_->brushRadius(), 0.03f);
-    panel()->scalpPaintButton()->click();
+    // The Painted region turns the brush on (one undo step: the same faces as a list).
+    panel()->scalpModeCombo()->setCurrentIndex(HairPanel::ScalpPainted);
+    waitForHair();
     QVERIFY(tool_->paintingScalp());
+    QVERIFY(panel()->scalpPaintButton()->isVisibleTo(panel()) && panel()->scalpPaintButton()->isChecked());
     QWidget* viewport = window_->viewport();
     auto stroke = [&](const glm::vec3& at, Qt::KeyboardModifiers modifiers) {
       const QPoint p = toWidget(at);
@@ -575,6 +578,7 @@ class HairToolTest : public QObject {
     };
     const float areaBefore = tool_->scalpArea();
     const int commands = doc()->undoStack()->index();
+    QCOMPARE(tool_->scalp().kind, ScalpRegion::Kind::Faces);
     stroke(top, Qt::ControlModifier);
     QCOMPARE(doc()->undoStack()->index(), commands + 1);
     QCOMPARE(tool_->scalp().kind, ScalpRegion::Kind::Faces);
@@ -598,6 +602,9 @@ class HairToolTest : public QObject {
     QCOMPARE(tool_->scalpArea(), areaBefore);
     panel()->scalpPaintButton()->click();
     QVERIFY(!tool_->paintingScalp());
+    panel()->scalpModeCombo()->setCurrentIndex(HairPanel::ScalpTagged);  // the brush goes with the region
+    waitForHair();
+    QVERIFY(!panel()->scalpPaintButton()->isVisibleTo(panel()));
   }
 };
 

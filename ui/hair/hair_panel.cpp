@@ -378,7 +378,9 @@ QWidget* HairPanel::makeScalpGroup() {
   brushRadius_->setValue(tool_->brushRadius() * 100.0);
   brushRadius_->setToolTip(
       tr("The brush's radius: faces whose centre is this close to the cursor's point are painted"));
-  auto* brushRow = new QHBoxLayout;
+  brush_ = new QWidget;
+  auto* brushRow = new QHBoxLayout(brush_);
+  brushRow->setContentsMargins(0, 0, 0, 0);
   brushRow->addWidget(scalpPaint_);
   brushRow->addWidget(brushRadius_);
   scalpStatus_ = new QLabel;
@@ -387,7 +389,9 @@ QWidget* HairPanel::makeScalpGroup() {
   form->addRow(tr("Axis"), scalpAxisPreset_);
   form->addRow(QString(), axisRow);
   form->addRow(tr("Angle"), scalpAngle_);
-  form->addRow(tr("Brush"), brushRow);
+  form->addRow(tr("Brush"), brush_);
+  scalpForm_ = form;
+  form->setRowVisible(brush_, false);  // shown with the Painted region
   form->addRow(scalpStatus_);
   connect(scalpPaint_, &QPushButton::toggled, this, [this](bool on) { tool_->setPaintingScalp(on); });
   connect(brushRadius_, &QDoubleSpinBox::valueChanged, this,
@@ -469,11 +473,13 @@ void HairPanel::refreshScalp() {
     QSignalBlocker block(scalpMode_);
     if (auto* model = qobject_cast<QStandardItemModel*>(scalpMode_->model()))
       model->item(ScalpTagged)->setEnabled(tool_->characterHasTaggedScalp());
-    const bool automatic = scalp.kind == ScalpRegion::Kind::Faces && tool_->scalpIsAutomatic();
+    // Faces are Painted while the brush is on, or when they are not the automatic region's.
+    const bool painted =
+        scalp.kind == ScalpRegion::Kind::Faces && (tool_->paintingScalp() || !tool_->scalpIsAutomatic());
     scalpMode_->setCurrentIndex(scalp.kind == ScalpRegion::Kind::Tagged ? ScalpTagged
                                 : cone                                  ? ScalpBoneCone
-                                : automatic                             ? ScalpAutomatic
-                                                                        : ScalpPainted);
+                                : painted                               ? ScalpPainted
+                                                                        : ScalpAutomatic);
   }
   {
     QSignalBlocker block(scalpBone_);
@@ -496,8 +502,9 @@ void HairPanel::refreshScalp() {
     scalpAngle_->setValue(scalp.angleDegrees);
   }
   scalpMode_->setEnabled(hair);
-  scalpPaint_->setEnabled(hair);
-  if (!hair && scalpPaint_->isChecked()) scalpPaint_->setChecked(false);
+  const bool painted = scalpMode_->currentIndex() == ScalpPainted;
+  scalpForm_->setRowVisible(brush_, hair && painted);
+  if ((!hair || !painted) && scalpPaint_->isChecked()) scalpPaint_->setChecked(false);
   for (QWidget* w : std::initializer_list<QWidget*>{scalpBone_, scalpAxisPreset_, scalpAxis_[0], scalpAxis_[1],
                                                     scalpAxis_[2], scalpAngle_})
     w->setEnabled(hair && cone);

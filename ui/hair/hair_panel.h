@@ -20,6 +20,7 @@ class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QListWidget;
+class QFormLayout;
 class QPushButton;
 class QSpinBox;
 
@@ -44,7 +45,7 @@ class HairPanel : public QWidget {
   QSpinBox* displayLimitBox() const { return displayLimit_; }
   QLabel* displayCountLabel() const { return displayCount_; }
   // Scalp group: mode (ScalpMode order), bone, axis preset, axis, angle,
-  // and the brush: Paint (checkable) and its radius (cm).
+  // and, with the Painted region, the brush: Paint (checkable) and its radius (cm).
   enum ScalpMode { ScalpTagged, ScalpBoneCone, ScalpAutomatic, ScalpPainted };
   QPushButton* scalpPaintButton() const { return scalpPaint_; }
   QDoubleSpinBox* brushRadiusBox() const { return brushRadius_; }
@@ -106,6 +107,8 @@ class HairPanel : public QWidget {
   QDoubleSpinBox* scalpAngle_;
   QPushButton* scalpPaint_;
   QDoubleSpinBox* brushRadius_;
+  QWidget* brush_;  // the Paint button and the radius: shown with the Painted region
+  QFormLayout* scalpForm_;
   QLabel* scalpStatus_;
   QComboBox* shadingModel_;
   QDoubleSpinBox *melanin_, *pheomelanin_, *roughness_;
