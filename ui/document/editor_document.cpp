@@ -132,13 +132,18 @@ std::string EditorDocument::setHelperBones(bool on) {
     if (selectedBone_ >= bones) selectedBone_ = -1;
   }
   scene_.helperBones = on;
+  skeletonEdited();
+  return {};
+}
+
+// After bones came or went: the skin is bound again and everyone told.
+void EditorDocument::skeletonEdited() {
   prepareSkinning(character_);
   evaluatePose();
   emit skeletonChanged();
   emit selectionChanged();
   emit poseChanged();
   emit documentChanged();
-  return {};
 }
 
 std::string EditorDocument::setAutoRig(bool on) {
@@ -174,12 +179,7 @@ std::string EditorDocument::setAutoRig(bool on) {
   fileSkins_.clear();
   for (const Mesh& mesh : character_.meshes) fileSkins_.push_back(mesh.skin);
   selectedBone_ = -1;
-  prepareSkinning(character_);
-  evaluatePose();
-  emit skeletonChanged();
-  emit selectionChanged();
-  emit poseChanged();
-  emit documentChanged();
+  skeletonEdited();
   return {};
 }
 

@@ -154,6 +154,7 @@ class EditorDocument : public QObject {
 
  private:
   void evaluatePose();
+  void skeletonEdited();
   void setSelection(int bone, int mesh, int material);
 
   Character character_;
