@@ -6,9 +6,9 @@
 #include <limits>
 
 #include "core/hair/character_groom.h"
+#include "core/mesh/closest_point.h"
 #include "core/util/error.h"
 #include "core/util/thread_pool.h"
-#include "sim/cloth/collision/proximity.h"
 #include "sim/hair/child_follow.h"
 
 namespace mq::cli {
@@ -111,7 +111,7 @@ void SceneHair::anchorRoots() {
         const auto& pos = rest.meshes()[c.mesh].positions;
         const uint32_t i0 = tris[3 * c.t], i1 = tris[3 * c.t + 1], i2 = tris[3 * c.t + 2];
         const glm::vec3 a = vertexOf(pos, i0), b = vertexOf(pos, i1), v2 = vertexOf(pos, i2);
-        const glm::vec3 w = cloth::closestTriangleWeights(p, a, b, v2);
+        const glm::vec3 w = closestTriangleWeights(p, a, b, v2);
         const glm::vec3 q = w.x * a + w.y * b + w.z * v2;
         const float d = glm::dot(p - q, p - q);
         if (d < best) {

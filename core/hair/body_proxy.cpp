@@ -173,6 +173,15 @@ uint64_t BodyProxy::candidates(const glm::vec3& p, float margin) const {
 }
 
 bool BodyProxy::contains(const glm::vec3& p, float margin) const {
+  return insideShapes(p, margin) || insideSurface(p, margin);
+}
+
+// The field's pushOut stops within a hundredth of a millimetre of the margin.
+bool BodyProxy::insideSurface(const glm::vec3& p, float margin) const {
+  return surface && surface->distance(p) < margin - 1e-5f;
+}
+
+bool BodyProxy::insideShapes(const glm::vec3& p, float margin) const {
   const uint64_t mask = candidates(p, margin);
   for (size_t i = 0; i < ellipsoids.size(); ++i)
     if ((mask >> i & 1) && insideEllipsoid(ellipsoids[i], p, margin)) return true;
@@ -211,14 +220,16 @@ bool BodyProxy::pushOut(glm::vec3& p, float margin) const {
       p = base + d * (r * 1.0001f);
       movedThisRound = true;
     }
+    if (!movedThisRound && insideSurface(p, margin)) movedThisRound = surface->pushOut(p, margin);
     if (!movedThisRound) return moved;
     moved = true;
   }
   // Still inside: caught in a crease between shapes that push it back and
-  // forth. March on along the way it was being pushed until it is free.
+  // forth. March on along the way it was being pushed until it is free of
+  // the shapes (the surface's own push goes as far as its field can lead).
   glm::vec3 away = p - start;
   away = glm::dot(away, away) > 1e-18f ? glm::normalize(away) : glm::vec3(0, 1, 0);
-  for (float step = 0.001f; contains(p, margin) && step < 4.0f; step *= 1.5f) p += away * step;
+  for (float step = 0.001f; insideShapes(p, margin) && step < 4.0f; step *= 1.5f) p += away * step;
   return moved;
 }
 
@@ -241,7 +252,7 @@ SurfacePanels BodyProxy::makePanels(int targetCount) const {
   // Keep the panels on the union's boundary.
   SurfacePanels boundary;
   for (size_t i = 0; i < all.size(); ++i) {
-    if (contains(all.centers[i], -0.1f * std::sqrt(all.areas[i]))) continue;
+    if (insideShapes(all.centers[i], -0.1f * std::sqrt(all.areas[i]))) continue;
     boundary.centers.push_back(all.centers[i]);
     boundary.normals.push_back(all.normals[i]);
     boundary.areas.push_back(all.areas[i]);
@@ -377,6 +388,22 @@ BodyProxy finishHeadProxy(Ellipsoid e, const std::vector<glm::vec3>& scalpPoints
   return proxy;
 }
 
+// The distance field of every mesh of a static character around its head:
+// the head grown sideways by a quarter of its height and down by a half (the
+// shoulders of a body), in cells of an eightieth of the head's height.
+std::shared_ptr<const MeshDistanceField> staticSurfaceField(const Character& character, const PosedCharacter& rest,
+                                                            const std::vector<glm::vec3>& headPoints) {
+  Aabb head;
+  for (const glm::vec3& p : headPoints) head.extend(p);
+  const float height = std::max(head.max.y - head.min.y, 0.01f);
+  Aabb region = head;
+  region.min -= glm::vec3(0.25f, 0.5f, 0.25f) * height;
+  region.max += glm::vec3(0.25f, 0.1f, 0.25f) * height;
+  const float cell = height / 80.0f;
+  return std::make_shared<const MeshDistanceField>(concatenatedPositions(rest.meshes()),
+                                                   concatenatedTriangles(character), region, cell, 4.0f * cell);
+}
+
 // A static mesh's head: an ellipsoid fitted in the world's axes to the
 // vertices at its top. No capsules: there are no bones to find the neck and
 // shoulders by.
@@ -396,6 +423,7 @@ BodyProxy fitStaticHeadProxy(const Character& character, const std::vector<glm::
   if (headPoints.size() < 10) throw Error("the mesh of '" + character.name + "' has too few vertices for a head");
   centre /= float(headPoints.size());
   BodyProxy proxy = finishHeadProxy(fitEllipsoid(headPoints, glm::mat3(1.0f), centre), scalpPoints);
+  proxy.surface = staticSurfaceField(character, rest, headPoints);
   proxy.updateBounds();
   return proxy;
 }

@@ -5,11 +5,13 @@
 // flow's source panels are spread over.
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "core/character/character.h"
+#include "core/mesh/mesh_distance_field.h"
 
 namespace mq {
 
@@ -36,6 +38,10 @@ class BodyProxy {
  public:
   std::vector<Ellipsoid> ellipsoids;  // the first one is the head
   std::vector<Capsule> capsules;
+  // The mesh itself where it is known and fixed (a static mesh's head and
+  // shoulders): hair stays out of it as out of the shapes, while the flow
+  // still goes around the shapes. Shared: proxies are copied around.
+  std::shared_ptr<const MeshDistanceField> surface;
 
   // Builds a coarse grid over the shapes recording, per cell, which shapes
   // (grown by up to kMaxCachedMargin) may reach into it, so contains() and
@@ -47,16 +53,19 @@ class BodyProxy {
   bool empty() const { return ellipsoids.empty() && capsules.empty(); }
   glm::vec3 headCenter() const { return ellipsoids.empty() ? glm::vec3(0.0f) : ellipsoids[0].center; }
 
-  // True when p is inside some shape grown by `margin` (negative: shrunk).
+  // True when p is inside some shape or the surface grown by `margin`
+  // (negative: shrunk).
   bool contains(const glm::vec3& p, float margin = 0.0f) const;
-  // Moves p out of every shape it is inside, to `margin` beyond the surface.
-  // Returns true when p moved.
+  // Moves p out of every shape and the surface it is inside, to `margin`
+  // beyond. Returns true when p moved.
   bool pushOut(glm::vec3& p, float margin) const;
   // About `targetCount` panels over the union's surface (panels inside
   // another shape are dropped: they are not on the boundary).
   SurfacePanels makePanels(int targetCount) const;
 
  private:
+  bool insideShapes(const glm::vec3& p, float margin) const;
+  bool insideSurface(const glm::vec3& p, float margin) const;
   // Bit i set: shape i (ellipsoids, then capsules) may hold p grown by margin.
   uint64_t candidates(const glm::vec3& p, float margin) const;
   // Per cell an index into the few distinct masks (a small grid stays in cache).
@@ -77,7 +86,7 @@ BodyProxy sphereProxy(const glm::vec3& center, float radius);
 // empty) lie on or outside it; capsules around the neck, chest, clavicles
 // and upper arms (bones found by walking from the head bone). A character
 // without bones gets the head alone, fitted to the top of its mesh
-// (static_head.h). Throws mq::Error when the head bone does not exist or
+// (static_head.h) and the mesh's own surface around it. Throws mq::Error when the head bone does not exist or
 // drives no vertex.
 BodyProxy fitBodyProxy(const Character& character, const std::string& headBone,
                        const std::vector<glm::vec3>& scalpPoints);

@@ -123,16 +123,21 @@ ScalpRegion automaticScalpRegion(const Character& character) {
   };
   PosedCharacter rest;
   rest.evaluate(character, -1, 0.0f, nullptr, nullptr);
-  // The mesh with most of the head, and the centre of the head's vertices.
+  // The mesh with most of the head, and the centre of the head: of its
+  // vertices, or for a static mesh of its box (a scan's face is meshed far
+  // more densely than the back of its head, and would pull the centre, and
+  // the hairline, down to the eyes).
   int bestMesh = -1;
   size_t bestCount = 0, total = 0;
   glm::dvec3 centreSum(0.0);
+  Aabb box;
   for (size_t m = 0; m < character.meshes.size(); ++m) {
     size_t count = 0;
     for (uint32_t v = 0; v < character.meshes[m].vertexCount(); ++v)
       if (isHead(m, v)) {
         ++count;
         centreSum += glm::dvec3(vertexOf(rest.meshes()[m].positions, v));
+        box.extend(vertexOf(rest.meshes()[m].positions, v));
       }
     total += count;
     if (count > bestCount) {
@@ -141,7 +146,7 @@ ScalpRegion automaticScalpRegion(const Character& character) {
     }
   }
   if (bestMesh < 0) throw Error("the head of character '" + character.name + "' has no vertex");
-  const glm::vec3 centre = glm::vec3(centreSum / double(total));
+  const glm::vec3 centre = staticMesh ? box.center() : glm::vec3(centreSum / double(total));
   const float tilt = glm::radians(25.0f);
   const glm::vec3 axis(0.0f, std::cos(tilt), -std::sin(tilt));  // up and back: the character faces +Z
   const float cosLimit = std::cos(glm::radians(75.0f));

@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/hair/body_proxy.h"
+#include "core/mesh/mesh_distance_field.h"
 #include "core/skeleton/skeleton.h"
 
 namespace mq {
@@ -44,6 +45,11 @@ bool PosedHairColliders::pushOutOnce(glm::vec3& p, glm::vec3& normal) const {
     normal = glm::normalize(glm::transpose(glm::mat3(e.unitFromWorld)) * onSphere);
     moved = true;
   }
+  glm::vec3 surfaceNormal;
+  if (surface && surface->pushOut(p, surfaceMargin, &surfaceNormal)) {
+    normal = surfaceNormal;
+    moved = true;
+  }
   return moved;
 }
 
@@ -72,7 +78,7 @@ bool PosedHairColliders::contains(const glm::vec3& p, float tolerance) const {
     const float limit = std::max(0.0f, 1.0f - tolerance / smallest);
     if (glm::length(q) < limit) return true;
   }
-  return false;
+  return surface && surface->distance(p) < surfaceMargin - tolerance - 1e-5f;
 }
 
 PosedHairColliders HairColliders::posed(const std::vector<glm::mat4>& worldFromBone, float margin) const {
@@ -100,6 +106,8 @@ PosedHairColliders HairColliders::posed(const std::vector<glm::mat4>& worldFromB
     out.ellipsoids.push_back(
         {worldFromUnit, glm::inverse(worldFromUnit), glm::vec3(worldFromUnit[3]), reach2 + 1e-12f});
   }
+  out.surface = surface;
+  out.surfaceMargin = margin;
   return out;
 }
 
@@ -149,6 +157,7 @@ HairColliders HairColliders::attachToSkeleton(const BodyProxy& restProxy, const 
     colliders.capsules.push_back(
         {bone, glm::vec3(m * glm::vec4(c.a, 1.0f)), glm::vec3(m * glm::vec4(c.b, 1.0f)), c.radius});
   }
+  if (skeleton.boneCount() == 0) colliders.surface = restProxy.surface;
   return colliders;
 }
 

@@ -6,6 +6,7 @@
 // BodyProxy (core/hair/body_proxy.h), the same shapes the groom keeps the
 // strands out of, so rest strands start outside the colliders.
 
+#include <memory>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -14,6 +15,7 @@
 namespace mq {
 
 class BodyProxy;
+class MeshDistanceField;
 class Skeleton;
 
 // A capsule is the set of points within `radius` of segment [a, b]; a sphere
@@ -50,8 +52,10 @@ class PosedHairColliders {
 
   std::vector<Capsule> capsules;
   std::vector<Ellipsoid> ellipsoids;
+  std::shared_ptr<const MeshDistanceField> surface;  // fixed in world space
+  float surfaceMargin = 0.0f;
 
-  bool empty() const { return capsules.empty() && ellipsoids.empty(); }
+  bool empty() const { return capsules.empty() && ellipsoids.empty() && !surface; }
   // Moves p onto the nearest proxy surface when it is inside one; returns
   // true and the outward surface normal when it moved.
   bool pushOut(glm::vec3& p, glm::vec3& normal) const;
@@ -66,6 +70,9 @@ class HairColliders {
  public:
   std::vector<ColliderCapsule> capsules;
   std::vector<ColliderEllipsoid> ellipsoids;
+  // A static character's own surface (BodyProxy::surface): it has no bones,
+  // so it never moves.
+  std::shared_ptr<const MeshDistanceField> surface;
 
   void addSphere(int bone, const glm::vec3& center, float radius) {
     capsules.push_back({bone, center, center, radius});
@@ -77,12 +84,12 @@ class HairColliders {
                     const glm::quat& rotation = glm::quat(1.0f, 0.0f, 0.0f, 0.0f)) {
     ellipsoids.push_back({bone, center, radii, rotation});
   }
-  bool empty() const { return capsules.empty() && ellipsoids.empty(); }
+  bool empty() const { return capsules.empty() && ellipsoids.empty() && !surface; }
 
   // Attaches the rest-pose shapes of `restProxy` to bones of `skeleton`:
   // its first ellipsoid (the head) to headBone, every other shape to the
   // bone whose rest segment (origin to first child's origin) is nearest to
-  // the shape's centre.
+  // the shape's centre; its surface, when the skeleton has no bones.
   static HairColliders attachToSkeleton(const BodyProxy& restProxy, const Skeleton& skeleton, int headBone);
 
   // World-space proxies for `worldFromBone` (indexed like the skeleton;

@@ -13,37 +13,13 @@
 #include "core/hair/scalp_paint.h"
 #include "core/hair/static_head.h"
 #include "core/io/character_import.h"
-#include "core/mesh/triangle_ray_caster.h"
+#include "static_head_util.h"
 
 namespace mq {
 namespace {
 
-Character headScan() {
-  Character head =
-      importCharacter(std::string(MANNEQUIN_SHARED_DIR) + "/assets/heads/makehuman_hm08_head/makehuman_head.obj");
-  head.scaleUniformly(0.1f);  // decimetres
-  return head;
-}
-
-// A mesh that is not closed (the scan is open at the neck) holds a point when
-// rays up, left and right all cross it an odd number of times.
-class OpenMeshInside {
- public:
-  explicit OpenMeshInside(const Mesh& mesh) : caster_(mesh.positions, mesh.triangles) {}
-  bool contains(const glm::vec3& p) const {
-    for (const glm::vec3& d : {glm::vec3(0, 1, 0), glm::vec3(1, 0, 0), glm::vec3(-1, 0, 0)})
-      if (crossings(p, d) % 2 == 0) return false;
-    return true;
-  }
-
- private:
-  int crossings(const glm::vec3& p, const glm::vec3& d) const {
-    int n = 0;
-    for (float t = caster_.firstHit(p, d, 0.0f); t >= 0.0f && n < 64; t = caster_.firstHit(p, d, t + 1e-5f)) ++n;
-    return n;
-  }
-  TriangleRayCaster caster_;
-};
+using test::headScan;
+using test::OpenMeshInside;
 
 // Distance from p to triangle abc (the closest point by Voronoi regions).
 float triangleDistance(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
@@ -96,10 +72,9 @@ TEST(StaticHead, AHeadAloneIsAllHeadAndABodyOnlyAtItsTop) {
 }
 
 // Every built-in style grows on the scan: roots on its surface, on the top
-// and back of the head. Known limit: the hair flows around an ellipsoid
-// fitted to the scan, which a real head is not; near the parting strands run
-// up to 7 mm under the scan's surface (2 to 5% of the points today). The
-// bound holds that figure until the proxy follows the scan.
+// and back of the head, none on the face; no strand point inside the scan
+// (the hair flows around an ellipsoid fitted to it, and is kept out of the
+// scan itself by its distance field).
 TEST(StaticHead, HairGrowsOnTheHeadScan) {
   const Character head = headScan();
   const Mesh& mesh = head.meshes[0];
@@ -123,13 +98,23 @@ TEST(StaticHead, HairGrowsOnTheHeadScan) {
         pointsInside += inside.contains({p[3 * i], p[3 * i + 1], p[3 * i + 2]});
     }
     EXPECT_LT(worstRoot, 0.01f) << name;  // on the scan, as the CLI tests hold the mannequin's roots
-    EXPECT_LT(pointsInside, pointsTested * 6 / 100) << name;
+    EXPECT_EQ(pointsInside, 0u) << name;
     // The roots cover the top and back of the head, down to the nape (the
     // scan, 0.23 m tall, goes down to the neck).
     float lowestRoot = 1e30f;
     for (size_t k = 0; k < s.strandCount(); ++k) lowestRoot = std::min(lowestRoot, s.strand(k)[1]);
     Aabb box = boundsOf(mesh.positions);
     EXPECT_GT(lowestRoot, box.min.y + 0.25f * (box.max.y - box.min.y)) << name;
+    // The hairline stays above the eyes: the front of the face (where the
+    // scan reaches farthest forward) has no root below the forehead's top
+    // half.
+    const float eyes = box.min.y + 0.45f * (box.max.y - box.min.y);
+    size_t rootsOnFace = 0;
+    for (size_t k = 0; k < s.strandCount(); ++k) {
+      const float* root = s.strand(k);
+      rootsOnFace += root[2] > box.max.z - 0.05f && root[1] < eyes + 0.04f;
+    }
+    EXPECT_EQ(rootsOnFace, 0u) << name;
     std::printf("%s: %zu of %zu strand points inside the scan\n", name.c_str(), pointsInside, pointsTested);
   }
 }
