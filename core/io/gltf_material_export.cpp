@@ -1,12 +1,13 @@
 #include "core/io/gltf_material_export.h"
 
+#include <initializer_list>
+#include <utility>
+
 #include "core/io/file_bytes.h"
 #include "core/util/error.h"
 
 namespace mq {
 namespace {
-
-using nlohmann::json;
 
 int wrapEnum(TextureWrap wrap) {
   switch (wrap) {
@@ -43,68 +44,87 @@ int addImage(GltfWriter& writer, const ImageSource& image, std::vector<std::stri
     warnings.push_back("image '" + image.name + "' left out: not a PNG or JPEG image");
     return -1;
   }
-  const int view = writer.addBufferView(bytes.data(), bytes.size());
-  json& images = writer.json()["images"];
-  images.push_back({{"name", image.name}, {"bufferView", view}, {"mimeType", mimeType}});
-  return static_cast<int>(images.size()) - 1;
+  tinygltf::Image gltfImage;
+  gltfImage.name = image.name;
+  gltfImage.bufferView = writer.addBufferView(bytes.data(), bytes.size());
+  gltfImage.mimeType = mimeType;
+  writer.model().images.push_back(std::move(gltfImage));
+  return int(writer.model().images.size()) - 1;
+}
+
+bool sameSampler(const tinygltf::Sampler& a, const tinygltf::Sampler& b) {
+  return a.wrapS == b.wrapS && a.wrapT == b.wrapT && a.magFilter == b.magFilter && a.minFilter == b.minFilter;
 }
 
 int addSampler(GltfWriter& writer, const TextureSampler& sampler) {
-  const int minFilter = sampler.linear ? (sampler.mipmaps ? 9987 : 9729) : (sampler.mipmaps ? 9984 : 9728);
-  const json s = {{"wrapS", wrapEnum(sampler.wrapS)},
-                  {"wrapT", wrapEnum(sampler.wrapT)},
-                  {"magFilter", sampler.linear ? 9729 : 9728},
-                  {"minFilter", minFilter}};
-  json& samplers = writer.json()["samplers"];
+  tinygltf::Sampler s;
+  s.wrapS = wrapEnum(sampler.wrapS);
+  s.wrapT = wrapEnum(sampler.wrapT);
+  s.magFilter = sampler.linear ? TINYGLTF_TEXTURE_FILTER_LINEAR : TINYGLTF_TEXTURE_FILTER_NEAREST;
+  s.minFilter =
+      sampler.linear
+          ? (sampler.mipmaps ? TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR : TINYGLTF_TEXTURE_FILTER_LINEAR)
+          : (sampler.mipmaps ? TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST : TINYGLTF_TEXTURE_FILTER_NEAREST);
+  std::vector<tinygltf::Sampler>& samplers = writer.model().samplers;
   for (size_t i = 0; i < samplers.size(); ++i)
-    if (samplers[i] == s) return static_cast<int>(i);
+    if (sameSampler(samplers[i], s)) return int(i);
   samplers.push_back(s);
-  return static_cast<int>(samplers.size()) - 1;
+  return int(samplers.size()) - 1;
 }
 
-// A textureInfo for `ref`, or null when its image was not embedded.
-json textureInfo(GltfWriter& writer, const TextureRef& ref, const std::vector<int>& imageIndex) {
-  if (!ref.present() || ref.image >= int(imageIndex.size()) || imageIndex[ref.image] < 0) return nullptr;
-  json& textures = writer.json()["textures"];
-  textures.push_back({{"source", imageIndex[ref.image]}, {"sampler", addSampler(writer, ref.sampler)}});
-  json info = {{"index", textures.size() - 1}};
-  if (ref.texCoord != 0) info["texCoord"] = ref.texCoord;
+tinygltf::Value numbers(std::initializer_list<float> values) {
+  tinygltf::Value::Array array;
+  for (float v : values) array.emplace_back(double(v));
+  return tinygltf::Value(std::move(array));
+}
+
+// Fills a textureInfo (its index, texture coordinate set and transform) for
+// `ref`; false, leaving it unset, when its image was not embedded.
+template <typename Info>
+bool fillTextureInfo(GltfWriter& writer, const TextureRef& ref, const std::vector<int>& imageIndex, Info& info) {
+  if (!ref.present() || ref.image >= int(imageIndex.size()) || imageIndex[ref.image] < 0) return false;
+  tinygltf::Texture texture;
+  texture.source = imageIndex[ref.image];
+  texture.sampler = addSampler(writer, ref.sampler);
+  writer.model().textures.push_back(texture);
+  info.index = int(writer.model().textures.size()) - 1;
+  info.texCoord = ref.texCoord;
   if (!ref.transform.identity()) {
     writer.useExtension("KHR_texture_transform");
     const TextureTransform& t = ref.transform;
-    info["extensions"]["KHR_texture_transform"] = {
-        {"offset", {t.offset.x, t.offset.y}}, {"rotation", t.rotation}, {"scale", {t.scale.x, t.scale.y}}};
+    info.extensions["KHR_texture_transform"] =
+        tinygltf::Value(tinygltf::Value::Object{{"offset", numbers({t.offset.x, t.offset.y})},
+                                                {"rotation", tinygltf::Value(double(t.rotation))},
+                                                {"scale", numbers({t.scale.x, t.scale.y})}});
   }
-  return info;
+  return true;
 }
 
-json materialJson(GltfWriter& writer, const Material& m, const std::vector<int>& imageIndex) {
-  json pbr = {{"baseColorFactor", {m.baseColorFactor.x, m.baseColorFactor.y, m.baseColorFactor.z, m.baseColorFactor.w}},
-              {"metallicFactor", m.metallicFactor},
-              {"roughnessFactor", m.roughnessFactor}};
-  if (json t = textureInfo(writer, m.baseColorTexture, imageIndex); !t.is_null()) pbr["baseColorTexture"] = t;
-  if (json t = textureInfo(writer, m.metallicRoughnessTexture, imageIndex); !t.is_null())
-    pbr["metallicRoughnessTexture"] = t;
-  json material = {{"name", m.name}, {"pbrMetallicRoughness", pbr}};
-  if (json t = textureInfo(writer, m.normalTexture, imageIndex); !t.is_null()) {
-    t["scale"] = m.normalScale;
-    material["normalTexture"] = t;
-  }
-  if (json t = textureInfo(writer, m.occlusionTexture, imageIndex); !t.is_null()) {
-    t["strength"] = m.occlusionStrength;
-    material["occlusionTexture"] = t;
-  }
-  if (json t = textureInfo(writer, m.emissiveTexture, imageIndex); !t.is_null()) material["emissiveTexture"] = t;
-  if (m.emissiveFactor != glm::vec3(0.0f))
-    material["emissiveFactor"] = {m.emissiveFactor.x, m.emissiveFactor.y, m.emissiveFactor.z};
+tinygltf::Material gltfMaterial(GltfWriter& writer, const Material& m, const std::vector<int>& imageIndex) {
+  tinygltf::Material material;
+  material.name = m.name;
+  tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
+  pbr.baseColorFactor = {m.baseColorFactor.x, m.baseColorFactor.y, m.baseColorFactor.z, m.baseColorFactor.w};
+  pbr.metallicFactor = m.metallicFactor;
+  pbr.roughnessFactor = m.roughnessFactor;
+  fillTextureInfo(writer, m.baseColorTexture, imageIndex, pbr.baseColorTexture);
+  fillTextureInfo(writer, m.metallicRoughnessTexture, imageIndex, pbr.metallicRoughnessTexture);
+  if (fillTextureInfo(writer, m.normalTexture, imageIndex, material.normalTexture))
+    material.normalTexture.scale = m.normalScale;
+  if (fillTextureInfo(writer, m.occlusionTexture, imageIndex, material.occlusionTexture))
+    material.occlusionTexture.strength = m.occlusionStrength;
+  fillTextureInfo(writer, m.emissiveTexture, imageIndex, material.emissiveTexture);
+  material.emissiveFactor = {m.emissiveFactor.x, m.emissiveFactor.y, m.emissiveFactor.z};
   if (m.emissiveStrength != 1.0f) {
     writer.useExtension("KHR_materials_emissive_strength");
-    material["extensions"]["KHR_materials_emissive_strength"] = {{"emissiveStrength", m.emissiveStrength}};
+    material.extensions["KHR_materials_emissive_strength"] =
+        tinygltf::Value(tinygltf::Value::Object{{"emissiveStrength", tinygltf::Value(double(m.emissiveStrength))}});
   }
-  if (m.alphaMode != AlphaMode::Opaque) material["alphaMode"] = alphaModeName(m.alphaMode);
-  if (m.alphaMode == AlphaMode::Mask) material["alphaCutoff"] = m.alphaCutoff;
-  if (m.doubleSided) material["doubleSided"] = true;
-  if (m.skin) material["extras"] = {{"mannequin_skin", true}};  // our skin shading, kept for a round trip
+  material.alphaMode = alphaModeName(m.alphaMode);
+  material.alphaCutoff = m.alphaMode == AlphaMode::Mask ? m.alphaCutoff : 0.5;  // 0.5: left out
+  material.doubleSided = m.doubleSided;
+  if (m.skin)  // our skin shading, kept for a round trip
+    material.extras = tinygltf::Value(tinygltf::Value::Object{{"mannequin_skin", tinygltf::Value(true)}});
   return material;
 }
 
@@ -115,21 +135,22 @@ std::vector<std::string> addGltfMaterials(GltfWriter& writer, const Character& c
   if (character.materials.empty()) return warnings;
   std::vector<int> imageIndex;
   for (const ImageSource& image : character.images) imageIndex.push_back(addImage(writer, image, warnings));
-  json& materials = writer.json()["materials"];
-  for (const Material& m : character.materials) materials.push_back(materialJson(writer, m, imageIndex));
+  for (const Material& m : character.materials) writer.model().materials.push_back(gltfMaterial(writer, m, imageIndex));
   return warnings;
 }
 
-json gltfPrimitives(GltfWriter& writer, const Mesh& mesh, const json& attributes, size_t materialCount) {
-  json primitives = json::array();
+std::vector<tinygltf::Primitive> gltfPrimitives(GltfWriter& writer, const Mesh& mesh,
+                                                const std::map<std::string, int>& attributes, size_t materialCount) {
+  std::vector<tinygltf::Primitive> primitives;
   for (const Submesh& range : mesh.drawRanges()) {
-    json primitive = {{"attributes", attributes}, {"mode", 4}};
+    tinygltf::Primitive primitive;
+    primitive.attributes = attributes;
+    primitive.mode = TINYGLTF_MODE_TRIANGLES;
     if (range.triangleCount > 0)
-      primitive["indices"] =
-          writer.addAccessor(mesh.triangles.data() + 3 * size_t(range.firstTriangle), 3 * size_t(range.triangleCount),
-                             "SCALAR", 1, GltfWriter::kUnsignedInt, GltfWriter::kElementArrayBuffer);
-    if (range.material >= 0 && size_t(range.material) < materialCount) primitive["material"] = range.material;
-    primitives.push_back(primitive);
+      primitive.indices =
+          writer.addIndices(mesh.triangles.data() + 3 * size_t(range.firstTriangle), 3 * size_t(range.triangleCount));
+    if (range.material >= 0 && size_t(range.material) < materialCount) primitive.material = range.material;
+    primitives.push_back(std::move(primitive));
   }
   return primitives;
 }

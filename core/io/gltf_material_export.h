@@ -4,6 +4,7 @@
 // KHR_texture_transform) and their images, embedded in the buffer, so the
 // file stands alone. Material i of the character is material i of the glTF.
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -19,7 +20,7 @@ std::vector<std::string> addGltfMaterials(GltfWriter& writer, const Character& c
 
 // The primitives of `mesh` sharing `attributes`: one per draw range, each
 // with its own indices and material (none for -1 or an unknown material).
-nlohmann::json gltfPrimitives(GltfWriter& writer, const Mesh& mesh, const nlohmann::json& attributes,
-                              size_t materialCount);
+std::vector<tinygltf::Primitive> gltfPrimitives(GltfWriter& writer, const Mesh& mesh,
+                                                const std::map<std::string, int>& attributes, size_t materialCount);
 
 }  // namespace mq

@@ -3,9 +3,8 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <map>
 #include <ostream>
-
-#include <nlohmann/json.hpp>
 
 #include "core/io/file_bytes.h"
 #include "core/io/gltf_material_export.h"
@@ -101,30 +100,23 @@ void writePly(std::ostream& out, const std::vector<const Mesh*>& meshes, const s
 // materials: the character whose materials the meshes use, or null.
 void buildGltf(GltfWriter& writer, const std::vector<const Mesh*>& meshes, const std::vector<PosedMesh>& posed,
                const Character* materials) {
-  nlohmann::json& gltf = writer.json();
   if (materials) addGltfMaterials(writer, *materials);  // a missing image leaves its texture out
   const size_t materialCount = materials ? materials->materials.size() : 0;
   for (size_t m = 0; m < meshes.size(); ++m) {
     const Mesh& mesh = *meshes[m];
     const PosedMesh& p = posed[m];
     const size_t n = p.positions.size() / 3;
-    nlohmann::json attributes;
-    const int position =
-        writer.addAccessor(p.positions.data(), n, "VEC3", 3, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
-    const Aabb box = boundsOf(p.positions);  // the spec requires POSITION min/max
-    gltf["accessors"][position]["min"] = {box.min.x, box.min.y, box.min.z};
-    gltf["accessors"][position]["max"] = {box.max.x, box.max.y, box.max.z};
-    attributes["POSITION"] = position;
-    if (p.normals.size() == 3 * n)
-      attributes["NORMAL"] =
-          writer.addAccessor(p.normals.data(), n, "VEC3", 3, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
-    if (mesh.uvs.size() == 2 * n)
-      attributes["TEXCOORD_0"] =
-          writer.addAccessor(mesh.uvs.data(), n, "VEC2", 2, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
-    gltf["meshes"].push_back(
-        {{"name", mesh.name}, {"primitives", gltfPrimitives(writer, mesh, attributes, materialCount)}});
-    gltf["nodes"].push_back({{"name", mesh.name}, {"mesh", m}});
-    gltf["scenes"][0]["nodes"].push_back(m);
+    std::map<std::string, int> attributes = {{"POSITION", writer.addPositionAccessor(p.positions)}};
+    if (p.normals.size() == 3 * n) attributes["NORMAL"] = writer.addVertexAttribute(p.normals, TINYGLTF_TYPE_VEC3);
+    if (mesh.uvs.size() == 2 * n) attributes["TEXCOORD_0"] = writer.addVertexAttribute(mesh.uvs, TINYGLTF_TYPE_VEC2);
+    tinygltf::Mesh gltfMesh;
+    gltfMesh.name = mesh.name;
+    gltfMesh.primitives = gltfPrimitives(writer, mesh, attributes, materialCount);
+    writer.model().meshes.push_back(std::move(gltfMesh));
+    tinygltf::Node node;
+    node.name = mesh.name;
+    node.mesh = int(writer.model().meshes.size()) - 1;
+    writer.addNode(std::move(node), true);
   }
 }
 
@@ -132,10 +124,7 @@ void writeGltf(std::ostream& out, const std::vector<const Mesh*>& meshes, const 
                const Character* materials, bool binary) {
   GltfWriter writer("mannequin posed-mesh export");
   buildGltf(writer, meshes, posed, materials);
-  if (binary)
-    writer.writeGlb(out);
-  else
-    writer.writeGltf(out);
+  writer.write(out, binary);
 }
 
 }  // namespace

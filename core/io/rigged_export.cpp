@@ -2,17 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <utility>
 
 #include "core/io/file_bytes.h"
 #include "core/io/gltf_material_export.h"
 #include "core/io/gltf_writer.h"
 #include "core/util/atomic_file.h"
 #include "core/util/error.h"
+#include "core/util/utf8.h"
 
 namespace mq {
 namespace {
-
-using nlohmann::json;
 
 // A bone's node transform: its fixed offset (non-bone nodes of the source
 // file) folded into its local transform.
@@ -21,27 +22,26 @@ Trs nodeTransform(const Bone& bone, const Trs& local) {
   return Trs::fromMatrix(bone.parentFromOffset * local.matrix());
 }
 
-json trsJson(const Trs& t) {
-  return {{"translation", {t.translation.x, t.translation.y, t.translation.z}},
-          {"rotation", {t.rotation.x, t.rotation.y, t.rotation.z, t.rotation.w}},
-          {"scale", {t.scale.x, t.scale.y, t.scale.z}}};
+void setTrs(tinygltf::Node& node, const Trs& t) {
+  node.translation = {t.translation.x, t.translation.y, t.translation.z};
+  node.rotation = {t.rotation.x, t.rotation.y, t.rotation.z, t.rotation.w};
+  node.scale = {t.scale.x, t.scale.y, t.scale.z};
 }
 
 void addSkeleton(GltfWriter& writer, const Skeleton& skeleton) {
-  json& gltf = writer.json();
   for (int b = 0; b < skeleton.boneCount(); ++b) {
-    json node = trsJson(nodeTransform(skeleton.bone(b), skeleton.bone(b).rest));
-    node["name"] = skeleton.bone(b).name;
-    const std::vector<int> children = skeleton.children(b);
-    if (!children.empty()) node["children"] = children;
-    gltf["nodes"].push_back(node);
-    if (skeleton.bone(b).parent < 0) gltf["scenes"][0]["nodes"].push_back(b);
+    tinygltf::Node node;
+    setTrs(node, nodeTransform(skeleton.bone(b), skeleton.bone(b).rest));
+    node.name = skeleton.bone(b).name;
+    node.children = skeleton.children(b);
+    writer.addNode(std::move(node), skeleton.bone(b).parent < 0);
   }
 }
 
 // JOINTS_0 / WEIGHTS_0: the four heaviest influences of each vertex. An
 // unused slot names joint 0: glTF wants a zero weight on a zero joint index.
-void addSkinAttributes(GltfWriter& writer, const SkinBinding& skin, size_t vertices, json& attributes) {
+void addSkinAttributes(GltfWriter& writer, const SkinBinding& skin, size_t vertices,
+                       std::map<std::string, int>& attributes) {
   SkinBinding four = skin;
   four.limitInfluences(4);
   const int k = four.influencesPerVertex;
@@ -53,85 +53,70 @@ void addSkinAttributes(GltfWriter& writer, const SkinBinding& skin, size_t verti
       joints[4 * v + i] = weight > 0.0f ? four.joints[v * k + i] : 0;
       weights[4 * v + i] = weight;
     }
-  attributes["JOINTS_0"] =
-      writer.addAccessor(joints.data(), vertices, "VEC4", 4, GltfWriter::kUnsignedShort, GltfWriter::kArrayBuffer);
-  attributes["WEIGHTS_0"] =
-      writer.addAccessor(weights.data(), vertices, "VEC4", 4, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
-}
-
-int addPositionAccessor(GltfWriter& writer, const std::vector<float>& positions) {
-  const int accessor = writer.addAccessor(positions.data(), positions.size() / 3, "VEC3", 3, GltfWriter::kFloat,
-                                          GltfWriter::kArrayBuffer);
-  const Aabb box = boundsOf(positions);  // the spec requires POSITION min/max, targets' too
-  writer.json()["accessors"][accessor]["min"] = {box.min.x, box.min.y, box.min.z};
-  writer.json()["accessors"][accessor]["max"] = {box.max.x, box.max.y, box.max.z};
-  return accessor;
+  attributes["JOINTS_0"] = writer.addAccessor(joints.data(), vertices, TINYGLTF_TYPE_VEC4,
+                                              TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TARGET_ARRAY_BUFFER);
+  attributes["WEIGHTS_0"] = writer.addVertexAttribute(weights, TINYGLTF_TYPE_VEC4);
 }
 
 // The mesh's morph targets on each of its primitives, their default weights
 // and their names (extras.targetNames, which Blender and three.js read).
-void addMorphTargets(GltfWriter& writer, const Mesh& mesh, json& primitives, json& gltfMesh) {
+void addMorphTargets(GltfWriter& writer, const Mesh& mesh, tinygltf::Mesh& gltfMesh) {
   if (mesh.morphTargets.empty()) return;
   const size_t n = mesh.vertexCount();
-  json targets = json::array(), names = json::array();
+  std::vector<std::map<std::string, int>> targets;
+  tinygltf::Value::Array names;
   for (const MorphTarget& target : mesh.morphTargets) {
-    json attributes = {{"POSITION", addPositionAccessor(writer, target.positionDeltas)}};
+    std::map<std::string, int> attributes = {{"POSITION", writer.addPositionAccessor(target.positionDeltas)}};
     if (target.normalDeltas.size() == 3 * n)
-      attributes["NORMAL"] =
-          writer.addAccessor(target.normalDeltas.data(), n, "VEC3", 3, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
-    targets.push_back(attributes);
-    names.push_back(target.name);
+      attributes["NORMAL"] = writer.addVertexAttribute(target.normalDeltas, TINYGLTF_TYPE_VEC3);
+    targets.push_back(std::move(attributes));
+    names.emplace_back(repairedUtf8(target.name));
   }
-  for (json& primitive : primitives) primitive["targets"] = targets;
+  for (tinygltf::Primitive& primitive : gltfMesh.primitives) primitive.targets = targets;
   std::vector<float> weights = mesh.morphWeights;
   weights.resize(mesh.morphTargets.size(), 0.0f);
-  gltfMesh["weights"] = weights;
-  gltfMesh["extras"]["targetNames"] = names;
+  gltfMesh.weights.assign(weights.begin(), weights.end());
+  gltfMesh.extras = tinygltf::Value(tinygltf::Value::Object{{"targetNames", tinygltf::Value(std::move(names))}});
 }
 
 // Returns the index of the node that holds the mesh.
 int addMesh(GltfWriter& writer, const Mesh& mesh, int boneCount, size_t materialCount) {
-  json& gltf = writer.json();
+  tinygltf::Model& model = writer.model();
   const size_t n = mesh.vertexCount();
-  json attributes;
-  attributes["POSITION"] = addPositionAccessor(writer, mesh.positions);
-  if (mesh.normals.size() == 3 * n)
-    attributes["NORMAL"] =
-        writer.addAccessor(mesh.normals.data(), n, "VEC3", 3, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
-  if (mesh.uvs.size() == 2 * n)
-    attributes["TEXCOORD_0"] =
-        writer.addAccessor(mesh.uvs.data(), n, "VEC2", 2, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
+  std::map<std::string, int> attributes;
+  attributes["POSITION"] = writer.addPositionAccessor(mesh.positions);
+  if (mesh.normals.size() == 3 * n) attributes["NORMAL"] = writer.addVertexAttribute(mesh.normals, TINYGLTF_TYPE_VEC3);
+  if (mesh.uvs.size() == 2 * n) attributes["TEXCOORD_0"] = writer.addVertexAttribute(mesh.uvs, TINYGLTF_TYPE_VEC2);
   const bool skinned = !mesh.skin.empty();
   if (skinned) addSkinAttributes(writer, mesh.skin, n, attributes);
-  json primitives = gltfPrimitives(writer, mesh, attributes, materialCount);
-  json gltfMesh = {{"name", mesh.name}};
-  addMorphTargets(writer, mesh, primitives, gltfMesh);
-  gltfMesh["primitives"] = primitives;
-  const int meshIndex = int(gltf["meshes"].size());
-  gltf["meshes"].push_back(gltfMesh);
+  tinygltf::Mesh gltfMesh;
+  gltfMesh.name = mesh.name;
+  gltfMesh.primitives = gltfPrimitives(writer, mesh, attributes, materialCount);
+  addMorphTargets(writer, mesh, gltfMesh);
+  model.meshes.push_back(std::move(gltfMesh));
 
-  json node = {{"name", mesh.name}, {"mesh", meshIndex}};
-  const int nodeIndex = int(gltf["nodes"].size());
+  tinygltf::Node node;
+  node.name = mesh.name;
+  node.mesh = int(model.meshes.size()) - 1;
   if (skinned) {
     std::vector<float> inverseBind;
     for (const glm::mat4& m : mesh.skin.inverseBind)
       for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r) inverseBind.push_back(m[c][r]);  // column-major, as glTF
-    const int matrices =
-        writer.addAccessor(inverseBind.data(), mesh.skin.inverseBind.size(), "MAT4", 16, GltfWriter::kFloat);
-    gltf["skins"].push_back({{"joints", mesh.skin.jointBones}, {"inverseBindMatrices", matrices}});
-    node["skin"] = gltf["skins"].size() - 1;
-    gltf["scenes"][0]["nodes"].push_back(nodeIndex);
-  } else {
-    const glm::mat4& m = mesh.boneFromMesh;
-    if (m != glm::mat4(1.0f)) node["matrix"] = std::vector<float>(&m[0][0], &m[0][0] + 16);
-    if (mesh.attachBone >= 0 && mesh.attachBone < boneCount)
-      gltf["nodes"][mesh.attachBone]["children"].push_back(nodeIndex);
-    else
-      gltf["scenes"][0]["nodes"].push_back(nodeIndex);
+    tinygltf::Skin skin;
+    skin.inverseBindMatrices = writer.addAccessor(inverseBind.data(), mesh.skin.inverseBind.size(), TINYGLTF_TYPE_MAT4,
+                                                  TINYGLTF_COMPONENT_TYPE_FLOAT);
+    skin.joints = mesh.skin.jointBones;
+    model.skins.push_back(std::move(skin));
+    node.skin = int(model.skins.size()) - 1;
+    return writer.addNode(std::move(node), true);
   }
-  gltf["nodes"].push_back(node);
-  return nodeIndex;
+  const glm::mat4& m = mesh.boneFromMesh;
+  if (m != glm::mat4(1.0f)) node.matrix.assign(&m[0][0], &m[0][0] + 16);
+  const bool attached = mesh.attachBone >= 0 && mesh.attachBone < boneCount;
+  const int index = writer.addNode(std::move(node), !attached);
+  if (attached) model.nodes[mesh.attachBone].children.push_back(index);
+  return index;
 }
 
 // Sample times of an animation: on the clip's axis (to pose the character)
@@ -161,23 +146,31 @@ Samples takeSamples(const ExportTake& take) {
 class AnimationBuilder {
  public:
   AnimationBuilder(GltfWriter& writer, const std::vector<float>& times) : writer_(writer) {
-    input_ = writer.addAccessor(times.data(), times.size(), "SCALAR", 1, GltfWriter::kFloat);
-    writer.json()["accessors"][input_]["min"] = {times.front()};
-    writer.json()["accessors"][input_]["max"] = {times.back()};
+    input_ = writer.addAccessor(times.data(), times.size(), TINYGLTF_TYPE_SCALAR, TINYGLTF_COMPONENT_TYPE_FLOAT);
+    writer.model().accessors[input_].minValues = {times.front()};
+    writer.model().accessors[input_].maxValues = {times.back()};
   }
-  void addChannel(int node, const char* path, const std::vector<float>& values, const char* type, int size) {
-    const int output = writer_.addAccessor(values.data(), values.size() / size, type, size, GltfWriter::kFloat);
-    samplers_.push_back({{"input", input_}, {"output", output}, {"interpolation", "LINEAR"}});
-    channels_.push_back({{"sampler", samplers_.size() - 1}, {"target", {{"node", node}, {"path", path}}}});
+  void addChannel(int node, const char* path, const std::vector<float>& values, int type, int size) {
+    tinygltf::AnimationSampler sampler;
+    sampler.input = input_;
+    sampler.output = writer_.addAccessor(values.data(), values.size() / size, type, TINYGLTF_COMPONENT_TYPE_FLOAT);
+    sampler.interpolation = "LINEAR";
+    animation_.samplers.push_back(std::move(sampler));
+    tinygltf::AnimationChannel channel;
+    channel.sampler = int(animation_.samplers.size()) - 1;
+    channel.target_node = node;
+    channel.target_path = path;
+    animation_.channels.push_back(std::move(channel));
   }
   void finish(const std::string& name) {
-    writer_.json()["animations"].push_back({{"name", name}, {"samplers", samplers_}, {"channels", channels_}});
+    animation_.name = name;
+    writer_.model().animations.push_back(std::move(animation_));
   }
 
  private:
   GltfWriter& writer_;
   int input_ = -1;
-  json samplers_ = json::array(), channels_ = json::array();
+  tinygltf::Animation animation_;
 };
 
 // Every bone's node transform at each sample of `clipIndex` (-1: the rest pose).
@@ -202,9 +195,9 @@ void addBoneChannels(AnimationBuilder& animation, const Character& character, in
     }
   }
   for (int b = 0; b < bones; ++b) {
-    animation.addChannel(b, "translation", translations[b], "VEC3", 3);
-    animation.addChannel(b, "rotation", rotations[b], "VEC4", 4);
-    animation.addChannel(b, "scale", scales[b], "VEC3", 3);
+    animation.addChannel(b, "translation", translations[b], TINYGLTF_TYPE_VEC3, 3);
+    animation.addChannel(b, "rotation", rotations[b], TINYGLTF_TYPE_VEC4, 4);
+    animation.addChannel(b, "scale", scales[b], TINYGLTF_TYPE_VEC3, 3);
   }
 }
 
@@ -225,63 +218,59 @@ void addMorphChannels(AnimationBuilder& animation, const Character& character, i
       clip.applyToMorphWeights(t, meshWeights);
       values.insert(values.end(), meshWeights[channel.mesh].begin(), meshWeights[channel.mesh].end());
     }
-    animation.addChannel(meshNodes[channel.mesh], "weights", values, "SCALAR", 1);
+    animation.addChannel(meshNodes[channel.mesh], "weights", values, TINYGLTF_TYPE_SCALAR, 1);
   }
 }
 
 // A baked surface as a mesh in world space: frame 0 as its base, frame f as
 // morph target f - 1; returns its node.
 int addBakedSurface(GltfWriter& writer, const BakedSurface& surface) {
-  json& gltf = writer.json();
+  tinygltf::Model& model = writer.model();
   const std::vector<float>& base = surface.frames.front();
-  const size_t n = base.size() / 3;
   const bool lines = surface.triangles.empty();
-  json attributes = {{"POSITION", addPositionAccessor(writer, base)}};
+  tinygltf::Primitive primitive;
+  primitive.attributes["POSITION"] = writer.addPositionAccessor(base);
   if (surface.colors.size() == base.size())
-    attributes["COLOR_0"] =
-        writer.addAccessor(surface.colors.data(), n, "VEC3", 3, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
+    primitive.attributes["COLOR_0"] = writer.addVertexAttribute(surface.colors, TINYGLTF_TYPE_VEC3);
   std::vector<float> baseNormals;
   if (!lines) {
     computeVertexNormals(base, surface.triangles, baseNormals);
-    attributes["NORMAL"] =
-        writer.addAccessor(baseNormals.data(), n, "VEC3", 3, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
+    primitive.attributes["NORMAL"] = writer.addVertexAttribute(baseNormals, TINYGLTF_TYPE_VEC3);
   }
-  json targets = json::array();
   std::vector<float> delta(base.size()), normals, normalDelta(base.size());
   for (size_t f = 1; f < surface.frames.size(); ++f) {
     for (size_t k = 0; k < base.size(); ++k) delta[k] = surface.frames[f][k] - base[k];
-    json target = {{"POSITION", addPositionAccessor(writer, delta)}};
+    std::map<std::string, int> target = {{"POSITION", writer.addPositionAccessor(delta)}};
     if (!lines) {
       computeVertexNormals(surface.frames[f], surface.triangles, normals);
       for (size_t k = 0; k < base.size(); ++k) normalDelta[k] = normals[k] - baseNormals[k];
-      target["NORMAL"] =
-          writer.addAccessor(normalDelta.data(), n, "VEC3", 3, GltfWriter::kFloat, GltfWriter::kArrayBuffer);
+      target["NORMAL"] = writer.addVertexAttribute(normalDelta, TINYGLTF_TYPE_VEC3);
     }
-    targets.push_back(target);
+    primitive.targets.push_back(std::move(target));
   }
   const std::vector<uint32_t>& indices = lines ? surface.lines : surface.triangles;
+  primitive.indices = writer.addIndices(indices.data(), indices.size());
+  primitive.mode = lines ? TINYGLTF_MODE_LINE : TINYGLTF_MODE_TRIANGLES;
+
+  tinygltf::Material material;
+  material.name = surface.name;
   const glm::vec4& c = surface.color;
-  gltf["materials"].push_back(
-      {{"name", surface.name},
-       {"pbrMetallicRoughness",
-        {{"baseColorFactor", {c.x, c.y, c.z, c.w}}, {"metallicFactor", 0.0f}, {"roughnessFactor", 0.8f}}},
-       {"doubleSided", true}});
-  json primitive = {{"attributes", attributes},
-                    {"mode", lines ? 1 : 4},
-                    {"material", gltf["materials"].size() - 1},
-                    {"indices", writer.addAccessor(indices.data(), indices.size(), "SCALAR", 1,
-                                                   GltfWriter::kUnsignedInt, GltfWriter::kElementArrayBuffer)}};
-  json mesh = {{"name", surface.name}, {"primitives", json::array()}};
-  if (!targets.empty()) {
-    primitive["targets"] = targets;
-    mesh["weights"] = std::vector<float>(targets.size(), 0.0f);
-  }
-  mesh["primitives"].push_back(primitive);
-  gltf["meshes"].push_back(mesh);
-  const int node = int(gltf["nodes"].size());
-  gltf["nodes"].push_back({{"name", surface.name}, {"mesh", gltf["meshes"].size() - 1}});
-  gltf["scenes"][0]["nodes"].push_back(node);
-  return node;
+  material.pbrMetallicRoughness.baseColorFactor = {c.x, c.y, c.z, c.w};
+  material.pbrMetallicRoughness.metallicFactor = 0.0;
+  material.pbrMetallicRoughness.roughnessFactor = 0.8;
+  material.doubleSided = true;
+  model.materials.push_back(std::move(material));
+  primitive.material = int(model.materials.size()) - 1;
+
+  tinygltf::Mesh mesh;
+  mesh.name = surface.name;
+  mesh.weights.assign(primitive.targets.size(), 0.0);
+  mesh.primitives.push_back(std::move(primitive));
+  model.meshes.push_back(std::move(mesh));
+  tinygltf::Node node;
+  node.name = surface.name;
+  node.mesh = int(model.meshes.size()) - 1;
+  return writer.addNode(std::move(node), true);
 }
 
 // Frame f shows morph target f - 1 alone (frame 0: the base); linear
@@ -291,7 +280,7 @@ void addBakedChannel(AnimationBuilder& animation, int node, size_t frames) {
   const size_t targets = frames - 1;
   std::vector<float> values(frames * targets, 0.0f);
   for (size_t f = 1; f < frames; ++f) values[f * targets + (f - 1)] = 1.0f;
-  animation.addChannel(node, "weights", values, "SCALAR", 1);
+  animation.addChannel(node, "weights", values, TINYGLTF_TYPE_SCALAR, 1);
 }
 
 void checkBaked(const std::string& path, const RiggedExportOptions& options) {
@@ -351,7 +340,7 @@ std::vector<std::string> exportRiggedCharacter(const Character& character, const
   }
   const bool binary = fileExtension(path) == "glb";
   writeFileAtomically(
-      path, [&](std::ostream& out) { binary ? writer.writeGlb(out) : writer.writeGltf(out); }, binary);
+      path, [&](std::ostream& out) { writer.write(out, binary); }, binary);
   return warnings;
 }
 
