@@ -33,6 +33,8 @@ namespace mq::ui {
 
 class Autosave;
 class EditorDocument;
+struct ExportAnimatedChoice;
+struct ExportAnimatedSources;
 class PoseTool;
 struct RecoveryCopy;
 class PropertiesPanel;
@@ -98,6 +100,11 @@ class MainWindow : public QMainWindow {
   // the hair guides as morph-target surfaces; without, every clip at 30 fps.
   // Returns what was written (for the status bar), empty with `error` on failure.
   QString exportAnimatedGltf(const QString& path, QString* error = nullptr);
+  // The same as the File > Export Animated glTF dialog chose it: every clip,
+  // or the take with the chosen bakes, and point caches beside the glTF.
+  QString exportAnimated(const ExportAnimatedChoice& choice, QString* error = nullptr);
+  // What the dialog offers: the clips and the bakes there are.
+  ExportAnimatedSources exportAnimatedSources() const;
   void frameAll();
   void setSkeletonVisible(bool visible);
   // Dock layout and window size from the last session (QSettings); the

@@ -29,10 +29,12 @@
 #include "core/io/mesh_export.h"
 #include "core/io/rigged_export.h"
 #include "render/scene_view.h"
+#include "sim/cloth/point_cache.h"
 #include "ui/document/autosave.h"
 #include "ui/document/document_loader.h"
 #include "ui/document/editor_document.h"
 #include "ui/document/motion_commands.h"
+#include "ui/export/export_animated_dialog.h"
 #include "ui/garment/garment_tool.h"
 #include "ui/hair/hair_tool.h"
 #include "ui/motion/apply_motion_dialog.h"
@@ -42,6 +44,7 @@ namespace {
 
 constexpr int kMaxRecentFiles = 8;
 const char* kRecentFilesKey = "recentFiles";
+const char* kLastAnimatedExportKey = "lastAnimatedExport";
 
 // What a worker thread hands back: the result or the error text.
 template <typename T>
@@ -385,12 +388,25 @@ std::vector<float> frameTimes(float start, float fps, int frames) {
 }  // namespace
 
 QString MainWindow::exportAnimatedGltf(const QString& path, QString* error) {
+  const auto* garments = findChild<GarmentTool*>();
+  const auto* hair = findChild<HairTool*>();
+  ExportAnimatedChoice choice;
+  choice.path = path;
+  choice.garments = garments && garments->bakeForExport();
+  choice.hair = hair && hair->hasBake();
+  choice.take = choice.garments || choice.hair;
+  return exportAnimated(choice, error);
+}
+
+QString MainWindow::exportAnimated(const ExportAnimatedChoice& choice, QString* error) {
   const Character& character = document_->character();
   const auto* garments = findChild<GarmentTool*>();
   const auto* hair = findChild<HairTool*>();
-  const std::optional<GarmentTool::BakeForExport> cloth = garments ? garments->bakeForExport() : std::nullopt;
-  const bool hairBaked = hair && hair->hasBake();
+  const std::optional<GarmentTool::BakeForExport> cloth =
+      choice.take && choice.garments && garments ? garments->bakeForExport() : std::nullopt;
+  const bool hairBaked = choice.take && choice.hair && hair && hair->hasBake();
   RiggedExportOptions options;
+  options.fps = choice.clipFps;
   // The bakes play as one take on the time axis of the garment bake, or of
   // the hair bake alone; without a bake, every clip is written.
   if (cloth || hairBaked) {
@@ -404,10 +420,19 @@ QString MainWindow::exportAnimatedGltf(const QString& path, QString* error) {
     options.take = take;
     if (cloth) options.baked = cloth->surfaces;
     if (hairBaked) options.baked.push_back(*hair->bakedGuides(frameTimes(take.start, take.fps, take.frames)));
+  } else if (choice.take) {
+    if (error) *error = tr("There is no garment or hair bake to export: bake first, or export every clip");
+    return QString();
   }
   std::vector<std::string> warnings;
+  std::vector<std::string> caches;
   try {
-    warnings = exportRiggedCharacter(character, path.toStdString(), options);
+    warnings = exportRiggedCharacter(character, choice.path.toStdString(), options);
+    if (options.take && !choice.pointCache.isEmpty()) {
+      const QFileInfo gltf(choice.path);
+      const QString cachePath = gltf.dir().filePath(gltf.completeBaseName() + "." + choice.pointCache);
+      caches = cloth::writeSurfacePointCaches(options.baked, cachePath.toStdString(), options.take->fps);
+    }
   } catch (const std::exception& e) {
     if (error) *error = QString::fromUtf8(e.what());
     return QString();
@@ -416,19 +441,40 @@ QString MainWindow::exportAnimatedGltf(const QString& path, QString* error) {
       options.take ? tr("%1 frames of %2").arg(options.take->frames).arg(QString::fromStdString(options.take->name))
                    : tr("%n clip(s)", "", int(character.clips.size()));
   for (const BakedSurface& s : options.baked) summary += ", " + QString::fromStdString(s.name);
+  if (!caches.empty()) summary += tr(", %n point cache(s)", "", int(caches.size()));
   for (const std::string& w : warnings) summary += "; " + QString::fromStdString(w);
-  statusBar()->showMessage(tr("Exported %1 (%2)").arg(path, summary), 8000);
+  statusBar()->showMessage(tr("Exported %1 (%2)").arg(choice.path, summary), 8000);
   return summary;
 }
 
+ExportAnimatedSources MainWindow::exportAnimatedSources() const {
+  ExportAnimatedSources sources;
+  sources.clipCount = int(document_->character().clips.size());
+  const auto* garments = findChild<GarmentTool*>();
+  const auto* hair = findChild<HairTool*>();
+  if (const auto cloth = garments ? garments->bakeForExport() : std::nullopt)
+    sources.garmentBake = tr("%1 frames at %2 fps, %3 %4")
+                              .arg(cloth->frames)
+                              .arg(double(cloth->fps))
+                              .arg(cloth->surfaces.size())
+                              .arg(cloth->surfaces.size() == 1 ? tr("surface") : tr("surfaces"));
+  if (hair && hair->hasBake())
+    sources.hairBake = tr("%1 frames at %2 fps").arg(hair->bakeFrameCount()).arg(double(hair->bakeFps()));
+  return sources;
+}
+
 void MainWindow::exportAnimatedWithDialog() {
-  QString filter;
-  QString path = QFileDialog::getSaveFileName(this, tr("Export Animated glTF"), QString(),
-                                              tr("glTF binary (*.glb);;glTF with embedded data (*.gltf)"), &filter);
-  if (path.isEmpty()) return;
-  if (QFileInfo(path).suffix().isEmpty()) path += filter.contains("gltf)") ? ".gltf" : ".glb";
+  QSettings settings;
+  QString path = settings.value(kLastAnimatedExportKey).toString();
+  if (path.isEmpty())
+    path = QDir(QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation))
+               .filePath(QString::fromStdString(document_->character().name).simplified().replace(' ', '_') + ".glb");
+  ExportAnimatedDialog dialog(exportAnimatedSources(), path, this);
+  if (dialog.exec() != QDialog::Accepted) return;
+  const ExportAnimatedChoice choice = dialog.choice();
+  settings.setValue(kLastAnimatedExportKey, choice.path);
   QString error;
-  if (exportAnimatedGltf(path, &error).isEmpty() && reportError) reportError(tr("Could not export"), error);
+  if (exportAnimated(choice, &error).isEmpty() && reportError) reportError(tr("Could not export"), error);
 }
 
 void MainWindow::addRecentFile(const QString& path) {

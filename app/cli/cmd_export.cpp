@@ -91,25 +91,12 @@ TakeRequest takeRequest(const Args& args, const LoadedScene& scene, const std::s
 // --point-cache DIR/NAME.pc2|.mdd: per baked surface NAME_<surface>.pc2 (or
 // .mdd) with every frame, and NAME_<surface>.obj, the mesh it deforms.
 void writePointCaches(const std::vector<BakedSurface>& surfaces, const std::string& path, float fps) {
-  const std::filesystem::path target(path);
   const std::string ext = fileExtension(path);
   if (ext != "pc2" && ext != "mdd") throw Error("--point-cache writes .pc2 or .mdd files: " + path);
-  std::error_code ec;
-  if (!target.parent_path().empty()) std::filesystem::create_directories(target.parent_path(), ec);
-  if (ec) throw FileError(target.parent_path().string(), "cannot create the directory: " + ec.message());
-  for (const BakedSurface& s : surfaces) {
-    const std::filesystem::path stem = target.parent_path() / (target.stem().string() + "_" + surfaceFileStem(s.name));
-    cloth::PointCache cache;
-    cache.pointCount = s.frames.front().size() / 3;
-    cache.samples = s.frames;
-    if (ext == "pc2")
-      cloth::writePointCache(stem.string() + ".pc2", cache);
-    else
-      cloth::writeMdd(stem.string() + ".mdd", cache, fps);
-    writeSurfaceObj(s, stem.string() + ".obj");
-    std::cout << "wrote " << stem.string() << "." << ext << " and " << stem.string() << ".obj (" << s.name << ", "
-              << s.frames.size() << " frames of " << cache.pointCount << " points)\n";
-  }
+  const std::vector<std::string> stems = cloth::writeSurfacePointCaches(surfaces, path, fps);
+  for (size_t i = 0; i < stems.size(); ++i)
+    std::cout << "wrote " << stems[i] << "." << ext << " and " << stems[i] << ".obj (" << surfaces[i].name << ", "
+              << surfaces[i].frames.size() << " frames of " << surfaces[i].frames.front().size() / 3 << " points)\n";
 }
 
 // export SCENE --with garments,hair: the character rigged, playing the

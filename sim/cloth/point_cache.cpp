@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <ostream>
 
 #include "core/io/byte_stream.h"
@@ -128,6 +129,30 @@ PointCache readMdd(const std::string& path) {
     }
   }
   return cache;
+}
+
+std::vector<std::string> writeSurfacePointCaches(const std::vector<BakedSurface>& surfaces, const std::string& path,
+                                                 float fps) {
+  const std::filesystem::path target(path);
+  const std::string ext = fileExtension(path);
+  if (ext != "pc2" && ext != "mdd") throw Error("a point cache is a .pc2 or .mdd file: " + path);
+  std::error_code ec;
+  if (!target.parent_path().empty()) std::filesystem::create_directories(target.parent_path(), ec);
+  if (ec) throw FileError(target.parent_path().string(), "cannot create the directory: " + ec.message());
+  std::vector<std::string> written;
+  for (const BakedSurface& s : surfaces) {
+    const std::filesystem::path stem = target.parent_path() / (target.stem().string() + "_" + surfaceFileStem(s.name));
+    PointCache cache;
+    cache.pointCount = s.frames.front().size() / 3;
+    cache.samples = s.frames;
+    if (ext == "pc2")
+      writePointCache(stem.string() + ".pc2", cache);
+    else
+      writeMdd(stem.string() + ".mdd", cache, fps);
+    writeSurfaceObj(s, stem.string() + ".obj");
+    written.push_back(stem.string());
+  }
+  return written;
 }
 
 }  // namespace mq::cloth

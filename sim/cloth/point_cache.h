@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "core/io/baked_surface.h"
+
 namespace mq::cloth {
 
 struct PointCache {
@@ -34,5 +36,14 @@ PointCache readPointCache(const std::string& path);
 void writeMdd(const std::string& path, const PointCache& cache, float fps);
 // Strict like readPointCache; the frame times are checked to increase.
 PointCache readMdd(const std::string& path);
+
+// Baked surfaces (a take's garments and hair) as point caches: for `path`
+// DIR/NAME.pc2 or DIR/NAME.mdd, per surface DIR/NAME_<surface>.pc2 (or .mdd)
+// with every frame, and DIR/NAME_<surface>.obj, the mesh it deforms. Creates
+// DIR. Returns the path of each cache written, without its extension.
+// Throws Error for another extension, FileError for a file or folder that
+// cannot be written.
+std::vector<std::string> writeSurfacePointCaches(const std::vector<BakedSurface>& surfaces, const std::string& path,
+                                                 float fps);
 
 }  // namespace mq::cloth

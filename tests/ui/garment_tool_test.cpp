@@ -19,10 +19,12 @@
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QMessageBox>
 #include <QMouseEvent>
 #include <QPushButton>
+#include <QRadioButton>
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
 #include <QTest>
@@ -42,6 +44,7 @@
 #include "sim/cloth/point_cache.h"
 #include "test_window.h"
 #include "ui/document/editor_document.h"
+#include "ui/export/export_animated_dialog.h"
 #include "ui/garment/garment_panel.h"
 #include "ui/garment/garment_tool.h"
 #include "ui/jobs/long_job.h"
@@ -466,6 +469,42 @@ class GarmentToolTest : public QObject {
     PosedCharacter played;
     played.evaluate(take, 0, (frames - 1) / tool_->scene().cloth.fps, nullptr, nullptr);
     QVERIFY(maxDifference(played.meshes().back().positions, last) < 1e-5f);
+
+    // The export dialog: the take is offered (a garment bake, no hair bake),
+    // Export wants a glTF path, and the take's point caches land beside it.
+    {
+      ExportAnimatedDialog dialog(window_->exportAnimatedSources(), gltfDir.filePath("dialog.txt"));
+      QVERIFY(dialog.takeButton()->isEnabled() && dialog.takeButton()->isChecked());
+      QVERIFY(dialog.garmentsBox()->isEnabled() && dialog.garmentsBox()->isChecked());
+      QVERIFY(!dialog.hairBox()->isEnabled());
+      QVERIFY(!dialog.exportButton()->isEnabled());  // not a .glb or .gltf
+      dialog.pathEdit()->setText(gltfDir.filePath("dialog.gltf"));
+      QVERIFY(dialog.exportButton()->isEnabled());
+      dialog.pointCacheBox()->setCurrentIndex(dialog.pointCacheBox()->findData(QString("mdd")));
+      if (const QString shots = qEnvironmentVariable("MANNEQUIN_TEST_SHOTS"); !shots.isEmpty()) {
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        dialog.grab().save(shots + "/export_animated_dialog.png");
+        dialog.hide();
+      }
+      const QString taken = window_->exportAnimated(dialog.choice(), &error);
+      QVERIFY2(taken.contains("1 point cache"), qPrintable(taken + error));
+      const QStringList mdd = QDir(gltfDir.path()).entryList({"dialog_*.mdd"}, QDir::Files);
+      QCOMPARE(mdd.size(), 1);
+      const cloth::PointCache cached = cloth::readMdd(QDir(gltfDir.path()).filePath(mdd[0]).toStdString());
+      QCOMPARE(int(cached.samples.size()), frames);
+      QVERIFY(maxDifference(cached.samples.back(), last) == 0.0f);
+      // Every clip instead: the character alone, no surface, no cache.
+      dialog.clipsButton()->setChecked(true);
+      QVERIFY(!dialog.pointCacheBox()->isEnabled());
+      dialog.pathEdit()->setText(gltfDir.filePath("clips.glb"));
+      const ExportAnimatedChoice clips = dialog.choice();
+      QVERIFY(!clips.take && clips.pointCache.isEmpty());
+      QVERIFY2(!window_->exportAnimated(clips, &error).isEmpty(), qPrintable(error));
+      const Character exported = importCharacter(gltfDir.filePath("clips.glb").toStdString());
+      QCOMPARE(exported.meshes.size(), doc()->character().meshes.size());
+      QCOMPARE(exported.clips.size(), doc()->character().clips.size());
+    }
 
     // The stretch overlay has a value per vertex.
     QTest::mouseClick(panel()->stretchCheck(), Qt::LeftButton);
