@@ -69,6 +69,9 @@ PointCache readPointCache(const std::string& path) {
   cache.sampleRate = in.f32("the sample rate");
   const int32_t samples = in.i32("the sample count");
   if (points < 0 || samples < 0) in.fail("negative point or sample count");
+  // Samples of no points take no bytes: the size check below cannot bound
+  // their count.
+  if (points == 0 && samples != 0) in.fail(std::to_string(samples) + " samples of no points");
   if (!std::isfinite(cache.startFrame) || !std::isfinite(cache.sampleRate))
     in.fail("the start frame and sample rate must be finite");
   // Compared by division: two corrupt counts cannot overflow the product.

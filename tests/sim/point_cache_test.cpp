@@ -89,6 +89,13 @@ TEST(PointCache, DamagedFilesAreRefusedWithTheirProblem) {
   damaged = bytes;
   damaged.push_back(0);
   EXPECT_NE(problem(damaged), "accepted");
+  // No points and a billion samples (found by fuzzing): the samples take no
+  // bytes, so the size check cannot bound them; refused before allocating.
+  damaged.assign(bytes.begin(), bytes.begin() + 32);
+  const int32_t none = 0, billion = 1000000000;
+  std::memcpy(damaged.data() + 16, &none, 4);
+  std::memcpy(damaged.data() + 28, &billion, 4);
+  EXPECT_NE(problem(damaged).find("1000000000 samples of no points"), std::string::npos);
 }
 
 TEST(PointCache, MddRoundTripIsExactAndBigEndian) {
