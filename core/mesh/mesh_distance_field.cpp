@@ -142,13 +142,13 @@ bool MeshDistanceField::pushOut(glm::vec3& p, float margin, glm::vec3* normal) c
   // steps along the gradient settle the point at the margin. Where they do
   // not (a fold, the rim of a hole), the farthest out of them is kept.
   glm::vec3 best = p, bestNormal(0.0f), q = p;
-  float bestDistance = distance(p);
+  float bestDistance = distance(p), d = bestDistance;
   if (bestDistance >= margin) return false;
   for (int step = 0; step < 6 && bestDistance < margin; ++step) {
     const glm::vec3 out = outward(q);
     if (out == glm::vec3(0.0f)) break;
-    q += out * (margin - distance(q) + 1e-5f);
-    const float d = distance(q);
+    q += out * (margin - d + 1e-5f);
+    d = distance(q);
     if (d > bestDistance) {
       best = q;
       bestNormal = out;

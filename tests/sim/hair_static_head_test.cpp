@@ -29,7 +29,6 @@ TEST(HairStaticHead, SettledGuidesStayOutOfTheScan) {
   HairSimulator sim(params);
   sim.setRest(guides);
   const PosedHairColliders body = rig.body.posed({}, params.collisionMargin);
-  if (getenv("NOSURF")) const_cast<PosedHairColliders&>(body).surface = nullptr;
   for (int step = 0; step < 120; ++step) sim.step(1.0f / 60.0f, glm::mat4(1.0f), &body);
 
   const test::OpenMeshInside inside(head.meshes[0]);
