@@ -22,6 +22,7 @@
 namespace mq {
 namespace {
 
+#ifndef MQ_ISOLATE_IN_PROCESS
 // Exit codes of our own, apart from the ones a runtime uses when it stops a
 // process (1 from AddressSanitizer, for instance): any other code is a crash.
 enum ChildExit { kSucceeded = 0, kFailed = 97, kOutOfMemory = 98 };
@@ -47,10 +48,24 @@ enum ChildExit { kSucceeded = 0, kFailed = 97, kOutOfMemory = 98 };
   _exit(code);  // no atexit handlers or static destructors of the parent's state
 }
 
+#endif
+
 std::string gibibytes(size_t bytes) { return std::to_string(bytes >> 30) + " GiB"; }
 
 }  // namespace
 
+#ifdef MQ_ISOLATE_IN_PROCESS
+// The fuzzing build (core/CMakeLists.txt): the fuzzer's own processes stand in for the child.
+IsolatedOutcome runIsolated(const std::function<bool()>& work, const IsolationLimits& limits) {
+  try {
+    return work() ? IsolatedOutcome{true, ""} : IsolatedOutcome{false, "failed"};
+  } catch (const std::bad_alloc&) {
+    return {false, "ran out of memory (limit " + gibibytes(limits.memoryBytes) + ")"};
+  } catch (...) {
+    return {false, "failed"};
+  }
+}
+#else
 IsolatedOutcome runIsolated(const std::function<bool()>& work, const IsolationLimits& limits) {
   const pid_t child = fork();
   if (child < 0) return {false, std::string("cannot start a process: ") + std::strerror(errno)};
@@ -82,5 +97,7 @@ IsolatedOutcome runIsolated(const std::function<bool()>& work, const IsolationLi
   if (code == kFailed) return {false, "failed"};
   return {false, "crashed (exit code " + std::to_string(code) + ")"};
 }
+
+#endif
 
 }  // namespace mq
