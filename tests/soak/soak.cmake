@@ -1,11 +1,15 @@
 # Long runs stay finite, within the stretch limit, and flat in memory.
 #   cmake -DCLI=mannequin-cli -DSCENES=resources/scenes -DWORK=DIR [-DSTEPS=N]
-#         [-DHAIR_FRAMES=N] [-DOUTFIT_FRAMES=N] -P soak.cmake
+#         [-DHAIR_FRAMES=N] [-DOUTFIT_FRAMES=N] [-DFABRICS=a;b] [-DINTEGRATORS=a;b]
+#         [-DSTYLES=a;b] -P soak.cmake
 # Every fabric preset under every integrator on the sheet with colliders for
-# STEPS solver steps (explicit integrators take many a frame: a one-frame
-# run measures how many), every built-in hairstyle's dynamics on the walk,
-# and the garment outfit.
-# ctest -L soak runs it with the issue's lengths (hours on 2 cores).
+# STEPS solver steps, every built-in hairstyle's dynamics on the walk, and
+# the garment outfit. An explicit integrator takes about 100,000 steps a
+# frame on the sheet: it runs one frame at the frame rate that makes it
+# STEPS steps (measured by a short probe); the implicit one runs as many
+# frames at the scene's rate as make STEPS steps.
+# ctest -L soak runs it with the issue's lengths (hours on 2 cores);
+# soak_script (label app) runs it with tiny ones, so the script itself is tested.
 if(NOT DEFINED STEPS)
   set(STEPS 10000)
 endif()
@@ -15,13 +19,23 @@ endif()
 if(NOT DEFINED OUTFIT_FRAMES)
   set(OUTFIT_FRAMES 3000)
 endif()
+if(NOT DEFINED FABRICS)
+  set(FABRICS cotton silk denim wool leather)
+endif()
+if(NOT DEFINED INTEGRATORS)
+  set(INTEGRATORS symplectic_euler verlet rk4 implicit_euler)
+endif()
+if(NOT DEFINED STYLES)
+  set(STYLES long_straight bob wavy curly)
+endif()
 file(MAKE_DIRECTORY "${WORK}")
 set(failures "")
 
 # Runs one scene; checks the stats it wrote.
+# ARGN: more simulate options (--fps F).
 function(soak name scene frames)
   set(stats "${WORK}/${name}.json")
-  execute_process(COMMAND "${CLI}" simulate "${scene}" --frames ${frames} --stats-json "${stats}"
+  execute_process(COMMAND "${CLI}" simulate "${scene}" --frames ${frames} ${ARGN} --stats-json "${stats}"
                   RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT code EQUAL 0)
     set(failures "${failures}\n${name}: exit ${code}: ${err}" PARENT_SCOPE)
@@ -46,7 +60,7 @@ function(soak name scene frames)
     string(JSON end ERROR_VARIABLE none GET "${json}" ${prefix}rss_mb_end)
     if(NOT start MATCHES "NOTFOUND" AND NOT end MATCHES "NOTFOUND" AND NOT start STREQUAL "" AND NOT end STREQUAL "")
       string(APPEND report " ${prefix}memory ${start} -> ${end} MB;")
-      math(EXPR limit "${start}" OUTPUT_FORMAT DECIMAL)  # integer part
+      string(REGEX REPLACE "[.].*$" "" limit "${start}")  # math() takes integers only
       math(EXPR limit "${limit} + ${limit} / 10 + 20")
       if(end GREATER limit)
         string(APPEND problems " ${prefix}memory grew from ${start} to ${end} MB;")
@@ -67,24 +81,44 @@ function(soak name scene frames)
 endfunction()
 
 file(READ "${SCENES}/cloth_sheet_colliders.json" sheet)
-foreach(fabric cotton silk denim wool leather)
-  foreach(integrator symplectic_euler verlet rk4 implicit_euler)
+string(JSON scene_fps GET "${sheet}" cloth fps)
+string(REGEX REPLACE "[.].*$" "" scene_fps "${scene_fps}")
+set(probe_fps 1000)
+foreach(fabric ${FABRICS})
+  foreach(integrator ${INTEGRATORS})
     string(JSON scene SET "${sheet}" cloth fabric "\"${fabric}\"")
     string(JSON scene SET "${scene}" cloth integrator "\"${integrator}\"")
-    set(path "${WORK}/sheet_${fabric}_${integrator}.json")
+    set(name sheet_${fabric}_${integrator})
+    set(path "${WORK}/${name}.json")
     file(WRITE "${path}" "${scene}")
-    execute_process(COMMAND "${CLI}" simulate "${path}" --frames 1 --stats-json "${WORK}/probe.json"
-                    RESULT_VARIABLE code OUTPUT_QUIET ERROR_QUIET)
-    set(frames 1)
-    if(code EQUAL 0)
-      file(READ "${WORK}/probe.json" probe)
-      string(JSON substeps GET "${probe}" substeps_per_frame)
-      math(EXPR frames "(${STEPS} + ${substeps} - 1) / ${substeps}")
+    if(integrator STREQUAL "implicit_euler")
+      set(fps ${scene_fps})
+    else()
+      set(fps ${probe_fps})
     endif()
-    soak(sheet_${fabric}_${integrator} "${path}" ${frames})
+    execute_process(COMMAND "${CLI}" simulate "${path}" --frames 1 --fps ${fps} --stats-json "${WORK}/probe.json"
+                    RESULT_VARIABLE code OUTPUT_QUIET ERROR_VARIABLE err)
+    if(NOT code EQUAL 0)
+      string(APPEND failures "\n${name}: the probe failed: ${err}")
+      continue()
+    endif()
+    file(READ "${WORK}/probe.json" probe)
+    string(JSON substeps GET "${probe}" substeps_per_frame)
+    string(REGEX REPLACE "[.].*$" "" substeps "${substeps}")
+    if(integrator STREQUAL "implicit_euler")
+      math(EXPR frames "(${STEPS} + ${substeps} - 1) / ${substeps}")
+      soak(${name} "${path}" ${frames})
+    else()
+      # substeps * probe_fps steps a second: one frame of STEPS steps.
+      math(EXPR fps "(${substeps} * ${probe_fps}) / ${STEPS}")
+      if(fps LESS ${scene_fps})
+        set(fps ${scene_fps})
+      endif()
+      soak(${name} "${path}" 1 --fps ${fps})
+    endif()
   endforeach()
 endforeach()
-foreach(style long_straight bob wavy curly)
+foreach(style ${STYLES})
   # On the default mannequin's walk.
   file(READ "${SCENES}/hair_${style}.json" hair)
   string(JSON hair SET "${hair}" animation clip "\"walk\"")
