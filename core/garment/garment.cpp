@@ -76,6 +76,17 @@ void Garment::validate() const {
   }
 }
 
+std::vector<SeamLengths> seamLengths(const Garment& garment) {
+  garment.validate();
+  std::vector<SeamLengths> lengths;
+  for (const Seam& seam : garment.seams) {
+    const Panel& a = garment.panels[garment.findPanel(seam.panelA)];
+    const Panel& b = garment.panels[garment.findPanel(seam.panelB)];
+    lengths.push_back({a.edgeLength(a.findEdge(seam.edgeA)), b.edgeLength(b.findEdge(seam.edgeB))});
+  }
+  return lengths;
+}
+
 GarmentMesh buildGarmentMesh(const Garment& garment) {
   garment.validate();
   std::vector<PanelMeshOptions> options = meshOptions(garment);

@@ -58,6 +58,14 @@ struct Garment {
   void validate() const;
 };
 
+// The arc lengths (metres) of the two edges a seam sews, per seam, for a
+// pattern check: edges of different lengths ease (a sleeve cap into its
+// armhole) or pucker. Throws mq::Error for an invalid garment.
+struct SeamLengths {
+  float a = 0.0f, b = 0.0f;
+};
+std::vector<SeamLengths> seamLengths(const Garment& garment);
+
 // The meshed, placed garment: one triangle mesh over all panels.
 struct GarmentMesh {
   std::vector<float> positions;            // 3 per vertex: world space around the rest-pose body

@@ -205,6 +205,35 @@ class GarmentToolTest : public QObject {
     undo()->undo();
   }
 
+  void patternExportsTheCurrentGarment() {
+    QVERIFY(panel()->patternButton()->isEnabled());
+    QTemporaryDir dir;
+    const QString path = dir.filePath("tshirt.svg");
+    QVERIFY2(tool_->exportPattern(0, path, 0.01f), qPrintable(tool_->lastError()));
+    auto read = [](const QString& file) {
+      QFile f(file);
+      return f.open(QIODevice::ReadOnly) ? QString::fromUtf8(f.readAll()) : QString();
+    };
+    const QString svg = read(path);
+    QCOMPARE(svg.count("class=\"sew\""), 4);  // front, back, two sleeves
+    QCOMPARE(svg.count("class=\"cut\""), 4);
+    // The pattern is the garment as edited now: a measurement changes it, undo brings it back.
+    const std::vector<GarmentParameter> parameters = garmentParameters("tshirt");
+    QDoubleSpinBox* field = panel()->measurementField(QString::fromStdString(parameters[0].name));
+    QVERIFY(field != nullptr);
+    field->setValue(field->value() + 0.1 * (parameters[0].max - parameters[0].min) *
+                                         (field->value() < 0.5 * (parameters[0].max + parameters[0].min) ? 1 : -1));
+    QVERIFY(tool_->exportPattern(0, path, 0.01f));
+    QVERIFY(read(path) != svg);
+    undo()->undo();
+    QVERIFY(tool_->exportPattern(0, path, 0.01f));
+    QCOMPARE(read(path), svg);
+    // Refused without a garment, or where no file can be written, saying why.
+    QVERIFY(!tool_->exportPattern(-1, path));
+    QVERIFY(!tool_->exportPattern(0, dir.filePath("tshirt.svg/inside.svg")));
+    QVERIFY2(tool_->lastError().contains("inside.svg"), qPrintable(tool_->lastError()));
+  }
+
   void fabricAndIntegratorAreUndoable() {
     QComboBox* fabric = panel()->fabricCombo();
     const int silk = fabric->findText("silk");

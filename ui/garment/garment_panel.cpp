@@ -122,10 +122,23 @@ void GarmentPanel::buildGarmentGroup(QVBoxLayout* layout) {
   add_ = new QPushButton(tr("Add"));
   add_->setToolTip(tr("Add a built-in garment sized to the character"));
   remove_ = new QPushButton(tr("Remove"));
+  pattern_ = new QPushButton(tr("Pattern"));
+  pattern_->setToolTip(tr("Export the garment's sewing pattern as SVG at 1:1 (millimetres)"));
   addRow->addWidget(typeCombo_, 1);
   addRow->addWidget(add_);
   addRow->addWidget(remove_);
+  addRow->addWidget(pattern_);
   garmentLayout->addLayout(addRow);
+  auto* patternMenu = new QMenu(pattern_);
+  const auto exportPattern = [this](float seamAllowance) {
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Export the sewing pattern"), QString(), tr("SVG pattern (*.svg)"));
+    if (!path.isEmpty() && !tool_->exportPattern(tool_->currentGarment(), path, seamAllowance))
+      QMessageBox::warning(this, tr("Export pattern"), tool_->lastError());
+  };
+  patternMenu->addAction(tr("SVG, sewing lines..."), this, [exportPattern] { exportPattern(0.0f); });
+  patternMenu->addAction(tr("SVG with a 1 cm seam allowance..."), this, [exportPattern] { exportPattern(0.01f); });
+  pattern_->setMenu(patternMenu);
   auto* layerForm = new QFormLayout;
   layer_ = new QSpinBox;
   layer_->setRange(0, Garment::kMaxLayer);
@@ -361,6 +374,7 @@ void GarmentPanel::refresh() {
     list_->setCurrentRow(current);
   }
   remove_->setEnabled(current >= 0);
+  pattern_->setEnabled(current >= 0);
   particleDistance_->setEnabled(current >= 0);
   layer_->setEnabled(current >= 0);
   if (current >= 0) {

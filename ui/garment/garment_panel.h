@@ -45,6 +45,7 @@ class GarmentPanel : public QWidget {
   QComboBox* typeCombo() const { return typeCombo_; }
   QSpinBox* layerField() const { return layer_; }
   QPushButton* addButton() const { return add_; }
+  QPushButton* patternButton() const { return pattern_; }
   QComboBox* fabricCombo() const { return fabricCombo_; }
   QComboBox* integratorCombo() const { return integratorCombo_; }
   QSpinBox* clothFpsField() const { return clothFps_; }
@@ -94,7 +95,7 @@ class GarmentPanel : public QWidget {
   GarmentTool* tool_;
   QListWidget* list_;
   QComboBox* typeCombo_;
-  QPushButton *add_, *remove_;
+  QPushButton *add_, *remove_, *pattern_;
   QSpinBox* layer_;
   QWidget* measurements_;
   QFormLayout* measurementForm_;

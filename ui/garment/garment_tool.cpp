@@ -27,6 +27,7 @@
 #include "core/garment/fabric_color.h"
 #include "core/garment/garment_json.h"
 #include "core/garment/parametric_garments.h"
+#include "core/garment/pattern_svg.h"
 #include "core/garment/pin_remap.h"
 #include "core/geometry/nearest_points.h"
 #include "core/util/error.h"
@@ -830,6 +831,23 @@ bool GarmentTool::exportBake(const QString& dir, bool pointCache) {
       else
         bake_->garments[g].exportObjSequence(dir.toStdString(), stem);
     }
+  } catch (const std::exception& e) {
+    lastError_ = QString::fromStdString(e.what());
+    return false;
+  }
+  lastError_.clear();
+  return true;
+}
+
+bool GarmentTool::exportPattern(int garment, const QString& path, float seamAllowance) {
+  if (garment < 0 || garment >= garmentCount()) {
+    lastError_ = tr("Choose a garment first");
+    return false;
+  }
+  try {
+    PatternSvgOptions options;
+    options.seamAllowance = seamAllowance;
+    writePatternSvg(path.toStdString(), scene_.garments[size_t(garment)], options);
   } catch (const std::exception& e) {
     lastError_ = QString::fromStdString(e.what());
     return false;

@@ -198,6 +198,10 @@ class GarmentTool : public QObject {
   // pointCache: one Point Cache 2 file per garment instead (<stem>.pc2 and
   // the mesh it deforms, <stem>.obj: BakedCloth::exportPointCache).
   bool exportBake(const QString& dir, bool pointCache = false);
+  // The garment's sewing pattern as SVG at 1:1 (core/garment/pattern_svg.h),
+  // with the cutting line seamAllowance metres outside when > 0; false
+  // (lastError says why) when it cannot be written.
+  bool exportPattern(int garment, const QString& path, float seamAllowance = 0.0f);
   // The bake for an animated glTF: its clip (-1 none), first frame's time,
   // fps and frame count, and one surface per garment (the sheet last),
   // coloured by fabric. Null without a bake.
