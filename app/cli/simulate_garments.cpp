@@ -9,6 +9,7 @@
 
 #include "core/garment/fabric_color.h"
 #include "core/garment/garment_json.h"
+#include "core/mesh/bent_edges.h"
 #include "core/util/error.h"
 #include "sim/cloth/baked_cloth.h"
 #include "sim/garment/garment_layers.h"
@@ -55,6 +56,7 @@ SimulatedGarments::SimulatedGarments(const nlohmann::json& section, const cloth:
   order_ = cloth::layerOrder(garments_);
   cloth::wearInLayers(sims_, order_, layered_);
   maxInsideInner_.assign(sims_.size(), 0);
+  bentShareSum_.assign(sims_.size(), 0.0);
   sewingSteps_.assign(sims_.size(), 0);
   substeps_.assign(sims_.size(), 0);
   stretchPasses_.assign(sims_.size(), 0);
@@ -120,8 +122,10 @@ void SimulatedGarments::measureFrame() {
     const int inside = insideInner(i);
     maxInsideInner_[i] = std::max(maxInsideInner_[i], inside);
     total += inside;
+    bentShareSum_[i] += bentEdges(sims_[i]->positions(), sims_[i]->triangles(), kBentDegrees).share();
   }
   maxInsideInnerTotal_ = std::max(maxInsideInnerTotal_, total);
+  ++measuredFrames_;
 }
 
 void SimulatedGarments::exportFrame(const std::string& dir, int frame) const {
@@ -180,6 +184,8 @@ nlohmann::json SimulatedGarments::stats() const {
                    {"cg_residual_max",
                     residuals_[i].empty() ? 0.0f : *std::max_element(residuals_[i].begin(), residuals_[i].end())},
                    {"seam_gap", sim.seamGap()},
+                   {"bent_edge_share", bentEdges(sim.positions(), sim.triangles(), kBentDegrees).share()},
+                   {"mean_bent_edge_share", measuredFrames_ ? bentShareSum_[i] / measuredFrames_ : 0.0},
                    {"max_stretch", st.maxStretch},
                    {"penetrating_vertices", sim.simulator().penetratingVertices()},
                    {"bbox_min", {st.boundsMin.x, st.boundsMin.y, st.boundsMin.z}},

@@ -63,7 +63,8 @@ class SimulatedGarments {
   std::vector<BakedSurface> bakedSurfaces() const;
   void addTo(ClothNow& now) const;
   // Per garment: name, layer, vertices, welded, sewing_steps, seam_gap, max_stretch,
-  // penetrating_vertices, inside_inner_vertices (now and max_: in any measured frame), bbox.
+  // penetrating_vertices, inside_inner_vertices (now and max_: in any measured frame),
+  // bent_edge_share (now and mean_: over the measured frames), bbox.
   nlohmann::json stats() const;
   // The wall time of each phase of the solver (cloth::ClothPhase), all garments, summed over step().
   const double* phaseSeconds() const { return phaseSeconds_; }
@@ -81,6 +82,10 @@ class SimulatedGarments {
   std::vector<std::vector<float>> residuals_;                           // per garment: each step()'s solver residual
   double phaseSeconds_[cloth::kClothPhaseCount] = {};                   // all garments, summed over step()
   int frames_ = 0;
+  // How crinkled: the share of interior edges bent more than kBentDegrees (core/mesh/bent_edges.h).
+  static constexpr float kBentDegrees = 15.0f;
+  std::vector<double> bentShareSum_;  // per garment, over measureFrame()
+  int measuredFrames_ = 0;
   std::vector<cloth::BakedCloth> recorded_;  // per garment, by recordFrame
 };
 

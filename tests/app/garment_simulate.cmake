@@ -19,6 +19,13 @@ if(NOT welded)
   message(FATAL_ERROR "the ${GARMENT}'s seams were not welded")
 endif()
 check_body_and_stretch("${stats}" penetrating_vertices ${MAX_PENETRATING} "")
+# How crinkled (core/mesh/bent_edges.h): a draped garment has folds but most
+# of its edges are near flat; cloth that crinkles or explodes bends most.
+string(JSON bent GET "${stats}" garments 0 bent_edge_share)
+string(JSON mean_bent GET "${stats}" garments 0 mean_bent_edge_share)
+if(NOT bent GREATER 0 OR bent GREATER 0.5 OR NOT mean_bent GREATER 0 OR mean_bent GREATER 0.5)
+  message(FATAL_ERROR "bent edges: ${bent} at the last frame, ${mean_bent} over the frames (0 to 0.5 expected)")
+endif()
 # The time profile: every part of the frame, none negative, the parts within the frame's wall time.
 function(microseconds ms out)  # "12.3456" ms -> 12345 (CMake's math is integer); tiny exponents -> 0
   if(ms MATCHES "e-")
