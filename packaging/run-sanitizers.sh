@@ -9,8 +9,8 @@
 # (label app: the README's commands on the shared assets and example scenes;
 # no render command). --gui: the editor too (render, ui, app), and the
 # editor's tests (label gui) under Xvfb, e.g. `--gui -R gui_monkey`; our
-# code is checked, Debian's Qt, VTK and Mesa are not instrumented (their
-# leaks at exit are suppressed in packaging/lsan.supp). --replay: runs fuzz target TARGET's entry point
+# code is checked, Debian's Qt, VTK and Mesa are not instrumented (and
+# leaks are not checked: see below). --replay: runs fuzz target TARGET's entry point
 # (tests/fuzz/fuzz_TARGET.cpp) over inputs a fuzzer kept.
 set -euo pipefail
 top="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -42,6 +42,10 @@ if [ -n "$replay" ]; then
 fi
 cd "$build"
 if [ "$gui" = ON ]; then
+  # No leak check here: at exit D-Bus and Mesa's driver (loaded at run time,
+  # and unloaded before LeakSanitizer reports, so their stacks cannot be
+  # named) leave allocations behind; the unit and app runs check leaks.
+  export ASAN_OPTIONS=detect_leaks=0:abort_on_error=1
   export LIBGL_ALWAYS_SOFTWARE=1
   exec xvfb-run -a -s "-screen 0 1600x1000x24" ctest -L "$label" --output-on-failure -j 1 "$@"
 fi

@@ -11,14 +11,16 @@ namespace mq::ui {
 template <class Tool>
 bool routeMouseEvent(Tool* tool, QEvent* event, bool (Tool::*press)(QMouseEvent*), bool (Tool::*move)(QMouseEvent*),
                      bool (Tool::*release)(QMouseEvent*)) {
-  auto* mouse = static_cast<QMouseEvent*>(event);
+  // Cast only once the type is known: any other event is not a QMouseEvent
+  // (UBSan's vptr check caught the cast done up front).
+  auto mouse = [event] { return static_cast<QMouseEvent*>(event); };
   switch (event->type()) {
     case QEvent::MouseButtonPress:
-      return (tool->*press)(mouse);
+      return (tool->*press)(mouse());
     case QEvent::MouseMove:
-      return (tool->*move)(mouse);
+      return (tool->*move)(mouse());
     case QEvent::MouseButtonRelease:
-      return (tool->*release)(mouse);
+      return (tool->*release)(mouse());
     default:
       return false;
   }
