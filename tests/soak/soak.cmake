@@ -34,7 +34,7 @@ set(failures "")
 # Runs one scene; checks the stats it wrote.
 # ARGN: more simulate options (--fps F).
 function(soak name scene frames)
-  set(stats "${WORK}/${name}.json")
+  set(stats "${WORK}/${name}.stats.json")  # beside the scene, not over it
   execute_process(COMMAND "${CLI}" simulate "${scene}" --frames ${frames} ${ARGN} --stats-json "${stats}"
                   RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT code EQUAL 0)
