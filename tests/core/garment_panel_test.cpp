@@ -6,19 +6,12 @@
 #include "core/garment/panel.h"
 #include "core/garment/panel_mesher.h"
 #include "core/util/error.h"
+#include "garment_test_util.h"
 
 namespace mq {
 namespace {
 
-Panel rectangle(float w, float h) {
-  Panel p;
-  p.name = "rect";
-  p.addLine("bottom", {0, 0});
-  p.addLine("right", {w, 0});
-  p.addLine("top", {w, h});
-  p.addLine("left", {0, h});
-  return p;
-}
+Panel rectangle(float w, float h) { return test::rectanglePanel("rect", w, h); }
 
 // An L-shaped (concave) panel with a curved top and a cubic side.
 Panel curvedPanel() {

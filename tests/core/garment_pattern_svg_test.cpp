@@ -10,19 +10,13 @@
 #include "core/garment/garment.h"
 #include "core/garment/pattern_svg.h"
 #include "core/util/error.h"
+#include "garment_test_util.h"
 
 namespace mq {
 namespace {
 
 Panel rectangle(const std::string& name, float width, float height) {
-  Panel p;
-  p.name = name;
-  p.corners = {};
-  p.addLine("bottom", {0.0f, 0.0f});
-  p.addLine("right", {width, 0.0f});
-  p.addLine("top", {width, height});
-  p.addLine("left", {0.0f, height});
-  return p;
+  return test::rectanglePanel(name, width, height);
 }
 
 // Two 40 x 60 cm panels, the right side of "a" sewn to the left side of "b".
