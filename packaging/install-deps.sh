@@ -8,7 +8,7 @@ packages=(
   qt6-base-dev libqt6opengl6-dev libxkbcommon-dev
   libvtk9-dev
   libopenmesh-dev libcgal-dev libglm-dev libceres-dev libeigen3-dev libnanoflann-dev
-  libassimp-dev nlohmann-json3-dev libstb-dev libtinygltf-dev
+  libassimp-dev nlohmann-json3-dev libstb-dev libtinygltf-dev libdxflib-dev
   libgtest-dev libgmock-dev libbenchmark-dev clang-format-14
   xvfb xauth xdotool libgl1-mesa-dri libglx-mesa0
   help2man dpkg-dev desktop-file-utils

@@ -1,17 +1,22 @@
 #!/usr/bin/env bash
-# Installs the test-only tools that come from npm (the Khronos glTF-Validator)
-# into the build folder, at the versions tests/interop/package-lock.json pins.
-# Needs Node.js and npm: installs Debian's when missing. Idempotent.
+# Installs the test-only tools: from npm the Khronos glTF-Validator, into the
+# build folder at the versions tests/interop/package-lock.json pins (needs
+# Node.js and npm: installs Debian's when missing); from Debian ezdxf, the DXF
+# reader and writer the pattern tests check Mannequin's DXF against.
+# Idempotent.
 set -euo pipefail
 top="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 tools="${MANNEQUIN_BUILD_DIR:-$top/build}/test-tools"
 
-if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+debian=()
+command -v node >/dev/null && command -v npm >/dev/null || debian+=(nodejs npm)
+dpkg-query -W -f='${Status}' python3-ezdxf 2>/dev/null | grep -q "install ok installed" || debian+=(python3-ezdxf)
+if [ ${#debian[@]} -gt 0 ]; then
   sudo_cmd=()
   [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
   export DEBIAN_FRONTEND=noninteractive
   "${sudo_cmd[@]}" apt-get update -q
-  "${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends nodejs npm
+  "${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends "${debian[@]}"
 fi
 
 mkdir -p "$tools"

@@ -1,6 +1,8 @@
 // mannequin-cli garment: a scene's garments as sewing patterns: their panels
 // and seams (with the sewn edges' lengths, and a warning where they differ),
-// and the pattern written as SVG at true scale.
+// the pattern written as SVG or DXF at true scale, and a DXF pattern read in
+// as a new garment of the scene.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -10,6 +12,7 @@
 
 #include "app/cli/command.h"
 #include "core/garment/garment_json.h"
+#include "core/garment/pattern_dxf.h"
 #include "core/garment/pattern_svg.h"
 #include "core/scene/scene_document.h"
 #include "core/util/error.h"
@@ -70,9 +73,44 @@ void printGarment(size_t index, const Garment& garment) {
   }
 }
 
+void exportPattern(const Args& args, const std::vector<Garment>& garments, int chosen, const std::string& path) {
+  const std::string out = args.option("--export-pattern");
+  if (garments.empty()) throw FileError(path, "the scene has no garments");
+  if (chosen < 0 && garments.size() > 1)
+    throw Error("the scene has " + std::to_string(garments.size()) + " garments: choose one with --garment");
+  const std::string ext = std::filesystem::path(out).extension().string();
+  if (ext != ".svg" && ext != ".dxf") throw Error(out + ": --export-pattern writes .svg or .dxf");
+  const float allowance = float(args.number("--seam-allowance", 0.0) / 1000.0);
+  const Garment& garment = garments[size_t(std::max(chosen, 0))];
+  if (ext == ".svg")
+    writePatternSvg(out, garment, {allowance});
+  else
+    writePatternDxf(out, garment, {allowance});
+  std::cout << "wrote the pattern of " << garment.name << " (" << garment.panels.size() << " panels, "
+            << garment.seams.size() << " seams) to " << out << "\n";
+}
+
+// The DXF pattern becomes a new garment of the scene, saved as another document.
+void importPattern(const Args& args, SceneDocument document, std::vector<Garment> garments, const std::string& path) {
+  const std::string in = args.option("--import-pattern"), out = args.option("--save-as");
+  if (out.empty()) throw Error("--import-pattern needs --save-as OUT.mqscene (the scene with the new garment)");
+  if (!isSceneDocumentPath(out)) throw FileError(out, "--save-as writes a scene document (.mqscene or .json)");
+  Garment garment = readPatternDxf(in);
+  std::string name = garment.name;
+  for (int n = 2; std::any_of(garments.begin(), garments.end(), [&](const Garment& g) { return g.name == name; }); ++n)
+    name = garment.name + " " + std::to_string(n);
+  garment.name = name;
+  garments.push_back(garment);
+  document.garments = garmentsToJson(garments);
+  rebaseDocumentPaths(document, path, out);
+  saveSceneDocument(document, out);
+  std::cout << "imported " << garment.name << " (" << garment.panels.size() << " panels, " << garment.seams.size()
+            << " seams) from " << in << "; saved the scene as " << out << "\n";
+}
+
 int runGarment(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--garment", "--export-pattern", "--seam-allowance", "--json"});
+  args.allowOnly({"--garment", "--export-pattern", "--seam-allowance", "--json", "--import-pattern", "--save-as"});
   if (args.positional().size() != 1) throw Error("garment needs exactly one SCENE argument");
   const std::string path = args.positional()[0];
   if (!isSceneDocumentPath(path)) throw FileError(path, "garment needs a scene document (.mqscene or .json)");
@@ -87,20 +125,12 @@ int runGarment(const std::vector<std::string>& argv) {
   }
   const int chosen = chosenGarment(args, garments, path);
 
-  const std::string out = args.option("--export-pattern");
-  if (!out.empty()) {
-    if (garments.empty()) throw FileError(path, "the scene has no garments");
-    if (chosen < 0 && garments.size() > 1)
-      throw Error("the scene has " + std::to_string(garments.size()) + " garments: choose one with --garment");
-    const std::string ext = std::filesystem::path(out).extension().string();
-    if (ext == ".dxf") throw Error(out + ": DXF patterns are not written yet; write .svg");
-    if (ext != ".svg") throw Error(out + ": --export-pattern writes .svg");
-    PatternSvgOptions options;
-    options.seamAllowance = float(args.number("--seam-allowance", 0.0) / 1000.0);
-    const Garment& garment = garments[size_t(std::max(chosen, 0))];
-    writePatternSvg(out, garment, options);
-    std::cout << "wrote the pattern of " << garment.name << " (" << garment.panels.size() << " panels, "
-              << garment.seams.size() << " seams) to " << out << "\n";
+  if (args.has("--import-pattern")) {
+    importPattern(args, document, garments, path);
+    return 0;
+  }
+  if (args.has("--export-pattern")) {
+    exportPattern(args, garments, chosen, path);
     return 0;
   }
   if (args.has("--json")) {
@@ -116,10 +146,13 @@ int runGarment(const std::vector<std::string>& argv) {
   return 0;
 }
 
-Registration reg({"garment", "SCENE [--garment N|NAME] [--json] [--export-pattern OUT.svg [--seam-allowance MM]]",
+Registration reg({"garment",
+                  "SCENE [--garment N|NAME] [--json] [--export-pattern OUT.svg|OUT.dxf [--seam-allowance MM]] "
+                  "[--import-pattern IN.dxf --save-as OUT.mqscene]",
                   "a scene's garments as patterns: panels, seams and the sewn edges' lengths (a warning where "
-                  "they differ by more than 5 mm); --export-pattern writes one garment's pattern as SVG at 1:1 "
-                  "(mm), with the cutting line MM outside the sewing line if asked",
+                  "they differ by more than 5 mm); --export-pattern writes one garment's pattern as SVG or DXF "
+                  "(AAMA layers) at 1:1 in mm, with the cutting line MM outside the sewing line if asked; "
+                  "--import-pattern adds the panels and seams of a DXF pattern to the scene as a new garment",
                   runGarment});
 
 }  // namespace

@@ -6,18 +6,17 @@
 #include <cstdio>
 #include <sstream>
 
+#include "core/garment/pattern_outline.h"
 #include "core/util/atomic_file.h"
 #include "core/util/error.h"
 
 namespace mq {
 namespace {
 
-constexpr float kMillimetres = 1000.0f;     // pattern metres to SVG user units
-constexpr float kMargin = 20.0f;            // mm around the sheet and between panels
-constexpr float kLabelHeight = 12.0f;       // mm, panel names
-constexpr float kNotchDepth = 6.0f;         // mm into the panel
-constexpr float kOutlineSegment = 0.002f;   // m, the polygon the cutting line is offset from
-constexpr float kMaxSeamAllowance = 0.10f;  // m
+constexpr float kMillimetres = 1000.0f;  // pattern metres to SVG user units
+constexpr float kMargin = 20.0f;         // mm around the sheet and between panels
+constexpr float kLabelHeight = 12.0f;    // mm, panel names
+constexpr float kNotchDepth = 6.0f;      // mm into the panel
 
 const std::array<const char*, 8> kSeamColours = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd",
                                                  "#ff7f0e", "#17becf", "#e377c2", "#8c564b"};
@@ -88,63 +87,10 @@ std::string sewingLine(const SheetFrame& frame, const Panel& panel) {
   return d + " Z";
 }
 
-// The outline moved `distance` outwards, with mitred corners (a mitre is
-// cut at twice the distance, as a pattern maker would square a sharp point).
-std::vector<glm::vec2> offsetOutline(const std::vector<glm::vec2>& outline, float distance) {
-  const size_t n = outline.size();
-  std::vector<glm::vec2> out(n);
-  for (size_t i = 0; i < n; ++i) {
-    const glm::vec2 prev = outline[(i + n - 1) % n], here = outline[i], next = outline[(i + 1) % n];
-    auto outward = [](glm::vec2 a, glm::vec2 b) {
-      const glm::vec2 d = glm::normalize(b - a);
-      return glm::vec2(d.y, -d.x);  // right of the direction: outside a counter-clockwise outline
-    };
-    const glm::vec2 n0 = outward(prev, here), n1 = outward(here, next);
-    glm::vec2 bisector = n0 + n1;
-    const float len = glm::length(bisector);
-    bisector = len > 1e-6f ? bisector / len : n0;
-    const float cosHalf = std::max(glm::dot(bisector, n0), 0.5f);
-    out[i] = here + bisector * (distance / cosHalf);
-  }
-  return out;
-}
-
-// Without repeated points, and without points on the line through their
-// neighbours (a straight edge's samples): a cutter gets one segment per side.
-std::vector<glm::vec2> simplified(const std::vector<glm::vec2>& outline) {
-  constexpr float kTolerance = 1e-6f;                          // metres
-  auto onTheWay = [](glm::vec2 a, glm::vec2 b, glm::vec2 c) {  // b on the segment from a to c
-    const glm::vec2 along = glm::normalize(c - a);
-    const glm::vec2 off = b - a - along * glm::dot(b - a, along);
-    return glm::length(off) <= kTolerance && glm::dot(b - a, c - b) > 0.0f;
-  };
-  std::vector<glm::vec2> out;
-  for (glm::vec2 p : outline) {
-    if (!out.empty() && glm::length(p - out.back()) <= kTolerance) continue;
-    if (out.size() >= 2 && onTheWay(out[out.size() - 2], out.back(), p)) out.pop_back();
-    out.push_back(p);
-  }
-  while (out.size() > 1 && glm::length(out.front() - out.back()) <= kTolerance) out.pop_back();
-  while (out.size() > 3 && onTheWay(out[out.size() - 2], out.back(), out.front())) out.pop_back();
-  return out;
-}
-
 std::string polygonPath(const SheetFrame& frame, const std::vector<glm::vec2>& polygon) {
   std::string d;
   for (size_t i = 0; i < polygon.size(); ++i) d += (i == 0 ? "M " : " L ") + point(frame, polygon[i]);
   return d + " Z";
-}
-
-glm::vec2 outlineCentroid(const std::vector<glm::vec2>& polygon) {
-  glm::vec2 sum(0.0f);
-  float twiceArea = 0.0f;
-  for (size_t i = 0; i < polygon.size(); ++i) {
-    const glm::vec2 a = polygon[i], b = polygon[(i + 1) % polygon.size()];
-    const float cross = a.x * b.y - b.x * a.y;
-    twiceArea += cross;
-    sum += (a + b) * cross;
-  }
-  return std::abs(twiceArea) > 1e-12f ? sum / (3.0f * twiceArea) : polygon[0];
 }
 
 struct SeamMark {
@@ -175,25 +121,18 @@ void writePanel(std::ostream& out, const Garment& garment, size_t index, const S
     out << "    <path class=\"seam\" stroke=\"" << colour << "\" d=\"M " << point(frame, panel.edgeStart(mark.edge))
         << " " << edgeCommands(frame, panel, mark.edge) << "\"/>\n";
     // A notch at the edge's middle, square to it, into the panel; the seam's number beside it.
-    const glm::vec2 middle = panel.sampleEdge(mark.edge, 2)[1];
-    const glm::vec2 tangent = panel.edgePoint(mark.edge, 0.51f) - panel.edgePoint(mark.edge, 0.49f);
-    const glm::vec2 inward =
-        glm::length(tangent) > 0.0f ? glm::normalize(glm::vec2(-tangent.y, tangent.x)) : glm::vec2(0.0f);
-    const glm::vec2 tip = middle + inward * (kNotchDepth / kMillimetres);
-    const glm::vec2 label = middle + inward * (2.5f * kNotchDepth / kMillimetres);
+    const PatternSegment notch = edgeNotch(panel, mark.edge, kNotchDepth / kMillimetres);
+    const glm::vec2 middle = notch.from, tip = notch.to;
+    const glm::vec2 label = middle + (tip - middle) * 2.5f;
     out << "    <path class=\"notch\" d=\"M " << point(frame, middle) << " L " << point(frame, tip) << "\"/>\n";
     out << "    <text class=\"seam-label\" fill=\"" << colour << "\" x=\"" << number(frame(label).x) << "\" y=\""
         << number(frame(label).y) << "\">" << mark.seam + 1 << "</text>\n";
   }
-  // The grain line: pattern v, across the middle two thirds of the panel's height.
-  const std::vector<glm::vec2> polygon = panel.outline(kOutlineSegment);
-  const glm::vec2 centre = outlineCentroid(polygon);
-  float low = centre.y, high = centre.y;
-  for (glm::vec2 p : polygon) low = std::min(low, p.y), high = std::max(high, p.y);
-  const float reach = (high - low) / 3.0f;
-  out << "    <path class=\"grain\" d=\"M " << point(frame, {centre.x, centre.y - reach}) << " L "
-      << point(frame, {centre.x, centre.y + reach}) << "\" marker-start=\"url(#arrow)\" marker-end=\"url(#arrow)\"/>\n";
-  const glm::vec2 name = frame(centre) + glm::vec2(0.4f * kLabelHeight, 0.0f);
+  const PatternSegment grain = grainLine(panel);
+  out << "    <path class=\"grain\" d=\"M " << point(frame, grain.from) << " L " << point(frame, grain.to)
+      << "\" marker-start=\"url(#arrow)\" marker-end=\"url(#arrow)\"/>\n";
+  // The name beside the grain line, high up where a panel is widest (a trouser panel splits into legs below).
+  const glm::vec2 name = frame(grain.from + 0.75f * (grain.to - grain.from)) + glm::vec2(0.4f * kLabelHeight, 0.0f);
   out << "    <text class=\"name\" x=\"" << number(name.x) << "\" y=\"" << number(name.y) << "\">"
       << escaped(panel.name) << "</text>\n";
   out << "  </g>\n";
@@ -204,8 +143,7 @@ void writePanel(std::ostream& out, const Garment& garment, size_t index, const S
 std::string patternSvg(const Garment& garment, const PatternSvgOptions& options) {
   garment.validate();
   const float allowance = options.seamAllowance;
-  if (!(allowance >= 0.0f && allowance <= kMaxSeamAllowance))
-    throw Error("the seam allowance must be between 0 and " + number(kMaxSeamAllowance * kMillimetres) + " mm");
+  checkSeamAllowance(allowance);
 
   // Lay the panels out left to right, tops level, below the title.
   const float titleHeight = 2.0f * kLabelHeight;
@@ -214,8 +152,8 @@ std::string patternSvg(const Garment& garment, const PatternSvgOptions& options)
   float left = kMargin, tallest = 0.0f;
   for (size_t i = 0; i < garment.panels.size(); ++i) {
     const Panel& panel = garment.panels[i];
-    std::vector<glm::vec2> bounds = panel.outline(kOutlineSegment);
-    if (allowance > 0.0f) bounds = cutting[i] = simplified(offsetOutline(bounds, allowance));
+    std::vector<glm::vec2> bounds = panel.outline(kPatternOutlineSegment);
+    if (allowance > 0.0f) bounds = cutting[i] = cuttingLine(panel, allowance);
     for (int e = 0; e < panel.edgeCount(); ++e)  // Bezier handles, so the arrows and labels fit as well
       for (glm::vec2 p : panel.sampleEdge(e, 8)) bounds.push_back(p);
     SheetFrame& frame = frames[i];

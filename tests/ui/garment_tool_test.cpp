@@ -207,6 +207,7 @@ class GarmentToolTest : public QObject {
 
   void patternExportsTheCurrentGarment() {
     QVERIFY(panel()->patternButton()->isEnabled());
+    for (QAction* action : panel()->patternExportActions()) QVERIFY(action->isEnabled());
     QTemporaryDir dir;
     const QString path = dir.filePath("tshirt.svg");
     QVERIFY2(tool_->exportPattern(0, path, 0.01f), qPrintable(tool_->lastError()));
@@ -232,6 +233,32 @@ class GarmentToolTest : public QObject {
     QVERIFY(!tool_->exportPattern(-1, path));
     QVERIFY(!tool_->exportPattern(0, dir.filePath("tshirt.svg/inside.svg")));
     QVERIFY2(tool_->lastError().contains("inside.svg"), qPrintable(tool_->lastError()));
+  }
+
+  void aDxfPatternComesInAsAGarmentOneUndoStep() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("shirt.dxf");
+    QVERIFY2(tool_->exportPattern(0, path, 0.01f), qPrintable(tool_->lastError()));
+    const int before = tool_->garmentCount();
+    QVERIFY2(tool_->importPattern(path), qPrintable(tool_->lastError()));
+    QCOMPARE(tool_->garmentCount(), before + 1);
+    const Garment& original = tool_->scene().garments[0];
+    const Garment& imported = tool_->scene().garments.back();
+    QCOMPARE(imported.panels.size(), original.panels.size());
+    QCOMPARE(imported.seams.size(), original.seams.size());
+    QVERIFY(imported.name != original.name);  // a second T-shirt is told apart
+    QCOMPARE(tool_->currentGarment(), before);
+    undo()->undo();
+    QCOMPARE(tool_->garmentCount(), before);
+    // A broken file: refused, naming it, the scene untouched.
+    QFile broken(dir.filePath("broken.dxf"));
+    QVERIFY(broken.open(QIODevice::WriteOnly));
+    broken.write("0\nSECTION\n2\nENTITIES\n");
+    broken.close();
+    QVERIFY(!tool_->importPattern(broken.fileName()));
+    QVERIFY2(tool_->lastError().contains("broken.dxf") && tool_->lastError().contains("truncated"),
+             qPrintable(tool_->lastError()));
+    QCOMPARE(tool_->garmentCount(), before);
   }
 
   void fabricAndIntegratorAreUndoable() {

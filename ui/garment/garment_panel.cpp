@@ -123,21 +123,31 @@ void GarmentPanel::buildGarmentGroup(QVBoxLayout* layout) {
   add_->setToolTip(tr("Add a built-in garment sized to the character"));
   remove_ = new QPushButton(tr("Remove"));
   pattern_ = new QPushButton(tr("Pattern"));
-  pattern_->setToolTip(tr("Export the garment's sewing pattern as SVG at 1:1 (millimetres)"));
+  pattern_->setToolTip(
+      tr("Export the garment's sewing pattern as SVG or DXF at 1:1 (millimetres), or import a DXF pattern"));
   addRow->addWidget(typeCombo_, 1);
   addRow->addWidget(add_);
   addRow->addWidget(remove_);
   addRow->addWidget(pattern_);
   garmentLayout->addLayout(addRow);
   auto* patternMenu = new QMenu(pattern_);
-  const auto exportPattern = [this](float seamAllowance) {
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Export the sewing pattern"), QString(), tr("SVG pattern (*.svg)"));
+  const auto exportPattern = [this](const QString& filter, float seamAllowance) {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export the sewing pattern"), QString(), filter);
     if (!path.isEmpty() && !tool_->exportPattern(tool_->currentGarment(), path, seamAllowance))
       QMessageBox::warning(this, tr("Export pattern"), tool_->lastError());
   };
-  patternMenu->addAction(tr("SVG, sewing lines..."), this, [exportPattern] { exportPattern(0.0f); });
-  patternMenu->addAction(tr("SVG with a 1 cm seam allowance..."), this, [exportPattern] { exportPattern(0.01f); });
+  const QString svg = tr("SVG pattern (*.svg)"), dxf = tr("DXF pattern, AAMA layers (*.dxf)");
+  patternExports_ = {
+      patternMenu->addAction(tr("SVG, sewing lines..."), this, [=] { exportPattern(svg, 0.0f); }),
+      patternMenu->addAction(tr("SVG with a 1 cm seam allowance..."), this, [=] { exportPattern(svg, 0.01f); }),
+      patternMenu->addAction(tr("DXF, sewing lines..."), this, [=] { exportPattern(dxf, 0.0f); }),
+      patternMenu->addAction(tr("DXF with a 1 cm seam allowance..."), this, [=] { exportPattern(dxf, 0.01f); })};
+  patternMenu->addSeparator();
+  patternMenu->addAction(tr("Import a DXF pattern..."), this, [this, dxf] {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Import a sewing pattern"), QString(), dxf);
+    if (!path.isEmpty() && !tool_->importPattern(path))
+      QMessageBox::warning(this, tr("Import pattern"), tool_->lastError());
+  });
   pattern_->setMenu(patternMenu);
   auto* layerForm = new QFormLayout;
   layer_ = new QSpinBox;
@@ -374,7 +384,7 @@ void GarmentPanel::refresh() {
     list_->setCurrentRow(current);
   }
   remove_->setEnabled(current >= 0);
-  pattern_->setEnabled(current >= 0);
+  for (QAction* action : patternExports_) action->setEnabled(current >= 0);
   particleDistance_->setEnabled(current >= 0);
   layer_->setEnabled(current >= 0);
   if (current >= 0) {

@@ -46,6 +46,7 @@ class GarmentPanel : public QWidget {
   QSpinBox* layerField() const { return layer_; }
   QPushButton* addButton() const { return add_; }
   QPushButton* patternButton() const { return pattern_; }
+  const QList<QAction*>& patternExportActions() const { return patternExports_; }
   QComboBox* fabricCombo() const { return fabricCombo_; }
   QComboBox* integratorCombo() const { return integratorCombo_; }
   QSpinBox* clothFpsField() const { return clothFps_; }
@@ -96,6 +97,7 @@ class GarmentPanel : public QWidget {
   QListWidget* list_;
   QComboBox* typeCombo_;
   QPushButton *add_, *remove_, *pattern_;
+  QList<QAction*> patternExports_;  // need a garment; importing does not
   QSpinBox* layer_;
   QWidget* measurements_;
   QFormLayout* measurementForm_;

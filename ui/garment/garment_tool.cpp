@@ -27,6 +27,7 @@
 #include "core/garment/fabric_color.h"
 #include "core/garment/garment_json.h"
 #include "core/garment/parametric_garments.h"
+#include "core/garment/pattern_dxf.h"
 #include "core/garment/pattern_svg.h"
 #include "core/garment/pin_remap.h"
 #include "core/geometry/nearest_points.h"
@@ -845,9 +846,32 @@ bool GarmentTool::exportPattern(int garment, const QString& path, float seamAllo
     return false;
   }
   try {
-    PatternSvgOptions options;
-    options.seamAllowance = seamAllowance;
-    writePatternSvg(path.toStdString(), scene_.garments[size_t(garment)], options);
+    const Garment& chosen = scene_.garments[size_t(garment)];
+    if (path.endsWith(".dxf", Qt::CaseInsensitive))
+      writePatternDxf(path.toStdString(), chosen, {seamAllowance});
+    else
+      writePatternSvg(path.toStdString(), chosen, {seamAllowance});
+  } catch (const std::exception& e) {
+    lastError_ = QString::fromStdString(e.what());
+    return false;
+  }
+  lastError_.clear();
+  return true;
+}
+
+bool GarmentTool::importPattern(const QString& path) {
+  try {
+    Garment imported = readPatternDxf(path.toStdString());
+    GarmentScene after = scene_;
+    const std::string base = imported.name;
+    for (int n = 2; std::any_of(after.garments.begin(), after.garments.end(),
+                                [&](const Garment& g) { return g.name == imported.name; });
+         ++n)
+      imported.name = base + " " + std::to_string(n);
+    const QString name = QString::fromStdString(imported.name);
+    after.garments.push_back(std::move(imported));
+    edit(after, tr("Import %1").arg(name));
+    setCurrentGarment(garmentCount() - 1);
   } catch (const std::exception& e) {
     lastError_ = QString::fromStdString(e.what());
     return false;

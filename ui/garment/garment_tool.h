@@ -202,6 +202,9 @@ class GarmentTool : public QObject {
   // with the cutting line seamAllowance metres outside when > 0; false
   // (lastError says why) when it cannot be written.
   bool exportPattern(int garment, const QString& path, float seamAllowance = 0.0f);
+  // A DXF pattern's panels and seams as a new garment (one undo step);
+  // false with lastError() naming the file and the problem when it cannot be read.
+  bool importPattern(const QString& path);
   // The bake for an animated glTF: its clip (-1 none), first frame's time,
   // fps and frame count, and one surface per garment (the sheet last),
   // coloured by fabric. Null without a bake.
