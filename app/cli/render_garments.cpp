@@ -10,17 +10,13 @@
 #include "render/cloth_shading.h"
 #include "render/scene_view.h"
 #include "sim/cloth/cloth_scene_io.h"
-#include "sim/garment/drape_schedule.h"
+#include "sim/garment/dressing.h"
 #include "sim/garment/garment_layers.h"
 #include "sim/garment/garment_scene.h"
 
 namespace mq::cli {
 
 namespace {
-
-// At least this long on the first pose before the clip plays, so a render at
-// the clip's start shows settled cloth.
-constexpr float kHoldSeconds = 0.5f;
 
 std::vector<float> bodyAt(const Character& character, int clip, float time, const PoseEdits& edits) {
   PosedCharacter posed;
@@ -56,27 +52,29 @@ RenderedGarments addSceneGarments(render::SceneView& view, const LoadedScene& sc
   const std::vector<float> first = bodyAt(character, clip, start, scene.edits);
   const int clipSteps = clip >= 0 ? std::max(0, int(std::lround((time - start) / dt))) : 0;
 
-  // Each garment drapes onto the first pose on its own (they sew in
-  // different times); from there they step together, inner to outer, each
-  // worn over the ones under it (garment_layers.h).
-  std::vector<std::unique_ptr<cloth::GarmentSimulation>> simulations(garments.size());
-  std::vector<int> steps(garments.size(), 0);
+  // Dressed as every path dresses (sim/garment/dressing.h), then the clip's
+  // frames up to `time`, stepped together inner to outer.
+  std::vector<std::unique_ptr<cloth::GarmentSimulation>> owned(garments.size());
+  std::vector<cloth::GarmentSimulation*> simulations;
   auto pathOf = [](size_t g) { return "garments[" + std::to_string(g) + "]"; };
   for (size_t g = 0; g < garments.size(); ++g) {
     try {
-      simulations[g] = cloth::makeGarmentSimulation(garments[g], spec, rest, triangles, pathOf(g));
-      cloth::DrapeSchedule drape;
-      std::vector<float> body;
-      for (int s = 0; s < drape.maxSteps(dt) && !drape.draped(); ++s, ++steps[g]) {
-        cloth::blendBody(rest, first, drape.advance(*simulations[g], dt), body);
-        simulations[g]->step(dt, &body);
-      }
+      owned[g] = cloth::makeGarmentSimulation(garments[g], spec, rest, triangles, pathOf(g));
     } catch (const Error& e) {
       throw FileError(file, pathOf(g) + ": " + e.what());
     }
+    simulations.push_back(owned[g].get());
   }
   const std::vector<size_t> order = cloth::layerOrder(garments);
-  cloth::wearInLayers(simulations, order);
+  std::vector<int> steps(garments.size(), 0);
+  try {
+    const std::vector<cloth::DrapeSteps> dressing =
+        cloth::dressGarments(simulations, order, rest, first, dt, [](size_t) { return true; });
+    for (size_t g = 0; g < garments.size(); ++g)
+      steps[g] = dressing[g].total + int(std::ceil(cloth::kDressingSettleSeconds / dt));
+  } catch (const Error& e) {
+    throw FileError(file, std::string("garments: ") + e.what());
+  }
   auto stepAll = [&](const std::vector<float>& body) {
     for (size_t g : order) {
       try {
@@ -87,7 +85,6 @@ RenderedGarments addSceneGarments(render::SceneView& view, const LoadedScene& sc
       }
     }
   };
-  for (int s = 0; s < int(std::ceil(kHoldSeconds / dt)); ++s) stepAll(first);
   for (int s = 1; s <= clipSteps; ++s) stepAll(bodyAt(character, clip, start + s * dt, scene.edits));
 
   for (size_t g = 0; g < garments.size(); ++g) {

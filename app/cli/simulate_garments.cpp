@@ -12,14 +12,13 @@
 #include "core/mesh/bent_edges.h"
 #include "core/util/error.h"
 #include "sim/cloth/baked_cloth.h"
+#include "sim/garment/dressing.h"
 #include "sim/garment/garment_layers.h"
 #include "sim/garment/garment_scene.h"
 
 namespace mq::cli {
 
 namespace {
-
-constexpr float kDressingMoveSeconds = 1.5f;
 
 float median(std::vector<float> values) {
   if (values.empty()) return 0.0f;
@@ -69,31 +68,16 @@ SimulatedGarments::~SimulatedGarments() = default;
 DressingResult SimulatedGarments::dress(const std::vector<float>& restBody, const std::vector<float>& startBody,
                                         float dt) {
   const auto t0 = std::chrono::steady_clock::now();
+  std::vector<cloth::GarmentSimulation*> simulations;
+  for (const auto& sim : sims_) simulations.push_back(sim.get());
+  const std::vector<cloth::DrapeSteps> steps =
+      cloth::dressGarments(simulations, order_, restBody, startBody, dt, [this](size_t) { return layered_; });
   DressingResult r;
-  auto allWelded = [&] {
-    for (const auto& sim : sims_)
-      if (!sim->welded()) return false;
-    return true;
-  };
-  // GarmentSimulation welds by its maxSewingSeconds at the latest.
-  while (!allWelded()) {
-    for (size_t i : order_) {
-      if (sims_[i]->welded()) continue;
-      sims_[i]->step(dt);
-      if (sims_[i]->welded()) sewingSteps_[i] = r.steps + 1;
-    }
-    ++r.steps;
+  for (size_t i = 0; i < steps.size(); ++i) {
+    sewingSteps_[i] = steps[i].sewing;
+    r.steps = std::max(r.steps, steps[i].total);
   }
-  if (!restBody.empty() && restBody != startBody) {
-    const int moves = std::max(1, int(std::ceil(kDressingMoveSeconds / dt)));
-    std::vector<float> body(restBody.size());
-    for (int k = 1; k <= moves; ++k) {
-      const float t = float(k) / float(moves), smooth = t * t * (3.0f - 2.0f * t);
-      for (size_t i = 0; i < body.size(); ++i) body[i] = restBody[i] + smooth * (startBody[i] - restBody[i]);
-      for (size_t i : order_) sims_[i]->step(dt, &body);
-      ++r.steps;
-    }
-  }
+  r.steps += int(std::ceil(cloth::kDressingSettleSeconds / dt));
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }

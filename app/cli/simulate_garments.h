@@ -42,9 +42,9 @@ class SimulatedGarments {
   ~SimulatedGarments();
 
   bool empty() const { return sims_.empty(); }
-  // Before the frames: sews and welds every garment on the still rest body
-  // (at most their sewing time), then moves the body from rest to the
-  // scene's first pose in kDressingMoveSeconds. Bodies: flat positions, may be empty.
+  // Before the frames: dresses the garments as every path does
+  // (sim/garment/dressing.h): each sewn on the rest body and carried to the
+  // start pose, then settled together in layers. Bodies: flat positions, may be empty.
   DressingResult dress(const std::vector<float>& restBody, const std::vector<float>& startBody, float dt);
   // posedBody: the body at the end of the step (null: it stays put).
   void step(float dt, const std::vector<float>* posedBody);
@@ -77,7 +77,7 @@ class SimulatedGarments {
   bool layered_ = true;
   std::vector<int> maxInsideInner_;  // per garment, over measureFrame()
   int maxInsideInnerTotal_ = 0;
-  std::vector<int> sewingSteps_;  // per garment: steps until the weld (in dress())
+  std::vector<int> sewingSteps_;  // per garment: steps sewing on the rest body (in dress())
   std::vector<long long> substeps_, stretchPasses_, solverIterations_;  // per garment, summed over step()
   std::vector<std::vector<float>> residuals_;                           // per garment: each step()'s solver residual
   double phaseSeconds_[cloth::kClothPhaseCount] = {};                   // all garments, summed over step()

@@ -41,6 +41,7 @@
 #include "sim/cloth/bake_cache.h"
 #include "sim/cloth/baked_cloth.h"
 #include "sim/garment/drape_schedule.h"
+#include "sim/garment/dressing.h"
 #include "sim/garment/garment_layers.h"
 #include "sim/garment/garment_scene.h"
 #include "sim/garment/garment_simulation.h"
@@ -1247,11 +1248,9 @@ bool settle(GarmentTool::BakeGarment& g, const std::vector<float>& rest, const s
 
 // The frames of the clip for every garment, the first where they are now,
 // stepped together in `order` (inner to outer): an outer garment is worn
-// over the ones before it. Before the first frame, when there are layers,
-// kLayerSettleSeconds on the first body resolve where garments that sewed
-// and draped on their own overlap. False when cancelled.
-constexpr float kLayerSettleSeconds = 0.25f;
-
+// over the ones before it. Before the first frame they settle together on the
+// first body, as every path dresses (sim/garment/dressing.h). False when
+// cancelled.
 bool bakeFrames(std::vector<GarmentTool::BakeGarment>& garments, const std::vector<size_t>& order, size_t layered,
                 const std::vector<std::vector<float>>& bodies, float fps, const std::atomic<bool>& cancel,
                 const std::function<void(int)>& stepped, std::vector<cloth::BakedCloth>& baked,
@@ -1259,12 +1258,9 @@ bool bakeFrames(std::vector<GarmentTool::BakeGarment>& garments, const std::vect
   std::vector<cloth::GarmentSimulation*> simulations;
   for (GarmentTool::BakeGarment& g : garments) simulations.push_back(g.simulation.get());
   cloth::wearInLayers(simulations, order, [&](size_t g) { return g < layered; });
-  if (std::min(layered, garments.size()) > 1 && !bodies.empty() &&
-      !bodies[0].empty())  // no character: frame 1 is the placed cloth
-    for (int s = 0; s < int(std::ceil(kLayerSettleSeconds * fps)); ++s) {
-      if (cancel) return false;
-      for (size_t g : order) garments[g].simulation->step(1.0f / fps, bodyOrNull(bodies[0]));
-    }
+  const bool withBody = !bodies.empty() && !bodies[0].empty();  // no character: frame 1 is the placed cloth
+  if (withBody && !cloth::settleTogether(simulations, order, bodies[0], 1.0f / fps, [&] { return bool(cancel); }))
+    return false;
   for (size_t f = 0; f < bodies.size(); ++f) {
     if (cancel) return false;
     for (size_t g : order) {
@@ -1282,7 +1278,7 @@ bool bakeFrames(std::vector<GarmentTool::BakeGarment>& garments, const std::vect
 // through every frame (and the layers' settling).
 double bakeVertexSteps(const std::vector<GarmentTool::BakeGarment>& garments, int frames, float fps) {
   double steps = 0.0;
-  const int layerSettle = garments.size() > 1 ? int(std::ceil(kLayerSettleSeconds * fps)) : 0;
+  const int layerSettle = int(std::ceil(cloth::kDressingSettleSeconds * fps));
   for (const GarmentTool::BakeGarment& g : garments)
     steps += double(g.simulation->vertexCount()) * (g.settleSteps + layerSettle + frames);
   return steps;
