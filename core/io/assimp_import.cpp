@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -72,6 +73,38 @@ void checkColladaCounts(const std::string& text, const std::string& path) {
   }
 }
 
+// Assimp 5.2.5 reads Collada's number lists by skipping to the next digit
+// and converting: a list holding something else ("<p> p 1 2 </p>") makes it
+// loop, appending zeros until memory runs out. Every list must hold numbers only.
+void checkColladaNumbers(const std::string& text, const std::string& path) {
+  struct List {
+    const char* tag;
+    const char* allowed;  // besides whitespace
+  };
+  static const List lists[] = {{"p", "0123456789+-"},         {"vcount", "0123456789+-"},
+                               {"v", "0123456789+-"},         {"h", "0123456789+-"},
+                               {"int_array", "0123456789+-"}, {"float_array", "0123456789+-.eEnaifNAIF"}};
+  for (const List& list : lists) {
+    const std::string open = std::string("<") + list.tag;
+    for (size_t at = text.find(open); at != std::string::npos; at = text.find(open, at + 1)) {
+      const size_t after = at + open.size();
+      if (after >= text.size() || !(text[after] == '>' || std::isspace(static_cast<unsigned char>(text[after]))))
+        continue;  // a longer tag (<param>, <polylist>)
+      const size_t begin = text.find('>', after);
+      if (begin == std::string::npos || text[begin - 1] == '/') continue;
+      const size_t end = std::min(text.find('<', begin), text.size());
+      for (size_t i = begin + 1; i < end; ++i) {
+        const char c = text[i];
+        if (std::isspace(static_cast<unsigned char>(c)) || std::strchr(list.allowed, c)) continue;
+        const long line = 1 + std::count(text.begin(), text.begin() + long(i), '\n');
+        const size_t wordEnd = std::min({text.find_first_of(" \t\r\n<", i), i + 20, text.size()});
+        throw FileError(path, "line " + std::to_string(line) + ": <" + list.tag + "> holds \"" +
+                                  text.substr(i, wordEnd - i) + "\", not a number");
+      }
+    }
+  }
+}
+
 unsigned importFlags(const std::string& ext) {
   unsigned flags = aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_ValidateDataStructure;
   // Assimp expands Collada's indexed vertices per face corner, OBJ indexes
@@ -91,15 +124,26 @@ const aiScene* readWith(Assimp::Importer& importer, const std::string& path, con
 }
 
 // Assimp asserts (aborting the process) or allocates without bound on some
-// damaged files: a first read in a bounded child process finds those.
+// damaged files: a first read in a bounded child process finds those. Only a
+// file the child read is read again here: one it refused (Assimp catches its
+// own std::bad_alloc under the child's memory limit and returns nothing)
+// would run unbounded in this process.
 void checkAssimpSurvives(const std::string& path, const std::string& colladaText) {
-  const IsolatedOutcome outcome = runIsolated([&] {
+  const IsolatedOutcome outcome = runIsolated([&](std::string& reason) {
     Assimp::Importer importer;
-    return readWith(importer, path, colladaText) != nullptr;
+    if (readWith(importer, path, colladaText)) return true;
+    reason = importer.GetErrorString();
+    return false;
   });
-  if (!outcome.ok && outcome.problem != "failed")
-    throw FileError(path, "cannot import: the importer (Assimp) " + outcome.problem +
-                              " reading this file: it is damaged or not a format Mannequin reads");
+  if (outcome.ok) return;
+  if (outcome.problem == "failed" && outcome.reason.find("bad_alloc") == std::string::npos)
+    throw FileError(path, "cannot import: " + (outcome.reason.empty() ? std::string("unreadable") : outcome.reason));
+  if (outcome.problem == "failed")  // Assimp caught running out of the child's memory itself
+    throw FileError(path, "cannot import: the importer (Assimp) ran out of memory (limit " +
+                              std::to_string(IsolationLimits{}.memoryBytes >> 30) +
+                              " GiB) reading this file: it is damaged or not a format Mannequin reads");
+  throw FileError(path, "cannot import: the importer (Assimp) " + outcome.problem +
+                            " reading this file: it is damaged or not a format Mannequin reads");
 }
 
 // Collada text (whitespace-trimmed) is returned in `colladaText` for the clip reader.
@@ -107,6 +151,7 @@ const aiScene* readScene(Assimp::Importer& importer, const std::string& path, st
   if (fileExtension(path) == "dae") {
     const std::string text = loadFileText(path);
     checkColladaCounts(text, path);
+    checkColladaNumbers(text, path);
     colladaText = trimTextNodes(text);
   } else {
     (void)readFileBytes(path);  // clear message for missing files

@@ -18,12 +18,17 @@ struct IsolationLimits {
 struct IsolatedOutcome {
   bool ok = false;
   // When not ok: what happened, for a user ("crashed (signal 6, SIGABRT)",
-  // "ran out of memory (limit 4 GiB)", "took longer than 60 s").
+  // "ran out of memory (limit 4 GiB)", "took longer than 60 s", "failed").
   std::string problem;
+  // When `work` failed ("failed"): the reason it gave, or the exception's message.
+  std::string reason;
 };
 
-// Calls `work` in a child process; `work` returns true for success. A thrown
-// std::bad_alloc counts as running out of memory, any other exception as failure.
+// Calls `work` in a child process; `work` returns true for success, or false
+// with a reason, which comes back to the parent (at most 4 KiB of it). A
+// thrown std::bad_alloc counts as running out of memory, any other exception
+// as failure with its message as the reason.
+IsolatedOutcome runIsolated(const std::function<bool(std::string& reason)>& work, const IsolationLimits& limits = {});
 IsolatedOutcome runIsolated(const std::function<bool()>& work, const IsolationLimits& limits = {});
 
 }  // namespace mq

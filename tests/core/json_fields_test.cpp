@@ -132,5 +132,23 @@ TEST(IsolatedRun, ReportsSuccessFailureCrashAndTimeout) {
   EXPECT_EQ(runIsolated([]() -> bool { std::_Exit(1); }).problem, "crashed (exit code 1)");
 }
 
+TEST(IsolatedRun, AFailureBringsItsReasonBack) {
+  const IsolatedOutcome said = runIsolated([](std::string& reason) {
+    reason = "no such node";
+    return false;
+  });
+  EXPECT_EQ(said.problem, "failed");
+  EXPECT_EQ(said.reason, "no such node");
+  const IsolatedOutcome thrown = runIsolated([](std::string&) -> bool { throw std::runtime_error("bad header"); });
+  EXPECT_EQ(thrown.reason, "bad header");
+  const std::string longReason(10000, 'x');  // more than a pipe's atomic write: cut, never blocking
+  const IsolatedOutcome cut = runIsolated([&](std::string& reason) {
+    reason = longReason;
+    return false;
+  });
+  EXPECT_EQ(cut.reason, longReason.substr(0, 4096));
+  EXPECT_TRUE(runIsolated([](std::string&) { return true; }).reason.empty());
+}
+
 }  // namespace
 }  // namespace mq
