@@ -335,6 +335,8 @@ void MainWindow::addToolDock(QDockWidget* dock, Qt::DockWidgetArea area) {
   if (area == Qt::RightDockWidgetArea) {
     tabifyDockWidget(propertiesDock_, dock);
     propertiesDock_->raise();  // the selection's properties stay in front
+  } else if (area == Qt::BottomDockWidgetArea) {
+    splitDockWidget(timelineDock_, dock, Qt::Vertical);  // under the timeline, the viewport's full width
   }
   panelsMenu_->addAction(dock->toggleViewAction());
 }

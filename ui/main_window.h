@@ -63,8 +63,8 @@ class MainWindow : public QMainWindow {
   QAction* showWeightsAction() const { return showWeightsAction_; }
   QAction* showConesAction() const { return showConesAction_; }
 
-  // Adds a tool's dock (tabbed with the properties on the right by default)
-  // and lists it in the View menu.
+  // Adds a tool's dock and lists it in the View menu: on the right, tabbed
+  // with the properties (the default); at the bottom, under the timeline.
   void addToolDock(QDockWidget* dock, Qt::DockWidgetArea area = Qt::RightDockWidgetArea);
 
   // Opens "default", a character, a scene document, or a BVH motion (applied

@@ -111,6 +111,12 @@ PatternSegment grainLine(const Panel& panel) {
   return {{chosen.from.x, middle - reach}, {chosen.from.x, middle + reach}};
 }
 
+const char* seamColour(size_t seam) {
+  static const char* const colours[] = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd",
+                                        "#ff7f0e", "#17becf", "#e377c2", "#8c564b"};
+  return colours[seam % std::size(colours)];
+}
+
 PatternSegment edgeNotch(const Panel& panel, int edge, float depth) {
   const glm::vec2 middle = panel.sampleEdge(edge, 2)[1];
   const glm::vec2 tangent = panel.edgePoint(edge, 0.51f) - panel.edgePoint(edge, 0.49f);

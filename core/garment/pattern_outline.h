@@ -3,6 +3,7 @@
 // SVG and DXF writers: the cutting line a seam allowance outside, the grain
 // line, and the notch at the middle of a sewn edge.
 
+#include <cstddef>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -28,6 +29,10 @@ struct PatternSegment {
   glm::vec2 from{0.0f}, to{0.0f};
 };
 PatternSegment grainLine(const Panel& panel);
+
+// The colour that marks seam `seam` (both its edges) in every pattern
+// drawing: "#rrggbb", eight colours in turn.
+const char* seamColour(size_t seam);
 
 // A notch at the middle (by arc length) of an edge: `depth` metres into the
 // panel, square to the edge.

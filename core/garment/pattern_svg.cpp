@@ -1,7 +1,6 @@
 #include "core/garment/pattern_svg.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -17,9 +16,6 @@ constexpr float kMillimetres = 1000.0f;  // pattern metres to SVG user units
 constexpr float kMargin = 20.0f;         // mm around the sheet and between panels
 constexpr float kLabelHeight = 12.0f;    // mm, panel names
 constexpr float kNotchDepth = 6.0f;      // mm into the panel
-
-const std::array<const char*, 8> kSeamColours = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd",
-                                                 "#ff7f0e", "#17becf", "#e377c2", "#8c564b"};
 
 std::string number(float millimetres) {
   char text[32];
@@ -117,7 +113,7 @@ void writePanel(std::ostream& out, const Garment& garment, size_t index, const S
   if (!cutting.empty()) out << "    <path class=\"cut\" d=\"" << polygonPath(frame, cutting) << "\"/>\n";
   out << "    <path class=\"sew\" d=\"" << sewingLine(frame, panel) << "\"/>\n";
   for (const SeamMark& mark : marks) {
-    const char* colour = kSeamColours[size_t(mark.seam) % kSeamColours.size()];
+    const char* colour = seamColour(size_t(mark.seam));
     out << "    <path class=\"seam\" stroke=\"" << colour << "\" d=\"M " << point(frame, panel.edgeStart(mark.edge))
         << " " << edgeCommands(frame, panel, mark.edge) << "\"/>\n";
     // A notch at the edge's middle, square to it, into the panel; the seam's number beside it.

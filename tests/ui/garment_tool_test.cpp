@@ -37,6 +37,7 @@
 #include "core/garment/fabric.h"
 #include "core/garment/garment.h"
 #include "core/garment/parametric_garments.h"
+#include "core/garment/pattern_outline.h"
 #include "core/io/character_import.h"
 #include "core/mesh/mesh.h"
 #include "render/collider_actors.h"
@@ -47,6 +48,7 @@
 #include "ui/export/export_animated_dialog.h"
 #include "ui/garment/garment_panel.h"
 #include "ui/garment/garment_tool.h"
+#include "ui/garment/pattern_view.h"
 #include "ui/jobs/long_job.h"
 #include "ui/main_window.h"
 #include "ui/viewport/vtk_viewport_widget.h"
@@ -233,6 +235,42 @@ class GarmentToolTest : public QObject {
     QVERIFY(!tool_->exportPattern(-1, path));
     QVERIFY(!tool_->exportPattern(0, dir.filePath("tshirt.svg/inside.svg")));
     QVERIFY2(tool_->lastError().contains("inside.svg"), qPrintable(tool_->lastError()));
+  }
+
+  void thePatternDockShowsTheCurrentGarmentAtTrueSize() {
+    // The dock's view follows the current garment (it opens on request, in the last test:
+    // opening it resizes the viewport, which the live-simulation tests time themselves by).
+    PatternView* view = tool_->patternView();
+    QVERIFY(!view->isVisible());
+    QVERIFY(view->garment().has_value());
+    const Garment& shown = *view->garment();
+    QCOMPARE(shown.name, tool_->scene().garments[size_t(tool_->currentGarment())].name);
+    QCOMPARE(shown.panels.size(), tool_->scene().garments[size_t(tool_->currentGarment())].panels.size());
+    // True size: two corners a panel's width apart are that many metres times the scale apart on screen.
+    const Panel& first = shown.panels[0];
+    const glm::vec2 a = first.corners[0], b = first.corners[1];
+    const QPointF pa = view->toWidget(0, a), pb = view->toWidget(0, b);
+    QVERIFY(std::abs(std::hypot(pa.x() - pb.x(), pa.y() - pb.y()) - view->scale() * glm::length(b - a)) < 0.01);
+    // The built-in T-shirt's sleeve caps are longer than its armholes: those seams are flagged.
+    QVERIFY(!view->unevenSeams().empty());
+    // Drawn: the first seam's colour is on screen.
+    PatternView drawn;  // a view of its own: the dock's stays closed (see the last test)
+    drawn.setGarment(shown);
+    drawn.resize(900, 300);
+    drawn.fit();
+    const QImage image = drawn.grab().toImage();
+    const QColor seam(seamColour(0));
+    int seamPixels = 0;
+    for (int y = 0; y < image.height(); ++y)
+      for (int x = 0; x < image.width(); ++x) seamPixels += image.pixelColor(x, y) == seam;
+    QVERIFY2(seamPixels > 20, qPrintable(QString::number(seamPixels)));
+    // Another garment chosen: its pattern (edits reach the view the same way, by sceneChanged).
+    if (tool_->garmentCount() > 1) {
+      const int current = tool_->currentGarment();
+      tool_->setCurrentGarment(current == 0 ? 1 : 0);
+      QCOMPARE(view->garment()->name, tool_->scene().garments[size_t(tool_->currentGarment())].name);
+      tool_->setCurrentGarment(current);
+    }
   }
 
   void aDxfPatternComesInAsAGarmentOneUndoStep() {
@@ -1071,6 +1109,16 @@ class GarmentToolTest : public QObject {
     QVERIFY(asked.isEmpty());
     QVERIFY2(tool_->hasBake(), qPrintable(tool_->lastError()));
     QCOMPARE(tool_->bakedFrameCount(), 3);
+  }
+
+  // Last: opening the dock resizes the viewport, which the live-simulation
+  // tests above are timed by.
+  void thePatternDockOpensUnderTheTimeline() {
+    PatternView* view = tool_->patternView();
+    tool_->showPatternDock();
+    QVERIFY(view->isVisible());
+    QTRY_VERIFY(view->height() > 150);
+    QVERIFY(view->mapTo(window_, QPoint(0, 0)).y() > window_->viewport()->mapTo(window_, QPoint(0, 0)).y());
   }
 };
 

@@ -131,6 +131,8 @@ void GarmentPanel::buildGarmentGroup(QVBoxLayout* layout) {
   addRow->addWidget(pattern_);
   garmentLayout->addLayout(addRow);
   auto* patternMenu = new QMenu(pattern_);
+  patternMenu->addAction(tr("Show the pattern"), this, [this] { tool_->showPatternDock(); });
+  patternMenu->addSeparator();
   const auto exportPattern = [this](const QString& filter, float seamAllowance) {
     const QString path = QFileDialog::getSaveFileName(this, tr("Export the sewing pattern"), QString(), filter);
     if (!path.isEmpty() && !tool_->exportPattern(tool_->currentGarment(), path, seamAllowance))

@@ -51,6 +51,7 @@
 #include "ui/garment/garment_edit_command.h"
 #include "ui/garment/garment_panel.h"
 #include "ui/garment/held_drape.h"
+#include "ui/garment/pattern_view.h"
 #include "ui/jobs/long_job.h"
 #include "ui/main_window.h"
 #include "ui/viewport/mouse_routing.h"
@@ -183,6 +184,20 @@ GarmentTool::GarmentTool(MainWindow* window) : QObject(window), window_(window) 
   dock_->setObjectName("GarmentToolDock");
   dock_->setWidget(panel_);
   window->addToolDock(dock_);
+  patternView_ = new PatternView;
+  patternDock_ = new QDockWidget(tr("Pattern"), window);
+  patternDock_->setObjectName("GarmentPatternDock");
+  patternDock_->setWidget(patternView_);
+  window->addToolDock(patternDock_, Qt::BottomDockWidgetArea);
+  patternDock_->hide();  // opened from the Pattern menu or View > Panels: it takes room from the viewport
+  auto showPattern = [this] {
+    const int current = currentGarment();
+    patternView_->setGarment(current >= 0 && current < garmentCount()
+                                 ? std::optional<Garment>(scene_.garments[size_t(current)])
+                                 : std::nullopt);
+  };
+  connect(this, &GarmentTool::sceneChanged, this, showPattern);
+  connect(this, &GarmentTool::currentGarmentChanged, this, showPattern);
   colliderActors_ = std::make_unique<render::ColliderActors>(window->sceneView());
   rubberBand_ = new QRubberBand(QRubberBand::Rectangle, window->viewport());
   window->viewport()->installEventFilter(this);
@@ -858,6 +873,13 @@ bool GarmentTool::exportPattern(int garment, const QString& path, float seamAllo
   }
   lastError_.clear();
   return true;
+}
+
+void GarmentTool::showPatternDock() {
+  const bool wasHidden = patternDock_->isHidden();
+  patternDock_->show();
+  patternDock_->raise();
+  if (wasHidden) window_->resizeDocks({patternDock_}, {300}, Qt::Vertical);
 }
 
 bool GarmentTool::importPattern(const QString& path) {

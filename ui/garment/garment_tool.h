@@ -77,6 +77,7 @@ namespace mq::ui {
 
 class ColliderDragTool;
 class GarmentPanel;
+class PatternView;
 class MainWindow;
 
 class GarmentTool : public QObject {
@@ -232,6 +233,9 @@ class GarmentTool : public QObject {
   void setPinsVisible(bool visible);
 
   GarmentPanel* panel() const { return panel_; }
+  PatternView* patternView() const { return patternView_; }
+  // Opens the pattern's dock under the timeline (hidden at start).
+  void showPatternDock();
   QDockWidget* dock() const { return dock_; }
 
  signals:
@@ -293,6 +297,8 @@ class GarmentTool : public QObject {
 
   MainWindow* window_;
   GarmentPanel* panel_ = nullptr;
+  PatternView* patternView_ = nullptr;  // the current garment's pattern, in its own dock
+  QDockWidget* patternDock_ = nullptr;
   QDockWidget* dock_ = nullptr;
   GarmentScene scene_;
   std::vector<std::unique_ptr<View>> views_;  // one per garment
