@@ -501,11 +501,14 @@ Garment garmentFromDrawing(const DxfDrawing& drawing, const std::string& fallbac
     for (const DxfMark& t : drawing.texts)
       if (t.container == piece.container) texts.push_back(&t);
     Panel panel = panelFromLoop(piece.loop, scale, turnPoints(drawing, piece.container), tolerance);
-    makeCounterClockwise(panel);
     std::string name = piece.container.empty() ? "panel " + std::to_string(garment.panels.size() + 1) : piece.container;
     for (const DxfMark* t : texts)
       if (t->text.rfind(dxf_layers::kPieceNamePrefix, 0) == 0) name = t->text.substr(12);
     panel.name = uniqueName(name, panelNames);
+    if (panel.edgeCount() < 3 || !(std::abs(panel.area()) > 1e-8f))  // 0.01 cm2
+      throw Error("piece \"" + panel.name + "\": its outline encloses no area (" + std::to_string(panel.edgeCount()) +
+                  " corners)");
+    makeCounterClockwise(panel);
     std::set<std::string> edgeNames;
     const int panelIndex = int(garment.panels.size());
     for (int e = 0; e < panel.edgeCount(); ++e) {

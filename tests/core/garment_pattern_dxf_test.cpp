@@ -169,6 +169,9 @@ TEST(PatternDxf, BrokenFilesGetClearErrors) {
   EXPECT_NE(errorOf(hostile).find("LWPOLYLINE gives a count of 99999999"), std::string::npos) << errorOf(hostile);
   EXPECT_NE(errorOf(polylineDxf({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, "9\n$INSUNITS\n70\n3\n")).find("unsupported"),
             std::string::npos);
+  // Found by fuzzing: a closed polyline of two corners (one side a bulge arc, the other straight back).
+  const std::string twoCorners = polylineDxf({{0, 0}, {100, 0}});
+  EXPECT_NE(errorOf(twoCorners).find("encloses no area"), std::string::npos) << errorOf(twoCorners);
 }
 
 TEST(PatternDxf, ReadingNamesTheFile) {
