@@ -65,6 +65,7 @@ void ScriptedSession::run(MainWindow& window, bool loaded) const {
   }
   if (simulateSteps > 0) simulate(*garments, simulateSteps);
   if (showStretch) garments->setStretchVisible(true);
+  if (showPattern) garments->showPatternDock();
   if (setTime) doc->setTime(doc->clipStart() + float(time));
   if (!select.isEmpty() && !doc->selectByName(select.toStdString()))
     std::fprintf(stderr, "mannequin: --select: no bone, material or mesh named '%s'\n", qPrintable(select));

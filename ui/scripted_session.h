@@ -21,6 +21,7 @@ struct ScriptedSession {
   QString exportBakeDir;
   int simulateSteps = 0;
   bool showStretch = false;
+  bool showPattern = false;  // the current garment's pattern dock
   QString saveAs;
   QString screenshot;  // empty: stay open
 

@@ -5,8 +5,8 @@
 // saves it as a PNG and quits (exit code 1 if the file could not be opened).
 // --select NAME (bone, material or mesh), --clip NAME and --time SECONDS set up the view first;
 // --map MAP names the bone-name map of a BVH FILE. --add-garment TYPE,
-// --bake-garments (twice: bake twice), --export-bake DIR, --simulate-garments N, --garment-stretch
-// and --save-as script the garment tool
+// --bake-garments (twice: bake twice), --export-bake DIR, --simulate-garments N, --garment-stretch,
+// --garment-pattern and --save-as script the garment tool
 // (documentation pictures, test scenes).
 #include <cstdio>
 #include <cstdlib>
@@ -41,6 +41,7 @@ struct EditorOptions {
   const QCommandLineOption exportBake{"export-bake", "After --bake-garments, write the bake as OBJ sequences into DIR.",
                                       "DIR"};
   const QCommandLineOption garmentStretch{"garment-stretch", "Show the garments' stretch overlay."};
+  const QCommandLineOption garmentPattern{"garment-pattern", "Show the current garment's pattern dock."};
   const QCommandLineOption saveAs{"save-as", "Save the scene document to FILE once set up.", "FILE"};
 
   void describe(QCommandLineParser& parser) const {
@@ -51,8 +52,8 @@ struct EditorOptions {
                                  "default, a character (.gltf .glb .fbx .dae), a motion (.bvh) "
                                  "or a scene document (.mqscene)",
                                  "[FILE]");
-    parser.addOptions({addGarment, bakeGarments, simulateGarments, exportBake, garmentStretch, saveAs, map, screenshot,
-                       select, clip, time, size});
+    parser.addOptions({addGarment, bakeGarments, simulateGarments, exportBake, garmentStretch, garmentPattern, saveAs,
+                       map, screenshot, select, clip, time, size});
   }
 };
 
@@ -116,6 +117,7 @@ int main(int argc, char** argv) {
   session.exportBakeDir = parser.value(options.exportBake);
   session.simulateSteps = parser.value(options.simulateGarments).toInt();
   session.showStretch = parser.isSet(options.garmentStretch);
+  session.showPattern = parser.isSet(options.garmentPattern);
   session.saveAs = parser.value(options.saveAs);
   session.screenshot = parser.value(options.screenshot);
   auto afterLoad = [&window, session] {
