@@ -7,6 +7,9 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <unordered_map>
+
+#include <glm/gtc/type_precision.hpp>
 
 #include <dl_creationadapter.h>
 #include <dl_dxf.h>
@@ -25,6 +28,8 @@ namespace {
 
 constexpr size_t kMaxPoints = 1000000;  // vertices, control points and arc samples in all
 constexpr size_t kMaxPanels = 500;
+constexpr int kMaxEdgesPerPanel = 10000;
+constexpr size_t kMaxTexts = 100000;
 constexpr double kMaxCoordinate = 1e7;  // drawing units
 constexpr double kArcStep = 5.0 * M_PI / 180.0;
 
@@ -283,10 +288,69 @@ glm::dvec2 startOf(const DxfCurve& c) { return c.points.front(); }
 glm::dvec2 endOf(const DxfCurve& c) { return c.closed ? c.points.front() : c.points.back(); }
 void reverse(DxfCurve& c) { std::reverse(c.points.begin(), c.points.end()); }
 
+// Points by grid cells of the matching tolerance, so that finding the
+// points near another one costs its neighbourhood, not the whole drawing (a
+// hostile file may hold hundreds of thousands of lines). Entries can be
+// taken out and put back.
+class PointGrid {
+ public:
+  explicit PointGrid(double tolerance) : tolerance_(tolerance) {}
+  void add(glm::dvec2 p, size_t id) {
+    std::vector<Entry>& entries = cells_[key(cellOf(p))];
+    if (slot_.size() <= id) slot_.resize(id + 1, npos);
+    slot_[id] = entries.size();
+    entries.push_back({p, id});
+  }
+  // In constant time, however many points share its cell (the entry's slot is kept).
+  void remove(glm::dvec2 p, size_t id) {
+    auto cell = cells_.find(key(cellOf(p)));
+    if (cell == cells_.end() || id >= slot_.size() || slot_[id] == npos) return;
+    std::vector<Entry>& entries = cell->second;
+    const size_t at = slot_[id];
+    entries[at] = entries.back();
+    slot_[entries[at].id] = at;
+    entries.pop_back();
+    slot_[id] = npos;
+  }
+  // The first entry within the tolerance of p that `wanted` accepts; npos if none.
+  template <class Wanted>
+  size_t find(glm::dvec2 p, Wanted&& wanted) const {
+    const glm::i64vec2 c = cellOf(p);
+    for (int64_t dx = -1; dx <= 1; ++dx)
+      for (int64_t dy = -1; dy <= 1; ++dy) {
+        auto cell = cells_.find(key(c + glm::i64vec2(dx, dy)));
+        if (cell == cells_.end()) continue;
+        for (const Entry& e : cell->second)
+          if (glm::length(e.p - p) <= tolerance_ && wanted(e.id)) return e.id;
+      }
+    return npos;
+  }
+  static constexpr size_t npos = size_t(-1);
+
+ private:
+  struct Entry {
+    glm::dvec2 p;
+    size_t id;
+  };
+  glm::i64vec2 cellOf(glm::dvec2 p) const {
+    return {int64_t(std::floor(p.x / tolerance_)), int64_t(std::floor(p.y / tolerance_))};
+  }
+  static uint64_t key(glm::i64vec2 c) { return uint64_t(c.x) * 0x9E3779B97F4A7C15ull ^ uint64_t(c.y); }
+  double tolerance_;
+  std::unordered_map<uint64_t, std::vector<Entry>> cells_;
+  std::vector<size_t> slot_;  // by id: its index in its cell
+};
+
 // Chains open curves into closed loops (closed curves are loops of their own).
 // Returns the loops, and the curves left that close no loop in `open`.
+// Endpoint ids: 2 * curve for its start, 2 * curve + 1 for its end.
 std::vector<Loop> chainLoops(std::vector<DxfCurve> curves, double tolerance, std::vector<DxfCurve>& open) {
   std::vector<Loop> loops;
+  PointGrid ends(tolerance);
+  auto take = [&](size_t c) { ends.remove(startOf(curves[c]), 2 * c), ends.remove(endOf(curves[c]), 2 * c + 1); };
+  auto putBack = [&](size_t c) { ends.add(startOf(curves[c]), 2 * c), ends.add(endOf(curves[c]), 2 * c + 1); };
+  for (size_t c = 0; c < curves.size(); ++c)
+    if (!curves[c].closed) putBack(c);
   std::vector<bool> used(curves.size(), false);
   for (size_t first = 0; first < curves.size(); ++first) {
     if (used[first]) continue;
@@ -295,29 +359,23 @@ std::vector<Loop> chainLoops(std::vector<DxfCurve> curves, double tolerance, std
       loops.push_back({curves[first]});
       continue;
     }
+    take(first);
     Loop loop{curves[first]};
     std::vector<size_t> taken{first};
     while (glm::length(endOf(loop.back()) - startOf(loop.front())) > tolerance) {
-      const glm::dvec2 end = endOf(loop.back());
-      size_t next = curves.size();
-      bool backwards = false;
-      for (size_t i = 0; i < curves.size() && next == curves.size(); ++i) {
-        if (used[i] || curves[i].closed) continue;
-        if (glm::length(startOf(curves[i]) - end) <= tolerance)
-          next = i;
-        else if (glm::length(endOf(curves[i]) - end) <= tolerance)
-          next = i, backwards = true;
-      }
-      if (next == curves.size()) break;
+      const size_t found = ends.find(endOf(loop.back()), [](size_t) { return true; });
+      if (found == PointGrid::npos) break;
+      const size_t next = found / 2;
       used[next] = true;
+      take(next);
       taken.push_back(next);
       loop.push_back(curves[next]);
-      if (backwards) reverse(loop.back());
+      if (found % 2 == 1) reverse(loop.back());  // met at its end: it runs backwards
     }
     if (loop.size() > 1 && glm::length(endOf(loop.back()) - startOf(loop.front())) <= tolerance) {
       loops.push_back(std::move(loop));
     } else {
-      for (size_t i = 1; i < taken.size(); ++i) used[taken[i]] = false;  // free for another loop
+      for (size_t i = 1; i < taken.size(); ++i) used[taken[i]] = false, putBack(taken[i]);  // free for another loop
       open.push_back(curves[first]);
     }
   }
@@ -388,8 +446,10 @@ Panel panelFromLoop(const Loop& loop, double scale, const std::vector<glm::dvec2
       for (glm::dvec2 p : curve.points) run.push_back(metres(p));
       if (curve.closed) run.push_back(run.front());
       std::vector<bool> corner(run.size(), false);
+      PointGrid turnGrid(tolerance);
+      for (size_t t = 0; t < turns.size(); ++t) turnGrid.add(turns[t], t);
       for (size_t i = 0; i < curve.points.size(); ++i)
-        for (glm::dvec2 t : turns) corner[i] = corner[i] || glm::length(curve.points[i] - t) <= tolerance;
+        corner[i] = turnGrid.find(curve.points[i], [](size_t) { return true; }) != PointGrid::npos;
       for (const FittedEdge& edge : fitOutlineRun(run, corner, turns.empty())) {
         if (edge.shape == EdgeShape::Line)
           panel.addLine("", edge.start);
@@ -421,12 +481,6 @@ void makeCounterClockwise(Panel& panel) {
       reversed.edges[size_t(i)].control[0] = panel.edges[size_t(source)].control[0];
   }
   panel = reversed;
-}
-
-const DxfMark* textNear(const std::vector<const DxfMark*>& texts, glm::vec2 point, double scale, double tolerance) {
-  for (const DxfMark* t : texts)
-    if (glm::length(glm::dvec2(t->at) * scale - glm::dvec2(point)) <= tolerance * scale) return t;
-  return nullptr;
 }
 
 std::string uniqueName(const std::string& wanted, std::set<std::string>& taken) {
@@ -505,22 +559,28 @@ Garment garmentFromDrawing(const DxfDrawing& drawing, const std::string& fallbac
     for (const DxfMark* t : texts)
       if (t->text.rfind(dxf_layers::kPieceNamePrefix, 0) == 0) name = t->text.substr(12);
     panel.name = uniqueName(name, panelNames);
+    if (panel.edgeCount() > kMaxEdgesPerPanel)
+      throw Error("piece \"" + panel.name + "\" has " + std::to_string(panel.edgeCount()) + " edges (at most " +
+                  std::to_string(kMaxEdgesPerPanel) + ")");
     if (panel.edgeCount() < 3 || !(std::abs(panel.area()) > 1e-8f))  // 0.01 cm2
       throw Error("piece \"" + panel.name + "\": its outline encloses no area (" + std::to_string(panel.edgeCount()) +
                   " corners)");
     makeCounterClockwise(panel);
     std::set<std::string> edgeNames;
     const int panelIndex = int(garment.panels.size());
+    PointGrid textGrid(tolerance * scale);  // texts by where they stand, in metres
+    for (size_t t = 0; t < texts.size(); ++t) textGrid.add(texts[t]->at * scale, t);
     for (int e = 0; e < panel.edgeCount(); ++e) {
-      const glm::vec2 middle = panel.sampleEdge(e, 2)[1];
-      std::vector<const DxfMark*> names, marks;
-      for (const DxfMark* t : texts) (t->layer == dxf_layers::kEdgeNames ? names : marks).push_back(t);
-      const DxfMark* label = textNear(names, middle, scale, tolerance);
-      panel.edges[size_t(e)].name = uniqueName(label ? label->text : "e" + std::to_string(e), edgeNames);
+      const glm::dvec2 middle(panel.sampleEdge(e, 2)[1]);
+      const size_t label = textGrid.find(middle, [&](size_t t) { return texts[t]->layer == dxf_layers::kEdgeNames; });
+      panel.edges[size_t(e)].name =
+          uniqueName(label != PointGrid::npos ? texts[label]->text : "e" + std::to_string(e), edgeNames);
+      std::vector<const DxfMark*> marks;
+      textGrid.find(middle, [&](size_t t) {
+        if (texts[t]->layer == dxf_layers::kSeams) marks.push_back(texts[t]);
+        return false;  // visit them all
+      });
       for (const DxfMark* t : marks) {
-        if (t->layer != dxf_layers::kSeams ||
-            glm::length(glm::dvec2(t->at) * scale - glm::dvec2(middle)) > tolerance * scale)
-          continue;
         std::istringstream in(t->text);
         std::string word, side, flag;
         int number = 0;
@@ -559,6 +619,7 @@ Garment patternFromDxf(const std::string& dxfText, const std::string& fallbackNa
   collector.finish();
   if (drawing.tooLarge) throw Error("more than " + std::to_string(kMaxPoints) + " points: too large for a pattern");
   if (drawing.badNumber) throw Error("a coordinate is not a finite number under 10^7");
+  if (drawing.texts.size() > kMaxTexts) throw Error("more than " + std::to_string(kMaxTexts) + " texts: not a pattern");
   return garmentFromDrawing(drawing, fallbackName);
 }
 

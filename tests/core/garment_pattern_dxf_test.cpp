@@ -174,6 +174,18 @@ TEST(PatternDxf, BrokenFilesGetClearErrors) {
   EXPECT_NE(errorOf(twoCorners).find("encloses no area"), std::string::npos) << errorOf(twoCorners);
 }
 
+// 100,000 sew lines between the same two points: chained through a grid of
+// their ends (it used to compare every line with every other one, about 10^10
+// steps), and refused for the pieces they make.
+TEST(PatternDxf, ManyLinesAtOnePointAreChainedInLinearTime) {
+  std::ostringstream out;
+  out << "0\nSECTION\n2\nENTITIES\n";
+  for (int i = 0; i < 100000; ++i) out << "0\nLINE\n8\n14\n10\n0\n20\n0\n11\n100\n21\n0\n";
+  out << "0\nENDSEC\n0\nEOF\n";
+  const std::string error = errorOf(out.str());
+  EXPECT_NE(error.find("more than 500 pattern pieces"), std::string::npos) << error;
+}
+
 TEST(PatternDxf, ReadingNamesTheFile) {
   const std::string path = scratchPath("broken.dxf");
   { std::ofstream(path) << "0\nSECTION\n"; }
