@@ -3,7 +3,7 @@
 # UndefinedBehaviorSanitizer (Debian's clang-14), one target after another.
 #   ./packaging/fuzz.sh [--runs N] [--seconds S] [--jobs J] [--timeout T] [TARGET ...]
 # Targets (tests/fuzz/fuzz_<target>.cpp): gltf bvh scene hairstyle garment
-# motion_map assimp point_cache; all of them by default. Each runs N executions (default
+# motion_map assimp point_cache dxf; all of them by default. Each runs N executions (default
 # 1,000,000; stopped after S seconds if given and sooner), starting from its
 # seeds and from what earlier runs kept (build-fuzz/corpus/<target>). A crash, leak, timeout or
 # out-of-memory stops the target and leaves the input in
@@ -37,7 +37,7 @@ while [ $# -gt 0 ]; do
     *) targets+=("$1"); shift ;;
   esac
 done
-[ ${#targets[@]} -gt 0 ] || targets=(gltf bvh scene hairstyle garment motion_map assimp point_cache)
+[ ${#targets[@]} -gt 0 ] || targets=(gltf bvh scene hairstyle garment motion_map assimp point_cache dxf)
 
 "$top/packaging/install-deps.sh"
 flags="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g"
