@@ -3,6 +3,7 @@
 // and turned into panels, edges, seams and placements.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -315,15 +316,14 @@ class PointGrid {
   // The first entry within the tolerance of p that `wanted` accepts; npos if none.
   template <class Wanted>
   size_t find(glm::dvec2 p, Wanted&& wanted) const {
-    const glm::i64vec2 c = cellOf(p);
-    for (int64_t dx = -1; dx <= 1; ++dx)
-      for (int64_t dy = -1; dy <= 1; ++dy) {
-        auto cell = cells_.find(key(c + glm::i64vec2(dx, dy)));
-        if (cell == cells_.end()) continue;
-        for (const Entry& e : cell->second)
-          if (glm::length(e.p - p) <= tolerance_ && wanted(e.id)) return e.id;
-      }
-    return npos;
+    size_t found = npos;
+    visitNear(p, [&](size_t id) { return (found = wanted(id) ? id : npos) != npos; });
+    return found;
+  }
+  // Every entry within the tolerance of p.
+  template <class Visit>
+  void forEachNear(glm::dvec2 p, Visit&& visit) const {
+    visitNear(p, [&](size_t id) { return visit(id), false; });
   }
   static constexpr size_t npos = size_t(-1);
 
@@ -332,6 +332,18 @@ class PointGrid {
     glm::dvec2 p;
     size_t id;
   };
+  // Calls stop(id) for the entries near p until it returns true.
+  template <class Stop>
+  void visitNear(glm::dvec2 p, Stop&& stop) const {
+    const glm::i64vec2 c = cellOf(p);
+    for (int64_t dx = -1; dx <= 1; ++dx)
+      for (int64_t dy = -1; dy <= 1; ++dy) {
+        auto cell = cells_.find(key(c + glm::i64vec2(dx, dy)));
+        if (cell == cells_.end()) continue;
+        for (const Entry& e : cell->second)
+          if (glm::length(e.p - p) <= tolerance_ && stop(e.id)) return;
+      }
+  }
   glm::i64vec2 cellOf(glm::dvec2 p) const {
     return {int64_t(std::floor(p.x / tolerance_)), int64_t(std::floor(p.y / tolerance_))};
   }
@@ -546,7 +558,8 @@ Garment garmentFromDrawing(const DxfDrawing& drawing, const std::string& fallbac
   Garment garment;
   garment.name = fallbackName;
   for (const DxfMark& t : drawing.texts)
-    if (t.text.rfind(dxf_layers::kStyleNamePrefix, 0) == 0) garment.name = t.text.substr(12);
+    if (t.text.rfind(dxf_layers::kStyleNamePrefix, 0) == 0)
+      garment.name = t.text.substr(std::strlen(dxf_layers::kStyleNamePrefix));
   std::set<std::string> panelNames;
   std::vector<bool> placed;
   std::map<int, std::pair<SeamSide, SeamSide>> seams;
@@ -557,7 +570,8 @@ Garment garmentFromDrawing(const DxfDrawing& drawing, const std::string& fallbac
     Panel panel = panelFromLoop(piece.loop, scale, turnPoints(drawing, piece.container), tolerance);
     std::string name = piece.container.empty() ? "panel " + std::to_string(garment.panels.size() + 1) : piece.container;
     for (const DxfMark* t : texts)
-      if (t->text.rfind(dxf_layers::kPieceNamePrefix, 0) == 0) name = t->text.substr(12);
+      if (t->text.rfind(dxf_layers::kPieceNamePrefix, 0) == 0)
+        name = t->text.substr(std::strlen(dxf_layers::kPieceNamePrefix));
     panel.name = uniqueName(name, panelNames);
     if (panel.edgeCount() > kMaxEdgesPerPanel)
       throw Error("piece \"" + panel.name + "\" has " + std::to_string(panel.edgeCount()) + " edges (at most " +
@@ -576,9 +590,8 @@ Garment garmentFromDrawing(const DxfDrawing& drawing, const std::string& fallbac
       panel.edges[size_t(e)].name =
           uniqueName(label != PointGrid::npos ? texts[label]->text : "e" + std::to_string(e), edgeNames);
       std::vector<const DxfMark*> marks;
-      textGrid.find(middle, [&](size_t t) {
+      textGrid.forEachNear(middle, [&](size_t t) {
         if (texts[t]->layer == dxf_layers::kSeams) marks.push_back(texts[t]);
-        return false;  // visit them all
       });
       for (const DxfMark* t : marks) {
         std::istringstream in(t->text);

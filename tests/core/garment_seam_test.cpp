@@ -8,18 +8,12 @@
 
 #include <map>
 
+#include "garment_test_util.h"
+
 namespace mq {
 namespace {
 
-Panel rectangle(const std::string& name, float w, float h) {
-  Panel p;
-  p.name = name;
-  p.addLine("bottom", {0, 0});
-  p.addLine("right", {w, 0});
-  p.addLine("top", {w, h});
-  p.addLine("left", {0, h});
-  return p;
-}
+Panel rectangle(const std::string& name, float w, float h) { return test::rectanglePanel(name, w, h); }
 
 float normalisedArc(const PanelMesh& mesh, int edge, uint32_t vertex) {
   const std::vector<uint32_t>& along = mesh.edgeVertices[edge];
