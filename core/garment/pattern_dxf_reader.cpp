@@ -180,14 +180,16 @@ class DxfCollector : public DL_CreationAdapter {
   }
   void addPoint(const DL_PointData& d) override {
     finish();
-    drawing_.points.push_back({attributes.getLayer(), container_, "", {d.x, d.y}});
+    drawing_.points.push_back({attributes.getLayer(), container_, "", checked({d.x, d.y})});
     count(1);
   }
   void addText(const DL_TextData& d) override {
     finish();
-    const bool aligned = d.hJustification != 0 || d.vJustification != 0;
-    drawing_.texts.push_back(
-        {attributes.getLayer(), container_, d.text, aligned ? glm::dvec2(d.apx, d.apy) : glm::dvec2(d.ipx, d.ipy)});
+    // dxflib gives NaN for an alignment point the file leaves out.
+    const bool aligned =
+        (d.hJustification != 0 || d.vJustification != 0) && std::isfinite(d.apx) && std::isfinite(d.apy);
+    drawing_.texts.push_back({attributes.getLayer(), container_, d.text,
+                              checked(aligned ? glm::dvec2(d.apx, d.apy) : glm::dvec2(d.ipx, d.ipy))});
     count(1);
   }
   void addInsert(const DL_InsertData&) override { finish(); }
@@ -216,9 +218,13 @@ class DxfCollector : public DL_CreationAdapter {
     curve.container = container_;
     return curve;
   }
+  // Every coordinate read, curves', texts' and points' alike (NaN fails too).
+  glm::dvec2 checked(const glm::dvec2& p) {
+    if (!(std::abs(p.x) < kMaxCoordinate && std::abs(p.y) < kMaxCoordinate)) drawing_.badNumber = true;
+    return p;
+  }
   void keep(DxfCurve curve) {
-    for (glm::dvec2 p : curve.points)
-      if (!(std::abs(p.x) < kMaxCoordinate && std::abs(p.y) < kMaxCoordinate)) drawing_.badNumber = true;
+    for (glm::dvec2 p : curve.points) checked(p);
     count(curve.points.size());
     if (!drawing_.tooLarge) drawing_.curves.push_back(std::move(curve));
   }

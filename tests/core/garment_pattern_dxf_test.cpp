@@ -172,6 +172,12 @@ TEST(PatternDxf, BrokenFilesGetClearErrors) {
   // Found by fuzzing: a closed polyline of two corners (one side a bulge arc, the other straight back).
   const std::string twoCorners = polylineDxf({{0, 0}, {100, 0}});
   EXPECT_NE(errorOf(twoCorners).find("encloses no area"), std::string::npos) << errorOf(twoCorners);
+  // Found by fuzzing: a centred text without its alignment point (dxflib gives NaN) stands at its
+  // insertion point.
+  std::string text = square;
+  text.insert(text.find("0\nENDSEC\n0\nEOF"), "0\nTEXT\n8\n14\n10\n5\n20\n5\n40\n2\n1\nPiece Name: front\n72\n1\n");
+  EXPECT_EQ(errorOf(text), "");
+  EXPECT_EQ(patternFromDxf(text).panels[0].name, "front");
 }
 
 // 100,000 sew lines between the same two points: chained through a grid of
