@@ -5,6 +5,9 @@
 #include <chrono>
 #include <cmath>
 
+#include <nlohmann/json.hpp>
+
+#include "core/hair/hairstyle_json.h"
 #include "core/hair/strand_tracer.h"
 #include "core/math/perlin_noise.h"
 #include "core/util/memory_budget.h"
@@ -172,6 +175,7 @@ void HairGroom::sampleAllRoots(size_t guides, size_t children, uint32_t seed) {
         for (int d = 0; d < 3; ++d) roots->positions[3 * i + d] = p[d];
     }
   findGuideNeighbours();
+  tracedKey_.clear();
   sampledGuides_ = guides;
   sampledChildren_ = children;
   sampledSeed_ = seed;
@@ -268,6 +272,23 @@ void HairGroom::grow(const HairStyle& style, size_t strandCount) {
 
 void HairGroom::regrowGuides(const HairStyle& style) {
   const auto start = std::chrono::steady_clock::now();
+  const size_t guides = guideRoots_.size(), total = guides + childRoots_.size();
+  const int points = std::max(2, style.pointsPerStrand);
+  HairStyle unbrushed = style;
+  unbrushed.strokes.clear();
+  const std::string key = toJson(unbrushed).dump();
+  if (key != tracedKey_ || strands_.points.size() != 3 * total * points) {
+    traceGuides(style);
+    tracedGuides_.assign(strands_.points.begin(), strands_.points.begin() + 3 * guides * points);
+    tracedKey_ = key;
+  } else {
+    std::copy(tracedGuides_.begin(), tracedGuides_.end(), strands_.points.begin());
+  }
+  applyGroomStrokes(style.strokes, proxy_.headCenter(), proxy_, kMargin, style.seed, strands_, guides);
+  timings_.guides = secondsSince(start);
+}
+
+void HairGroom::traceGuides(const HairStyle& style) {
   flow_.setPrimitives(style.primitives, proxy_.headCenter(), style.scalpOutflow);
   flow_.setNoise(style.seed, style.noiseAmplitude, style.noiseScale);
   const int points = std::max(2, style.pointsPerStrand);
@@ -295,7 +316,6 @@ void HairGroom::regrowGuides(const HairStyle& style) {
       strands_.guideOf[g] = -1;
     }
   });
-  timings_.guides = secondsSince(start);
 }
 
 void HairGroom::growChildren(const HairStyle& style) {

@@ -8,9 +8,11 @@
 //      pulled into wisps around its nearest guide (clumping), plus frizz.
 // Everything is deterministic for a given seed, whatever the thread count.
 // Editing: regrowGuides() after a primitive moves (fast, the panel matrix is
-// kept), growChildren() when the edit is done.
+// kept), growChildren() when the edit is done. Brush strokes (groom_stroke.h)
+// replay on the traced guides; a change of strokes alone does not retrace.
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "core/hair/body_proxy.h"
@@ -61,6 +63,8 @@ class HairGroom {
  private:
   void sampleAllRoots(size_t guides, size_t children, uint32_t seed);
   void findGuideNeighbours();
+  // Traces the guides through the style's flow (no brushes).
+  void traceGuides(const HairStyle& style);
   float strandLength(const HairStyle& style, const glm::vec3& root, uint64_t strandKey) const;
 
   ScalpSurface scalp_;
@@ -73,7 +77,11 @@ class HairGroom {
   // Per child: its 3 nearest guides and their weights (first = nearest).
   std::vector<int32_t> neighbours_;
   std::vector<float> weights_;
-  std::vector<float> guideLengths_;
+  std::vector<float> guideLengths_;  // as grown, before the brushes: children scale by them
+  // The guides as traced, before the brushes, and what they were traced
+  // for: a stroke replays on them without tracing again.
+  std::vector<float> tracedGuides_;
+  std::string tracedKey_;
   Strands strands_;
   GroomTimings timings_;
 };

@@ -14,6 +14,8 @@
 
 #include <glm/glm.hpp>
 
+#include "core/hair/groom_stroke.h"
+
 namespace mq {
 
 // A uniform stream: the overall fall of the hair.
@@ -105,6 +107,8 @@ struct HairStyle {
   glm::vec3 tipColor{0.25f, 0.16f, 0.09f};
   HairShadingParams shading;
   uint32_t seed = 1;
+  // Brush strokes, replayed in order on the traced guides (groom_stroke.h).
+  std::vector<GroomStroke> strokes;
 };
 
 // The built-in hairstyles: "long_straight", "bob", "wavy", "curly".

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -63,6 +64,62 @@ void readPrimitives(const JsonFields& f, FlowPrimitives& p) {
       p.vortices.push_back(v);
     }
   }
+}
+
+// "strokes": [{"brush", "radius", "strength", "mirror", "dabs": [[x, y, z, mx, my, mz], ...]}]
+std::vector<GroomStroke> readStrokes(const JsonFields& f) {
+  const json& list = f.array("strokes");
+  if (list.size() > kMaxGroomStrokes)
+    f.fail("strokes",
+           "holds " + std::to_string(list.size()) + " strokes, more than " + std::to_string(kMaxGroomStrokes));
+  std::vector<GroomStroke> strokes;
+  size_t dabCount = 0;
+  for (size_t i = 0; i < list.size(); ++i) {
+    const JsonFields e = f.element("strokes", i);
+    e.allowOnly({"brush", "radius", "strength", "mirror", "dabs"});
+    GroomStroke stroke;
+    try {
+      stroke.brush = groomBrushFromName(e.string("brush", groomBrushName(stroke.brush)));
+    } catch (const Error& error) {
+      e.fail("brush", error.what());
+    }
+    stroke.radius = e.positive("radius", stroke.radius, 1.0);
+    stroke.strength = e.number("strength", stroke.strength, stroke.brush == GroomBrush::Length ? -1.0 : 0.0, 1.0);
+    stroke.mirror = e.boolean("mirror", stroke.mirror);
+    const json& dabs = e.array("dabs");
+    dabCount += dabs.size();
+    if (dabCount > kMaxGroomDabs)
+      f.fail("strokes", "holds more than " + std::to_string(kMaxGroomDabs) + " dabs in all");
+    for (const json& dab : dabs) {
+      if (!dab.is_array() || dab.size() != 6) e.fail("dabs", "each dab is [x, y, z, mx, my, mz]");
+      float v[6];
+      for (int k = 0; k < 6; ++k) {
+        if (!dab[k].is_number() || !std::isfinite(dab[k].get<double>()) ||
+            std::abs(dab[k].get<double>()) > kMaxDistance)
+          e.fail("dabs", "each dab holds six numbers of magnitude at most 100 (metres)");
+        v[k] = dab[k].get<float>();
+      }
+      stroke.dabs.push_back({{v[0], v[1], v[2]}, {v[3], v[4], v[5]}});
+    }
+    strokes.push_back(std::move(stroke));
+  }
+  return strokes;
+}
+
+json strokesToJson(const std::vector<GroomStroke>& strokes) {
+  json out = json::array();
+  for (const GroomStroke& s : strokes) {
+    json dabs = json::array();
+    for (const GroomDab& d : s.dabs)
+      dabs.push_back({tidy(d.position.x), tidy(d.position.y), tidy(d.position.z), tidy(d.motion.x), tidy(d.motion.y),
+                      tidy(d.motion.z)});
+    out.push_back({{"brush", groomBrushName(s.brush)},
+                   {"radius", tidy(s.radius)},
+                   {"strength", tidy(s.strength)},
+                   {"mirror", s.mirror},
+                   {"dabs", dabs}});
+  }
+  return out;
 }
 
 glm::vec3 color(const JsonFields& f, std::string_view key, glm::vec3 fallback) {
@@ -146,6 +203,7 @@ HairStyle hairStyleFromJson(const json& j, const std::string& path) {
   s.tipColor = color(f, "tip_color", s.tipColor);
   s.seed = uint32_t(f.integer("seed", s.seed, 0, 4294967295LL));
   if (f.has("shading")) s.shading = hairShadingFromJson(f.raw("shading"), s.shading, f.pathOf("shading"));
+  if (f.has("strokes")) s.strokes = readStrokes(f);
   return s;
 }
 
@@ -238,6 +296,7 @@ json toJson(const HairStyle& s) {
            {"tip_color", vec(s.tipColor)},
            {"seed", s.seed}};
   if (s.shading != HairShadingParams{}) out["shading"] = toJson(s.shading);
+  if (!s.strokes.empty()) out["strokes"] = strokesToJson(s.strokes);
   return out;
 }
 

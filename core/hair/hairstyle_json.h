@@ -6,7 +6,10 @@
 //               "streams":  [{"direction": [x,y,z], "strength": s}],
 //               "sources":  [{"position": [x,y,z], "strength": s, "radius": r}],
 //               "vortices": [{"position": [..], "axis": [..], "strength": s, "radius": r}],
-//               "length_map": [{"position": [..], "scale": k, "radius": r}]},
+//               "length_map": [{"position": [..], "scale": k, "radius": r}],
+//               "strokes": [{"brush": "comb", "radius": r, "strength": s,   brush strokes in
+//                            "mirror": false,                           order (groom_stroke.h);
+//                            "dabs": [[x, y, z, mx, my, mz], ..]}]},    head space, metres
 //     "scalp": {"kind": "tagged"}                          default: TagScalp vertices
 //            | {"kind": "bone_cone", "bone": "head", "axis": [0,1,0], "angle": 70}
 //            | {"kind": "faces", "mesh": 0, "faces": [..]},

@@ -55,6 +55,13 @@ HairStyle scaledHairStyle(const HairStyle& style, float k) {
     p.position *= k;
     p.radius *= k;
   }
+  for (GroomStroke& stroke : s.strokes) {
+    stroke.radius *= k;
+    for (GroomDab& dab : stroke.dabs) {
+      dab.position *= k;
+      dab.motion *= k;
+    }
+  }
   s.noiseScale *= k;
   s.density /= k * k;
   s.length *= k;

@@ -1,0 +1,63 @@
+#pragma once
+// Grooming brushes: strokes a user paints over the hair (comb, cut, length,
+// puff, smooth, clump, frizz), stored in the hairstyle and replayed on the
+// guides every time they are traced, so moving a flow primitive afterwards
+// keeps the combing; children follow their guides.
+//
+// A stroke is a list of dabs, each a sphere of the stroke's radius at a
+// point in head space (see hairstyle.h); a guide point inside it is weighted
+// by a smooth falloff, (1 - (d/r)^2)^2. The rates below are per dab: a
+// stroke lays a dab every quarter radius or so, so a point under a stroke
+// sees a few of them.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace mq {
+
+class BodyProxy;
+struct Strands;
+
+enum class GroomBrush { Comb, Cut, Length, Puff, Smooth, Clump, Frizz };
+
+// "comb", "cut", "length", "puff", "smooth", "clump", "frizz".
+const std::vector<std::string>& groomBrushNames();
+std::string groomBrushName(GroomBrush brush);
+// Throws mq::Error naming the brushes when `name` is not one of them.
+GroomBrush groomBrushFromName(const std::string& name);
+
+struct GroomDab {
+  glm::vec3 position{0.0f};  // head space, metres
+  glm::vec3 motion{0.0f};    // the brush's movement since the last dab (comb)
+};
+
+struct GroomStroke {
+  GroomBrush brush = GroomBrush::Comb;
+  float radius = 0.03f;  // metres
+  // 0..1; for Length, -1..1: negative shortens.
+  float strength = 0.5f;
+  // Also applied mirrored across the head's symmetry plane (x = 0 in head space).
+  bool mirror = false;
+  std::vector<GroomDab> dabs;
+};
+
+// What a document may hold (time and memory: every regrow replays them).
+constexpr size_t kMaxGroomStrokes = 10000;
+constexpr size_t kMaxGroomDabs = 200000;
+
+// Dabs every quarter radius along the segment from `from` to `to` (head
+// space), each carrying its share of the motion; one dab when they meet.
+std::vector<GroomDab> dabsAlong(const glm::vec3& from, const glm::vec3& to, float radius);
+
+// Replays `strokes` on the first `guides` strands of `strands` (world
+// space; the head centre `headCenter` is head space's origin). Strands keep
+// their point count; cut and length resample them. Every point stays out
+// of `proxy` by `margin`. Deterministic for a given seed, whatever the
+// thread count.
+void applyGroomStrokes(const std::vector<GroomStroke>& strokes, const glm::vec3& headCenter, const BodyProxy& proxy,
+                       float margin, uint32_t seed, Strands& strands, size_t guides);
+
+}  // namespace mq
