@@ -1,6 +1,8 @@
 // mannequin-cli groom SCENE|default: grows the scene's hairstyle headless
 // (rest pose) and reports timings; optionally writes the strands as PLY.
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -9,10 +11,12 @@
 
 #include "app/cli/command.h"
 #include "core/hair/character_groom.h"
+#include "core/hair/groom_stroke.h"
 #include "core/hair/hairstyle_json.h"
 #include "core/hair/head_fit.h"
 #include "core/hair/strands_io.h"
 #include "core/scene/open_scene.h"
+#include "core/scene/scene_document.h"
 #include "core/util/atomic_file.h"
 #include "core/util/error.h"
 
@@ -53,9 +57,46 @@ int countOption(const Args& args, const std::string& name, double fallback, doub
   return int(v);
 }
 
+glm::vec3 pointOption(const Args& args, const std::string& name) {
+  const std::string text = args.option(name);
+  glm::vec3 v(0.0f);
+  char* end = nullptr;
+  const char* p = text.c_str();
+  for (int d = 0; d < 3; ++d) {
+    const double x = std::strtod(p, &end);
+    if (end == p || !std::isfinite(x) || std::abs(x) > 100.0 || (d < 2 && *end != ',') || (d == 2 && *end != '\0'))
+      throw Error("option " + name + " expects X,Y,Z in metres (three numbers, each under 100), not '" + text + "'");
+    v[d] = float(x);
+    p = end + 1;
+  }
+  return v;
+}
+
+// --brush B --at X,Y,Z [--to X,Y,Z]: one stroke from `at` to `to` (world
+// metres, rest pose), added after the document's strokes.
+GroomStroke strokeOption(const Args& args, const glm::vec3& headCenter) {
+  GroomStroke stroke;
+  stroke.brush = groomBrushFromName(args.option("--brush"));
+  stroke.radius = float(args.number("--radius", 0.03));
+  if (!(stroke.radius > 0.0f && stroke.radius <= 1.0f)) throw Error("option --radius expects metres in (0, 1]");
+  stroke.strength = float(args.number("--strength", stroke.brush == GroomBrush::Comb ? 1.0 : 0.5));
+  const float lowest = stroke.brush == GroomBrush::Length ? -1.0f : 0.0f;
+  if (!(stroke.strength >= lowest && stroke.strength <= 1.0f))
+    throw Error("option --strength expects " + std::string(lowest < 0.0f ? "-1" : "0") + " to 1 for the " +
+                groomBrushName(stroke.brush) + " brush");
+  stroke.mirror = args.has("--mirror");
+  if (!args.has("--at")) throw Error("--brush needs --at X,Y,Z (where the stroke starts, world metres, rest pose)");
+  const glm::vec3 at = pointOption(args, "--at") - headCenter;
+  const glm::vec3 to = args.has("--to") ? pointOption(args, "--to") - headCenter : at;
+  if (stroke.brush == GroomBrush::Comb && at == to) throw Error("the comb needs --to X,Y,Z: where it drags the hair");
+  stroke.dabs = dabsAlong(at, to, stroke.radius);
+  return stroke;
+}
+
 int runGroom(const std::vector<std::string>& argv) {
   const Args args(argv);
-  args.allowOnly({"--strands", "--points", "--style", "--out", "--stats-json", "--seed", "--scale", "--auto-rig"});
+  args.allowOnly({"--strands", "--points", "--style", "--out", "--stats-json", "--seed", "--scale", "--auto-rig",
+                  "--brush", "--at", "--to", "--radius", "--strength", "--mirror", "--save-as"});
   if (args.positional().size() != 1) throw Error("groom needs exactly one SCENE (or 'default')");
   const auto start = std::chrono::steady_clock::now();
   LoadedScene scene = openScene(args.positional()[0]);
@@ -80,6 +121,11 @@ int runGroom(const std::vector<std::string>& argv) {
     throw;
   } catch (const Error& e) {
     throw FileError(args.positional()[0], e.what());
+  }
+  if (args.has("--brush")) {
+    if (section.style.strokes.size() >= kMaxGroomStrokes)
+      throw Error("the hairstyle already holds " + std::to_string(kMaxGroomStrokes) + " strokes");
+    section.style.strokes.push_back(strokeOption(args, groom->proxy().headCenter()));
   }
   const double setupSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - groomStart).count();
   groom->grow(section.style, section.strands);
@@ -109,20 +155,41 @@ int runGroom(const std::vector<std::string>& argv) {
       {"style_scale", section.style.length / unfittedLength},
       {"bbox_min", bounds(strands.points, false)},
       {"bbox_max", bounds(strands.points, true)},
-      {"points_inside_body", inside}};
+      {"points_inside_body", inside},
+      {"strokes", section.style.strokes.size()}};
+  const std::string saveAs = args.option("--save-as");
+  if (!saveAs.empty()) {
+    if (!isSceneDocumentPath(saveAs)) throw FileError(saveAs, "--save-as writes a scene document (.mqscene or .json)");
+    SceneDocument document = scene.document;
+    if (!scene.documentPath.empty()) rebaseDocumentPaths(document, scene.documentPath, saveAs);
+    document.hair = toJson(section);  // the style as grown: fitted to this head, with its strokes
+    saveSceneDocument(document, saveAs);
+  }
   const std::string statsPath = args.option("--stats-json");
   if (!statsPath.empty()) writeFileAtomically(statsPath, [&](std::ostream& o) { o << std::setw(2) << stats << "\n"; });
   std::cout << "groomed " << strands.strandCount() << " strands (" << groom->guideCount() << " guides) x "
             << strands.pointsPerStrand << " points, style " << section.style.name << ", in " << growSeconds
-            << " s (guides " << groom->timings().guides << " s, children " << groom->timings().children
-            << " s); points inside the body: " << inside << (out.empty() ? "" : "; wrote " + out) << "\n";
+            << " s (guides " << groom->timings().guides << " s, children " << groom->timings().children << " s); "
+            << section.style.strokes.size() << " brush strokes; points inside the body: " << inside
+            << (out.empty() ? "" : "; wrote " + out) << (saveAs.empty() ? "" : "; saved the scene as " + saveAs)
+            << "\n";
   return inside == 0 ? 0 : 4;
 }
 
 static Registration reg(
     {"groom",
-     "SCENE|default [--strands N] [--points P] [--style NAME] [--seed S] [--out strands.ply] [--stats-json OUT]",
-     "grows the hairstyle (flow-field styling, guides and children); stats and PLY polylines", runGroom});
+     "SCENE|default [--strands N] [--points P] [--style NAME] [--seed S] [--out strands.ply] [--stats-json OUT] "
+     "[--brush comb|cut|length|puff|smooth|clump|frizz --at X,Y,Z [--to X,Y,Z] [--radius M] [--strength S] "
+     "[--mirror]] [--save-as OUT.mqscene]",
+     "grows the hairstyle (flow-field styling, guides and children, the document's brush strokes); stats and PLY "
+     "polylines",
+     runGroom,
+     "  --brush B --at X,Y,Z [--to X,Y,Z]: adds one stroke of brush B from --at to --to (world metres, rest\n"
+     "    pose; a dab every quarter radius), after the document's strokes. --radius in metres (default\n"
+     "    0.03), --strength 0..1 (default 1 for the comb, which then drags the hair all the way, else\n"
+     "    0.5; the length brush takes -1..1, negative shortens),\n"
+     "    --mirror also brushes across the head's symmetry plane. The comb drags the hair from --at to --to.\n"
+     "  --save-as OUT: writes the scene with the hairstyle as grown (fitted to this head, with its strokes).\n"});
 
 }  // namespace
 }  // namespace mq::cli

@@ -40,7 +40,8 @@ Args::Args(const std::vector<std::string>& args) {
                                                  "--regenerate",
                                                  "--smooth",
                                                  "--cones",
-                                                 "--auto-rig"};
+                                                 "--auto-rig",
+                                                 "--mirror"};
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a.rfind("--", 0) == 0 && a.size() > 2) {

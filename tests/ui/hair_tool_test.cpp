@@ -64,6 +64,20 @@ float maxDifference(const std::vector<float>& a, const std::vector<float>& b) {
 
 std::string styleText(const HairTool& tool) { return toJson(tool.style()).dump(); }
 
+float guideLengths(const HairTool& tool) {
+  const Strands& s = tool.groom()->strands();
+  float sum = 0.0f;
+  for (size_t g = 0; g < tool.groom()->guideCount(); ++g) {
+    float length = 0.0f;
+    for (int k = 1; k < s.pointsPerStrand; ++k) {
+      const float* p = s.strand(g) + 3 * k;
+      length += glm::length(glm::vec3(p[0], p[1], p[2]) - glm::vec3(p[-3], p[-2], p[-1]));
+    }
+    sum += length;
+  }
+  return sum;
+}
+
 // Every strand's root: what a scalp change moves.
 std::vector<float> rootPoints(const HairTool& tool) {
   std::vector<float> roots;
@@ -605,6 +619,80 @@ class HairToolTest : public QObject {
     panel()->scalpModeCombo()->setCurrentIndex(HairPanel::ScalpTagged);  // the brush goes with the region
     waitForHair();
     QVERIFY(!panel()->scalpPaintButton()->isVisibleTo(panel()));
+  }
+
+  void groomingWithABrushIsOneUndoStepAStroke() {
+    tool_->dock()->show();
+    tool_->dock()->raise();
+    doc()->setClip(-1);  // the rest pose: the groom as shown
+    renderNow();
+    waitForHair();
+    const size_t strokesBefore = tool_->style().strokes.size();
+    const std::vector<float> guidesBefore = guidePoints(*tool_);
+    // The comb, chosen in the dock: its settings show.
+    panel()->groomBrushCombo()->setCurrentIndex(1 + int(GroomBrush::Comb));
+    QCOMPARE(tool_->groomBrush(), std::optional<GroomBrush>(GroomBrush::Comb));
+    QVERIFY(panel()->groomRadiusBox()->isVisibleTo(panel()));
+    panel()->groomRadiusBox()->setValue(4.0);
+    panel()->groomStrengthBox()->setValue(1.0);
+    // A guide's middle, on the side facing the camera.
+    const Strands& strands = tool_->groom()->strands();
+    const int middle = strands.pointsPerStrand / 2;
+    const glm::vec3 camera = window_->sceneView()->cameraPosition();
+    glm::vec3 target(0.0f);
+    float nearest = 1e9f;
+    for (size_t g = 0; g < tool_->groom()->guideCount(); ++g) {
+      const float* p = strands.strand(g) + 3 * middle;
+      const glm::vec3 q(p[0], p[1], p[2]);
+      if (glm::length(q - camera) < nearest) nearest = glm::length(q - camera), target = q;
+    }
+    QWidget* viewport = window_->viewport();
+    const QPoint start = toWidget(target);
+    const int commands = doc()->undoStack()->index();
+    sendMouse(viewport, QEvent::MouseButtonPress, start, Qt::LeftButton, Qt::LeftButton, Qt::NoModifier);
+    for (int step = 1; step <= 6; ++step) {
+      sendMouse(viewport, QEvent::MouseMove, start + QPoint(10 * step, 0), Qt::NoButton, Qt::LeftButton,
+                Qt::NoModifier);
+      QTest::qWait(30);
+    }
+    sendMouse(viewport, QEvent::MouseButtonRelease, start + QPoint(60, 0), Qt::LeftButton, Qt::NoButton,
+              Qt::NoModifier);
+    waitForHair();
+    QCOMPARE(doc()->undoStack()->index(), commands + 1);
+    QCOMPARE(doc()->undoStack()->undoText(), QString("Comb hair"));
+    QCOMPARE(tool_->style().strokes.size(), strokesBefore + 1);
+    QCOMPARE(tool_->style().strokes.back().brush, GroomBrush::Comb);
+    const std::vector<float> combed = guidePoints(*tool_);
+    QVERIFY2(maxDifference(combed, guidesBefore) > 0.01f,
+             qPrintable(QString("the comb moved the guides by %1 m").arg(maxDifference(combed, guidesBefore))));
+    // Saved in the document's hair section.
+    QCOMPARE(doc()->sceneSections().hair["style"]["strokes"].size(), strokesBefore + 1);
+    doc()->undoStack()->undo();
+    waitForHair();
+    QCOMPARE(guidePoints(*tool_), guidesBefore);
+    doc()->undoStack()->redo();
+    waitForHair();
+    QCOMPARE(guidePoints(*tool_), combed);
+
+    // A cut (scripted, as a plug-in would): the hair it crosses is shorter; Clear takes every stroke away.
+    panel()->groomBrushCombo()->setCurrentIndex(1 + int(GroomBrush::Cut));
+    const float before = guideLengths(*tool_);
+    QVERIFY(tool_->groomStroke(target + glm::vec3(-0.3f, 0.0f, 0.0f), target + glm::vec3(0.3f, 0.0f, 0.0f)));
+    waitForHair();
+    QVERIFY2(guideLengths(*tool_) < 0.99f * before,
+             qPrintable(QString("guides' length %1 -> %2 m").arg(before).arg(guideLengths(*tool_))));
+    QVERIFY(panel()->clearStrokesButton()->isEnabled());
+    panel()->clearStrokesButton()->click();
+    waitForHair();
+    QVERIFY(tool_->style().strokes.empty());
+    QCOMPARE(doc()->undoStack()->undoText(), QString("Clear brush strokes"));
+    doc()->undoStack()->undo();
+    waitForHair();
+    QCOMPARE(tool_->style().strokes.size(), strokesBefore + 2);
+    // No brush: the settings go, the dock is as it was.
+    panel()->groomBrushCombo()->setCurrentIndex(0);
+    QVERIFY(!tool_->groomBrush());
+    QVERIFY(!panel()->groomRadiusBox()->isVisibleTo(panel()));
   }
 };
 

@@ -90,9 +90,9 @@ HairPanel::HairPanel(HairTool* tool, QWidget* parent) : QWidget(parent), tool_(t
   styleCombo_->addItem(tr("(no hair)"));
   for (const std::string& name : builtinHairStyleNames()) styleCombo_->addItem(QString::fromStdString(name));
   styleCombo_->addItem(tr("(custom)"));
-  auto* styleForm = new QFormLayout;
-  styleForm->addRow(tr("Hairstyle"), styleCombo_);
-  layout->addLayout(styleForm);
+  styleForm_ = new QFormLayout;
+  makeGroomControls();
+  layout->addLayout(styleForm_);
   connect(styleCombo_, &QComboBox::activated, this, [this](int index) {
     if (index == 0)
       tool_->removeHair();
@@ -117,6 +117,57 @@ HairPanel::HairPanel(HairTool* tool, QWidget* parent) : QWidget(parent), tool_(t
   connect(tool_, &HairTool::selectionChanged, this, &HairPanel::refresh);
   connect(tool_, &HairTool::scalpChanged, this, &HairPanel::refreshScalp);
   refresh();
+}
+
+// The style and, on its row, the grooming brush (so the dock keeps its
+// height until a brush is chosen; gui tests select things in screen space).
+void HairPanel::makeGroomControls() {
+  groomBrush_ = new QComboBox;
+  groomBrush_->addItem(tr("No brush"));
+  for (const std::string& name : groomBrushNames()) groomBrush_->addItem(QString::fromStdString(name));
+  groomBrush_->setToolTip(
+      tr("Groom with a brush: drag over the hair in the viewport. Comb drags it, cut shortens it where the brush "
+         "passes, length grows it (Ctrl: shortens), puff lifts it from the scalp, smooth straightens curls, "
+         "clump gathers it, frizz roughens it. Strokes stay when the flow primitives change."));
+  auto* styleRow = new QWidget;
+  auto* row = new QHBoxLayout(styleRow);
+  row->setContentsMargins(0, 0, 0, 0);
+  row->addWidget(styleCombo_, 1);
+  row->addWidget(groomBrush_);
+  styleForm_->addRow(tr("Hairstyle"), styleRow);
+
+  groomRadius_ = addSpin(0.5, 30.0, 0.5, 1);
+  groomRadius_->setSuffix(tr(" cm"));
+  groomRadius_->setValue(tool_->groomRadius() * 100.0);
+  groomRadius_->setToolTip(tr("The brush's radius around the point under the cursor"));
+  groomStrength_ = addSpin(0.05, 1.0, 0.05, 2);
+  groomStrength_->setValue(tool_->groomStrength());
+  groomStrength_->setToolTip(tr("How strongly each dab of the brush acts (the comb: the share of the drag)"));
+  groomMirror_ = new QCheckBox(tr("Mirror"));
+  groomMirror_->setToolTip(tr("Brush both sides of the head at once"));
+  clearStrokes_ = new QPushButton(tr("Clear"));
+  clearStrokes_->setToolTip(tr("Take every brush stroke away (the flow's hair comes back)"));
+  groomSettings_ = new QWidget;
+  auto* settings = new QHBoxLayout(groomSettings_);
+  settings->setContentsMargins(0, 0, 0, 0);
+  settings->addWidget(groomRadius_);
+  settings->addWidget(groomStrength_);
+  settings->addWidget(groomMirror_);
+  settings->addWidget(clearStrokes_);
+  styleForm_->addRow(tr("Brush"), groomSettings_);
+  styleForm_->setRowVisible(groomSettings_, false);
+
+  connect(groomBrush_, &QComboBox::currentIndexChanged, this, [this](int index) {
+    const bool on = index > 0;
+    if (on && scalpPaint_->isChecked()) scalpPaint_->setChecked(false);
+    tool_->setGroomBrush(on ? std::optional<GroomBrush>(GroomBrush(index - 1)) : std::nullopt);
+    styleForm_->setRowVisible(groomSettings_, on);
+  });
+  connect(groomRadius_, &QDoubleSpinBox::valueChanged, this,
+          [this](double cm) { tool_->setGroomRadius(float(cm) / 100.0f); });
+  connect(groomStrength_, &QDoubleSpinBox::valueChanged, this, [this](double v) { tool_->setGroomStrength(float(v)); });
+  connect(groomMirror_, &QCheckBox::toggled, this, [this](bool on) { tool_->setGroomMirror(on); });
+  connect(clearStrokes_, &QPushButton::clicked, this, [this] { tool_->clearStrokes(); });
 }
 
 // The flow primitives: the list, add and delete, the selected one's fields.
@@ -393,7 +444,10 @@ QWidget* HairPanel::makeScalpGroup() {
   scalpForm_ = form;
   form->setRowVisible(brush_, false);  // shown with the Painted region
   form->addRow(scalpStatus_);
-  connect(scalpPaint_, &QPushButton::toggled, this, [this](bool on) { tool_->setPaintingScalp(on); });
+  connect(scalpPaint_, &QPushButton::toggled, this, [this](bool on) {
+    if (on) groomBrush_->setCurrentIndex(0);
+    tool_->setPaintingScalp(on);
+  });
   connect(brushRadius_, &QDoubleSpinBox::valueChanged, this,
           [this](double cm) { tool_->setBrushRadius(float(cm) / 100.0f); });
 
@@ -623,6 +677,11 @@ void HairPanel::refresh() {
                                                     frizz_, rootColor_, tipColor_, simulate_, bake_})
     w->setEnabled(hair);
   delete_->setEnabled(hair && tool_->selectedPrimitive().valid());
+  groomBrush_->setEnabled(hair);
+  clearStrokes_->setEnabled(hair && !tool_->style().strokes.empty());
+  clearStrokes_->setText(hair && !tool_->style().strokes.empty()
+                             ? tr("Clear %n stroke(s)", nullptr, int(tool_->style().strokes.size()))
+                             : tr("Clear"));
   if (hair) {
     const HairStyle& s = tool_->style();
     for (auto [spin, value] : {std::pair{density_, s.density}, std::pair{length_, s.length},

@@ -47,6 +47,13 @@ class HairPanel : public QWidget {
   // Scalp group: mode (ScalpMode order), bone, axis preset, axis, angle,
   // and, with the Painted region, the brush: Paint (checkable) and its radius (cm).
   enum ScalpMode { ScalpTagged, ScalpBoneCone, ScalpAutomatic, ScalpPainted };
+  // Grooming: the brush (Off, then groomBrushNames() in order) beside the
+  // style; its radius (cm), strength, mirror and Clear strokes show while one is on.
+  QComboBox* groomBrushCombo() const { return groomBrush_; }
+  QDoubleSpinBox* groomRadiusBox() const { return groomRadius_; }
+  QDoubleSpinBox* groomStrengthBox() const { return groomStrength_; }
+  QCheckBox* groomMirrorBox() const { return groomMirror_; }
+  QPushButton* clearStrokesButton() const { return clearStrokes_; }
   QPushButton* scalpPaintButton() const { return scalpPaint_; }
   QDoubleSpinBox* brushRadiusBox() const { return brushRadius_; }
   QComboBox* scalpModeCombo() const { return scalpMode_; }
@@ -105,6 +112,14 @@ class HairPanel : public QWidget {
   QComboBox *scalpMode_, *scalpBone_, *scalpAxisPreset_;
   QDoubleSpinBox* scalpAxis_[3];
   QDoubleSpinBox* scalpAngle_;
+  QComboBox* groomBrush_;
+  QDoubleSpinBox* groomRadius_;
+  QDoubleSpinBox* groomStrength_;
+  QCheckBox* groomMirror_;
+  QPushButton* clearStrokes_;
+  QWidget* groomSettings_;
+  QFormLayout* styleForm_;
+  void makeGroomControls();
   QPushButton* scalpPaint_;
   QDoubleSpinBox* brushRadius_;
   QWidget* brush_;  // the Paint button and the radius: shown with the Painted region

@@ -12,6 +12,7 @@
 #include <QUndoStack>
 
 #include "core/hair/character_groom.h"
+#include "core/hair/groom_stroke.h"
 #include "core/hair/hair_groom.h"
 #include "core/hair/hairstyle_json.h"
 #include "core/hair/head_fit.h"
@@ -549,6 +550,10 @@ bool HairTool::eventFilter(QObject* watched, QEvent* event) {
 void HairTool::setPaintingScalp(bool on) {
   painting_ = on;
   stroke_.reset();
+  if (on) {
+    groomBrush_.reset();
+    groomStroke_.reset();
+  }
   window_->statusBar()->showMessage(
       on ? tr("Paint the scalp: drag on the character to add, Ctrl+drag to erase; middle or Alt+drag orbits")
          : QString(),
@@ -591,7 +596,115 @@ bool HairTool::onPaintPress(QMouseEvent* event) {
   return true;
 }
 
+// ---- Grooming brushes ----
+
+void HairTool::setGroomBrush(std::optional<GroomBrush> brush) {
+  groomBrush_ = brush;
+  groomStroke_.reset();
+  if (brush && painting_) setPaintingScalp(false);
+  window_->statusBar()->showMessage(
+      brush ? tr("Groom: drag over the hair (%1); Ctrl+drag shortens with the length brush; middle or Alt+drag orbits")
+                  .arg(QString::fromStdString(groomBrushName(*brush)))
+            : QString(),
+      brush ? 0 : 1);
+}
+
+QString HairTool::groomText() const {
+  static const char* texts[] = {QT_TR_NOOP("Comb hair"), QT_TR_NOOP("Cut hair"),    QT_TR_NOOP("Change hair length"),
+                                QT_TR_NOOP("Puff hair"), QT_TR_NOOP("Smooth hair"), QT_TR_NOOP("Clump hair"),
+                                QT_TR_NOOP("Frizz hair")};
+  return groomStroke_ ? tr(texts[size_t(groomStroke_->brush)]) : QString();
+}
+
+std::optional<glm::vec3> HairTool::groomAnchorAt(int x, int y) {
+  auto* view = window_->sceneView();
+  const std::optional<glm::vec3> surface = view->pickSurface(x, y);
+  const glm::vec3 camera = view->cameraPosition();
+  const glm::vec3 through = handles_->displayToWorld(x, y, surface ? *surface : view->cameraFocus());
+  if (glm::length(through - camera) < 1e-9f) return surface;
+  const glm::vec3 ray = glm::normalize(through - camera);
+  float nearest = surface ? glm::dot(*surface - camera, ray) : 1e30f;
+  std::optional<glm::vec3> anchor = surface;
+  const glm::mat4 shown = posedFromRest();
+  const Strands& strands = groom_->strands();
+  const size_t points = groom_->guideCount() * size_t(strands.pointsPerStrand);
+  for (size_t i = 0; i < points; ++i) {
+    const float* q = &strands.points[3 * i];
+    const glm::vec3 p = glm::vec3(shown * glm::vec4(q[0], q[1], q[2], 1.0f)) - camera;
+    const float depth = glm::dot(p, ray);
+    if (depth <= 0.0f || depth >= nearest) continue;
+    if (glm::length(p - depth * ray) < groomRadius_) {
+      nearest = depth;
+      anchor = camera + depth * ray;
+    }
+  }
+  return anchor;
+}
+
+bool HairTool::onGroomPress(QMouseEvent* event) {
+  const bool invert = event->modifiers() == Qt::ControlModifier;
+  if (event->button() != Qt::LeftButton || (event->modifiers() != Qt::NoModifier && !invert)) return false;
+  const QPoint display = toDisplay(event->position());
+  const std::optional<glm::vec3> anchor = groomAnchorAt(display.x(), display.y());
+  if (!anchor) return false;  // off the hair and the character: the camera moves
+  GroomStroke stroke;
+  stroke.brush = *groomBrush_;
+  stroke.radius = groomRadius_;
+  stroke.strength = (invert && stroke.brush == GroomBrush::Length ? -1.0f : 1.0f) * groomStrength_;
+  stroke.mirror = groomMirror_;
+  groomStroke_ = stroke;
+  groomBefore_ = *style_;
+  groomAnchor_ = *anchor;
+  groomLast_ = glm::vec3(glm::inverse(worldFromHead()) * glm::vec4(*anchor, 1.0f));
+  groomKey_ = HairStyleCommand::nextMergeKey();
+  strokeClock_.start();
+  groomAppliedMs_ = -kPaintApplyMs;
+  // A press alone is a dab (a cut, a puff); the comb needs a drag.
+  if (stroke.brush != GroomBrush::Comb) groomStroke_->dabs.push_back({groomLast_, glm::vec3(0.0f)});
+  pushGroomStroke(true);
+  return true;
+}
+
+void HairTool::extendGroomStroke(const glm::vec3& world) {
+  const glm::vec3 head = glm::vec3(glm::inverse(worldFromHead()) * glm::vec4(world, 1.0f));
+  if (glm::length(head - groomLast_) < 0.25f * groomStroke_->radius) return;  // not yet a dab's spacing
+  for (const GroomDab& dab : dabsAlong(groomLast_, head, groomStroke_->radius)) groomStroke_->dabs.push_back(dab);
+  groomLast_ = head;
+}
+
+void HairTool::pushGroomStroke(bool live) {
+  HairStyle after = groomBefore_;
+  if (!groomStroke_->dabs.empty() && after.strokes.size() < kMaxGroomStrokes) after.strokes.push_back(*groomStroke_);
+  editStyle(after, groomText(), groomKey_, live);
+}
+
+bool HairTool::groomStroke(const glm::vec3& from, const glm::vec3& to, bool invert) {
+  if (!groomBrush_ || !style_ || !groom_) return false;
+  const glm::mat4 headFromWorld = glm::inverse(worldFromHead());
+  GroomStroke stroke;
+  stroke.brush = *groomBrush_;
+  stroke.radius = groomRadius_;
+  stroke.strength = (invert && stroke.brush == GroomBrush::Length ? -1.0f : 1.0f) * groomStrength_;
+  stroke.mirror = groomMirror_;
+  stroke.dabs = dabsAlong(glm::vec3(headFromWorld * glm::vec4(from, 1.0f)),
+                          glm::vec3(headFromWorld * glm::vec4(to, 1.0f)), stroke.radius);
+  groomStroke_ = stroke;
+  groomBefore_ = *style_;
+  groomKey_ = HairStyleCommand::nextMergeKey();
+  pushGroomStroke(false);
+  groomStroke_.reset();
+  return true;
+}
+
+void HairTool::clearStrokes() {
+  if (!style_ || style_->strokes.empty()) return;
+  HairStyle after = *style_;
+  after.strokes.clear();
+  editStyle(after, tr("Clear brush strokes"));
+}
+
 bool HairTool::onPress(QMouseEvent* event) {
+  if (groomBrush_ && dock_->isVisible()) return onGroomPress(event);
   if (painting_ && dock_->isVisible()) return onPaintPress(event);
   if (event->button() != Qt::LeftButton || event->modifiers() != Qt::NoModifier || !dock_->isVisible()) return false;
   const QPoint display = toDisplay(event->position());
@@ -615,6 +728,15 @@ QString HairTool::dragText() const {
 }
 
 bool HairTool::onMove(QMouseEvent* event) {
+  if (groomStroke_) {
+    const QPoint display = toDisplay(event->position());
+    extendGroomStroke(handles_->displayToWorld(display.x(), display.y(), groomAnchor_));
+    if (strokeClock_.elapsed() - groomAppliedMs_ >= kPaintApplyMs) {
+      groomAppliedMs_ = strokeClock_.elapsed();
+      pushGroomStroke(true);
+    }
+    return true;
+  }
   if (stroke_) {
     const QPoint display = toDisplay(event->position());
     if (const std::optional<glm::vec3> hit = window_->sceneView()->pickSurface(display.x(), display.y())) dab(*hit);
@@ -639,6 +761,12 @@ bool HairTool::onMove(QMouseEvent* event) {
 }
 
 bool HairTool::onRelease(QMouseEvent* event) {
+  if (groomStroke_) {
+    // The stroke's last step: not live, so the children regrow.
+    pushGroomStroke(false);
+    groomStroke_.reset();
+    return true;
+  }
   if (stroke_) {
     const ScalpRegion region = *stroke_;
     stroke_.reset();

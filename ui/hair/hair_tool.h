@@ -143,6 +143,26 @@ class HairTool : public QObject {
   bool paintScalpAt(const glm::vec3& world, bool erase, int mergeKey = 0);
   static constexpr int kPaintApplyMs = 120;
 
+  // Grooming brushes (core/hair/groom_stroke.h): while one is chosen, a
+  // left drag on the hair or the character lays a stroke of it (Ctrl+drag:
+  // the length brush shortens); the brush moves on the plane facing the
+  // camera through the hair it started on. The guides follow live, the
+  // children when the drag ends; one undo step a stroke. A drag that starts
+  // off the hair and the character orbits as usual.
+  void setGroomBrush(std::optional<GroomBrush> brush);
+  std::optional<GroomBrush> groomBrush() const { return groomBrush_; }
+  void setGroomRadius(float metres) { groomRadius_ = metres; }
+  float groomRadius() const { return groomRadius_; }
+  void setGroomStrength(float strength) { groomStrength_ = strength; }
+  float groomStrength() const { return groomStrength_; }
+  void setGroomMirror(bool on) { groomMirror_ = on; }
+  bool groomMirror() const { return groomMirror_; }
+  // One stroke of the current brush from world point `from` to `to` (as
+  // shown), applied at once (tests, scripts); false without a brush or hair.
+  bool groomStroke(const glm::vec3& from, const glm::vec3& to, bool invert = false);
+  // Takes every stroke away (one undo step).
+  void clearStrokes();
+
   // Primitive selection (shown by the panel and the handles).
   PrimitiveRef selectedPrimitive() const { return selected_; }
   void selectPrimitive(const PrimitiveRef& ref);
@@ -241,6 +261,27 @@ class HairTool : public QObject {
   // Adds one dab to the stroke's region; false when it is not on the character.
   bool dab(const glm::vec3& world);
   bool onPaintPress(QMouseEvent* event);
+
+  // Grooming brushes
+  std::optional<GroomBrush> groomBrush_;
+  float groomRadius_ = 0.03f;  // metres
+  float groomStrength_ = 0.5f;
+  bool groomMirror_ = false;
+  std::optional<GroomStroke> groomStroke_;  // the stroke being drawn
+  HairStyle groomBefore_;                   // the style when it started
+  glm::vec3 groomAnchor_{0.0f};             // world: the depth the brush moves at
+  glm::vec3 groomLast_{0.0f};               // head space: the last dab
+  int groomKey_ = 0;
+  qint64 groomAppliedMs_ = 0;
+  // The point a brush press at display (x, y) starts from: on the ray, at
+  // the nearest guide point within the brush's radius of it, else on the
+  // character; none off both.
+  std::optional<glm::vec3> groomAnchorAt(int x, int y);
+  bool onGroomPress(QMouseEvent* event);
+  void extendGroomStroke(const glm::vec3& world);
+  // The style with the stroke under way; pushed live or, at the end, whole.
+  void pushGroomStroke(bool live);
+  QString groomText() const;
 
   // Handle drag
   PrimitiveRef dragging_;
