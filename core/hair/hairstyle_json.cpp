@@ -222,6 +222,7 @@ ScalpRegion scalpRegionFromJson(const json& j, const std::string& path) {
     if (glm::length(r.axis) <= 0.0f) f.fail("axis", "must not be zero");
   } else if (kind == "faces") {
     r.kind = ScalpRegion::Kind::Faces;
+    r.bone = f.string("bone", r.bone);  // the head bone the body proxy follows
     r.mesh = int(f.integer("mesh", r.mesh, 0, 1 << 20));
     const json& faces = f.array("faces");
     r.faces.clear();
@@ -305,7 +306,7 @@ json toJson(const ScalpRegion& r) {
     case ScalpRegion::Kind::BoneCone:
       return {{"kind", "bone_cone"}, {"bone", r.bone}, {"axis", vec(r.axis)}, {"angle", tidy(r.angleDegrees)}};
     case ScalpRegion::Kind::Faces:
-      return {{"kind", "faces"}, {"mesh", r.mesh}, {"faces", r.faces}};
+      return {{"kind", "faces"}, {"bone", r.bone}, {"mesh", r.mesh}, {"faces", r.faces}};
     case ScalpRegion::Kind::Tagged:
     default:
       return {{"kind", "tagged"}};

@@ -12,7 +12,7 @@
 //                            "dabs": [[x, y, z, mx, my, mz], ..]}]},    head space, metres
 //     "scalp": {"kind": "tagged"}                          default: TagScalp vertices
 //            | {"kind": "bone_cone", "bone": "head", "axis": [0,1,0], "angle": 70}
-//            | {"kind": "faces", "mesh": 0, "faces": [..]},
+//            | {"kind": "faces", "bone": "head", "mesh": 0, "faces": [..]},   bone: the head
 //     "strands": 0,                            total count, 0 = from the density
 //     "shading": {"model": "kajiya-kay" | "physical",   default kajiya-kay
 //                 "melanin": 1.3, "pheomelanin": 0.1,   pigments (physical)

@@ -188,5 +188,22 @@ TEST(HairStyleJson, ShippedHairScenesHoldTheBuiltInStyles) {
   }
 }
 
+// A face-list scalp keeps the head bone it was found with: an imported
+// character's head is not called "head" (CesiumMan's is not), and a saved
+// scene must grow on it again.
+TEST(HairStyleJson, AFaceScalpKeepsItsHeadBone) {
+  ScalpRegion region;
+  region.kind = ScalpRegion::Kind::Faces;
+  region.bone = "Skeleton_neck_joint_2";
+  region.mesh = 1;
+  region.faces = {3, 4, 5};
+  const ScalpRegion back = scalpRegionFromJson(toJson(region));
+  EXPECT_EQ(back.bone, "Skeleton_neck_joint_2");
+  EXPECT_EQ(back.mesh, 1);
+  EXPECT_EQ(back.faces, region.faces);
+  // Older files, without it: the default head bone.
+  EXPECT_EQ(scalpRegionFromJson(nlohmann::json::parse(R"({"kind": "faces", "faces": [1]})")).bone, ScalpRegion{}.bone);
+}
+
 }  // namespace
 }  // namespace mq
