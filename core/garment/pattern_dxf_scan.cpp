@@ -41,7 +41,8 @@ void checkDxfText(const std::string& text) {
   const size_t pairs = lines.size() / 2;
   bool sawEof = false, sawSection = false;
   std::string entity;
-  for (size_t i = 0; i + 1 < lines.size() && !sawEof; i += 2) {
+  // To the end, past an EOF marker: dxflib reads on after one.
+  for (size_t i = 0; i + 1 < lines.size(); i += 2) {
     char* end = nullptr;
     const long code = std::strtol(lines[i].c_str(), &end, 10);
     if (lines[i].empty() || *end != '\0' || code < 0 || code > 1071)
@@ -51,7 +52,7 @@ void checkDxfText(const std::string& text) {
     if (code == 0) {
       entity = value;
       sawSection = sawSection || value == "SECTION";
-      sawEof = value == "EOF";
+      sawEof = sawEof || value == "EOF";
     } else if (isCount(entity, code)) {
       const long count = std::strtol(value.c_str(), &end, 10);
       if (count < 0 || size_t(count) > pairs)

@@ -167,6 +167,10 @@ TEST(PatternDxf, BrokenFilesGetClearErrors) {
   std::string hostile = square;
   hostile.replace(hostile.find("90\n4\n"), 5, "90\n99999999\n");
   EXPECT_NE(errorOf(hostile).find("LWPOLYLINE gives a count of 99999999"), std::string::npos) << errorOf(hostile);
+  // Found by fuzzing: dxflib reads on past an EOF marker, so the counts after one are checked too (a count
+  // too large for an int made it free its vertex array twice).
+  const std::string afterEof = square + hostile;
+  EXPECT_NE(errorOf(afterEof).find("LWPOLYLINE gives a count of 99999999"), std::string::npos) << errorOf(afterEof);
   EXPECT_NE(errorOf(polylineDxf({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, "9\n$INSUNITS\n70\n3\n")).find("unsupported"),
             std::string::npos);
   // Found by fuzzing: a closed polyline of two corners (one side a bulge arc, the other straight back).
