@@ -5,21 +5,7 @@
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 
-function(run)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 600)
-  message("${ARGN}\n -> exit ${code}\n${out}${err}")
-  if(NOT code EQUAL 0)
-    message(FATAL_ERROR "expected exit 0, got ${code}")
-  endif()
-  set(last_output "${out}${err}" PARENT_SCOPE)
-endfunction()
-
-function(stat file out)
-  file(READ "${file}" json)
-  set(keys ${ARGN})
-  string(JSON value GET "${json}" ${keys})
-  set(${out} "${value}" PARENT_SCOPE)
-endfunction()
+include("${CMAKE_CURRENT_LIST_DIR}/script_steps.cmake")
 
 # A positive decimal in metres as whole millimetres (math() takes integers).
 function(to_mm value out)
@@ -38,16 +24,16 @@ endfunction()
 # scene grows the same hair again. The points come from each character's
 # uncut groom (groom --stats-json): its bounds and head size.
 function(cut_to_bob name scene y back front half_width side radius)
-  run("${CLI}" groom "${scene}" --stats-json "${WORK}/${name}_long.json")
-  stat("${WORK}/${name}_long.json" low bbox_min 1)
-  run("${CLI}" groom "${scene}" --brush cut --at -${half_width},${y},${back} --to ${half_width},${y},${back}
+  run(0 "${CLI}" groom "${scene}" --stats-json "${WORK}/${name}_long.json")
+  stat("${WORK}/${name}_long.json" "bbox_min;1" low)
+  run(0 "${CLI}" groom "${scene}" --brush cut --at -${half_width},${y},${back} --to ${half_width},${y},${back}
       --radius ${radius} --save-as "${WORK}/${name}_back.mqscene")
-  run("${CLI}" groom "${WORK}/${name}_back.mqscene" --brush cut --at ${side},${y},${back} --to ${side},${y},${front}
+  run(0 "${CLI}" groom "${WORK}/${name}_back.mqscene" --brush cut --at ${side},${y},${back} --to ${side},${y},${front}
       --radius ${radius} --mirror --save-as "${WORK}/${name}_bob.mqscene" --stats-json "${WORK}/${name}_bob.json")
   if(NOT last_output MATCHES "2 brush strokes; points inside the body: 0")
     message(FATAL_ERROR "${name}: the cut hair should hold two strokes and stay out of the body")
   endif()
-  stat("${WORK}/${name}_bob.json" bob_low bbox_min 1)
+  stat("${WORK}/${name}_bob.json" "bbox_min;1" bob_low)
   message("${name}: the hair's lowest point rose from ${low} to ${bob_low} m (cut at ${y} m)")
   to_mm("${bob_low}" bob_mm)
   to_mm("${floor}" floor_mm)
@@ -55,9 +41,9 @@ function(cut_to_bob name scene y back front half_width side radius)
     message(FATAL_ERROR "${name}: after the cut the hair still reaches ${bob_low} m, below ${floor} m")
   endif()
   # The saved scene grows the same hair.
-  run("${CLI}" groom "${WORK}/${name}_bob.mqscene" --stats-json "${WORK}/${name}_again.json")
-  stat("${WORK}/${name}_again.json" again_low bbox_min 1)
-  stat("${WORK}/${name}_again.json" strokes strokes)
+  run(0 "${CLI}" groom "${WORK}/${name}_bob.mqscene" --stats-json "${WORK}/${name}_again.json")
+  stat("${WORK}/${name}_again.json" "bbox_min;1" again_low)
+  stat("${WORK}/${name}_again.json" "strokes" strokes)
   if(NOT strokes EQUAL 2 OR NOT again_low STREQUAL bob_low)
     message(FATAL_ERROR "${name}: reopened, the scene grows other hair (${strokes} strokes, lowest ${again_low} vs ${bob_low})")
   endif()
@@ -69,7 +55,7 @@ cut_to_bob(mannequin default 1.39 -0.235 0.2 0.3 0.198 0.089)
 set(floor 0.84)
 cut_to_bob(imported "${CHARACTER}" 0.98 -0.3 0.3 0.45 0.31 0.14)
 # Simulating the cut hair replays the strokes too.
-run("${CLI}" simulate "${WORK}/mannequin_bob.mqscene" --frames 5 --stats-json "${WORK}/simulated.json")
-stat("${WORK}/simulated.json" simulated_low hair_bbox_min 1)
-stat("${WORK}/mannequin_bob.json" bob_low bbox_min 1)
+run(0 "${CLI}" simulate "${WORK}/mannequin_bob.mqscene" --frames 5 --stats-json "${WORK}/simulated.json")
+stat("${WORK}/simulated.json" "hair_bbox_min;1" simulated_low)
+stat("${WORK}/mannequin_bob.json" "bbox_min;1" bob_low)
 message("simulated cut hair: lowest point ${simulated_low} m (groomed ${bob_low} m)")

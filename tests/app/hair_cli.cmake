@@ -6,23 +6,7 @@
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 
-function(run expect_exit)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 600)
-  message("${ARGN}\n -> exit ${code}\n${out}${err}")
-  if(NOT code EQUAL expect_exit)
-    message(FATAL_ERROR "expected exit ${expect_exit}, got ${code}")
-  endif()
-  set(last_output "${out}${err}" PARENT_SCOPE)
-endfunction()
-
-function(stat file key out)
-  file(READ "${file}" json)
-  string(JSON value ERROR_VARIABLE missing GET "${json}" ${key})
-  if(missing)
-    message(FATAL_ERROR "${file} has no key ${key}")
-  endif()
-  set(${out} "${value}" PARENT_SCOPE)
-endfunction()
+include("${CMAKE_CURRENT_LIST_DIR}/script_steps.cmake")
 
 # --- simulate: 30 frames at 60 fps of the walk ------------------------------
 run(0 "${CLI}" simulate "${SCENE}" --frames 30 --stats-json "${WORK}/stats.json" --export-dir "${WORK}/frames")
