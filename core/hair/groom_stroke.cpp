@@ -269,14 +269,19 @@ std::vector<GroomDab> dabsAlong(const glm::vec3& from, const glm::vec3& to, floa
   return dabs;
 }
 
-void applyGroomStrokes(const std::vector<GroomStroke>& strokes, const glm::vec3& headCenter, const BodyProxy& proxy,
-                       float margin, uint32_t seed, Strands& strands, size_t guides) {
+void applyGroomStrokes(const std::vector<GroomStroke>& strokes, size_t first, size_t end, const glm::vec3& headCenter,
+                       const BodyProxy& proxy, float margin, uint32_t seed, Strands& strands, size_t guides) {
   const int n = strands.pointsPerStrand;
   guides = std::min(guides, strands.strandCount());
+  end = std::min(end, strokes.size());
   if (n < 2 || guides == 0) return;
+  // Each dab's random stream follows from its place among all dabs.
   uint64_t dabKey = seed;
+  for (size_t i = 0; i < first && i < end; ++i)
+    if (strokes[i].radius > 0.0f) dabKey += strokes[i].dabs.size() * (strokes[i].mirror ? 2 : 1);
   std::vector<glm::vec3> centers;
-  for (const GroomStroke& stroke : strokes) {
+  for (size_t i = first; i < end; ++i) {
+    const GroomStroke& stroke = strokes[i];
     if (!(stroke.radius > 0.0f)) continue;
     for (const GroomDab& d : stroke.dabs)
       for (int side = 0; side < (stroke.mirror ? 2 : 1); ++side) {

@@ -32,6 +32,7 @@ GroomBrush groomBrushFromName(const std::string& name);
 struct GroomDab {
   glm::vec3 position{0.0f};  // head space, metres
   glm::vec3 motion{0.0f};    // the brush's movement since the last dab (comb)
+  bool operator==(const GroomDab&) const = default;
 };
 
 struct GroomStroke {
@@ -42,6 +43,7 @@ struct GroomStroke {
   // Also applied mirrored across the head's symmetry plane (x = 0 in head space).
   bool mirror = false;
   std::vector<GroomDab> dabs;
+  bool operator==(const GroomStroke&) const = default;
 };
 
 // What a document may hold (time and memory: every regrow replays them).
@@ -52,12 +54,13 @@ constexpr size_t kMaxGroomDabs = 200000;
 // space), each carrying its share of the motion; one dab when they meet.
 std::vector<GroomDab> dabsAlong(const glm::vec3& from, const glm::vec3& to, float radius);
 
-// Replays `strokes` on the first `guides` strands of `strands` (world
-// space; the head centre `headCenter` is head space's origin). Strands keep
-// their point count; cut and length resample them. Every point stays out
-// of `proxy` by `margin`. Deterministic for a given seed, whatever the
-// thread count.
-void applyGroomStrokes(const std::vector<GroomStroke>& strokes, const glm::vec3& headCenter, const BodyProxy& proxy,
-                       float margin, uint32_t seed, Strands& strands, size_t guides);
+// Replays strokes[first, end) on the first `guides` strands of `strands`
+// (world space; the head centre `headCenter` is head space's origin), which
+// hold the hair as the strokes before `first` left it. Strands keep their
+// point count; cut and length resample them. Every point stays out of
+// `proxy` by `margin`. Deterministic for a given seed, whatever the thread
+// count, and the same whether the strokes are replayed at once or in parts.
+void applyGroomStrokes(const std::vector<GroomStroke>& strokes, size_t first, size_t end, const glm::vec3& headCenter,
+                       const BodyProxy& proxy, float margin, uint32_t seed, Strands& strands, size_t guides);
 
 }  // namespace mq

@@ -281,10 +281,29 @@ void HairGroom::regrowGuides(const HairStyle& style) {
     traceGuides(style);
     tracedGuides_.assign(strands_.points.begin(), strands_.points.begin() + 3 * guides * points);
     tracedKey_ = key;
+    brushedStrokes_.clear();
+    brushedGuides_ = tracedGuides_;
+  }
+  // Start from the cached strokes when the style begins with them.
+  const std::vector<GroomStroke>& strokes = style.strokes;
+  const size_t cached = brushedStrokes_.size();
+  const bool prefix =
+      cached <= strokes.size() && std::equal(brushedStrokes_.begin(), brushedStrokes_.end(), strokes.begin());
+  const size_t settled = strokes.empty() ? 0 : strokes.size() - 1;
+  size_t from = 0;
+  if (prefix && cached <= settled) {
+    std::copy(brushedGuides_.begin(), brushedGuides_.end(), strands_.points.begin());
+    from = cached;
   } else {
     std::copy(tracedGuides_.begin(), tracedGuides_.end(), strands_.points.begin());
   }
-  applyGroomStrokes(style.strokes, proxy_.headCenter(), proxy_, kMargin, style.seed, strands_, guides);
+  const glm::vec3 center = proxy_.headCenter();
+  applyGroomStrokes(strokes, from, settled, center, proxy_, kMargin, style.seed, strands_, guides);
+  if (from != settled || brushedStrokes_.size() != settled) {
+    brushedGuides_.assign(strands_.points.begin(), strands_.points.begin() + 3 * guides * points);
+    brushedStrokes_.assign(strokes.begin(), strokes.begin() + settled);
+  }
+  applyGroomStrokes(strokes, settled, strokes.size(), center, proxy_, kMargin, style.seed, strands_, guides);
   timings_.guides = secondsSince(start);
 }
 

@@ -82,6 +82,10 @@ class HairGroom {
   // for: a stroke replays on them without tracing again.
   std::vector<float> tracedGuides_;
   std::string tracedKey_;
+  // The traced guides after the strokes below (all but the newest stroke at
+  // the last regrow): a stroke being drawn replays alone.
+  std::vector<float> brushedGuides_;
+  std::vector<GroomStroke> brushedStrokes_;
   Strands strands_;
   GroomTimings timings_;
 };

@@ -234,6 +234,32 @@ TEST(GroomStroke, StrokesSurviveAFlowEditAndReplayWithoutRetracing) {
   EXPECT_EQ(b.after.strands().points, b.before.strands().points);
 }
 
+// A stroke drawn in steps (the editor regrows as the drag goes) replays the
+// earlier strokes from a cache: the hair is the same as grown at once.
+TEST(GroomStroke, AStrokeGrowingDabByDabGivesTheSameHairAsAtOnce) {
+  HairStyle style = styleNamed("long_straight");
+  HairGroom groom = sphereGroom();
+  groom.grow(style, kStrands);
+  style.strokes.push_back(strokeThrough(groom, GroomBrush::Frizz, 0, 20, {0.02f, 0.0f, 0.0f}, 0.04f));
+  style.strokes.push_back(strokeThrough(groom, GroomBrush::Comb, 0, 24, {0.06f, 0.0f, 0.0f}, 0.04f));
+  HairStyle growing = style;
+  growing.strokes.back().dabs.clear();
+  for (const GroomDab& dab : style.strokes.back().dabs) {
+    growing.strokes.back().dabs.push_back(dab);
+    groom.regrowGuides(growing);
+  }
+  groom.growChildren(style);
+  HairGroom atOnce = sphereGroom();
+  atOnce.grow(style, kStrands);
+  EXPECT_EQ(groom.strands().points, atOnce.strands().points);
+  // An earlier stroke changed (an undo, then another stroke): no stale cache.
+  style.strokes[0].strength = 0.25f;
+  groom.regrowGuides(style);
+  groom.growChildren(style);
+  atOnce.grow(style, kStrands);
+  EXPECT_EQ(groom.strands().points, atOnce.strands().points);
+}
+
 TEST(GroomStroke, JsonRoundTripAndClearErrors) {
   HairStyle style = builtinHairStyle("bob");
   GroomStroke stroke;
