@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include <QComboBox>
 #include <QCoreApplication>
 #include <QDockWidget>
 #include <QEventLoop>
@@ -9,6 +10,7 @@
 
 #include "ui/document/editor_document.h"
 #include "ui/garment/garment_tool.h"
+#include "ui/hair/hair_panel.h"
 #include "ui/hair/hair_tool.h"
 #include "ui/main_window.h"
 
@@ -66,6 +68,16 @@ void ScriptedSession::run(MainWindow& window, bool loaded) const {
   if (simulateSteps > 0) simulate(*garments, simulateSteps);
   if (showStretch) garments->setStretchVisible(true);
   if (showPattern) garments->showPatternDock();
+  if (!hairBrush.isEmpty()) {
+    auto* hair = window.findChild<HairTool*>();
+    const int index = hair->panel()->groomBrushCombo()->findText(hairBrush);
+    if (index > 0 && hair->hasHair()) {
+      hair->dock()->raise();
+      hair->panel()->groomBrushCombo()->setCurrentIndex(index);
+    } else {
+      std::fprintf(stderr, "mannequin: --hair-brush: no hair, or no brush named '%s'\n", qPrintable(hairBrush));
+    }
+  }
   if (setTime) doc->setTime(doc->clipStart() + float(time));
   if (!select.isEmpty() && !doc->selectByName(select.toStdString()))
     std::fprintf(stderr, "mannequin: --select: no bone, material or mesh named '%s'\n", qPrintable(select));

@@ -22,6 +22,7 @@ struct ScriptedSession {
   int simulateSteps = 0;
   bool showStretch = false;
   bool showPattern = false;  // the current garment's pattern dock
+  QString hairBrush;         // a grooming brush chosen in the Hair dock ("comb", ...)
   QString saveAs;
   QString screenshot;  // empty: stay open
 

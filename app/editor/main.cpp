@@ -42,6 +42,8 @@ struct EditorOptions {
                                       "DIR"};
   const QCommandLineOption garmentStretch{"garment-stretch", "Show the garments' stretch overlay."};
   const QCommandLineOption garmentPattern{"garment-pattern", "Show the current garment's pattern dock."};
+  const QCommandLineOption hairBrush{"hair-brush", "Choose a grooming brush in the Hair dock (comb, cut, ...).",
+                                     "NAME"};
   const QCommandLineOption saveAs{"save-as", "Save the scene document to FILE once set up.", "FILE"};
 
   void describe(QCommandLineParser& parser) const {
@@ -52,8 +54,8 @@ struct EditorOptions {
                                  "default, a character (.gltf .glb .fbx .dae), a motion (.bvh) "
                                  "or a scene document (.mqscene)",
                                  "[FILE]");
-    parser.addOptions({addGarment, bakeGarments, simulateGarments, exportBake, garmentStretch, garmentPattern, saveAs,
-                       map, screenshot, select, clip, time, size});
+    parser.addOptions({addGarment, bakeGarments, simulateGarments, exportBake, garmentStretch, garmentPattern,
+                       hairBrush, saveAs, map, screenshot, select, clip, time, size});
   }
 };
 
@@ -118,6 +120,7 @@ int main(int argc, char** argv) {
   session.simulateSteps = parser.value(options.simulateGarments).toInt();
   session.showStretch = parser.isSet(options.garmentStretch);
   session.showPattern = parser.isSet(options.garmentPattern);
+  session.hairBrush = parser.value(options.hairBrush);
   session.saveAs = parser.value(options.saveAs);
   session.screenshot = parser.value(options.screenshot);
   auto afterLoad = [&window, session] {

@@ -679,9 +679,10 @@ void HairPanel::refresh() {
   delete_->setEnabled(hair && tool_->selectedPrimitive().valid());
   groomBrush_->setEnabled(hair);
   clearStrokes_->setEnabled(hair && !tool_->style().strokes.empty());
-  clearStrokes_->setText(hair && !tool_->style().strokes.empty()
-                             ? tr("Clear %n stroke(s)", nullptr, int(tool_->style().strokes.size()))
-                             : tr("Clear"));
+  const size_t strokes = hair ? tool_->style().strokes.size() : 0;
+  clearStrokes_->setText(strokes == 0   ? tr("Clear")
+                         : strokes == 1 ? tr("Clear 1 stroke")
+                                        : tr("Clear %1 strokes").arg(strokes));
   if (hair) {
     const HairStyle& s = tool_->style();
     for (auto [spin, value] : {std::pair{density_, s.density}, std::pair{length_, s.length},
