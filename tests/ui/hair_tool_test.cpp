@@ -34,6 +34,7 @@
 #include "core/hair/hair_groom.h"
 #include "core/hair/hairstyle_json.h"
 #include "core/io/character_import.h"
+#include "render/brush_cursor.h"
 #include "render/scene_view.h"
 #include "test_window.h"
 #include "ui/document/editor_document.h"
@@ -648,6 +649,14 @@ class HairToolTest : public QObject {
     }
     QWidget* viewport = window_->viewport();
     const QPoint start = toWidget(target);
+    // Hovering shows the brush circle there, of the brush's radius.
+    QTest::qWait(40);
+    sendMouse(viewport, QEvent::MouseMove, start, Qt::NoButton, Qt::NoButton, Qt::NoModifier);
+    QVERIFY(tool_->brushCursor()->visible());
+    const render::BrushCursor& cursor = *tool_->brushCursor();
+    QVERIFY(std::abs(glm::length(cursor.point(0) - cursor.point(render::BrushCursor::kSegments / 2)) - 0.08f) < 1e-3f);
+    const glm::vec3 circleCenter = 0.5f * (cursor.point(0) + cursor.point(render::BrushCursor::kSegments / 2));
+    QVERIFY2(glm::length(circleCenter - target) < 0.04f, "the circle is not at the hair under the cursor");
     const int commands = doc()->undoStack()->index();
     sendMouse(viewport, QEvent::MouseButtonPress, start, Qt::LeftButton, Qt::LeftButton, Qt::NoModifier);
     for (int step = 1; step <= 6; ++step) {
@@ -692,6 +701,7 @@ class HairToolTest : public QObject {
     // No brush: the settings go, the dock is as it was.
     panel()->groomBrushCombo()->setCurrentIndex(0);
     QVERIFY(!tool_->groomBrush());
+    QVERIFY(!tool_->brushCursor()->visible());
     QVERIFY(!panel()->groomRadiusBox()->isVisibleTo(panel()));
   }
 };

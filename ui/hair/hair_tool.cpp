@@ -19,6 +19,7 @@
 #include "core/hair/root_sampling.h"
 #include "core/hair/scalp_paint.h"
 #include "core/util/error.h"
+#include "render/brush_cursor.h"
 #include "render/hair_actor.h"
 #include "render/scene_view.h"
 #include "sim/hair/child_follow.h"
@@ -78,6 +79,8 @@ HairTool::HairTool(MainWindow* window) : QObject(window), window_(window) {
     if (hairDrawingPending()) window_->viewport()->requestContinuation(actor_->actor());
   });
   handles_ = std::make_unique<HairHandles>(window->sceneView()->renderer());
+  cursor_ = std::make_unique<render::BrushCursor>(window->sceneView()->renderer());
+  hoverClock_.start();
   panel_ = new HairPanel(this);
   dock_ = new QDockWidget(tr("Hair"), window);
   dock_->setObjectName("HairToolDock");
@@ -553,6 +556,9 @@ void HairTool::setPaintingScalp(bool on) {
   if (on) {
     groomBrush_.reset();
     groomStroke_.reset();
+  } else if (cursor_->visible()) {
+    cursor_->hide();
+    window_->viewport()->requestRender();
   }
   window_->statusBar()->showMessage(
       on ? tr("Paint the scalp: drag on the character to add, Ctrl+drag to erase; middle or Alt+drag orbits")
@@ -601,6 +607,10 @@ bool HairTool::onPaintPress(QMouseEvent* event) {
 void HairTool::setGroomBrush(std::optional<GroomBrush> brush) {
   groomBrush_ = brush;
   groomStroke_.reset();
+  if (!brush && cursor_->visible()) {
+    cursor_->hide();
+    window_->viewport()->requestRender();
+  }
   if (brush && painting_) setPaintingScalp(false);
   window_->statusBar()->showMessage(
       brush ? tr("Groom: drag over the hair (%1); Ctrl+drag shortens with the length brush; middle or Alt+drag orbits")
@@ -727,7 +737,30 @@ QString HairTool::dragText() const {
   return dragPart_ == HandleHit::AxisTip ? tr("Turn vortex axis") : tr("Move hair primitive");
 }
 
+void HairTool::updateBrushCursor(const QPoint& display) {
+  const bool grooming = groomBrush_ && dock_->isVisible(), paintingScalp = painting_ && dock_->isVisible();
+  std::optional<glm::vec3> at;
+  if (grooming)
+    at = groomStroke_ ? handles_->displayToWorld(display.x(), display.y(), groomAnchor_)
+                      : groomAnchorAt(display.x(), display.y());
+  else if (paintingScalp)
+    at = window_->sceneView()->pickSurface(display.x(), display.y());
+  const bool wasVisible = cursor_->visible();
+  if (at && (grooming || paintingScalp)) {
+    const glm::vec3 facing = window_->sceneView()->cameraPosition() - *at;
+    if (glm::length(facing) > 1e-6f) cursor_->show(*at, facing, grooming ? groomRadius_ : brushRadius_);
+  } else {
+    cursor_->hide();
+  }
+  if (wasVisible || cursor_->visible()) window_->viewport()->requestRender();
+}
+
 bool HairTool::onMove(QMouseEvent* event) {
+  // The brush circle follows the cursor (picking costs milliseconds: at most every 30 ms while hovering).
+  if ((groomBrush_ || painting_) && (groomStroke_ || stroke_ || hoverClock_.elapsed() >= 30)) {
+    hoverClock_.restart();
+    updateBrushCursor(toDisplay(event->position()));
+  }
   if (groomStroke_) {
     const QPoint display = toDisplay(event->position());
     extendGroomStroke(handles_->displayToWorld(display.x(), display.y(), groomAnchor_));

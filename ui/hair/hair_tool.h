@@ -42,8 +42,9 @@ namespace mq {
 class HairGroom;
 class HairSimulator;
 namespace render {
+class BrushCursor;
 class HairActor;
-}
+}  // namespace render
 }  // namespace mq
 
 namespace mq::ui {
@@ -157,6 +158,8 @@ class HairTool : public QObject {
   float groomStrength() const { return groomStrength_; }
   void setGroomMirror(bool on) { groomMirror_ = on; }
   bool groomMirror() const { return groomMirror_; }
+  // The brush circle in the viewport (null before the tool is set up).
+  const render::BrushCursor* brushCursor() const { return cursor_.get(); }
   // One stroke of the current brush from world point `from` to `to` (as
   // shown), applied at once (tests, scripts); false without a brush or hair.
   bool groomStroke(const glm::vec3& from, const glm::vec3& to, bool invert = false);
@@ -278,6 +281,10 @@ class HairTool : public QObject {
   // character; none off both.
   std::optional<glm::vec3> groomAnchorAt(int x, int y);
   bool onGroomPress(QMouseEvent* event);
+  // The brush circle: where the brush under display point `display` would act.
+  std::unique_ptr<render::BrushCursor> cursor_;
+  QElapsedTimer hoverClock_;
+  void updateBrushCursor(const QPoint& display);
   void extendGroomStroke(const glm::vec3& world);
   // The style with the stroke under way; pushed live or, at the end, whole.
   void pushGroomStroke(bool live);
