@@ -224,12 +224,14 @@ void applyDab(const Dab& dab, StrandEdit& s, size_t guide, const glm::vec3& root
   }
 }
 
-// The weighted mean, per point index, of the guides a clump dab touches.
-std::vector<glm::vec3> clumpCenters(const Strands& strands, size_t guides, const glm::vec3& c, float r) {
+// The weighted mean, per point index, of the guides a clump dab touches
+// (among `candidates`).
+std::vector<glm::vec3> clumpCenters(const Strands& strands, const std::vector<size_t>& candidates, const glm::vec3& c,
+                                    float r) {
   const int n = strands.pointsPerStrand;
   std::vector<glm::vec3> sum(n, glm::vec3(0.0f));
   float total = 0.0f;
-  for (size_t g = 0; g < guides; ++g) {
+  for (size_t g : candidates) {
     const float* p = strands.strand(g);
     float strongest = 0.0f;
     for (int k = 1; k < n; ++k) strongest = std::max(strongest, falloff(load(p, k), c, r));
@@ -239,6 +241,37 @@ std::vector<glm::vec3> clumpCenters(const Strands& strands, size_t guides, const
   }
   for (glm::vec3& v : sum) v /= std::max(total, 1e-12f);
   return sum;
+}
+
+// The guides a stroke may touch: those a dab can reach (see reaches()) at
+// the stroke's start. A guide changes only when a dab reaches it, so the
+// others stay out of reach for the whole stroke.
+std::vector<size_t> strokeCandidates(const Strands& strands, size_t guides, const GroomStroke& stroke,
+                                     const glm::vec3& headCenter) {
+  glm::vec3 lo(1e30f), hi(-1e30f);
+  for (const GroomDab& d : stroke.dabs)
+    for (int side = 0; side < (stroke.mirror ? 2 : 1); ++side) {
+      const glm::vec3 c = headCenter + (side ? glm::vec3(-1.0f, 1.0f, 1.0f) : glm::vec3(1.0f)) * d.position;
+      lo = glm::min(lo, c);
+      hi = glm::max(hi, c);
+    }
+  const int n = strands.pointsPerStrand;
+  std::vector<size_t> candidates;
+  for (size_t g = 0; g < guides; ++g) {
+    const float* p = strands.strand(g);
+    glm::vec3 a = load(p, 0), b = a;
+    float segment = 0.0f;
+    for (int k = 1; k < n; ++k) {
+      const glm::vec3 q = load(p, k);
+      a = glm::min(a, q);
+      b = glm::max(b, q);
+      segment = std::max(segment, glm::length(q - load(p, k - 1)));
+    }
+    const float reach = stroke.radius + segment;
+    if (glm::all(glm::lessThanEqual(a - reach, hi)) && glm::all(glm::greaterThanEqual(b + reach, lo)))
+      candidates.push_back(g);
+  }
+  return candidates;
 }
 
 }  // namespace
@@ -283,6 +316,11 @@ void applyGroomStrokes(const std::vector<GroomStroke>& strokes, size_t first, si
   for (size_t i = first; i < end; ++i) {
     const GroomStroke& stroke = strokes[i];
     if (!(stroke.radius > 0.0f)) continue;
+    const std::vector<size_t> candidates = strokeCandidates(strands, guides, stroke, headCenter);
+    if (candidates.empty()) {
+      dabKey += stroke.dabs.size() * (stroke.mirror ? 2 : 1);
+      continue;
+    }
     for (const GroomDab& d : stroke.dabs)
       for (int side = 0; side < (stroke.mirror ? 2 : 1); ++side) {
         const glm::vec3 flip = side ? glm::vec3(-1.0f, 1.0f, 1.0f) : glm::vec3(1.0f);
@@ -293,9 +331,10 @@ void applyGroomStrokes(const std::vector<GroomStroke>& strokes, size_t first, si
                 stroke.brush,
                 mix64(++dabKey),
                 &centers};
-        if (dab.brush == GroomBrush::Clump) centers = clumpCenters(strands, guides, dab.center, dab.radius);
-        ThreadPool::shared().parallelFor(0, guides, 64, [&](size_t begin, size_t end) {
-          for (size_t g = begin; g < end; ++g) {
+        if (dab.brush == GroomBrush::Clump) centers = clumpCenters(strands, candidates, dab.center, dab.radius);
+        ThreadPool::shared().parallelFor(0, candidates.size(), 64, [&](size_t begin, size_t end) {
+          for (size_t j = begin; j < end; ++j) {
+            const size_t g = candidates[j];
             if (!reaches(strands.strand(g), n, dab.center, dab.radius)) continue;
             StrandEdit s(strands.strand(g), n, proxy, margin);
             const glm::vec3 normal = strands.rootNormals.size() >= 3 * (g + 1)
