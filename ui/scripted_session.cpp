@@ -70,7 +70,7 @@ void ScriptedSession::run(MainWindow& window, bool loaded) const {
   if (showPattern) garments->showPatternDock();
   if (!hairBrush.isEmpty()) {
     auto* hair = window.findChild<HairTool*>();
-    const int index = hair->panel()->groomBrushCombo()->findText(hairBrush);
+    const int index = hair->panel()->groomBrushCombo()->findText(QString(hairBrush).replace('_', ' '));
     if (index > 0 && hair->hasHair()) {
       hair->dock()->raise();
       hair->panel()->groomBrushCombo()->setCurrentIndex(index);

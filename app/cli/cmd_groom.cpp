@@ -85,6 +85,16 @@ GroomStroke strokeOption(const Args& args, const glm::vec3& headCenter) {
     throw Error("option --strength expects " + std::string(lowest < 0.0f ? "-1" : "0") + " to 1 for the " +
                 groomBrushName(stroke.brush) + " brush");
   stroke.mirror = args.has("--mirror");
+  if (isPaintBrush(stroke.brush)) {
+    if (!args.has("--value")) throw Error("the " + groomBrushName(stroke.brush) + " brush needs --value V");
+    const PaintRange range = paintRange(stroke.brush);
+    stroke.value = float(args.number("--value", 1.0));
+    if (!(stroke.value >= range.min && stroke.value <= range.max))
+      throw Error("option --value expects " + std::to_string(range.min).substr(0, 4) + " to " +
+                  std::to_string(range.max).substr(0, 4) + " for the " + groomBrushName(stroke.brush) + " brush");
+  } else if (args.has("--value")) {
+    throw Error("--value is for the paint brushes (paint_density, paint_length, paint_clumping)");
+  }
   if (!args.has("--at")) throw Error("--brush needs --at X,Y,Z (where the stroke starts, world metres, rest pose)");
   const glm::vec3 at = pointOption(args, "--at") - headCenter;
   const glm::vec3 to = args.has("--to") ? pointOption(args, "--to") - headCenter : at;
@@ -96,7 +106,7 @@ GroomStroke strokeOption(const Args& args, const glm::vec3& headCenter) {
 int runGroom(const std::vector<std::string>& argv) {
   const Args args(argv);
   args.allowOnly({"--strands", "--points", "--style", "--out", "--stats-json", "--seed", "--scale", "--auto-rig",
-                  "--brush", "--at", "--to", "--radius", "--strength", "--mirror", "--save-as"});
+                  "--brush", "--at", "--to", "--radius", "--strength", "--mirror", "--value", "--save-as"});
   if (args.positional().size() != 1) throw Error("groom needs exactly one SCENE (or 'default')");
   const auto start = std::chrono::steady_clock::now();
   LoadedScene scene = openScene(args.positional()[0]);
@@ -179,8 +189,8 @@ int runGroom(const std::vector<std::string>& argv) {
 static Registration reg(
     {"groom",
      "SCENE|default [--strands N] [--points P] [--style NAME] [--seed S] [--out strands.ply] [--stats-json OUT] "
-     "[--brush comb|cut|length|puff|smooth|clump|frizz --at X,Y,Z [--to X,Y,Z] [--radius M] [--strength S] "
-     "[--mirror]] [--save-as OUT.mqscene]",
+     "[--brush comb|cut|length|puff|smooth|clump|frizz|paint_density|paint_length|paint_clumping --at X,Y,Z "
+     "[--to X,Y,Z] [--radius M] [--strength S] [--mirror] [--value V]] [--save-as OUT.mqscene]",
      "grows the hairstyle (flow-field styling, guides and children, the document's brush strokes); stats and PLY "
      "polylines",
      runGroom,
@@ -189,6 +199,9 @@ static Registration reg(
      "    0.03), --strength 0..1 (default 1 for the comb, which then drags the hair all the way, else\n"
      "    0.5; the length brush takes -1..1, negative shortens),\n"
      "    --mirror also brushes across the head's symmetry plane. The comb drags the hair from --at to --to.\n"
+     "    The paint brushes paint a map over the scalp with --value: paint_density the share of the hair that\n"
+     "    grows there (0..1), paint_length a length factor (0.05..10), paint_clumping the clumping (0..1);\n"
+     "    --strength is then the paint's opacity.\n"
      "  --save-as OUT: writes the scene with the hairstyle as grown (fitted to this head, with its strokes).\n"});
 
 }  // namespace

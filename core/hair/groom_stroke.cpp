@@ -213,6 +213,10 @@ void applyDab(const Dab& dab, StrandEdit& s, size_t guide, const glm::vec3& root
         s.set(k, s.at(k) + kClumpRate * dab.strength * strongest * s.t(k) * ((*dab.clumpCenters)[k] - s.at(k)));
       s.restoreLengths();
       break;
+    case GroomBrush::PaintDensity:
+    case GroomBrush::PaintLength:
+    case GroomBrush::PaintClumping:
+      break;
     case GroomBrush::Frizz:
       for (int k = 1; k < n; ++k) {
         const uint64_t key = mix64(dab.key + guide) + uint64_t(k) * 3;
@@ -277,8 +281,47 @@ std::vector<size_t> strokeCandidates(const Strands& strands, size_t guides, cons
 }  // namespace
 
 const std::vector<std::string>& groomBrushNames() {
-  static const std::vector<std::string> names{"comb", "cut", "length", "puff", "smooth", "clump", "frizz"};
+  static const std::vector<std::string> names{"comb",  "cut",   "length",        "puff",         "smooth",
+                                              "clump", "frizz", "paint_density", "paint_length", "paint_clumping"};
   return names;
+}
+
+PaintRange paintRange(GroomBrush brush) {
+  switch (brush) {
+    case GroomBrush::PaintDensity:
+      return {0.0f, 1.0f, 1.0f};  // the share of the hair kept
+    case GroomBrush::PaintLength:
+      return {0.05f, 10.0f, 1.0f};  // times the style's length
+    case GroomBrush::PaintClumping:
+      return {0.0f, 1.0f, -1.0f};  // -1: the style's clumping
+    default:
+      return {0.0f, 0.0f, 0.0f};
+  }
+}
+
+float paintedValue(const std::vector<GroomStroke>& strokes, GroomBrush brush, const glm::vec3& at, float unpainted) {
+  float value = unpainted;
+  for (const GroomStroke& stroke : strokes) {
+    if (stroke.brush != brush || !(stroke.radius > 0.0f)) continue;
+    for (const GroomDab& dab : stroke.dabs)
+      for (int side = 0; side < (stroke.mirror ? 2 : 1); ++side) {
+        const glm::vec3 center = (side ? glm::vec3(-1.0f, 1.0f, 1.0f) : glm::vec3(1.0f)) * dab.position;
+        const float w = stroke.strength * falloff(at, center, stroke.radius);
+        if (w > 0.0f) value += w * (stroke.value - value);
+      }
+  }
+  return value;
+}
+
+bool paints(const std::vector<GroomStroke>& strokes, GroomBrush brush) {
+  return std::any_of(strokes.begin(), strokes.end(), [&](const GroomStroke& s) { return s.brush == brush; });
+}
+
+std::vector<GroomStroke> strokesOf(const std::vector<GroomStroke>& strokes, GroomBrush brush) {
+  std::vector<GroomStroke> out;
+  for (const GroomStroke& s : strokes)
+    if (s.brush == brush) out.push_back(s);
+  return out;
 }
 
 std::string groomBrushName(GroomBrush brush) { return groomBrushNames()[size_t(brush)]; }
@@ -316,6 +359,10 @@ void applyGroomStrokes(const std::vector<GroomStroke>& strokes, size_t first, si
   for (size_t i = first; i < end; ++i) {
     const GroomStroke& stroke = strokes[i];
     if (!(stroke.radius > 0.0f)) continue;
+    if (isPaintBrush(stroke.brush)) {  // read where the strands grow, not here
+      dabKey += stroke.dabs.size() * (stroke.mirror ? 2 : 1);
+      continue;
+    }
     const std::vector<size_t> candidates = strokeCandidates(strands, guides, stroke, headCenter);
     if (candidates.empty()) {
       dabKey += stroke.dabs.size() * (stroke.mirror ? 2 : 1);

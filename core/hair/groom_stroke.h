@@ -21,9 +21,19 @@ namespace mq {
 class BodyProxy;
 struct Strands;
 
-enum class GroomBrush { Comb, Cut, Length, Puff, Smooth, Clump, Frizz };
+// The shaping brushes move the guides. The paint brushes paint a map over
+// the scalp instead, read where each strand grows: the share of the hair
+// kept (density), a length factor, and the clumping.
+enum class GroomBrush { Comb, Cut, Length, Puff, Smooth, Clump, Frizz, PaintDensity, PaintLength, PaintClumping };
+inline bool isPaintBrush(GroomBrush brush) { return brush >= GroomBrush::PaintDensity; }
+// The values a paint brush may paint, and the map's value where nothing is painted.
+struct PaintRange {
+  float min, max, unpainted;
+};
+PaintRange paintRange(GroomBrush brush);
 
-// "comb", "cut", "length", "puff", "smooth", "clump", "frizz".
+// "comb", "cut", "length", "puff", "smooth", "clump", "frizz", "paint_density",
+// "paint_length", "paint_clumping".
 const std::vector<std::string>& groomBrushNames();
 std::string groomBrushName(GroomBrush brush);
 // Throws mq::Error naming the brushes when `name` is not one of them.
@@ -38,8 +48,10 @@ struct GroomDab {
 struct GroomStroke {
   GroomBrush brush = GroomBrush::Comb;
   float radius = 0.03f;  // metres
-  // 0..1; for Length, -1..1: negative shortens.
+  // 0..1; for Length, -1..1: negative shortens. A paint brush's opacity.
   float strength = 0.5f;
+  // What a paint brush paints (see paintRange()); unused by the others.
+  float value = 1.0f;
   // Also applied mirrored across the head's symmetry plane (x = 0 in head space).
   bool mirror = false;
   std::vector<GroomDab> dabs;
@@ -54,7 +66,15 @@ constexpr size_t kMaxGroomDabs = 200000;
 // space), each carrying its share of the motion; one dab when they meet.
 std::vector<GroomDab> dabsAlong(const glm::vec3& from, const glm::vec3& to, float radius);
 
-// Replays strokes[first, end) on the first `guides` strands of `strands`
+// The map painted by `brush`'s strokes at head-space point `at`: from
+// `unpainted`, each dab in order blends towards its stroke's value by its
+// strength times its falloff.
+float paintedValue(const std::vector<GroomStroke>& strokes, GroomBrush brush, const glm::vec3& at, float unpainted);
+// Whether the strokes paint `brush`'s map, and those strokes.
+bool paints(const std::vector<GroomStroke>& strokes, GroomBrush brush);
+std::vector<GroomStroke> strokesOf(const std::vector<GroomStroke>& strokes, GroomBrush brush);
+
+// Replays the shaping strokes of strokes[first, end) on the first `guides` strands of `strands`
 // (world space; the head centre `headCenter` is head space's origin), which
 // hold the hair as the strokes before `first` left it. Strands keep their
 // point count; cut and length resample them. Every point stays out of

@@ -163,11 +163,32 @@ HairGroom::HairGroom(ScalpSurface scalp, BodyProxy proxy, int panelCount)
   flow_.setObstacle(panels, onScalp);
 }
 
-void HairGroom::sampleAllRoots(size_t guides, size_t children, uint32_t seed) {
-  if (sampled_ && guides == sampledGuides_ && children == sampledChildren_ && seed == sampledSeed_) return;
+// Keeps each child root with the painted density's probability there (the
+// same roots for the same paint and seed).
+void HairGroom::thinRoots(HairRoots& roots, const std::vector<GroomStroke>& density, uint32_t seed) const {
+  HairRoots kept;
+  kept.minDistance = roots.minDistance;
+  for (size_t i = 0; i < roots.size(); ++i) {
+    const float share = paintedValue(density, GroomBrush::PaintDensity, roots.position(i) - proxy_.headCenter(), 1.0f);
+    if (share <= random01(seed, i, 21)) continue;
+    for (int d = 0; d < 3; ++d) {
+      kept.positions.push_back(roots.positions[3 * i + d]);
+      kept.normals.push_back(roots.normals[3 * i + d]);
+    }
+  }
+  roots = std::move(kept);
+}
+
+void HairGroom::sampleAllRoots(size_t guides, size_t children, const HairStyle& style) {
+  const uint32_t seed = style.seed;
+  std::vector<GroomStroke> density = strokesOf(style.strokes, GroomBrush::PaintDensity);
+  if (sampled_ && guides == sampledGuides_ && children == sampledChildren_ && seed == sampledSeed_ &&
+      density == sampledDensity_)
+    return;
   auto start = std::chrono::steady_clock::now();
   guideRoots_ = sampleRoots(scalp_, guides, seed);
   childRoots_ = sampleRoots(scalp_, children, seed ^ 0x5bd1e995u);
+  if (!density.empty()) thinRoots(childRoots_, density, seed);
   for (HairRoots* roots : {&guideRoots_, &childRoots_})
     for (size_t i = 0; i < roots->size(); ++i) {
       glm::vec3 p = roots->position(i);
@@ -179,6 +200,7 @@ void HairGroom::sampleAllRoots(size_t guides, size_t children, uint32_t seed) {
   sampledGuides_ = guides;
   sampledChildren_ = children;
   sampledSeed_ = seed;
+  sampledDensity_ = std::move(density);
   sampled_ = true;
   timings_.roots = secondsSince(start);
 }
@@ -251,6 +273,8 @@ float HairGroom::strandLength(const HairStyle& style, const glm::vec3& root, uin
     const glm::vec3 d = root - (proxy_.headCenter() + lp.position);
     scale += (lp.scale - 1.0f) * std::exp(-glm::dot(d, d) / std::max(lp.radius * lp.radius, 1e-8f));
   }
+  if (paints(style.strokes, GroomBrush::PaintLength))
+    scale *= paintedValue(style.strokes, GroomBrush::PaintLength, root - proxy_.headCenter(), 1.0f);
   const float variation = 1.0f + style.lengthVariation * (2.0f * random01(style.seed, key, 1) - 1.0f);
   return std::max(0.005f, style.length * std::max(scale, 0.05f) * variation);
 }
@@ -265,7 +289,7 @@ void HairGroom::grow(const HairStyle& style, size_t strandCount) {
       "hair: " + std::to_string(total) + " strands of " + std::to_string(style.pointsPerStrand) + " points",
       64.0 * double(total) * style.pointsPerStrand);
   const size_t guides = std::min(total, size_t(std::max(1, style.guideCount)));
-  sampleAllRoots(guides, total - guides, style.seed);
+  sampleAllRoots(guides, total - guides, style);
   regrowGuides(style);
   growChildren(style);
 }
@@ -274,8 +298,10 @@ void HairGroom::regrowGuides(const HairStyle& style) {
   const auto start = std::chrono::steady_clock::now();
   const size_t guides = guideRoots_.size(), total = guides + childRoots_.size();
   const int points = std::max(2, style.pointsPerStrand);
+  // The traced guides depend on everything but the shaping strokes (a
+  // painted length map changes their lengths).
   HairStyle unbrushed = style;
-  unbrushed.strokes.clear();
+  std::erase_if(unbrushed.strokes, [](const GroomStroke& s) { return !isPaintBrush(s.brush); });
   const std::string key = toJson(unbrushed).dump();
   if (key != tracedKey_ || strands_.points.size() != 3 * total * points) {
     traceGuides(style);
@@ -344,9 +370,10 @@ void HairGroom::growChildren(const HairStyle& style) {
   std::vector<float> clumpAt(points), frizzAt(points);
   for (int k = 0; k < points; ++k) {
     const float t = points > 1 ? float(k) / float(points - 1) : 0.0f;
-    clumpAt[k] = std::clamp(style.clumping, 0.0f, 1.0f) * std::pow(t, std::max(style.clumpShape, 0.01f));
+    clumpAt[k] = std::pow(t, std::max(style.clumpShape, 0.01f));  // times the clumping
     frizzAt[k] = style.frizz * t;
   }
+  const bool clumpPainted = paints(style.strokes, GroomBrush::PaintClumping);
   const Wander wander(style.seed ^ 0xA5A5A5u);
   ThreadPool::shared().parallelFor(0, children, 64, [&](size_t begin, size_t end) {
     for (size_t c = begin; c < end; ++c) {
@@ -370,6 +397,10 @@ void HairGroom::growChildren(const HairStyle& style) {
           w[0] * guideLengths_[near[0]] + w[1] * guideLengths_[near[1]] + w[2] * guideLengths_[near[2]];
       const float ratio = strandLength(style, root, key) / std::max(guideLength, 1e-6f);
       const float wanderStart = 256.0f * random01(style.seed, key, 5);
+      const float clumping = std::clamp(clumpPainted ? paintedValue(style.strokes, GroomBrush::PaintClumping,
+                                                                    root - proxy_.headCenter(), style.clumping)
+                                                     : style.clumping,
+                                        0.0f, 1.0f);
       const float wanderRate = style.frizzFrequency * guideLength * ratio / float(std::max(1, points - 1));
       float* out = strands_.strand(s);
       const glm::vec3 r0 = load(g0, 0), r1 = load(g1, 0), r2 = load(g2, 0);
@@ -378,7 +409,7 @@ void HairGroom::growChildren(const HairStyle& style) {
         const glm::vec3 a = load(g0, k);
         const glm::vec3 offset = w[0] * (a - r0) + w[1] * (load(g1, k) - r1) + w[2] * (load(g2, k) - r2);
         glm::vec3 p = root + ratio * offset;
-        p += clumpAt[k] * (a - p);
+        p += clumping * clumpAt[k] * (a - p);
         p += frizzAt[k] * wander.at(wanderStart + wanderRate * float(k));
         proxy_.pushOut(p, kMargin);
         store(out, k, p);

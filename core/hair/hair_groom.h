@@ -61,8 +61,10 @@ class HairGroom {
   size_t countPointsInside() const;
 
  private:
-  void sampleAllRoots(size_t guides, size_t children, uint32_t seed);
+  // Roots, the children's thinned by the style's painted density.
+  void sampleAllRoots(size_t guides, size_t children, const HairStyle& style);
   void findGuideNeighbours();
+  void thinRoots(HairRoots& roots, const std::vector<GroomStroke>& density, uint32_t seed) const;
   // Traces the guides through the style's flow (no brushes).
   void traceGuides(const HairStyle& style);
   float strandLength(const HairStyle& style, const glm::vec3& root, uint64_t strandKey) const;
@@ -73,6 +75,7 @@ class HairGroom {
   HairRoots guideRoots_, childRoots_;
   size_t sampledGuides_ = 0, sampledChildren_ = 0;
   uint32_t sampledSeed_ = 0;
+  std::vector<GroomStroke> sampledDensity_;  // the density paint the roots were thinned by
   bool sampled_ = false;
   // Per child: its 3 nearest guides and their weights (first = nearest).
   std::vector<int32_t> neighbours_;

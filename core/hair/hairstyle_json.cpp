@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -76,7 +77,7 @@ std::vector<GroomStroke> readStrokes(const JsonFields& f) {
   size_t dabCount = 0;
   for (size_t i = 0; i < list.size(); ++i) {
     const JsonFields e = f.element("strokes", i);
-    e.allowOnly({"brush", "radius", "strength", "mirror", "dabs"});
+    e.allowOnly({"brush", "radius", "strength", "mirror", "value", "dabs"});
     GroomStroke stroke;
     try {
       stroke.brush = groomBrushFromName(e.string("brush", groomBrushName(stroke.brush)));
@@ -86,6 +87,10 @@ std::vector<GroomStroke> readStrokes(const JsonFields& f) {
     stroke.radius = e.positive("radius", stroke.radius, 1.0);
     stroke.strength = e.number("strength", stroke.strength, stroke.brush == GroomBrush::Length ? -1.0 : 0.0, 1.0);
     stroke.mirror = e.boolean("mirror", stroke.mirror);
+    if (isPaintBrush(stroke.brush)) {
+      const PaintRange range = paintRange(stroke.brush);
+      stroke.value = e.number("value", std::clamp(stroke.value, range.min, range.max), range.min, range.max);
+    }
     const json& dabs = e.array("dabs");
     dabCount += dabs.size();
     if (dabCount > kMaxGroomDabs)
@@ -113,11 +118,13 @@ json strokesToJson(const std::vector<GroomStroke>& strokes) {
     for (const GroomDab& d : s.dabs)
       dabs.push_back({tidy(d.position.x), tidy(d.position.y), tidy(d.position.z), tidy(d.motion.x), tidy(d.motion.y),
                       tidy(d.motion.z)});
-    out.push_back({{"brush", groomBrushName(s.brush)},
-                   {"radius", tidy(s.radius)},
-                   {"strength", tidy(s.strength)},
-                   {"mirror", s.mirror},
-                   {"dabs", dabs}});
+    json stroke{{"brush", groomBrushName(s.brush)},
+                {"radius", tidy(s.radius)},
+                {"strength", tidy(s.strength)},
+                {"mirror", s.mirror},
+                {"dabs", dabs}};
+    if (isPaintBrush(s.brush)) stroke["value"] = tidy(s.value);
+    out.push_back(std::move(stroke));
   }
   return out;
 }

@@ -8,7 +8,8 @@
 //               "vortices": [{"position": [..], "axis": [..], "strength": s, "radius": r}],
 //               "length_map": [{"position": [..], "scale": k, "radius": r}],
 //               "strokes": [{"brush": "comb", "radius": r, "strength": s,   brush strokes in
-//                            "mirror": false,                           order (groom_stroke.h);
+//                            "mirror": false, "value": v,               order (groom_stroke.h;
+//                                                                        value: paint brushes);
 //                            "dabs": [[x, y, z, mx, my, mz], ..]}]},    head space, metres
 //     "scalp": {"kind": "tagged"}                          default: TagScalp vertices
 //            | {"kind": "bone_cone", "bone": "head", "axis": [0,1,0], "angle": 70}

@@ -54,6 +54,18 @@ set(floor 1.30)
 cut_to_bob(mannequin default 1.39 -0.235 0.2 0.3 0.198 0.089)
 set(floor 0.84)
 cut_to_bob(imported "${CHARACTER}" 0.98 -0.3 0.3 0.45 0.31 0.14)
+# Painted density: a tenth of the hair where painted, all of it elsewhere.
+run(0 "${CLI}" groom default --stats-json "${WORK}/full.json")
+run(0 "${CLI}" groom default --brush paint_density --at -0.1,1.7,-0.08 --to 0.1,1.7,-0.08 --radius 0.06 --value 0.1
+    --strength 1 --stats-json "${WORK}/thin.json")
+stat("${WORK}/full.json" strands full)
+stat("${WORK}/thin.json" strands thin)
+math(EXPR most "${full} * 95 / 100")
+math(EXPR least "${full} / 2")
+message("painted density: ${full} -> ${thin} strands")
+if(NOT thin LESS most OR NOT thin GREATER least)
+  message(FATAL_ERROR "painting a tenth of the hair on the back of the head should keep between half and 95 % of it")
+endif()
 # Simulating the cut hair replays the strokes too.
 run(0 "${CLI}" simulate "${WORK}/mannequin_bob.mqscene" --frames 5 --stats-json "${WORK}/simulated.json")
 stat("${WORK}/simulated.json" "hair_bbox_min;1" simulated_low)

@@ -260,6 +260,75 @@ TEST(GroomStroke, AStrokeGrowingDabByDabGivesTheSameHairAsAtOnce) {
   EXPECT_EQ(groom.strands().points, atOnce.strands().points);
 }
 
+// A paint stroke of one dab at guide 0's root.
+GroomStroke paintAtRoot(const HairGroom& groom, GroomBrush brush, float value, float radius) {
+  GroomStroke stroke;
+  stroke.brush = brush;
+  stroke.radius = radius;
+  stroke.strength = 1.0f;
+  stroke.value = value;
+  stroke.dabs = {{point(groom.strands(), 0, 0) - groom.proxy().headCenter(), glm::vec3(0.0f)}};
+  return stroke;
+}
+
+TEST(GroomStroke, PaintedDensityThinsTheHairWhereItIsPainted) {
+  Brushed b;
+  b.style = styleNamed("long_straight");
+  b.before.grow(b.style, kStrands);
+  b.style.strokes.push_back(paintAtRoot(b.before, GroomBrush::PaintDensity, 0.0f, 0.05f));
+  b.after.grow(b.style, kStrands);
+  const glm::vec3 center = point(b.before.strands(), 0, 0);
+  auto count = [&](const HairGroom& g, float lo, float hi) {
+    int n = 0;
+    for (size_t c = 0; c < g.childRoots().size(); ++c) {
+      const float d = glm::length(g.childRoots().position(c) - center);
+      n += d >= lo && d < hi;
+    }
+    return n;
+  };
+  // Under the brush's core (a kept share of at most 0.44): less than half the hair is left.
+  EXPECT_GT(count(b.before, 0.0f, 0.025f), 20);
+  EXPECT_LT(count(b.after, 0.0f, 0.025f), count(b.before, 0.0f, 0.025f) / 2);
+  // Outside the brush, every root is still there.
+  EXPECT_EQ(count(b.after, 0.05f, 10.0f), count(b.before, 0.05f, 10.0f));
+  EXPECT_LT(b.after.strands().strandCount(), b.before.strands().strandCount());
+  EXPECT_EQ(b.after.guideCount(), b.before.guideCount());  // the guides stay: the hair keeps its shape
+}
+
+TEST(GroomStroke, PaintedLengthScalesTheHairWhereItIsPainted) {
+  Brushed b;
+  b.style = styleNamed("bob");
+  b.before.grow(b.style, kStrands);
+  b.style.strokes.push_back(paintAtRoot(b.before, GroomBrush::PaintLength, 2.0f, 0.04f));
+  b.after.grow(b.style, kStrands);
+  EXPECT_GT(strandLength(b.after.strands(), 0), 1.8f * strandLength(b.before.strands(), 0));
+  expectFarGuidesUntouched(b);
+  EXPECT_EQ(b.after.countPointsInside(), 0u);
+}
+
+TEST(GroomStroke, PaintedClumpingGathersTheChildrenWherePainted) {
+  Brushed b;
+  b.style = styleNamed("long_straight");
+  b.style.clumping = 0.0f;
+  b.before.grow(b.style, kStrands);
+  b.style.strokes.push_back(paintAtRoot(b.before, GroomBrush::PaintClumping, 1.0f, 0.06f));
+  b.after.grow(b.style, kStrands);
+  // Guide 0's children: their tips draw to its tip.
+  const int tip = b.before.strands().pointsPerStrand - 1;
+  float before = 0.0f, after = 0.0f;
+  for (size_t c = kGuides; c < kStrands; ++c)
+    if (b.after.strands().guideOf[c] == 0) {
+      before += glm::length(point(b.before.strands(), c, tip) - point(b.before.strands(), 0, tip));
+      after += glm::length(point(b.after.strands(), c, tip) - point(b.after.strands(), 0, tip));
+    }
+  EXPECT_LT(after, 0.5f * before);
+  // The guides do not move: clumping is the children's.
+  EXPECT_EQ(std::vector<float>(b.after.strands().points.begin(),
+                               b.after.strands().points.begin() + 3 * kGuides * b.style.pointsPerStrand),
+            std::vector<float>(b.before.strands().points.begin(),
+                               b.before.strands().points.begin() + 3 * kGuides * b.style.pointsPerStrand));
+}
+
 TEST(GroomStroke, JsonRoundTripAndClearErrors) {
   HairStyle style = builtinHairStyle("bob");
   GroomStroke stroke;
@@ -295,11 +364,17 @@ TEST(GroomStroke, JsonRoundTripAndClearErrors) {
             std::string::npos);
   EXPECT_NE(errorOf(R"({"strokes": [{"radius": 0}]})").find("strokes[0].radius"), std::string::npos);
   EXPECT_NE(errorOf(R"({"strokes": [{"size": 2}]})").find("size"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"strokes": [{"brush": "paint_density", "value": 2}]})").find("strokes[0].value"),
+            std::string::npos);
+  const HairStyle painted =
+      hairStyleFromJson(nlohmann::json::parse(R"({"strokes": [{"brush": "paint_length", "value": 2.5}]})"));
+  EXPECT_FLOAT_EQ(painted.strokes[0].value, 2.5f);
+  EXPECT_FLOAT_EQ(hairStyleFromJson(toJson(painted)).strokes[0].value, 2.5f);
 }
 
 TEST(GroomStroke, AFittedStyleScalesItsStrokes) {
   HairStyle style = builtinHairStyle("bob");
-  style.strokes.push_back({GroomBrush::Comb, 0.03f, 0.5f, false, {{{0.01f, 0.02f, 0.03f}, {0.0f, 0.0f, 0.01f}}}});
+  style.strokes.push_back({GroomBrush::Comb, 0.03f, 0.5f, 1.0f, false, {{{0.01f, 0.02f, 0.03f}, {0.0f, 0.0f, 0.01f}}}});
   const HairStyle big = scaledHairStyle(style, 2.0f);
   EXPECT_FLOAT_EQ(big.strokes[0].radius, 0.06f);
   EXPECT_FLOAT_EQ(big.strokes[0].dabs[0].position.y, 0.04f);

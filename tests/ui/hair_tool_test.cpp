@@ -698,6 +698,30 @@ class HairToolTest : public QObject {
     doc()->undoStack()->undo();
     waitForHair();
     QCOMPARE(tool_->style().strokes.size(), strokesBefore + 2);
+    // Painted density: fewer strands where painted, one undo step; Ctrl paints the full density back.
+    panel()->groomBrushCombo()->setCurrentIndex(1 + int(GroomBrush::PaintDensity));
+    QVERIFY(panel()->groomValueBox()->isVisibleTo(panel()));
+    panel()->groomValueBox()->setValue(0.0);
+    QCOMPARE(tool_->groomValue(), 0.0f);
+    const size_t strandsBefore = tool_->groom()->strands().strandCount();
+    const int beforePaint = doc()->undoStack()->index();
+    // On the scalp, at a guide's root (the paint is read where the strands grow).
+    const float* rootPoint = tool_->groom()->strands().strand(0);
+    const glm::vec3 root(rootPoint[0], rootPoint[1], rootPoint[2]);
+    QVERIFY(tool_->groomStroke(root, root + glm::vec3(0.05f, 0.0f, 0.0f)));
+    waitForHair();
+    QCOMPARE(doc()->undoStack()->index(), beforePaint + 1);
+    QCOMPARE(doc()->undoStack()->undoText(), QString("Paint hair density"));
+    QVERIFY2(tool_->groom()->strands().strandCount() < strandsBefore,
+             qPrintable(QString("%1 -> %2 strands").arg(strandsBefore).arg(tool_->groom()->strands().strandCount())));
+    QCOMPARE(tool_->style().strokes.back().value, 0.0f);
+    QVERIFY(tool_->groomStroke(root, root + glm::vec3(0.05f, 0.0f, 0.0f), true));
+    waitForHair();
+    QCOMPARE(tool_->style().strokes.back().value, 1.0f);
+    doc()->undoStack()->undo();
+    doc()->undoStack()->undo();
+    waitForHair();
+    QCOMPARE(tool_->groom()->strands().strandCount(), strandsBefore);
     // No brush: the settings go, the dock is as it was.
     panel()->groomBrushCombo()->setCurrentIndex(0);
     QVERIFY(!tool_->groomBrush());

@@ -124,11 +124,14 @@ HairPanel::HairPanel(HairTool* tool, QWidget* parent) : QWidget(parent), tool_(t
 void HairPanel::makeGroomControls() {
   groomBrush_ = new QComboBox;
   groomBrush_->addItem(tr("No brush"));
-  for (const std::string& name : groomBrushNames()) groomBrush_->addItem(QString::fromStdString(name));
+  for (const std::string& name : groomBrushNames())
+    groomBrush_->addItem(QString::fromStdString(name).replace('_', ' '));
   groomBrush_->setToolTip(
       tr("Groom with a brush: drag over the hair in the viewport. Comb drags it, cut shortens it where the brush "
          "passes, length grows it (Ctrl: shortens), puff lifts it from the scalp, smooth straightens curls, "
-         "clump gathers it, frizz roughens it. Strokes stay when the flow primitives change."));
+         "clump gathers it, frizz roughens it. The paint brushes paint maps over the scalp: the share of the hair "
+         "that grows there (density), a length factor, the clumping. Strokes stay when the flow primitives "
+         "change."));
   auto* styleRow = new QWidget;
   auto* row = new QHBoxLayout(styleRow);
   row->setContentsMargins(0, 0, 0, 0);
@@ -143,6 +146,11 @@ void HairPanel::makeGroomControls() {
   groomStrength_ = addSpin(0.05, 1.0, 0.05, 2);
   groomStrength_->setValue(tool_->groomStrength());
   groomStrength_->setToolTip(tr("How strongly each dab of the brush acts (the comb: the share of the drag)"));
+  groomValue_ = addSpin(0.0, 10.0, 0.05, 2);
+  groomValue_->setValue(tool_->groomValue());
+  groomValue_->setToolTip(
+      tr("What the paint brush paints: the share of the hair kept (density), a length factor, "
+         "or the clumping. Ctrl+drag paints the unpainted value back"));
   groomMirror_ = new QCheckBox(tr("Mirror"));
   groomMirror_->setToolTip(tr("Brush both sides of the head at once"));
   clearStrokes_ = new QPushButton(tr("Clear"));
@@ -152,6 +160,7 @@ void HairPanel::makeGroomControls() {
   settings->setContentsMargins(0, 0, 0, 0);
   settings->addWidget(groomRadius_);
   settings->addWidget(groomStrength_);
+  settings->addWidget(groomValue_);
   settings->addWidget(groomMirror_);
   settings->addWidget(clearStrokes_);
   styleForm_->addRow(tr("Brush"), groomSettings_);
@@ -162,11 +171,19 @@ void HairPanel::makeGroomControls() {
     if (on && scalpPaint_->isChecked()) scalpPaint_->setChecked(false);
     tool_->setGroomBrush(on ? std::optional<GroomBrush>(GroomBrush(index - 1)) : std::nullopt);
     styleForm_->setRowVisible(groomSettings_, on);
+    const bool paint = on && isPaintBrush(GroomBrush(index - 1));
+    groomValue_->setVisible(paint);
+    if (paint) {
+      const PaintRange range = paintRange(GroomBrush(index - 1));
+      groomValue_->setRange(range.min, range.max);
+      tool_->setGroomValue(float(groomValue_->value()));
+    }
   });
   connect(groomRadius_, &QDoubleSpinBox::valueChanged, this,
           [this](double cm) { tool_->setGroomRadius(float(cm) / 100.0f); });
   connect(groomStrength_, &QDoubleSpinBox::valueChanged, this, [this](double v) { tool_->setGroomStrength(float(v)); });
   connect(groomMirror_, &QCheckBox::toggled, this, [this](bool on) { tool_->setGroomMirror(on); });
+  connect(groomValue_, &QDoubleSpinBox::valueChanged, this, [this](double v) { tool_->setGroomValue(float(v)); });
   connect(clearStrokes_, &QPushButton::clicked, this, [this] { tool_->clearStrokes(); });
 }
 

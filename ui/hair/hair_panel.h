@@ -53,6 +53,7 @@ class HairPanel : public QWidget {
   QDoubleSpinBox* groomRadiusBox() const { return groomRadius_; }
   QDoubleSpinBox* groomStrengthBox() const { return groomStrength_; }
   QCheckBox* groomMirrorBox() const { return groomMirror_; }
+  QDoubleSpinBox* groomValueBox() const { return groomValue_; }  // paint brushes only
   QPushButton* clearStrokesButton() const { return clearStrokes_; }
   QPushButton* scalpPaintButton() const { return scalpPaint_; }
   QDoubleSpinBox* brushRadiusBox() const { return brushRadius_; }
@@ -116,6 +117,7 @@ class HairPanel : public QWidget {
   QDoubleSpinBox* groomRadius_;
   QDoubleSpinBox* groomStrength_;
   QCheckBox* groomMirror_;
+  QDoubleSpinBox* groomValue_;
   QPushButton* clearStrokes_;
   QWidget* groomSettings_;
   QFormLayout* styleForm_;

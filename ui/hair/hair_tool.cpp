@@ -613,22 +613,41 @@ void HairTool::setGroomBrush(std::optional<GroomBrush> brush) {
   }
   if (brush && painting_) setPaintingScalp(false);
   window_->statusBar()->showMessage(
-      brush ? tr("Groom: drag over the hair (%1); Ctrl+drag shortens with the length brush; middle or Alt+drag orbits")
+      brush ? tr("Groom: drag over the hair (%1); Ctrl+drag shortens with the length brush and erases paint; middle or "
+                 "Alt+drag orbits")
                   .arg(QString::fromStdString(groomBrushName(*brush)))
             : QString(),
       brush ? 0 : 1);
 }
 
+GroomStroke HairTool::newStroke(bool invert) const {
+  GroomStroke stroke;
+  stroke.brush = *groomBrush_;
+  stroke.radius = groomRadius_;
+  stroke.strength = (invert && stroke.brush == GroomBrush::Length ? -1.0f : 1.0f) * groomStrength_;
+  stroke.mirror = groomMirror_;
+  if (isPaintBrush(stroke.brush)) {
+    const PaintRange range = paintRange(stroke.brush);
+    const float unpainted = stroke.brush == GroomBrush::PaintClumping ? style_->clumping : range.unpainted;
+    stroke.value = std::clamp(invert ? unpainted : groomValue_, range.min, range.max);
+  }
+  return stroke;
+}
+
 QString HairTool::groomText() const {
-  static const char* texts[] = {QT_TR_NOOP("Comb hair"), QT_TR_NOOP("Cut hair"),    QT_TR_NOOP("Change hair length"),
-                                QT_TR_NOOP("Puff hair"), QT_TR_NOOP("Smooth hair"), QT_TR_NOOP("Clump hair"),
-                                QT_TR_NOOP("Frizz hair")};
+  static const char* texts[] = {QT_TR_NOOP("Comb hair"),          QT_TR_NOOP("Cut hair"),
+                                QT_TR_NOOP("Change hair length"), QT_TR_NOOP("Puff hair"),
+                                QT_TR_NOOP("Smooth hair"),        QT_TR_NOOP("Clump hair"),
+                                QT_TR_NOOP("Frizz hair"),         QT_TR_NOOP("Paint hair density"),
+                                QT_TR_NOOP("Paint hair length"),  QT_TR_NOOP("Paint hair clumping")};
   return groomStroke_ ? tr(texts[size_t(groomStroke_->brush)]) : QString();
 }
 
 std::optional<glm::vec3> HairTool::groomAnchorAt(int x, int y) {
   auto* view = window_->sceneView();
   const std::optional<glm::vec3> surface = view->pickSurface(x, y);
+  // A paint brush paints the scalp, where the strands grow.
+  if (groomBrush_ && isPaintBrush(*groomBrush_)) return surface;
   const glm::vec3 camera = view->cameraPosition();
   const glm::vec3 through = handles_->displayToWorld(x, y, surface ? *surface : view->cameraFocus());
   if (glm::length(through - camera) < 1e-9f) return surface;
@@ -657,11 +676,7 @@ bool HairTool::onGroomPress(QMouseEvent* event) {
   const QPoint display = toDisplay(event->position());
   const std::optional<glm::vec3> anchor = groomAnchorAt(display.x(), display.y());
   if (!anchor) return false;  // off the hair and the character: the camera moves
-  GroomStroke stroke;
-  stroke.brush = *groomBrush_;
-  stroke.radius = groomRadius_;
-  stroke.strength = (invert && stroke.brush == GroomBrush::Length ? -1.0f : 1.0f) * groomStrength_;
-  stroke.mirror = groomMirror_;
+  const GroomStroke stroke = newStroke(invert);
   groomStroke_ = stroke;
   groomBefore_ = *style_;
   groomAnchor_ = *anchor;
@@ -669,7 +684,7 @@ bool HairTool::onGroomPress(QMouseEvent* event) {
   groomKey_ = HairStyleCommand::nextMergeKey();
   strokeClock_.start();
   groomAppliedMs_ = -kPaintApplyMs;
-  // A press alone is a dab (a cut, a puff); the comb needs a drag.
+  // A press alone is a dab (a cut, a puff, paint); the comb needs a drag.
   if (stroke.brush != GroomBrush::Comb) groomStroke_->dabs.push_back({groomLast_, glm::vec3(0.0f)});
   pushGroomStroke(true);
   return true;
@@ -691,11 +706,7 @@ void HairTool::pushGroomStroke(bool live) {
 bool HairTool::groomStroke(const glm::vec3& from, const glm::vec3& to, bool invert) {
   if (!groomBrush_ || !style_ || !groom_) return false;
   const glm::mat4 headFromWorld = glm::inverse(worldFromHead());
-  GroomStroke stroke;
-  stroke.brush = *groomBrush_;
-  stroke.radius = groomRadius_;
-  stroke.strength = (invert && stroke.brush == GroomBrush::Length ? -1.0f : 1.0f) * groomStrength_;
-  stroke.mirror = groomMirror_;
+  GroomStroke stroke = newStroke(invert);
   stroke.dabs = dabsAlong(glm::vec3(headFromWorld * glm::vec4(from, 1.0f)),
                           glm::vec3(headFromWorld * glm::vec4(to, 1.0f)), stroke.radius);
   groomStroke_ = stroke;

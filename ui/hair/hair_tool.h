@@ -157,6 +157,9 @@ class HairTool : public QObject {
   void setGroomStrength(float strength) { groomStrength_ = strength; }
   float groomStrength() const { return groomStrength_; }
   void setGroomMirror(bool on) { groomMirror_ = on; }
+  // What a paint brush paints (paintRange()); Ctrl+drag paints the unpainted value.
+  void setGroomValue(float value) { groomValue_ = value; }
+  float groomValue() const { return groomValue_; }
   bool groomMirror() const { return groomMirror_; }
   // The brush circle in the viewport (null before the tool is set up).
   const render::BrushCursor* brushCursor() const { return cursor_.get(); }
@@ -270,6 +273,9 @@ class HairTool : public QObject {
   float groomRadius_ = 0.03f;  // metres
   float groomStrength_ = 0.5f;
   bool groomMirror_ = false;
+  float groomValue_ = 0.5f;
+  // A stroke of the current brush and settings (invert: Ctrl held).
+  GroomStroke newStroke(bool invert) const;
   std::optional<GroomStroke> groomStroke_;  // the stroke being drawn
   HairStyle groomBefore_;                   // the style when it started
   glm::vec3 groomAnchor_{0.0f};             // world: the depth the brush moves at
@@ -278,7 +284,7 @@ class HairTool : public QObject {
   qint64 groomAppliedMs_ = 0;
   // The point a brush press at display (x, y) starts from: on the ray, at
   // the nearest guide point within the brush's radius of it, else on the
-  // character; none off both.
+  // character; none off both. A paint brush: on the character only.
   std::optional<glm::vec3> groomAnchorAt(int x, int y);
   bool onGroomPress(QMouseEvent* event);
   // The brush circle: where the brush under display point `display` would act.

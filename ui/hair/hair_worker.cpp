@@ -15,7 +15,8 @@ namespace {
 
 bool rootsDiffer(const HairStyle& a, const HairStyle& b) {
   return a.density != b.density || a.maxStrands != b.maxStrands || a.guideCount != b.guideCount || a.seed != b.seed ||
-         a.pointsPerStrand != b.pointsPerStrand;
+         a.pointsPerStrand != b.pointsPerStrand ||
+         strokesOf(a.strokes, GroomBrush::PaintDensity) != strokesOf(b.strokes, GroomBrush::PaintDensity);
 }
 
 // Colours and shading are shader uniforms: the strands stay.
