@@ -271,12 +271,18 @@ GroomStroke paintAtRoot(const HairGroom& groom, GroomBrush brush, float value, f
   return stroke;
 }
 
-TEST(GroomStroke, PaintedDensityThinsTheHairWhereItIsPainted) {
+// `style` grown without and with one paint stroke at guide 0's root.
+Brushed painted(const HairStyle& style, GroomBrush brush, float value, float radius) {
   Brushed b;
-  b.style = styleNamed("long_straight");
+  b.style = style;
   b.before.grow(b.style, kStrands);
-  b.style.strokes.push_back(paintAtRoot(b.before, GroomBrush::PaintDensity, 0.0f, 0.05f));
+  b.style.strokes.push_back(paintAtRoot(b.before, brush, value, radius));
   b.after.grow(b.style, kStrands);
+  return b;
+}
+
+TEST(GroomStroke, PaintedDensityThinsTheHairWhereItIsPainted) {
+  const Brushed b = painted(styleNamed("long_straight"), GroomBrush::PaintDensity, 0.0f, 0.05f);
   const glm::vec3 center = point(b.before.strands(), 0, 0);
   auto count = [&](const HairGroom& g, float lo, float hi) {
     int n = 0;
@@ -296,23 +302,16 @@ TEST(GroomStroke, PaintedDensityThinsTheHairWhereItIsPainted) {
 }
 
 TEST(GroomStroke, PaintedLengthScalesTheHairWhereItIsPainted) {
-  Brushed b;
-  b.style = styleNamed("bob");
-  b.before.grow(b.style, kStrands);
-  b.style.strokes.push_back(paintAtRoot(b.before, GroomBrush::PaintLength, 2.0f, 0.04f));
-  b.after.grow(b.style, kStrands);
+  const Brushed b = painted(styleNamed("bob"), GroomBrush::PaintLength, 2.0f, 0.04f);
   EXPECT_GT(strandLength(b.after.strands(), 0), 1.8f * strandLength(b.before.strands(), 0));
   expectFarGuidesUntouched(b);
   EXPECT_EQ(b.after.countPointsInside(), 0u);
 }
 
 TEST(GroomStroke, PaintedClumpingGathersTheChildrenWherePainted) {
-  Brushed b;
-  b.style = styleNamed("long_straight");
-  b.style.clumping = 0.0f;
-  b.before.grow(b.style, kStrands);
-  b.style.strokes.push_back(paintAtRoot(b.before, GroomBrush::PaintClumping, 1.0f, 0.06f));
-  b.after.grow(b.style, kStrands);
+  HairStyle unclumped = styleNamed("long_straight");
+  unclumped.clumping = 0.0f;
+  const Brushed b = painted(unclumped, GroomBrush::PaintClumping, 1.0f, 0.06f);
   // Guide 0's children: their tips draw to its tip.
   const int tip = b.before.strands().pointsPerStrand - 1;
   float before = 0.0f, after = 0.0f;
