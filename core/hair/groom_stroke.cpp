@@ -313,10 +313,6 @@ float paintedValue(const std::vector<GroomStroke>& strokes, GroomBrush brush, co
   return value;
 }
 
-bool paints(const std::vector<GroomStroke>& strokes, GroomBrush brush) {
-  return std::any_of(strokes.begin(), strokes.end(), [&](const GroomStroke& s) { return s.brush == brush; });
-}
-
 std::vector<GroomStroke> strokesOf(const std::vector<GroomStroke>& strokes, GroomBrush brush) {
   std::vector<GroomStroke> out;
   for (const GroomStroke& s : strokes)
@@ -352,22 +348,20 @@ void applyGroomStrokes(const std::vector<GroomStroke>& strokes, size_t first, si
   end = std::min(end, strokes.size());
   if (n < 2 || guides == 0) return;
   // Each dab's random stream follows from its place among all dabs.
+  auto dabCount = [](const GroomStroke& stroke) {
+    return stroke.radius > 0.0f ? stroke.dabs.size() * (stroke.mirror ? 2 : 1) : 0;
+  };
   uint64_t dabKey = seed;
-  for (size_t i = 0; i < first && i < end; ++i)
-    if (strokes[i].radius > 0.0f) dabKey += strokes[i].dabs.size() * (strokes[i].mirror ? 2 : 1);
+  for (size_t i = 0; i < first && i < end; ++i) dabKey += dabCount(strokes[i]);
   std::vector<glm::vec3> centers;
   for (size_t i = first; i < end; ++i) {
     const GroomStroke& stroke = strokes[i];
-    if (!(stroke.radius > 0.0f)) continue;
-    if (isPaintBrush(stroke.brush)) {  // read where the strands grow, not here
-      dabKey += stroke.dabs.size() * (stroke.mirror ? 2 : 1);
-      continue;
-    }
+    uint64_t key = dabKey;
+    dabKey += dabCount(stroke);
+    // Paint strokes are read where the strands grow, not here.
+    if (!(stroke.radius > 0.0f) || isPaintBrush(stroke.brush)) continue;
     const std::vector<size_t> candidates = strokeCandidates(strands, guides, stroke, headCenter);
-    if (candidates.empty()) {
-      dabKey += stroke.dabs.size() * (stroke.mirror ? 2 : 1);
-      continue;
-    }
+    if (candidates.empty()) continue;
     for (const GroomDab& d : stroke.dabs)
       for (int side = 0; side < (stroke.mirror ? 2 : 1); ++side) {
         const glm::vec3 flip = side ? glm::vec3(-1.0f, 1.0f, 1.0f) : glm::vec3(1.0f);
@@ -376,7 +370,7 @@ void applyGroomStrokes(const std::vector<GroomStroke>& strokes, size_t first, si
                 stroke.radius,
                 stroke.strength,
                 stroke.brush,
-                mix64(++dabKey),
+                mix64(++key),
                 &centers};
         if (dab.brush == GroomBrush::Clump) centers = clumpCenters(strands, candidates, dab.center, dab.radius);
         ThreadPool::shared().parallelFor(0, candidates.size(), 64, [&](size_t begin, size_t end) {

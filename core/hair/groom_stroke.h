@@ -70,8 +70,7 @@ std::vector<GroomDab> dabsAlong(const glm::vec3& from, const glm::vec3& to, floa
 // `unpainted`, each dab in order blends towards its stroke's value by its
 // strength times its falloff.
 float paintedValue(const std::vector<GroomStroke>& strokes, GroomBrush brush, const glm::vec3& at, float unpainted);
-// Whether the strokes paint `brush`'s map, and those strokes.
-bool paints(const std::vector<GroomStroke>& strokes, GroomBrush brush);
+// The strokes that paint `brush`'s map.
 std::vector<GroomStroke> strokesOf(const std::vector<GroomStroke>& strokes, GroomBrush brush);
 
 // Replays the shaping strokes of strokes[first, end) on the first `guides` strands of `strands`

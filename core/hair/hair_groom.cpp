@@ -273,8 +273,7 @@ float HairGroom::strandLength(const HairStyle& style, const glm::vec3& root, uin
     const glm::vec3 d = root - (proxy_.headCenter() + lp.position);
     scale += (lp.scale - 1.0f) * std::exp(-glm::dot(d, d) / std::max(lp.radius * lp.radius, 1e-8f));
   }
-  if (paints(style.strokes, GroomBrush::PaintLength))
-    scale *= paintedValue(style.strokes, GroomBrush::PaintLength, root - proxy_.headCenter(), 1.0f);
+  scale *= paintedValue(style.strokes, GroomBrush::PaintLength, root - proxy_.headCenter(), 1.0f);
   const float variation = 1.0f + style.lengthVariation * (2.0f * random01(style.seed, key, 1) - 1.0f);
   return std::max(0.005f, style.length * std::max(scale, 0.05f) * variation);
 }
@@ -298,10 +297,10 @@ void HairGroom::regrowGuides(const HairStyle& style) {
   const auto start = std::chrono::steady_clock::now();
   const size_t guides = guideRoots_.size(), total = guides + childRoots_.size();
   const int points = std::max(2, style.pointsPerStrand);
-  // The traced guides depend on everything but the shaping strokes (a
-  // painted length map changes their lengths).
+  // The traced guides depend on everything but the strokes, except the
+  // painted length map (it changes their lengths).
   HairStyle unbrushed = style;
-  std::erase_if(unbrushed.strokes, [](const GroomStroke& s) { return !isPaintBrush(s.brush); });
+  std::erase_if(unbrushed.strokes, [](const GroomStroke& s) { return s.brush != GroomBrush::PaintLength; });
   const std::string key = toJson(unbrushed).dump();
   if (key != tracedKey_ || strands_.points.size() != 3 * total * points) {
     traceGuides(style);
@@ -373,7 +372,6 @@ void HairGroom::growChildren(const HairStyle& style) {
     clumpAt[k] = std::pow(t, std::max(style.clumpShape, 0.01f));  // times the clumping
     frizzAt[k] = style.frizz * t;
   }
-  const bool clumpPainted = paints(style.strokes, GroomBrush::PaintClumping);
   const Wander wander(style.seed ^ 0xA5A5A5u);
   ThreadPool::shared().parallelFor(0, children, 64, [&](size_t begin, size_t end) {
     for (size_t c = begin; c < end; ++c) {
@@ -397,10 +395,9 @@ void HairGroom::growChildren(const HairStyle& style) {
           w[0] * guideLengths_[near[0]] + w[1] * guideLengths_[near[1]] + w[2] * guideLengths_[near[2]];
       const float ratio = strandLength(style, root, key) / std::max(guideLength, 1e-6f);
       const float wanderStart = 256.0f * random01(style.seed, key, 5);
-      const float clumping = std::clamp(clumpPainted ? paintedValue(style.strokes, GroomBrush::PaintClumping,
-                                                                    root - proxy_.headCenter(), style.clumping)
-                                                     : style.clumping,
-                                        0.0f, 1.0f);
+      const float clumping =
+          std::clamp(paintedValue(style.strokes, GroomBrush::PaintClumping, root - proxy_.headCenter(), style.clumping),
+                     0.0f, 1.0f);
       const float wanderRate = style.frizzFrequency * guideLength * ratio / float(std::max(1, points - 1));
       float* out = strands_.strand(s);
       const glm::vec3 r0 = load(g0, 0), r1 = load(g1, 0), r2 = load(g2, 0);
