@@ -128,7 +128,8 @@ json phaseProfile(const RunResult& r, const SceneCloth& cloth, int frames) {
 int runSimulate(const std::vector<std::string>& argv) {
   const cli::Args args(argv);
   args.allowOnly({"--frames", "--fps", "--stats-json", "--export-dir", "--export-format", "--layers", "--skinning",
-                  "--helper-bones", "--regenerate-weights", "--smooth-weights", "--scale", "--auto-rig", "--clip"});
+                  "--helper-bones", "--regenerate-weights", "--smooth-weights", "--scale", "--auto-rig", "--clip",
+                  "--hair-volume", "--hair-friction", "--hair-crossings"});
   const std::string format = args.option("--export-format", "obj");
   if (format != "obj" && format != "pc2") throw Error("--export-format expects obj or pc2");
   const std::string layers = args.option("--layers", "on");
@@ -216,7 +217,8 @@ int runSimulate(const std::vector<std::string>& argv) {
     stats["layers"] = layers == "on";
     stats["max_inside_inner_vertices"] = cloth.garments->maxInsideInnerVertices();
   }
-  if (!scene.document.hair.is_null()) cli::simulateSceneHair(scene, frames, fps, exportDir, stats);
+  if (!scene.document.hair.is_null())
+    cli::simulateSceneHair(scene, frames, fps, exportDir, cli::hairRunOptions(args), stats);
   const std::string statsPath = args.option("--stats-json");
   if (!statsPath.empty()) {
     std::ofstream out(statsPath);
@@ -234,9 +236,13 @@ const cli::Registration reg(
      "SCENE --frames N [--fps F] [--clip NAME|INDEX|rest] [--stats-json OUT] [--export-dir DIR [--export-format "
      "obj|pc2]]\n"
      "         [--layers on|off] [--skinning lbs|dqs|cones] [--helper-bones] [--regenerate-weights] [--smooth-weights] "
-     "[--scale S] [--auto-rig]",
+     "[--scale S] [--auto-rig]\n"
+     "         [--hair-volume V] [--hair-friction F] [--hair-crossings]",
      "run the scene's cloth (sheet and garments) and hair headless; stats as JSON, frames as OBJ/PLY\n"
      "(one file per frame), or with --export-format pc2 one Point Cache 2 file per cloth and its mesh",
-     runSimulate});
+     runSimulate,
+     "--hair-volume V, --hair-friction F: hair against hair, 0 to 1 (the style's \"dynamics\"): how strongly\n"
+     "the hair holds its volume, and its internal friction. --hair-crossings: count, every frame, the pairs of\n"
+     "guide segments closer than half the guides' root spacing (hair passing through hair) into the stats."});
 
 }  // namespace

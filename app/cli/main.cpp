@@ -41,7 +41,8 @@ Args::Args(const std::vector<std::string>& args) {
                                                  "--smooth",
                                                  "--cones",
                                                  "--auto-rig",
-                                                 "--mirror"};
+                                                 "--mirror",
+                                                 "--hair-crossings"};
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a.rfind("--", 0) == 0 && a.size() > 2) {

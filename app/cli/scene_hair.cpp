@@ -63,7 +63,7 @@ SceneHair::SceneHair(const LoadedScene& scene, const HairSection& section)
     rig_.restWorldFromHead = scene.character.skeleton.worldTransforms(scene.character.skeleton.restPose())[head];
     rig_.body = HairColliders::attachToSkeleton(groom_->proxy(), scene.character.skeleton, head);
   }
-  simulator_.setParams(characterHairParams());
+  simulator_.setParams(characterHairParams(section_.style.dynamics));
   simulator_.setRest(leadingStrands(groom_->strands(), groom_->guideCount()));
   anchorRoots();
 }

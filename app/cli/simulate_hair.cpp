@@ -1,5 +1,6 @@
 #include "app/cli/simulate_hair.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +14,7 @@
 #include "core/util/error.h"
 #include "core/util/process_memory.h"
 #include "core/util/thread_pool.h"
+#include "sim/hair/hair_interaction.h"
 
 namespace mq::cli {
 namespace {
@@ -37,11 +39,45 @@ nlohmann::json boundsJson(const std::vector<float>& points, bool upper) {
   return nlohmann::json::array({v[0], v[1], v[2]});
 }
 
+float unitOption(const Args& args, const std::string& name) {
+  if (!args.has(name)) return -1.0f;
+  const double v = args.number(name, 0.0);
+  if (!(v >= 0.0 && v <= 1.0)) throw Error(name + " expects a number from 0 to 1");
+  return float(v);
+}
+
+// Pairs of guide segments closer than a wisp's radius, over the frames.
+struct CrossingCount {
+  float distance = 0.0f;
+  size_t max = 0, sum = 0, frames = 0;
+  void add(const std::vector<float>& guides, size_t strandCount, int points) {
+    const size_t pairs = closeSegmentPairs(guides, strandCount, points, distance);
+    max = std::max(max, pairs);
+    sum += pairs;
+    ++frames;
+  }
+};
+
 }  // namespace
 
+HairRunOptions hairRunOptions(const Args& args) {
+  HairRunOptions options;
+  options.volume = unitOption(args, "--hair-volume");
+  options.friction = unitOption(args, "--hair-friction");
+  options.countCrossings = args.has("--hair-crossings");
+  return options;
+}
+
 void simulateSceneHair(const LoadedScene& scene, int frames, float fps, const std::string& exportDir,
-                       nlohmann::json& stats) {
-  SceneHair hair(scene, sceneHairSection(scene));
+                       const HairRunOptions& options, nlohmann::json& stats) {
+  HairSection section = sceneHairSection(scene);
+  if (options.volume >= 0.0f) section.style.dynamics.volume = options.volume;
+  if (options.friction >= 0.0f) section.style.dynamics.friction = options.friction;
+  SceneHair hair(scene, section);
+  const HairSimulator& sim = hair.simulator();
+  CrossingCount crossings;
+  if (options.countCrossings)
+    crossings.distance = 0.5f * meanRootSpacing(sim.rest().points, sim.strandCount(), sim.pointsPerStrand());
   const float start = scene.document.time;
   const auto settleStart = std::chrono::steady_clock::now();
   hair.settle(start, kSettleSeconds, fps);
@@ -64,6 +100,7 @@ void simulateSceneHair(const LoadedScene& scene, int frames, float fps, const st
     const SceneHair::InsideCount inside = hair.pointsInsideBody();
     maxInside = std::max(maxInside, inside.points);
     maxRootsInside = std::max(maxRootsInside, inside.roots);
+    if (options.countCrossings) crossings.add(sim.positions(), sim.strandCount(), sim.pointsPerStrand());
     if (!exportDir.empty()) {
       exported.points = hair.allStrands();
       writeStrandsPly(exported, (std::filesystem::path(exportDir) / plyFrameName(f + 1)).string());
@@ -88,6 +125,15 @@ void simulateSceneHair(const LoadedScene& scene, int frames, float fps, const st
   stats["hair_bbox_max"] = boundsJson(hair.allStrands(), true);
   stats["hair_rss_mb_after_first_frame"] = rssAfterFirstFrame;
   stats["hair_rss_mb_end"] = residentMegabytes();
+  stats["hair_volume"] = hair.style().dynamics.volume;
+  stats["hair_friction"] = hair.style().dynamics.friction;
+  if (options.countCrossings) {
+    stats["hair_close_guide_distance"] = crossings.distance;
+    stats["hair_close_guide_pairs_groomed"] =
+        closeSegmentPairs(sim.rest().points, sim.strandCount(), sim.pointsPerStrand(), crossings.distance);
+    stats["hair_close_guide_pairs_max"] = crossings.max;
+    stats["hair_close_guide_pairs_mean"] = double(crossings.sum) / double(std::max<size_t>(1, crossings.frames));
+  }
   std::cout << "simulated hair: " << hair.groom().strands().strandCount() << " strands (" << hair.groom().guideCount()
             << " guides) over " << frames << " frames in " << seconds << " s (" << 1000.0 * seconds / frames
             << " ms/frame), max length error " << maxLengthError << ", points inside the body " << maxInside
@@ -106,7 +152,7 @@ int simulateHairOnly(const LoadedScene& scene, const std::string& path, int fram
   }
   nlohmann::json stats = {
       {"scene", path}, {"frames", frames}, {"fps", fps}, {"threads", ThreadPool::shared().threadCount()}};
-  simulateSceneHair(scene, frames, fps, exportDir, stats);
+  simulateSceneHair(scene, frames, fps, exportDir, hairRunOptions(args), stats);
   const std::string statsPath = args.option("--stats-json");
   if (!statsPath.empty()) writeFileAtomically(statsPath, [&](std::ostream& o) { o << stats.dump(2) << "\n"; });
   return 0;

@@ -14,11 +14,21 @@
 
 namespace mq::cli {
 
+// simulate's hair options: --hair-volume V and --hair-friction F override the
+// style's dynamics (0 .. 1); --hair-crossings counts, every frame, the pairs
+// of guide segments of different strands closer than half the guides' root
+// spacing (hair passing through hair), into hair_close_guide_pairs_*.
+struct HairRunOptions {
+  float volume = -1.0f, friction = -1.0f;  // < 0: the document's
+  bool countCrossings = false;
+};
+HairRunOptions hairRunOptions(const Args& args);
+
 // Steps the hair for `frames` frames of 1/fps from the document's time (after
 // settling at that pose), adds the hair_* keys to `stats`, writes
 // hair_NNNN.ply polylines into exportDir (when not empty) and prints a line.
 void simulateSceneHair(const LoadedScene& scene, int frames, float fps, const std::string& exportDir,
-                       nlohmann::json& stats);
+                       const HairRunOptions& options, nlohmann::json& stats);
 
 // `simulate` for a scene with hair and no cloth: the same options (--fps,
 // default 60), the same stats file with the scene keys and the hair keys.

@@ -1,5 +1,6 @@
 #include "core/animation/mannequin_clips.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -141,6 +142,32 @@ Clip makeMannequinArmRaise(const Skeleton& s) {
                 }));
     addRotation(clip, upper, rotationTrack(kKeys, kDuration, false, [&](float u) {
                   return m.local(upper, about({0, 0, 1}, sign * 95.0f * lift(u)));
+                }));
+  }
+  return clip;
+}
+
+// The head turns quickly over one shoulder, across to the other and back, with
+// a tilt into the turn: long hair swings across itself.
+Clip makeMannequinHeadTurn(const Skeleton& s) {
+  constexpr int kKeys = 60;
+  constexpr float kDuration = 2.0f;
+  const Motion m(s);
+  Clip clip;
+  clip.name = "head_turn";
+  clip.wrap = WrapMode::Clamp;
+  auto ease = [](float x) { return 0.5f - 0.5f * std::cos(float(M_PI) * std::clamp(x, 0.0f, 1.0f)); };
+  // Turn in degrees: 0 -> 70 (0 .. 0.2), 70 -> -70 (0.3 .. 0.6), -70 -> 0 (0.75 .. 1).
+  auto turn = [&](float u) {
+    return 70.0f * (ease(u / 0.2f) - 2.0f * ease((u - 0.3f) / 0.3f) + ease((u - 0.75f) / 0.25f));
+  };
+  for (const auto& [name, part] : {std::pair{"neck", 0.4f}, std::pair{"head", 0.6f}}) {
+    const int bone = s.findBone(name);
+    const float share = part;  // (a structured binding cannot be captured before C++20's last revisions)
+    if (bone < 0) continue;
+    addRotation(clip, bone, rotationTrack(kKeys, kDuration, false, [&](float u) {
+                  const float yaw = share * turn(u);
+                  return m.local(bone, about({0, 1, 0}, yaw) * about({0, 0, 1}, -0.25f * yaw));
                 }));
   }
   return clip;

@@ -70,6 +70,7 @@ Character makeDefaultMannequin() {
   character.meshes.push_back(std::move(mesh));
   character.clips.push_back(makeMannequinWalk(character.skeleton));
   character.clips.push_back(makeMannequinArmRaise(character.skeleton));
+  character.clips.push_back(makeMannequinHeadTurn(character.skeleton));
   return character;
 }
 

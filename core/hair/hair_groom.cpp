@@ -298,8 +298,9 @@ void HairGroom::regrowGuides(const HairStyle& style) {
   const size_t guides = guideRoots_.size(), total = guides + childRoots_.size();
   const int points = std::max(2, style.pointsPerStrand);
   // The traced guides depend on everything but the strokes, except the
-  // painted length map (it changes their lengths).
+  // painted length map (it changes their lengths), and the dynamics.
   HairStyle unbrushed = style;
+  unbrushed.dynamics = {};
   std::erase_if(unbrushed.strokes, [](const GroomStroke& s) { return s.brush != GroomBrush::PaintLength; });
   const std::string key = toJson(unbrushed).dump();
   if (key != tracedKey_ || strands_.points.size() != 3 * total * points) {

@@ -74,6 +74,15 @@ struct HairShadingParams {
   bool operator!=(const HairShadingParams& o) const { return !(*this == o); }
 };
 
+// How the hair moves against itself (sim/hair/hair_interaction.h): how
+// strongly it holds its volume (0 off .. 1) and its internal friction (0 .. 1).
+struct HairDynamicsParams {
+  float volume = 0.0f;
+  float friction = 0.0f;
+  bool operator==(const HairDynamicsParams& o) const { return volume == o.volume && friction == o.friction; }
+  bool operator!=(const HairDynamicsParams& o) const { return !(*this == o); }
+};
+
 struct HairStyle {
   std::string name = "custom";
   FlowPrimitives primitives;
@@ -106,6 +115,7 @@ struct HairStyle {
   glm::vec3 rootColor{0.10f, 0.06f, 0.035f};
   glm::vec3 tipColor{0.25f, 0.16f, 0.09f};
   HairShadingParams shading;
+  HairDynamicsParams dynamics;
   uint32_t seed = 1;
   // Brush strokes, replayed in order on the traced guides (groom_stroke.h).
   std::vector<GroomStroke> strokes;

@@ -164,6 +164,16 @@ json toJson(const HairShadingParams& s) {
           {"roughness", tidy(s.roughness)}};
 }
 
+HairDynamicsParams hairDynamicsFromJson(const json& j, const HairDynamicsParams& base, const std::string& path) {
+  const JsonFields f(j, path);
+  HairDynamicsParams d = base;
+  d.volume = f.number("volume", d.volume, 0.0, 1.0);
+  d.friction = f.number("friction", d.friction, 0.0, 1.0);
+  return d;
+}
+
+json toJson(const HairDynamicsParams& d) { return {{"volume", tidy(d.volume)}, {"friction", tidy(d.friction)}}; }
+
 HairStyle hairStyleFromJson(const json& j, const std::string& path) {
   if (j.is_string()) {
     try {
@@ -210,6 +220,7 @@ HairStyle hairStyleFromJson(const json& j, const std::string& path) {
   s.tipColor = color(f, "tip_color", s.tipColor);
   s.seed = uint32_t(f.integer("seed", s.seed, 0, 4294967295LL));
   if (f.has("shading")) s.shading = hairShadingFromJson(f.raw("shading"), s.shading, f.pathOf("shading"));
+  if (f.has("dynamics")) s.dynamics = hairDynamicsFromJson(f.raw("dynamics"), s.dynamics, f.pathOf("dynamics"));
   if (f.has("strokes")) s.strokes = readStrokes(f);
   return s;
 }
@@ -304,6 +315,7 @@ json toJson(const HairStyle& s) {
            {"tip_color", vec(s.tipColor)},
            {"seed", s.seed}};
   if (s.shading != HairShadingParams{}) out["shading"] = toJson(s.shading);
+  if (s.dynamics != HairDynamicsParams{}) out["dynamics"] = toJson(s.dynamics);
   if (!s.strokes.empty()) out["strokes"] = strokesToJson(s.strokes);
   return out;
 }

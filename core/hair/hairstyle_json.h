@@ -10,7 +10,8 @@
 //               "strokes": [{"brush": "comb", "radius": r, "strength": s,   brush strokes in
 //                            "mirror": false, "value": v,               order (groom_stroke.h;
 //                                                                        value: paint brushes);
-//                            "dabs": [[x, y, z, mx, my, mz], ..]}]},    head space, metres
+//                            "dabs": [[x, y, z, mx, my, mz], ..]}],     head space, metres
+//               "dynamics": {"volume": 0.5, "friction": 0.3}},  hair against hair, 0 .. 1 (default 0: off)
 //     "scalp": {"kind": "tagged"}                          default: TagScalp vertices
 //            | {"kind": "bone_cone", "bone": "head", "axis": [0,1,0], "angle": 70}
 //            | {"kind": "faces", "bone": "head", "mesh": 0, "faces": [..]},   bone: the head
@@ -20,8 +21,8 @@
 //                 "roughness": 0.3}                      fibre roughness beta (physical)
 //   }
 // "shading" may also sit in a style object (the editor saves it there); the
-// section's one wins. A style whose shading is the default writes none, so
-// files saved before it existed read and write unchanged.
+// section's one wins. A style whose shading or dynamics is the default writes
+// none, so files saved before they existed read and write unchanged.
 // Primitive positions are in head space (see hairstyle.h).
 
 #include <nlohmann/json_fwd.hpp>
@@ -53,6 +54,9 @@ ScalpRegion scalpRegionFromJson(const nlohmann::json& j, const std::string& path
 HairShadingParams hairShadingFromJson(const nlohmann::json& j, const HairShadingParams& base = {},
                                       const std::string& path = "hair.shading");
 nlohmann::json toJson(const HairShadingParams& shading);
+HairDynamicsParams hairDynamicsFromJson(const nlohmann::json& j, const HairDynamicsParams& base = {},
+                                        const std::string& path = "hair.style.dynamics");
+nlohmann::json toJson(const HairDynamicsParams& dynamics);
 // "kajiya-kay", "physical"; the parser throws mq::Error naming them.
 std::string hairShadingModelName(HairShadingModel model);
 HairShadingModel hairShadingModelFromName(const std::string& name);

@@ -38,9 +38,11 @@ HairRig HairRig::fromCharacter(const Character& character) {
   }
 }
 
-HairSimParams characterHairParams() {
+HairSimParams characterHairParams(const HairDynamicsParams& dynamics) {
   HairSimParams params;
   params.globalRange = 1.0f;
+  params.interaction.volume = dynamics.volume;
+  params.interaction.friction = dynamics.friction;
   return params;
 }
 

@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/hair/hairstyle.h"
 #include "core/hair/strands.h"
 #include "sim/hair/hair_colliders.h"
 #include "sim/hair/hair_simulator.h"
@@ -38,7 +39,8 @@ struct HairRig {
 // strand (globalRange 1) instead of its root half, so the groom keeps its
 // shape where it rests on the shoulders instead of the ends sliding off and
 // the children, which follow their guide's bending, fanning out there.
-HairSimParams characterHairParams();
+// The style's dynamics turn on hair-hair interaction.
+HairSimParams characterHairParams(const HairDynamicsParams& dynamics = {});
 
 struct HairBakeCallbacks {
   std::function<void(int done, int total)> progress;  // after each frame

@@ -36,10 +36,9 @@ glm::quat rotationOf(const glm::mat4& m) {
 
 // Per-strand scratch for one strand's substep (reused per thread).
 struct StrandScratch {
-  std::vector<glm::vec3> p, correction, normal;
+  std::vector<glm::vec3> correction, normal;
   std::vector<uint8_t> contact;
   void resize(int n) {
-    p.resize(n);
     correction.resize(n);
     normal.resize(n);
     contact.resize(n);
@@ -67,7 +66,21 @@ void HairSimulator::setRest(const Strands& guides) {
     }
     if (n >= 2) restDirs_[base + n - 1] = restDirs_[base + n - 2];
   }
+  interactionReady_ = false;
+  setParams(params_);
   reset();
+}
+
+void HairSimulator::setParams(const HairSimParams& params) {
+  const bool radiusChanged = params.interaction.radius != params_.interaction.radius;
+  params_ = params;
+  if (!params_.interaction.enabled() || strandCount_ == 0) return;
+  if (!interactionReady_ || radiusChanged) {
+    interaction_.setRest(rest_.points, strandCount_, pointsPerStrand_, params_.interaction);
+    interactionReady_ = true;
+  } else {
+    interaction_.setParams(params_.interaction);
+  }
 }
 
 void HairSimulator::reset() {
@@ -141,26 +154,39 @@ void HairSimulator::step(float dt, const std::vector<glm::vec3>& rootPositions,
 
 void HairSimulator::substep(float h, const std::vector<RootTarget>& roots, const PosedHairColliders* body) {
   if (body && body->empty()) body = nullptr;
+  if (!(interactionReady_ && params_.interaction.enabled())) {
+    ThreadPool::shared().parallelFor(0, strandCount_, 64, [&](size_t begin, size_t end) {
+      for (size_t s = begin; s < end; ++s) stepStrand(s, h, roots[s], body);
+    });
+    return;
+  }
+  // Hair against hair acts on the predicted positions of all strands, before
+  // each strand restores its lengths and leaves the body.
+  const size_t n = size_t(pointsPerStrand_);
+  predicted_.resize(strandCount_ * n);
   ThreadPool::shared().parallelFor(0, strandCount_, 64, [&](size_t begin, size_t end) {
-    for (size_t s = begin; s < end; ++s) stepStrand(s, h, roots[s], body);
+    for (size_t s = begin; s < end; ++s) predictStrand(s, h, roots[s], predicted_.data() + s * n);
+  });
+  interaction_.apply(predicted_, positions_, h);
+  ThreadPool::shared().parallelFor(0, strandCount_, 64, [&](size_t begin, size_t end) {
+    for (size_t s = begin; s < end; ++s) solveStrand(s, h, roots[s], body, predicted_.data() + s * n);
   });
 }
 
 void HairSimulator::stepStrand(size_t s, float h, const RootTarget& root, const PosedHairColliders* body) {
-  thread_local StrandScratch scratch;
+  thread_local std::vector<glm::vec3> p;
+  p.resize(pointsPerStrand_);
+  predictStrand(s, h, root, p.data());
+  solveStrand(s, h, root, body, p.data());
+}
+
+// Steps 1 and 2: free motion, then the pull toward the rest shape.
+void HairSimulator::predictStrand(size_t s, float h, const RootTarget& root, glm::vec3* p) const {
   const int n = pointsPerStrand_;
-  scratch.resize(n);
-  glm::vec3* p = scratch.p.data();
-  glm::vec3* correction = scratch.correction.data();
-  glm::vec3* normal = scratch.normal.data();
-  uint8_t* contact = scratch.contact.data();
   const size_t base = s * size_t(n);
-  float* x = positions_.data() + 3 * base;
-  float* v = velocities_.data() + 3 * base;
+  const float* x = positions_.data() + 3 * base;
+  const float* v = velocities_.data() + 3 * base;
   const float* r = rest_.points.data() + 3 * base;
-  const glm::vec3* restDir = restDirs_.data() + base;
-  const float* restLength = restLengths_.data() + base;
-  glm::quat* frame = frames_.data() + base;
 
   // 1. Predict.
   const float damping = std::exp(-params_.airDamping * h);
@@ -173,6 +199,23 @@ void HairSimulator::stepStrand(size_t s, float h, const RootTarget& root, const 
     const glm::vec3 target = root.position + root.rotation * (load(r, i) - rest0);
     p[i] += globalPerPoint_[i] * (target - p[i]);
   }
+}
+
+// Steps 3 and 4 from the predicted positions p; commits the strand.
+void HairSimulator::solveStrand(size_t s, float h, const RootTarget& root, const PosedHairColliders* body,
+                                glm::vec3* p) {
+  thread_local StrandScratch scratch;
+  const int n = pointsPerStrand_;
+  scratch.resize(n);
+  glm::vec3* correction = scratch.correction.data();
+  glm::vec3* normal = scratch.normal.data();
+  uint8_t* contact = scratch.contact.data();
+  const size_t base = s * size_t(n);
+  float* x = positions_.data() + 3 * base;
+  float* v = velocities_.data() + 3 * base;
+  const glm::vec3* restDir = restDirs_.data() + base;
+  const float* restLength = restLengths_.data() + base;
+  glm::quat* frame = frames_.data() + base;
 
   // 3. Bend, keep length, collide: one pass from the root.
   glm::quat carried = root.rotation;

@@ -12,6 +12,9 @@
 //      rotation from the wanted to the actual segment direction
 //   4. velocities: v = (p - x) / h - ftlDamping d_{i+1} / h (FTL damping),
 //      friction on particles in contact (no bounce)
+// Between 2 and 3, when params.interaction is on, the strands meet each other:
+// pressure and friction between all guide particles' predicted positions
+// (hair_interaction.h), which steps 3 and 4 then turn into velocities.
 // Strands are independent, so the loop splits across ThreadPool::shared() and
 // the result does not depend on scheduling.
 
@@ -22,6 +25,7 @@
 
 #include "core/hair/strands.h"
 #include "sim/hair/hair_colliders.h"
+#include "sim/hair/hair_interaction.h"
 
 namespace mq {
 
@@ -35,6 +39,7 @@ struct HairSimParams {
   float friction = 0.4f;           // share of tangential velocity lost per contact step
   float collisionMargin = 0.002f;  // metres kept between hair and body proxies
   float maxSubstep = 1.0f / 60.0f;
+  HairInteractionParams interaction;  // hair-hair pressure and friction (off by default)
 };
 
 class HairSimulator {
@@ -46,7 +51,7 @@ class HairSimulator {
   // world space). Resets the state to rest.
   void setRest(const Strands& guides);
   void reset();
-  void setParams(const HairSimParams& params) { params_ = params; }
+  void setParams(const HairSimParams& params);
   const HairSimParams& params() const { return params_; }
 
   // Advances by dt. The roots move rigidly with the scalp: posedFromRest
@@ -66,6 +71,8 @@ class HairSimulator {
   // Current particle positions, laid out like Strands::points.
   const std::vector<float>& positions() const { return positions_; }
   const std::vector<float>& velocities() const { return velocities_; }
+  // The hair-hair kernel radius in use (0 while the interaction is off).
+  float interactionRadius() const { return interactionReady_ ? interaction_.radius() : 0.0f; }
   // Per particle: the rotation that carries the strand's rest shape around
   // that particle to its current shape (the root frame times accumulated
   // bending). Children use it to follow their guide.
@@ -80,8 +87,13 @@ class HairSimulator {
   };
   void substep(float h, const std::vector<RootTarget>& roots, const PosedHairColliders* body);
   void stepStrand(size_t s, float h, const RootTarget& root, const PosedHairColliders* body);
+  void predictStrand(size_t s, float h, const RootTarget& root, glm::vec3* p) const;
+  void solveStrand(size_t s, float h, const RootTarget& root, const PosedHairColliders* body, glm::vec3* p);
 
   HairSimParams params_;
+  HairInteraction interaction_;
+  bool interactionReady_ = false;     // interaction_ holds the rest densities
+  std::vector<glm::vec3> predicted_;  // all strands' predicted positions, for the interaction
   Strands rest_;
   size_t strandCount_ = 0;
   int pointsPerStrand_ = 0;

@@ -48,5 +48,27 @@ TEST(HairShadingJson, BadValuesAreNamed) {
   EXPECT_THROW(hairSectionFromJson(json{{"shading", "physical"}}), Error);
 }
 
+// The style's "dynamics" (hair against hair) follow the same rules.
+TEST(HairDynamicsJson, AbsentMeansOffReadWrittenAndBadValuesNamed) {
+  const HairStyle plain = hairStyleFromJson(json("long_straight"));
+  EXPECT_EQ(plain.dynamics, HairDynamicsParams{});
+  EXPECT_FALSE(toJson(plain).contains("dynamics"));
+  const HairStyle style =
+      hairStyleFromJson(json{{"preset", "long_straight"}, {"dynamics", {{"volume", 0.5}, {"friction", 0.2}}}});
+  EXPECT_FLOAT_EQ(style.dynamics.volume, 0.5f);
+  EXPECT_FLOAT_EQ(style.dynamics.friction, 0.2f);
+  const json written = toJson(style);
+  ASSERT_TRUE(written.contains("dynamics"));
+  EXPECT_EQ(hairStyleFromJson(written).dynamics, style.dynamics);
+  try {
+    hairSectionFromJson(json{{"style", {{"preset", "bob"}, {"dynamics", {{"volume", 1.5}}}}}});
+    FAIL() << "a volume above 1 was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("hair.style.dynamics.volume"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(hairStyleFromJson(json{{"dynamics", {{"friction", -0.1}}}}), Error);
+  EXPECT_THROW(hairStyleFromJson(json{{"dynamics", 0.5}}), Error);
+}
+
 }  // namespace
 }  // namespace mq

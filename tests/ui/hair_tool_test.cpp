@@ -497,6 +497,33 @@ class HairToolTest : public QObject {
     QCOMPARE(undo->index(), commands);
   }
 
+  // Volume and friction (hair against hair) are the style's dynamics: each
+  // typed value one undo step, no regrowth, and the live dynamics use them.
+  void volumeAndFrictionAreUndoableAndReachTheDynamics() {
+    waitForHair();
+    QUndoStack* undo = doc()->undoStack();
+    const int commands = undo->index();
+    const std::vector<float> guides = guidePoints(*tool_);
+    typeValue(panel()->volumeBox(), 0.6);
+    typeValue(panel()->hairFrictionBox(), 0.3);
+    QCOMPARE(tool_->style().dynamics.volume, 0.6f);
+    QCOMPARE(tool_->style().dynamics.friction, 0.3f);
+    QCOMPARE(undo->index(), commands + 2);
+    waitForHair();
+    QCOMPARE(guidePoints(*tool_), guides);
+    tool_->setSimulating(true);
+    QVERIFY(tool_->interactionRadius() > 0.0f);
+    tool_->setSimulating(false);
+    undo->undo();
+    undo->undo();
+    waitForHair();
+    QCOMPARE(tool_->style().dynamics, HairDynamicsParams{});
+    QCOMPARE(panel()->volumeBox()->value(), 0.0);
+    tool_->setSimulating(true);
+    QCOMPARE(tool_->interactionRadius(), 0.0f);
+    tool_->setSimulating(false);
+  }
+
   // The viewport's strand cap is a setting in the dock, which says how many
   // of the document's strands it shows.
   void theDisplayLimitCapsTheViewportAndSaysSo() {

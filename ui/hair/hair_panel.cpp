@@ -49,7 +49,9 @@ enum FieldKey {
   kMelanin,
   kPheomelanin,
   kRoughness,
-  kPigmentPreset
+  kPigmentPreset,
+  kVolume,
+  kHairFriction
 };
 
 // Scalp cone axes (world, rest pose; the character faces +Z).
@@ -323,10 +325,29 @@ QWidget* HairPanel::makeDynamicsGroup() {
          "instead of the exact count of the hair in front of each point"));
   simulate_ = new QCheckBox(tr("Simulate while playing"));
   bake_ = new QPushButton(tr("Bake clip"));
+  // Hair against hair; on the bake's row, so the dock keeps its height.
+  volume_ = addSpin(0.0, 1.0, 0.05, 2);
+  volume_->setToolTip(
+      tr("How strongly the hair holds its volume: strands pushed together spread back to the groom's "
+         "density, so wisps do not pass through each other (0: off)"));
+  hairFriction_ = addSpin(0.0, 1.0, 0.05, 2);
+  hairFriction_->setToolTip(tr("Friction of hair on hair: sliding strands drag their neighbours (0: off)"));
+  auto* bakeRow = new QHBoxLayout;
+  bakeRow->addWidget(bake_);
+  bakeRow->addWidget(new QLabel(tr("Volume")));
+  bakeRow->addWidget(volume_);
+  bakeRow->addWidget(new QLabel(tr("Friction")));
+  bakeRow->addWidget(hairFriction_);
   dynamicsLayout->addWidget(handles_);
   dynamicsLayout->addWidget(shadowMaps_);
   dynamicsLayout->addWidget(simulate_);
-  dynamicsLayout->addWidget(bake_);
+  dynamicsLayout->addLayout(bakeRow);
+  connect(volume_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+    editField(tr("Hair volume"), kVolume, [&](HairStyle& s) { s.dynamics.volume = float(v); });
+  });
+  connect(hairFriction_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+    editField(tr("Hair friction"), kHairFriction, [&](HairStyle& s) { s.dynamics.friction = float(v); });
+  });
   connect(handles_, &QCheckBox::toggled, tool_, &HairTool::setHandlesVisible);
   connect(shadowMaps_, &QCheckBox::toggled, tool_, &HairTool::setOpacityShadowMaps);
   connect(simulate_, &QCheckBox::toggled, tool_, &HairTool::setSimulating);
@@ -690,8 +711,9 @@ void HairPanel::refresh() {
       }
     }
   }
-  for (QWidget* w : std::initializer_list<QWidget*>{addStream_, addSource_, addVortex_, density_, length_, clumping_,
-                                                    frizz_, rootColor_, tipColor_, simulate_, bake_})
+  for (QWidget* w :
+       std::initializer_list<QWidget*>{addStream_, addSource_, addVortex_, density_, length_, clumping_, frizz_,
+                                       rootColor_, tipColor_, simulate_, bake_, volume_, hairFriction_})
     w->setEnabled(hair);
   delete_->setEnabled(hair && tool_->selectedPrimitive().valid());
   groomBrush_->setEnabled(hair);
@@ -703,7 +725,8 @@ void HairPanel::refresh() {
   if (hair) {
     const HairStyle& s = tool_->style();
     for (auto [spin, value] : {std::pair{density_, s.density}, std::pair{length_, s.length},
-                               std::pair{clumping_, s.clumping}, std::pair{frizz_, s.frizz}}) {
+                               std::pair{clumping_, s.clumping}, std::pair{frizz_, s.frizz},
+                               std::pair{volume_, s.dynamics.volume}, std::pair{hairFriction_, s.dynamics.friction}}) {
       QSignalBlocker block(spin);
       spin->setValue(value);
     }

@@ -40,6 +40,8 @@ class HairPanel : public QWidget {
   QPushButton* addVortexButton() const { return addVortex_; }
   QDoubleSpinBox* strengthBox() const { return strength_; }
   QDoubleSpinBox* densityBox() const { return density_; }
+  QDoubleSpinBox* volumeBox() const { return volume_; }
+  QDoubleSpinBox* hairFrictionBox() const { return hairFriction_; }
   QDoubleSpinBox* positionBox(int axis) const { return position_[axis]; }
   QCheckBox* shadowMapsBox() const { return shadowMaps_; }
   QSpinBox* displayLimitBox() const { return displayLimit_; }
@@ -105,6 +107,7 @@ class HairPanel : public QWidget {
   QDoubleSpinBox* axis_[3];
   QDoubleSpinBox* position_[3];
   QDoubleSpinBox *density_, *length_, *clumping_, *frizz_;
+  QDoubleSpinBox *volume_, *hairFriction_;  // hair against hair (the style's dynamics)
   QPushButton *rootColor_, *tipColor_;
   QSpinBox* displayLimit_;
   QLabel* displayCount_;

@@ -470,7 +470,7 @@ void HairTool::ensureDynamics() {
   EditorDocument* document = window_->document();
   if (!rig_) rig_ = std::make_unique<HairRig>(HairRig::fromProxy(document->character(), groom_->proxy()));
   if (!simulator_) {
-    simulator_ = std::make_unique<HairSimulator>(characterHairParams());
+    simulator_ = std::make_unique<HairSimulator>(characterHairParams(style_->dynamics));
     simulator_->setRest(leadingStrands(groom_->strands(), groom_->guideCount()));
     lastTime_ = document->time();
   }
@@ -525,7 +525,7 @@ bool HairTool::bake() {
   callbacks.cancelled = [&] { return progress.cancelled(); };
   HairBake result =
       bakeHair(document->character(), document->clipIndex(), leadingStrands(groom_->strands(), groom_->guideCount()),
-               characterHairParams(), {}, callbacks, rig_.get());
+               characterHairParams(style_->dynamics), {}, callbacks, rig_.get());
   window_->hideProgress(result.cancelled ? tr("Hair bake cancelled") : tr("Hair baked"));
   if (result.cancelled) return false;
   simulating_ = false;

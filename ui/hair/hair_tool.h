@@ -186,6 +186,8 @@ class HairTool : public QObject {
   // Simulates the current clip; false when cancelled or impossible.
   bool bake();
   bool hasBake() const { return bake_.has_value(); }
+  // The live dynamics' kernel radius of hair against hair (0: off or not simulating yet).
+  float interactionRadius() const { return simulator_ ? simulator_->interactionRadius() : 0.0f; }
 
   HairPanel* panel() const { return panel_; }
   QDockWidget* dock() const { return dock_; }

@@ -24,6 +24,7 @@ bool onlyColorsDiffer(HairStyle a, const HairStyle& b) {
   a.rootColor = b.rootColor;
   a.tipColor = b.tipColor;
   a.shading = b.shading;
+  a.dynamics = b.dynamics;  // the simulation's, not the groom's
   return toJson(a) == toJson(b);
 }
 

@@ -1,0 +1,322 @@
+#include "sim/hair/hair_interaction.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/util/thread_pool.h"
+
+namespace mq {
+
+namespace {
+
+glm::vec3 load(const float* a, size_t i) { return {a[3 * i], a[3 * i + 1], a[3 * i + 2]}; }
+
+float kernel(float r2, float invR2) {
+  const float t = 1.0f - r2 * invR2;
+  return t > 0.0f ? t * t * t : 0.0f;
+}
+
+glm::ivec3 cellOf(const glm::vec3& p, float invCell) { return glm::ivec3(glm::floor(p * invCell)); }
+
+uint32_t hashCell(const glm::ivec3& c, uint32_t mask) {
+  return (uint32_t(c.x) * 73856093u ^ uint32_t(c.y) * 19349663u ^ uint32_t(c.z) * 83492791u) & mask;
+}
+
+// The distinct hash buckets of a cell and its 26 neighbours, sorted.
+int neighbourBuckets(const glm::ivec3& c, uint32_t mask, uint32_t (&out)[27]) {
+  int count = 0;
+  for (int dz = -1; dz <= 1; ++dz)
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) out[count++] = hashCell(c + glm::ivec3(dx, dy, dz), mask);
+  std::sort(out, out + count);
+  return int(std::unique(out, out + count) - out);
+}
+
+float meanSegmentLength(const std::vector<float>& points, size_t strandCount, int n) {
+  double sum = 0.0;
+  size_t count = 0;
+  for (size_t s = 0; s < strandCount; ++s)
+    for (int i = 0; i + 1 < n; ++i) {
+      const size_t a = s * n + i;
+      sum += glm::length(load(points.data(), a + 1) - load(points.data(), a));
+      ++count;
+    }
+  return count ? float(sum / double(count)) : 0.0f;
+}
+
+// Squared distance between segments [p0, p1] and [q0, q1].
+float segmentDistance2(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& q0, const glm::vec3& q1) {
+  const glm::vec3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
+  const float a = glm::dot(d1, d1), e = glm::dot(d2, d2), f = glm::dot(d2, r);
+  float s = 0.0f, t = 0.0f;
+  if (a <= 1e-12f && e <= 1e-12f) return glm::dot(r, r);
+  if (a <= 1e-12f) {
+    t = glm::clamp(f / e, 0.0f, 1.0f);
+  } else {
+    const float c = glm::dot(d1, r);
+    if (e <= 1e-12f) {
+      s = glm::clamp(-c / a, 0.0f, 1.0f);
+    } else {
+      const float b = glm::dot(d1, d2), denom = a * e - b * b;
+      s = denom > 1e-12f ? glm::clamp((b * f - c * e) / denom, 0.0f, 1.0f) : 0.0f;
+      t = (b * s + f) / e;
+      if (t < 0.0f) {
+        t = 0.0f;
+        s = glm::clamp(-c / a, 0.0f, 1.0f);
+      } else if (t > 1.0f) {
+        t = 1.0f;
+        s = glm::clamp((b - c) / a, 0.0f, 1.0f);
+      }
+    }
+  }
+  const glm::vec3 gap = (p0 + d1 * s) - (q0 + d2 * t);
+  return glm::dot(gap, gap);
+}
+
+// Items sorted into hash buckets of cubic cells (counting sort).
+struct BucketGrid {
+  float invCell = 1.0f;
+  uint32_t mask = 0;
+  std::vector<uint32_t> bucket, start, sorted;
+
+  void build(const std::vector<glm::vec3>& at, float cell) {
+    invCell = 1.0f / cell;
+    uint32_t size = 1;
+    while (size < 2 * at.size() + 1) size <<= 1;
+    mask = size - 1;
+    bucket.resize(at.size());
+    start.assign(size_t(size) + 1, 0);
+    for (size_t i = 0; i < at.size(); ++i) {
+      bucket[i] = hashCell(cellOf(at[i], invCell), mask);
+      ++start[bucket[i] + 1];
+    }
+    for (size_t h = 0; h < size; ++h) start[h + 1] += start[h];
+    sorted.resize(at.size());
+    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+    for (size_t i = 0; i < at.size(); ++i) sorted[fill[bucket[i]]++] = uint32_t(i);
+  }
+};
+
+}  // namespace
+
+float meanRootSpacing(const std::vector<float>& points, size_t strandCount, int pointsPerStrand) {
+  if (strandCount < 2) return 0.0f;
+  double sum = 0.0;
+  for (size_t s = 0; s < strandCount; ++s) {
+    const glm::vec3 root = load(points.data(), s * pointsPerStrand);
+    float nearest = INFINITY;
+    for (size_t o = 0; o < strandCount; ++o) {
+      if (o == s) continue;
+      const glm::vec3 d = load(points.data(), o * pointsPerStrand) - root;
+      nearest = std::min(nearest, glm::dot(d, d));
+    }
+    sum += std::sqrt(nearest);
+  }
+  return float(sum / double(strandCount));
+}
+
+size_t closeSegmentPairs(const std::vector<float>& points, size_t strandCount, int n, float distance) {
+  if (strandCount < 2 || n < 3) return 0;
+  // Segments from the second one on: roots sit side by side on the scalp.
+  const int perStrand = n - 2;
+  std::vector<glm::vec3> mid(strandCount * perStrand);
+  float longest = 0.0f;
+  for (size_t s = 0; s < strandCount; ++s)
+    for (int k = 0; k < perStrand; ++k) {
+      const glm::vec3 a = load(points.data(), s * n + k + 1), b = load(points.data(), s * n + k + 2);
+      mid[s * perStrand + k] = 0.5f * (a + b);
+      longest = std::max(longest, glm::length(b - a));
+    }
+  const float reach = longest + distance;  // midpoints of segments closer than `distance`
+  BucketGrid grid;
+  grid.build(mid, std::max(reach, 1e-6f));
+  const float distance2 = distance * distance;
+  std::vector<size_t> perChunk(strandCount, 0);
+  ThreadPool::shared().parallelFor(0, strandCount, 16, [&](size_t begin, size_t end) {
+    uint32_t buckets[27];
+    for (size_t s = begin; s < end; ++s)
+      for (int k = 0; k < perStrand; ++k) {
+        const size_t i = s * perStrand + k;
+        const glm::vec3 a = load(points.data(), s * n + k + 1), b = load(points.data(), s * n + k + 2);
+        const int count = neighbourBuckets(cellOf(mid[i], grid.invCell), grid.mask, buckets);
+        for (int c = 0; c < count; ++c)
+          for (uint32_t e = grid.start[buckets[c]]; e < grid.start[buckets[c] + 1]; ++e) {
+            const uint32_t j = grid.sorted[e];
+            const size_t other = j / perStrand;
+            if (other <= s) continue;  // each pair once, other strands only
+            const glm::vec3 gap = mid[j] - mid[i];
+            if (glm::dot(gap, gap) > reach * reach) continue;
+            const int l = int(j % perStrand);
+            const glm::vec3 c0 = load(points.data(), other * n + l + 1), c1 = load(points.data(), other * n + l + 2);
+            if (segmentDistance2(a, b, c0, c1) < distance2) ++perChunk[s];
+          }
+      }
+  });
+  size_t total = 0;
+  for (size_t c : perChunk) total += c;
+  return total;
+}
+
+void HairInteraction::setRest(const std::vector<float>& restPoints, size_t strandCount, int pointsPerStrand,
+                              const HairInteractionParams& params) {
+  strandCount_ = strandCount;
+  pointsPerStrand_ = pointsPerStrand;
+  params_ = params;
+  radius_ = params.radius;
+  if (!(radius_ > 0.0f)) {
+    const float spacing = meanRootSpacing(restPoints, strandCount, pointsPerStrand);
+    const float segment = meanSegmentLength(restPoints, strandCount, pointsPerStrand);
+    // Wide enough that strands crossing between particles still meet.
+    radius_ = std::max({2.0f * spacing, 0.5f * segment, 1e-4f});
+  }
+  std::vector<glm::vec3> rest(restPoints.size() / 3);
+  for (size_t i = 0; i < rest.size(); ++i) rest[i] = load(restPoints.data(), i);
+  computeDensities(rest, restDensity_);
+  const float floor = kernel(0.25f, 1.0f);  // W(R/2)
+  for (float& rho : restDensity_) rho = std::max(rho, floor);
+}
+
+void HairInteraction::setParams(const HairInteractionParams& params) {
+  const float radius = radius_;
+  params_ = params;
+  params_.radius = radius;
+}
+
+void HairInteraction::buildGrid(const std::vector<glm::vec3>& at) {
+  const size_t count = at.size();
+  BucketGrid grid;
+  grid.build(at, radius_);
+  cellStart_ = std::move(grid.start);
+  sorted_ = std::move(grid.sorted);
+  // The particles in bucket order, so a bucket's particles sit side by side.
+  sortedPositions_.resize(count);
+  sortedStrands_.resize(count);
+  for (size_t e = 0; e < count; ++e) {
+    sortedPositions_[e] = at[sorted_[e]];
+    sortedStrands_[e] = uint32_t(sorted_[e] / pointsPerStrand_);
+  }
+}
+
+// Calls visit(e, d, r2) for every particle e (bucket order) of another strand
+// within the radius of each particle of bucket order [begin, end), with
+// each(e) before a particle's neighbours and done(e) after. The 27 buckets
+// are found once per cell.
+template <class Each, class Visit, class Done>
+void HairInteraction::forNeighbourRange(size_t begin, size_t end, Each&& each, Visit&& visit, Done&& done) const {
+  const float invCell = 1.0f / radius_, radius2 = radius_ * radius_;
+  const uint32_t mask = uint32_t(cellStart_.size() - 2);
+  uint32_t buckets[27];
+  int bucketCount = 0;
+  glm::ivec3 lastCell(std::numeric_limits<int>::min());
+  for (size_t e = begin; e < end; ++e) {
+    const glm::vec3 xi = sortedPositions_[e];
+    const uint32_t strand = sortedStrands_[e];
+    const glm::ivec3 cell = cellOf(xi, invCell);
+    if (cell != lastCell) {
+      bucketCount = neighbourBuckets(cell, mask, buckets);
+      lastCell = cell;
+    }
+    each(e);
+    for (int c = 0; c < bucketCount; ++c)
+      for (uint32_t f = cellStart_[buckets[c]], last = cellStart_[buckets[c] + 1]; f < last; ++f) {
+        if (sortedStrands_[f] == strand) continue;  // a strand's own particles hold by its constraints
+        const glm::vec3 d = xi - sortedPositions_[f];
+        const float r2 = glm::dot(d, d);
+        if (r2 < radius2) visit(f, d, r2);
+      }
+    done(e);
+  }
+}
+
+// Densities in bucket order (sortedDensity_) and, into `density`, per
+// particle; each block of particles keeps its particles' neighbour lists for
+// apply().
+void HairInteraction::computeDensities(const std::vector<glm::vec3>& positions, std::vector<float>& density) {
+  buildGrid(positions);
+  const size_t count = positions.size();
+  density.assign(count, 0.0f);
+  sortedDensity_.assign(count, 0.0f);
+  neighbourEnd_.resize(count);
+  const size_t blocks = (count + kBlock - 1) / kBlock;
+  blockNeighbours_.resize(blocks);
+  const float invR2 = 1.0f / (radius_ * radius_);
+  ThreadPool::shared().parallelFor(0, blocks, 1, [&](size_t firstBlock, size_t lastBlock) {
+    for (size_t b = firstBlock; b < lastBlock; ++b) {
+      std::vector<Neighbour>& list = blockNeighbours_[b];
+      list.clear();
+      float rho = 0.0f;
+      forNeighbourRange(
+          b * kBlock, std::min(count, (b + 1) * kBlock), [&](size_t) { rho = 0.0f; },
+          [&](uint32_t f, const glm::vec3&, float r2) {
+            rho += kernel(r2, invR2);
+            list.push_back({f, r2});
+          },
+          [&](size_t e) {
+            sortedDensity_[e] = rho;
+            density[sorted_[e]] = rho;
+            neighbourEnd_[e] = uint32_t(list.size());
+          });
+    }
+  });
+}
+
+void HairInteraction::apply(std::vector<glm::vec3>& predicted, const std::vector<float>& positions, float h) {
+  if (!params_.enabled() || predicted.size() != restDensity_.size() || positions.size() != 3 * predicted.size() ||
+      !(h > 0.0f))
+    return;
+  const size_t count = predicted.size();
+  computeDensities(predicted, density_);
+  const float invH = 1.0f / h;
+  // Pressure and velocity in bucket order, beside the positions.
+  pressure_.resize(count);
+  sortedVelocities_.resize(count);
+  compressed_ = 0;
+  for (size_t e = 0; e < count; ++e) {
+    const uint32_t i = sorted_[e];
+    pressure_[e] = glm::clamp(sortedDensity_[e] / restDensity_[i] - 1.0f, 0.0f, 1.0f);
+    if (pressure_[e] > 0.0f) ++compressed_;
+    sortedVelocities_[e] = (predicted[i] - load(positions.data(), i)) * invH;
+  }
+  push_.resize(count);
+  dv_.resize(count);
+  const float invR = 1.0f / radius_, invR2 = invR * invR;
+  const float volume = glm::clamp(params_.volume, 0.0f, 1.0f), friction = glm::clamp(params_.friction, 0.0f, 1.0f);
+  ThreadPool::shared().parallelFor(0, blockNeighbours_.size(), 1, [&](size_t firstBlock, size_t lastBlock) {
+    for (size_t b = firstBlock; b < lastBlock; ++b) {
+      const std::vector<Neighbour>& list = blockNeighbours_[b];
+      uint32_t k = 0;
+      for (size_t e = b * kBlock, last = std::min(count, (b + 1) * kBlock); e < last; ++e) {
+        const glm::vec3 xi = sortedPositions_[e], vi = sortedVelocities_[e];
+        const float pi = pressure_[e];
+        glm::vec3 push(0.0f), stop(0.0f), drag(0.0f);
+        float sumG = 0.0f, sumW = 0.0f;
+        for (; k < neighbourEnd_[e]; ++k) {
+          const uint32_t f = list[k].particle;
+          const float r2 = list[k].distance2, r = std::sqrt(r2);
+          const float g = (1.0f - r * invR) * (1.0f - r * invR), w = kernel(r2, invR2);
+          const glm::vec3 vj = sortedVelocities_[f];
+          sumG += g;
+          sumW += w;
+          drag += w * (vj - vi);
+          const float q = 0.5f * (pi + pressure_[f]);
+          if (q <= 0.0f || r < 1e-9f) continue;
+          const glm::vec3 u = (xi - sortedPositions_[f]) / r;
+          push += q * g * u;
+          const float approach = glm::dot(vi - vj, u);
+          if (approach < 0.0f) stop -= q * g * approach * u;
+        }
+        const float norm = 1.0f / std::max(1.0f, sumG);
+        push_[e] = volume * radius_ * norm * push;
+        dv_[e] = volume * norm * stop + friction * drag / (1.0f + sumW);
+      }
+    }
+  });
+  for (size_t e = 0; e < count; ++e) {
+    const uint32_t i = sorted_[e];
+    if (i % pointsPerStrand_ == 0) continue;  // roots follow the scalp
+    predicted[i] += push_[e] + h * dv_[e];
+  }
+}
+
+}  // namespace mq
