@@ -1,6 +1,8 @@
-// BM_HairSimStep/<guides>: one 1/60 s step of <guides> strands x 32 particles
-// with the head (ellipsoid) and neck/shoulder capsules as colliders, the head
-// swaying, on the shared thread pool. items_per_second = steps per second.
+// BM_HairSimStep/<guides>/<interaction>: one 1/60 s step of <guides> strands
+// x 32 particles with the head (ellipsoid) and neck/shoulder capsules as
+// colliders, the head swaying, on the shared thread pool; interaction 1: hair
+// against hair on (volume 0.5, friction 0.2). items_per_second = steps per
+// second.
 // BM_HairChildrenFollow/<children>: children following 2,000 guides.
 #include <benchmark/benchmark.h>
 
@@ -59,7 +61,9 @@ glm::mat4 swayingHead(int step) {
 
 void BM_HairSimStep(benchmark::State& state) {
   const mq::HairColliders colliders = headAndShoulders();
-  mq::HairSimulator sim;
+  mq::HairSimParams params;
+  if (state.range(1)) params.interaction = {0.5f, 0.2f, 0.0f};
+  mq::HairSimulator sim(params);
   sim.setRest(headStrands(int(state.range(0)), 12111));
   int step = 0;
   for (int i = 0; i < 30; ++i, ++step) {  // settle onto the head first
@@ -78,7 +82,12 @@ void BM_HairSimStep(benchmark::State& state) {
 }
 // Process CPU time: the cost summed over the pool's threads, which a loaded
 // machine does not inflate the way it inflates wall time.
-BENCHMARK(BM_HairSimStep)->Arg(2000)->Unit(benchmark::kMillisecond)->UseRealTime()->MeasureProcessCPUTime();
+BENCHMARK(BM_HairSimStep)
+    ->Args({2000, 0})
+    ->Args({2000, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
 
 void BM_HairChildrenFollow(benchmark::State& state) {
   const mq::Strands guides = headStrands(2000, 12111);
