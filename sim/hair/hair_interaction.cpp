@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/util/thread_pool.h"
+#include "sim/cloth/collision/proximity.h"
 
 namespace mq {
 
@@ -47,30 +48,8 @@ float meanSegmentLength(const std::vector<float>& points, size_t strandCount, in
 
 // Squared distance between segments [p0, p1] and [q0, q1].
 float segmentDistance2(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& q0, const glm::vec3& q1) {
-  const glm::vec3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
-  const float a = glm::dot(d1, d1), e = glm::dot(d2, d2), f = glm::dot(d2, r);
-  float s = 0.0f, t = 0.0f;
-  if (a <= 1e-12f && e <= 1e-12f) return glm::dot(r, r);
-  if (a <= 1e-12f) {
-    t = glm::clamp(f / e, 0.0f, 1.0f);
-  } else {
-    const float c = glm::dot(d1, r);
-    if (e <= 1e-12f) {
-      s = glm::clamp(-c / a, 0.0f, 1.0f);
-    } else {
-      const float b = glm::dot(d1, d2), denom = a * e - b * b;
-      s = denom > 1e-12f ? glm::clamp((b * f - c * e) / denom, 0.0f, 1.0f) : 0.0f;
-      t = (b * s + f) / e;
-      if (t < 0.0f) {
-        t = 0.0f;
-        s = glm::clamp(-c / a, 0.0f, 1.0f);
-      } else if (t > 1.0f) {
-        t = 1.0f;
-        s = glm::clamp((b - c) / a, 0.0f, 1.0f);
-      }
-    }
-  }
-  const glm::vec3 gap = (p0 + d1 * s) - (q0 + d2 * t);
+  const glm::vec2 st = cloth::closestSegmentParameters(p0, p1, q0, q1);
+  const glm::vec3 gap = (p0 + st.x * (p1 - p0)) - (q0 + st.y * (q1 - q0));
   return glm::dot(gap, gap);
 }
 

@@ -12,24 +12,15 @@
 #include "sim/hair/hair_bake.h"
 #include "sim/hair/hair_interaction.h"
 #include "sim/hair/hair_simulator.h"
+#include "strand_test_util.h"
 
 namespace mq {
 namespace {
 
+using test::addStraightStrand;
+using test::pointOf;
+
 constexpr float kDt = 1.0f / 60.0f;
-
-void addStraightStrand(Strands& strands, glm::vec3 root, glm::vec3 dir, float length) {
-  const int n = strands.pointsPerStrand;
-  for (int i = 0; i < n; ++i) {
-    const glm::vec3 p = root + dir * (length * float(i) / float(n - 1));
-    strands.points.insert(strands.points.end(), {p.x, p.y, p.z});
-  }
-  strands.rootNormals.insert(strands.rootNormals.end(), {dir.x, dir.y, dir.z});
-}
-
-glm::vec3 pointOf(const std::vector<float>& points, size_t i) {
-  return {points[3 * i], points[3 * i + 1], points[3 * i + 2]};
-}
 
 std::vector<glm::vec3> toVec3(const std::vector<float>& points) {
   std::vector<glm::vec3> out(points.size() / 3);

@@ -17,25 +17,15 @@
 #include "sim/hair/hair_bake.h"
 #include "sim/hair/hair_colliders.h"
 #include "sim/hair/hair_simulator.h"
+#include "strand_test_util.h"
 
 namespace mq {
 namespace {
 
+using test::addStraightStrand;
+using test::pointOf;
+
 constexpr float kDt = 1.0f / 60.0f;
-
-glm::vec3 pointOf(const std::vector<float>& points, size_t i) {
-  return {points[3 * i], points[3 * i + 1], points[3 * i + 2]};
-}
-
-// A straight strand of n points from root along dir.
-void addStraightStrand(Strands& strands, glm::vec3 root, glm::vec3 dir, float length) {
-  const int n = strands.pointsPerStrand;
-  for (int i = 0; i < n; ++i) {
-    const glm::vec3 p = root + dir * (length * float(i) / float(n - 1));
-    strands.points.insert(strands.points.end(), {p.x, p.y, p.z});
-  }
-  strands.rootNormals.insert(strands.rootNormals.end(), {dir.x, dir.y, dir.z});
-}
 
 // Strands rooted on the upper half of a sphere at the origin, sticking out
 // along the normal a little, then sideways: gravity drops them on the head.

@@ -325,18 +325,21 @@ QWidget* HairPanel::makeDynamicsGroup() {
          "instead of the exact count of the hair in front of each point"));
   simulate_ = new QCheckBox(tr("Simulate while playing"));
   bake_ = new QPushButton(tr("Bake clip"));
-  // Hair against hair; on the bake's row, so the dock keeps its height.
+  // Hair against hair; on the bake's row, labels inside the boxes and no
+  // taller than the button, so the dock keeps its size (the garments' live
+  // simulation tests are timed by the viewport's size).
   volume_ = addSpin(0.0, 1.0, 0.05, 2);
   volume_->setToolTip(
       tr("How strongly the hair holds its volume: strands pushed together spread back to the groom's "
          "density, so wisps do not pass through each other (0: off)"));
   hairFriction_ = addSpin(0.0, 1.0, 0.05, 2);
   hairFriction_->setToolTip(tr("Friction of hair on hair: sliding strands drag their neighbours (0: off)"));
+  volume_->setPrefix(tr("Volume "));
+  hairFriction_->setPrefix(tr("Friction "));
+  for (QDoubleSpinBox* spin : {volume_, hairFriction_}) spin->setMaximumHeight(bake_->sizeHint().height());
   auto* bakeRow = new QHBoxLayout;
   bakeRow->addWidget(bake_);
-  bakeRow->addWidget(new QLabel(tr("Volume")));
   bakeRow->addWidget(volume_);
-  bakeRow->addWidget(new QLabel(tr("Friction")));
   bakeRow->addWidget(hairFriction_);
   dynamicsLayout->addWidget(handles_);
   dynamicsLayout->addWidget(shadowMaps_);
