@@ -130,6 +130,7 @@ int runSimulate(const std::vector<std::string>& argv) {
   args.allowOnly({"--frames", "--fps", "--stats-json", "--export-dir", "--export-format", "--layers", "--skinning",
                   "--helper-bones", "--regenerate-weights", "--smooth-weights", "--scale", "--auto-rig", "--clip",
                   "--hair-volume", "--hair-friction", "--hair-crossings"});
+  const cli::HairRunOptions hairOptions = cli::hairRunOptions(args);  // checked before anything runs
   const std::string format = args.option("--export-format", "obj");
   if (format != "obj" && format != "pc2") throw Error("--export-format expects obj or pc2");
   const std::string layers = args.option("--layers", "on");
@@ -217,8 +218,7 @@ int runSimulate(const std::vector<std::string>& argv) {
     stats["layers"] = layers == "on";
     stats["max_inside_inner_vertices"] = cloth.garments->maxInsideInnerVertices();
   }
-  if (!scene.document.hair.is_null())
-    cli::simulateSceneHair(scene, frames, fps, exportDir, cli::hairRunOptions(args), stats);
+  if (!scene.document.hair.is_null()) cli::simulateSceneHair(scene, frames, fps, exportDir, hairOptions, stats);
   const std::string statsPath = args.option("--stats-json");
   if (!statsPath.empty()) {
     std::ofstream out(statsPath);
@@ -243,6 +243,6 @@ const cli::Registration reg(
      runSimulate,
      "--hair-volume V, --hair-friction F: hair against hair, 0 to 1 (the style's \"dynamics\"): how strongly\n"
      "the hair holds its volume, and its internal friction. --hair-crossings: count, every frame, the pairs of\n"
-     "guide segments closer than half the guides' root spacing (hair passing through hair) into the stats."});
+     "guide segments closer than half the guides' root spacing into the stats, beside the groom's own count."});
 
 }  // namespace

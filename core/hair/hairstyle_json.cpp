@@ -166,6 +166,7 @@ json toJson(const HairShadingParams& s) {
 
 HairDynamicsParams hairDynamicsFromJson(const json& j, const HairDynamicsParams& base, const std::string& path) {
   const JsonFields f(j, path);
+  f.allowOnly({"volume", "friction"});
   HairDynamicsParams d = base;
   d.volume = f.number("volume", d.volume, 0.0, 1.0);
   d.friction = f.number("friction", d.friction, 0.0, 1.0);

@@ -13,12 +13,25 @@ namespace {
 
 glm::vec3 load(const float* a, size_t i) { return {a[3 * i], a[3 * i + 1], a[3 * i + 2]}; }
 
+// A share k taken once per 1/60 s, for a substep of h: the same share is
+// left after 1/60 s whatever the substep (as the simulator's stiffnesses).
+float sharePerSubstep(float k, float h) {
+  k = glm::clamp(k, 0.0f, 1.0f);
+  return 1.0f - std::pow(1.0f - k, h * 60.0f);
+}
+
 float kernel(float r2, float invR2) {
   const float t = 1.0f - r2 * invR2;
   return t > 0.0f ? t * t * t : 0.0f;
 }
 
-glm::ivec3 cellOf(const glm::vec3& p, float invCell) { return glm::ivec3(glm::floor(p * invCell)); }
+// Coordinates far out (or not finite: a broken simulation) share the
+// outermost cells instead of overflowing.
+glm::ivec3 cellOf(const glm::vec3& p, float invCell) {
+  glm::vec3 c = glm::floor(p * invCell);
+  for (int k = 0; k < 3; ++k) c[k] = std::isfinite(c[k]) ? glm::clamp(c[k], -1.0e9f, 1.0e9f) : 0.0f;
+  return glm::ivec3(c);
+}
 
 uint32_t hashCell(const glm::ivec3& c, uint32_t mask) {
   return (uint32_t(c.x) * 73856093u ^ uint32_t(c.y) * 19349663u ^ uint32_t(c.z) * 83492791u) & mask;
@@ -81,17 +94,36 @@ struct BucketGrid {
 
 float meanRootSpacing(const std::vector<float>& points, size_t strandCount, int pointsPerStrand) {
   if (strandCount < 2) return 0.0f;
-  double sum = 0.0;
+  std::vector<glm::vec3> roots(strandCount);
+  glm::vec3 lo(INFINITY), hi(-INFINITY);
   for (size_t s = 0; s < strandCount; ++s) {
-    const glm::vec3 root = load(points.data(), s * pointsPerStrand);
-    float nearest = INFINITY;
-    for (size_t o = 0; o < strandCount; ++o) {
-      if (o == s) continue;
-      const glm::vec3 d = load(points.data(), o * pointsPerStrand) - root;
-      nearest = std::min(nearest, glm::dot(d, d));
-    }
-    sum += std::sqrt(nearest);
+    roots[s] = load(points.data(), s * pointsPerStrand);
+    lo = glm::min(lo, roots[s]);
+    hi = glm::max(hi, roots[s]);
   }
+  // Cells of about two spacings of roots spread over a surface; a root whose
+  // nearest neighbour is not within one cell is searched among all.
+  const glm::vec3 extent = hi - lo;
+  const float cell = std::max(2.0f * std::max({extent.x, extent.y, extent.z}) / std::sqrt(float(strandCount)), 1e-6f);
+  BucketGrid grid;
+  grid.build(roots, cell);
+  std::vector<float> nearest(strandCount);
+  ThreadPool::shared().parallelFor(0, strandCount, 256, [&](size_t begin, size_t end) {
+    uint32_t buckets[27];
+    for (size_t s = begin; s < end; ++s) {
+      float best = INFINITY;
+      const int count = neighbourBuckets(cellOf(roots[s], grid.invCell), grid.mask, buckets);
+      for (int b = 0; b < count; ++b)
+        for (uint32_t e = grid.start[buckets[b]]; e < grid.start[buckets[b] + 1]; ++e)
+          if (grid.sorted[e] != s) best = std::min(best, glm::length(roots[grid.sorted[e]] - roots[s]));
+      if (!(best <= cell))
+        for (size_t o = 0; o < strandCount; ++o)
+          if (o != s) best = std::min(best, glm::length(roots[o] - roots[s]));
+      nearest[s] = best;
+    }
+  });
+  double sum = 0.0;
+  for (float d : nearest) sum += d;
   return float(sum / double(strandCount));
 }
 
@@ -260,7 +292,7 @@ void HairInteraction::apply(std::vector<glm::vec3>& predicted, const std::vector
   push_.resize(count);
   dv_.resize(count);
   const float invR = 1.0f / radius_, invR2 = invR * invR;
-  const float volume = glm::clamp(params_.volume, 0.0f, 1.0f), friction = glm::clamp(params_.friction, 0.0f, 1.0f);
+  const float volume = sharePerSubstep(params_.volume, h), friction = sharePerSubstep(params_.friction, h);
   ThreadPool::shared().parallelFor(0, blockNeighbours_.size(), 1, [&](size_t firstBlock, size_t lastBlock) {
     for (size_t b = firstBlock; b < lastBlock; ++b) {
       const std::vector<Neighbour>& list = blockNeighbours_[b];

@@ -27,8 +27,8 @@
 namespace mq {
 
 struct HairInteractionParams {
-  float volume = 0.0f;    // share of the excess density pushed back per substep (0 off .. 1)
-  float friction = 0.0f;  // share of the neighbours' relative velocity taken per substep (0 .. 1)
+  float volume = 0.0f;    // share of the excess density pushed back per 1/60 s (0 off .. 1)
+  float friction = 0.0f;  // share of the neighbours' relative velocity taken per 1/60 s (0 .. 1)
   float radius = 0.0f;    // kernel radius R in metres; 0: from the guides' spacing and segment length
   bool enabled() const { return volume > 0.0f || friction > 0.0f; }
 };

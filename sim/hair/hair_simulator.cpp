@@ -72,10 +72,11 @@ void HairSimulator::setRest(const Strands& guides) {
 }
 
 void HairSimulator::setParams(const HairSimParams& params) {
-  const bool radiusChanged = params.interaction.radius != params_.interaction.radius;
+  // A new radius needs new rest densities, even while the interaction is off.
+  if (params.interaction.radius != params_.interaction.radius) interactionReady_ = false;
   params_ = params;
   if (!params_.interaction.enabled() || strandCount_ == 0) return;
-  if (!interactionReady_ || radiusChanged) {
+  if (!interactionReady_) {
     interaction_.setRest(rest_.points, strandCount_, pointsPerStrand_, params_.interaction);
     interactionReady_ = true;
   } else {

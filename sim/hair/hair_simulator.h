@@ -72,7 +72,9 @@ class HairSimulator {
   const std::vector<float>& positions() const { return positions_; }
   const std::vector<float>& velocities() const { return velocities_; }
   // The hair-hair kernel radius in use (0 while the interaction is off).
-  float interactionRadius() const { return interactionReady_ ? interaction_.radius() : 0.0f; }
+  float interactionRadius() const {
+    return interactionReady_ && params_.interaction.enabled() ? interaction_.radius() : 0.0f;
+  }
   // Per particle: the rotation that carries the strand's rest shape around
   // that particle to its current shape (the root frame times accumulated
   // bending). Children use it to follow their guide.

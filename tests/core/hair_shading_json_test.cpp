@@ -68,6 +68,7 @@ TEST(HairDynamicsJson, AbsentMeansOffReadWrittenAndBadValuesNamed) {
   }
   EXPECT_THROW(hairStyleFromJson(json{{"dynamics", {{"friction", -0.1}}}}), Error);
   EXPECT_THROW(hairStyleFromJson(json{{"dynamics", 0.5}}), Error);
+  EXPECT_THROW(hairStyleFromJson(json{{"dynamics", {{"frction", 0.2}}}}), Error);  // a typo is not ignored
 }
 
 }  // namespace

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <random>
 
 #include "core/hair/hairstyle.h"
 #include "core/hair/strands.h"
@@ -218,6 +220,49 @@ TEST(HairInteraction, TheStyleDynamicsReachTheSimulator) {
   sim.setRest(strands);
   EXPECT_NEAR(sim.interactionRadius(), 0.006f, 1e-6f);
   EXPECT_EQ(HairSimulator(characterHairParams()).interactionRadius(), 0.0f);
+}
+
+// The radius may change while the interaction is off; turning it back on
+// uses the new one.
+TEST(HairInteraction, ARadiusSetWhileOffIsUsedWhenTurnedOn) {
+  Strands strands;
+  strands.pointsPerStrand = 11;
+  addStraightStrand(strands, {0, 0, 0}, {0, -1, 0}, 0.1f);
+  addStraightStrand(strands, {0.003f, 0, 0}, {0, -1, 0}, 0.1f);
+  HairSimParams params;
+  params.interaction.volume = 0.5f;
+  HairSimulator sim(params);
+  sim.setRest(strands);
+  EXPECT_NEAR(sim.interactionRadius(), 0.006f, 1e-6f);
+  params.interaction = {0.0f, 0.0f, 0.02f};
+  sim.setParams(params);
+  EXPECT_EQ(sim.interactionRadius(), 0.0f);  // off
+  params.interaction.volume = 0.5f;
+  sim.setParams(params);
+  EXPECT_EQ(sim.interactionRadius(), 0.02f);
+}
+
+TEST(HairInteraction, RootSpacingFromTheGridMatchesTheNearestOfAll) {
+  Strands strands;
+  strands.pointsPerStrand = 2;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> uniform(-1.0f, 1.0f);
+  while (strands.strandCount() < 3000) {
+    const glm::vec3 d(uniform(rng), uniform(rng), uniform(rng));
+    if (glm::length(d) < 0.1f || glm::length(d) > 1.0f || d.y < 0.0f) continue;
+    addStraightStrand(strands, 0.1f * glm::normalize(d), glm::normalize(d), 0.01f);
+  }
+  addStraightStrand(strands, {0.5f, 0.5f, 0.5f}, {0, 1, 0}, 0.01f);  // a lone root far from the rest
+  const size_t count = strands.strandCount();
+  double sum = 0.0;
+  for (size_t s = 0; s < count; ++s) {
+    float nearest = INFINITY;
+    for (size_t o = 0; o < count; ++o)
+      if (o != s)
+        nearest = std::min(nearest, glm::length(pointOf(strands.points, 2 * o) - pointOf(strands.points, 2 * s)));
+    sum += nearest;
+  }
+  EXPECT_NEAR(meanRootSpacing(strands.points, count, 2), float(sum / double(count)), 1e-6f);
 }
 
 }  // namespace
