@@ -183,7 +183,9 @@ void HairInteraction::setRest(const std::vector<float>& restPoints, size_t stran
   }
   std::vector<glm::vec3> rest(restPoints.size() / 3);
   for (size_t i = 0; i < rest.size(); ++i) rest[i] = load(restPoints.data(), i);
-  computeDensities(rest, restDensity_);
+  computeDensities(rest);
+  restDensity_.resize(rest.size());
+  for (size_t e = 0; e < rest.size(); ++e) restDensity_[sorted_[e]] = sortedDensity_[e];
   const float floor = kernel(0.25f, 1.0f);  // W(R/2)
   for (float& rho : restDensity_) rho = std::max(rho, floor);
 }
@@ -240,13 +242,11 @@ void HairInteraction::forNeighbourRange(size_t begin, size_t end, Each&& each, V
   }
 }
 
-// Densities in bucket order (sortedDensity_) and, into `density`, per
-// particle; each block of particles keeps its particles' neighbour lists for
-// apply().
-void HairInteraction::computeDensities(const std::vector<glm::vec3>& positions, std::vector<float>& density) {
+// Densities in bucket order (sortedDensity_); each block of particles keeps
+// its particles' neighbour lists for apply().
+void HairInteraction::computeDensities(const std::vector<glm::vec3>& positions) {
   buildGrid(positions);
   const size_t count = positions.size();
-  density.assign(count, 0.0f);
   sortedDensity_.assign(count, 0.0f);
   neighbourEnd_.resize(count);
   const size_t blocks = (count + kBlock - 1) / kBlock;
@@ -265,7 +265,6 @@ void HairInteraction::computeDensities(const std::vector<glm::vec3>& positions, 
           },
           [&](size_t e) {
             sortedDensity_[e] = rho;
-            density[sorted_[e]] = rho;
             neighbourEnd_[e] = uint32_t(list.size());
           });
     }
@@ -277,7 +276,7 @@ void HairInteraction::apply(std::vector<glm::vec3>& predicted, const std::vector
       !(h > 0.0f))
     return;
   const size_t count = predicted.size();
-  computeDensities(predicted, density_);
+  computeDensities(predicted);
   const float invH = 1.0f / h;
   // Pressure and velocity in bucket order, beside the positions.
   pressure_.resize(count);

@@ -55,7 +55,7 @@ class HairInteraction {
   void buildGrid(const std::vector<glm::vec3>& positions);
   template <class Each, class Visit, class Done>
   void forNeighbourRange(size_t begin, size_t end, Each&& each, Visit&& visit, Done&& done) const;
-  void computeDensities(const std::vector<glm::vec3>& positions, std::vector<float>& density);
+  void computeDensities(const std::vector<glm::vec3>& positions);
 
   HairInteractionParams params_;
   size_t strandCount_ = 0;
@@ -75,8 +75,8 @@ class HairInteraction {
   static constexpr size_t kBlock = 1024;
   std::vector<std::vector<Neighbour>> blockNeighbours_;
   std::vector<uint32_t> neighbourEnd_;
-  // Scratch of apply(), in bucket order except density_.
-  std::vector<float> density_, sortedDensity_, pressure_;
+  // Scratch of apply(), in bucket order.
+  std::vector<float> sortedDensity_, pressure_;
   std::vector<glm::vec3> sortedVelocities_, push_, dv_;
   size_t compressed_ = 0;
 };
