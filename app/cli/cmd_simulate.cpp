@@ -38,7 +38,8 @@ struct RunResult {
   double seconds = 0.0;
   double cpuSeconds = 0.0;  // process CPU time (all threads), for a loaded machine
   float maxStretch = 1.0f;
-  int maxPenetrating = 0;  // the most cloth vertices inside the body in any frame
+  int maxStretchFrame = 0;  // the frame (from 1) where the cloth stretched most
+  int maxPenetrating = 0;   // the most cloth vertices inside the body in any frame
   long long solverIterations = 0;
   int substeps = 0;
   double poseSeconds = 0.0;                           // posing the character (skinning) for the frames
@@ -91,7 +92,7 @@ RunResult run(SceneCloth& cloth, PosedBody& body, float startTime, bool animateB
     if (cloth.garments) cloth.garments->measureFrame();
     if (f == 0) r.rssAfterFirstFrame = residentMegabytes();
     const cli::ClothNow now = cloth.now();
-    r.maxStretch = std::max(r.maxStretch, now.maxStretch);
+    if (now.maxStretch > r.maxStretch) r.maxStretch = now.maxStretch, r.maxStretchFrame = f + 1;
     r.maxPenetrating = std::max(r.maxPenetrating, now.penetratingVertices);
     if (exportDir.empty()) continue;
     if (exported.pointCache) {
@@ -197,6 +198,7 @@ int runSimulate(const std::vector<std::string>& argv) {
                 {"ms_per_frame", 1000.0 * r.seconds / frames},
                 {"cpu_ms_per_frame", 1000.0 * r.cpuSeconds / frames},
                 {"max_stretch", r.maxStretch},
+                {"max_stretch_frame", r.maxStretchFrame},
                 {"final_max_stretch", now.maxStretch},
                 {"penetrating_vertices", now.penetratingVertices},
                 {"max_penetrating_vertices", r.maxPenetrating},

@@ -221,7 +221,8 @@ void ClothSimulator::step(float dt) {
     stats_.solverResidual = 0.0f;
     limitHeld_ = true;
     // The last try may spend 20 times the passes on the limit.
-    passBudget_ = settings_.stretchIterations * (substeps * 2 > settings_.maxRefinement * baseSubsteps ? 20 : 1);
+    lastTry_ = substeps * 2 > settings_.maxRefinement * baseSubsteps;
+    passBudget_ = settings_.stretchIterations * (lastTry_ ? 20 : 1);
     if (!body_.empty()) body_.restartStep();
     for (int k = 0; k < substeps; ++k) substep(h, float(k + 1) / float(substeps), k == 0);
     if (limitHeld_ || substeps >= settings_.maxRefinement * baseSubsteps) break;
@@ -274,6 +275,8 @@ void ClothSimulator::substep(float h, float bodyFraction, bool firstOfStep) {
       (!colliders_.empty() || !body_.empty() || innerSurface_)) {
     const PhaseTimer timer(stats_, ClothPhase::LimitAfterContacts);
     held = limitStretchAfterContacts(h);
+    // Pinched cloth on the last try: the limit wins over the contacts.
+    if (!held && lastTry_) held = limitStretchOverContacts(h);
   }
   const PhaseTimer timer(stats_, ClothPhase::Finish);
   limitHeld_ = limitHeld_ && held;
@@ -355,6 +358,18 @@ bool ClothSimulator::limitStretchAfterContacts(float h) {
   const ContactAwareLimitResult r = limitStretchAroundContacts(state_, contacts, stretchLimiter_, limit);
   stats_.stretchPasses += r.passes;
   return r.held;
+}
+
+// Cloth pinched between two body parts cannot keep both its contacts and
+// its length (more substeps change nothing: the parts squeeze it in every
+// one). On the step's last try the length wins: the pinched vertices may
+// end this substep a little inside a part, and the next substep's
+// collisions push them out again, while the fabric never stretches past
+// the limit.
+bool ClothSimulator::limitStretchOverContacts(float h) {
+  const StretchLimitResult r = stretchLimiter_.limitByPositions(state_, activeMaxStretch(), passBudget_, h);
+  stats_.stretchPasses += r.passes;
+  return r.maxStretchAfter <= activeMaxStretch();
 }
 
 void ClothSimulator::sewSeams(const std::vector<std::pair<uint32_t, uint32_t>>& seams, float closingSpeed,

@@ -197,6 +197,7 @@ class ClothSimulator {
   void collideWithColliders();
   void collideWithInnerSurface(float fraction);  // cloth_simulator_layers.cpp
   bool limitStretchAfterContacts(float h);
+  bool limitStretchOverContacts(float h);
   void checkFinite(const char* where) const;
   void updateStats();
   Pin* findPin(uint32_t vertex);
@@ -240,6 +241,7 @@ class ClothSimulator {
   ClothStats stats_;
   mutable int penetrating_ = -1;  // penetratingVertices() since the last change; -1: not counted
   bool limitHeld_ = true;         // the elongation limit held in every substep of this try
+  bool lastTry_ = false;          // this try cannot be redone with more substeps
   int passBudget_ = 100;          // elongation-limit passes per call in this try
 };
 
