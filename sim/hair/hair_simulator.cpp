@@ -246,8 +246,19 @@ void HairSimulator::solveStrand(size_t s, float h, const RootTarget& root, const
         const float dl = glm::length(d);
         if (dl > 1e-9f) q = p[i] + d * (length / dl);
       }
-      // (q found outside and not moved since: nothing left to push.)
-      if (!outside && body->pushOut(q, normal[i + 1])) contact[i + 1] = 1;
+      // Still in (the segment points deep into the body, and each pass
+      // only halves the way in): along the surface instead, the inward part
+      // of the segment taken off (again for each surface met, in the crease
+      // between two colliders), so the last push-out moves the point by the
+      // surface's curvature only and the length nearly holds.
+      for (int pass = 0; pass < 4 && !outside; ++pass) {
+        const glm::vec3 n = normal[i + 1];
+        glm::vec3 d = q - p[i];
+        d -= std::min(0.0f, glm::dot(d, n)) * n;
+        const float dl = glm::length(d);
+        if (dl > 1e-9f) q = p[i] + d * (length / dl);
+        outside = !body->pushOut(q, normal[i + 1]);
+      }
     }
     correction[i + 1] = q - p[i + 1];
     p[i + 1] = q;

@@ -306,13 +306,14 @@ TEST(HairSim, ProxiesFitASkinnedCharacter) {
   EXPECT_NEAR(glm::length(p - headCenter), 0.1f, 0.007f);
 }
 
-// The default hairstyle's guides on the default mannequin, the head shaken
-// hard (+-40 degrees at 3 Hz about two axes): no particle ends inside the
-// head or body colliders, lengths hold, everything stays finite.
-TEST(HairSim, DefaultMannequinGuidesStayOutOfTheBodyWhenTheHeadShakes) {
+// Each built-in hairstyle's guides on the default mannequin, the head
+// shaken hard (+-40 degrees at 3 Hz about two axes): no particle ends inside
+// the head or body colliders, lengths hold, everything stays finite.
+void shakeTheDefaultMannequinsHead(const std::string& style) {
+  SCOPED_TRACE(style);
   const Character character = makeDefaultMannequin();
   const std::unique_ptr<HairGroom> groom = makeCharacterGroom(character, ScalpRegion{});
-  groom->grow(builtinHairStyle(builtinHairStyleNames().front()), 3000);
+  groom->grow(builtinHairStyle(style), 3000);
   const Strands guides = leadingStrands(groom->strands(), groom->guideCount());
   ASSERT_GT(guides.strandCount(), 100u);
   const HairRig rig = HairRig::fromProxy(character, groom->proxy());
@@ -322,6 +323,7 @@ TEST(HairSim, DefaultMannequinGuidesStayOutOfTheBodyWhenTheHeadShakes) {
   sim.setRest(guides);
   std::vector<glm::mat4> worldFromBone;
   size_t inside = 0;
+  float worstSegment = 0.0f;
   for (int step = 0; step < 120; ++step) {
     Pose pose = character.skeleton.restPose();
     const float swing = std::sin(2.0f * float(M_PI) * 3.0f * float(step) * kDt);
@@ -330,6 +332,7 @@ TEST(HairSim, DefaultMannequinGuidesStayOutOfTheBodyWhenTheHeadShakes) {
     character.skeleton.worldTransforms(pose, worldFromBone);
     const PosedHairColliders body = rig.body.posed(worldFromBone, sim.params().collisionMargin);
     sim.step(kDt, rig.posedFromRest(worldFromBone), &body);
+    worstSegment = std::max(worstSegment, maxSegmentError(sim));
     if (step % 10 != 9) continue;
     const PosedHairColliders bare = rig.body.posed(worldFromBone);
     for (size_t s = 0; s < sim.strandCount(); ++s)
@@ -338,23 +341,16 @@ TEST(HairSim, DefaultMannequinGuidesStayOutOfTheBodyWhenTheHeadShakes) {
   }
   EXPECT_EQ(inside, 0u);
   for (float x : sim.positions()) ASSERT_TRUE(std::isfinite(x));
-  // Every strand keeps its length within 1%. A segment lying in the crease
-  // where two colliders meet (shoulder and chest) cannot be both outside and
-  // at rest length: a few are compressed, so count those beyond 2%.
-  const int n = sim.pointsPerStrand();
-  size_t offSegments = 0;
-  for (size_t s = 0; s < sim.strandCount(); ++s) {
-    const float rest = strandLength(sim.rest().points, s, n), now = strandLength(sim.positions(), s, n);
-    EXPECT_NEAR(now, rest, 0.01f * rest) << "strand " << s;
-    for (int i = 1; i < n; ++i) {
-      const size_t k = s * n + i;
-      const float r = glm::length(pointOf(sim.rest().points, k) - pointOf(sim.rest().points, k - 1));
-      const float d = glm::length(pointOf(sim.positions(), k) - pointOf(sim.positions(), k - 1));
-      if (std::abs(d - r) > 0.02f * r) ++offSegments;
-    }
-  }
-  EXPECT_LT(double(offSegments), 0.005 * double(sim.strandCount() * (n - 1)));
-  EXPECT_LT(maxSegmentError(sim), 0.2f);
+  // Every segment keeps its length within 1% at every step, even where it
+  // lies in the crease between two colliders (shoulder and chest) or its
+  // groomed shape dives into the head (curls): there it slides along the
+  // surfaces rather than being pushed off them shortened or stretched (up to
+  // 38% before).
+  EXPECT_LT(worstSegment, 0.01f);
+}
+
+TEST(HairSim, DefaultMannequinGuidesStayOutOfTheBodyWhenTheHeadShakes) {
+  for (const std::string& style : builtinHairStyleNames()) shakeTheDefaultMannequinsHead(style);
 }
 
 TEST(HairSim, BakeReportsProgressAndStopsWhenCancelled) {
