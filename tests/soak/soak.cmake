@@ -1,4 +1,5 @@
-# Long runs stay finite, within the stretch limit, and flat in memory.
+# Long runs stay finite, within the stretch limit (cloth: 1.10; hair
+# segments: 10 %), and flat in memory.
 #   cmake -DCLI=mannequin-cli -DSCENES=resources/scenes -DWORK=DIR [-DSTEPS=N]
 #         [-DHAIR_FRAMES=N] [-DOUTFIT_FRAMES=N] [-DFABRICS=a;b] [-DINTEGRATORS=a;b]
 #         [-DSTYLES=a;b] -P soak.cmake
@@ -72,6 +73,14 @@ function(soak name scene frames)
     string(APPEND report " max stretch ${stretch};")
     if(stretch GREATER 1.1005)
       string(APPEND problems " max stretch ${stretch} above 1.10;")
+    endif()
+  endif()
+  # Hair: a guide segment's length may change by at most 10 % either way.
+  string(JSON hair_error ERROR_VARIABLE none GET "${json}" hair_max_length_error)
+  if(NOT hair_error MATCHES "NOTFOUND" AND NOT hair_error STREQUAL "")
+    string(APPEND report " hair max length error ${hair_error};")
+    if(hair_error GREATER 0.1005)
+      string(APPEND problems " hair segment length error ${hair_error} above 0.10;")
     endif()
   endif()
   message(STATUS "${report}")
