@@ -43,7 +43,7 @@ namespace {
 struct StrandArrays {
   vtkSmartPointer<vtkPoints> points;
   vtkSmartPointer<vtkCellArray> lines;
-  vtkSmartPointer<vtkFloatArray> tangents, volumeNormals, params;
+  vtkSmartPointer<vtkFloatArray> tangents, volumeNormals, params, tints;
   vtkSmartPointer<vtkPolyData> polyData;
 };
 
@@ -150,6 +150,77 @@ vtkSmartPointer<vtkFloatArray> strandParams(const Strands& strands, size_t first
   return params;
 }
 
+// Per strand, its painted pigments' colour against the style's, per
+// channel: the ratio of the fibres' mean albedos (hairMeanAlbedo). The
+// lobes keep the style's shapes; the colour of what the pigments absorb
+// follows the paint. Albedos on a 0.25 lattice of concentrations, computed
+// where the paint needs them, interpolated between.
+class PigmentTints {
+ public:
+  // Divided by the lattice's albedo at the style's pigments (not the exact
+  // one), so an unpainted strand's tint is exactly 1.
+  explicit PigmentTints(const HairShadingParams& style)
+      : styleAlbedo_(glm::max(albedoAt(style.melanin, style.pheomelanin), glm::vec3(1e-4f))) {}
+
+  glm::vec3 tint(float eumelanin, float pheomelanin) { return albedoAt(eumelanin, pheomelanin) / styleAlbedo_; }
+
+ private:
+  static constexpr float kStep = 0.25f;
+  static constexpr int kNodes = 33;  // 0 .. 8
+
+  glm::vec3 albedoAt(float eumelanin, float pheomelanin) {
+    const float x = std::clamp(eumelanin / kStep, 0.0f, float(kNodes - 1));
+    const float y = std::clamp(pheomelanin / kStep, 0.0f, float(kNodes - 1));
+    const int i = std::min(int(x), kNodes - 2), j = std::min(int(y), kNodes - 2);
+    const float fx = x - float(i), fy = y - float(j);
+    const glm::vec3 a = glm::mix(node(i, j), node(i + 1, j), fx), b = glm::mix(node(i, j + 1), node(i + 1, j + 1), fx);
+    return glm::mix(a, b, fy);
+  }
+  static glm::vec3 albedo(const optics::HairPigment& pigment) {
+    optics::HairFibre fibre;
+    fibre.sigmaA = optics::hairSigmaAFromPigment(pigment);
+    const optics::Rgb a = optics::hairMeanAlbedo(fibre);
+    return {float(a[0]), float(a[1]), float(a[2])};
+  }
+  const glm::vec3& node(int i, int j) {
+    std::optional<glm::vec3>& n = nodes_[size_t(i * kNodes + j)];
+    if (!n) n = albedo({kStep * i, kStep * j});
+    return *n;
+  }
+
+  std::vector<std::optional<glm::vec3>> nodes_ = std::vector<std::optional<glm::vec3>>(kNodes * kNodes);
+  glm::vec3 styleAlbedo_;
+};
+
+// Each strand's tint (3 floats), empty when none is painted.
+std::vector<float> strandTints(const Strands& strands, const HairShadingParams& style) {
+  const size_t count = strands.strandCount();
+  if (strands.pigmentPaint.size() != 4 * count) return {};
+  PigmentTints tints(style);
+  std::vector<float> out(3 * count);
+  for (size_t s = 0; s < count; ++s) {
+    const float* paint = &strands.pigmentPaint[4 * s];
+    const glm::vec3 t = tints.tint(paint[0] * style.melanin + paint[1], paint[2] * style.pheomelanin + paint[3]);
+    for (int c = 0; c < 3; ++c) out[3 * s + c] = t[c];
+  }
+  return out;
+}
+
+// Tints of strands first, first + stride, ... per point (1 without `tints`).
+vtkSmartPointer<vtkFloatArray> strandTintArray(const Strands& strands, size_t first, size_t stride,
+                                               const std::vector<float>& tints) {
+  const int n = std::max(strands.pointsPerStrand, 0);
+  const size_t taken = takenCount(strands.strandCount(), first, stride);
+  auto array = newPointArray("hairTint", taken * n);
+  float* q = array->GetPointer(0);
+  for (size_t j = 0; j < taken; ++j) {
+    const size_t s = first + j * stride;
+    for (int i = 0; i < n; ++i)
+      for (int c = 0; c < 3; ++c) q[3 * (j * n + i) + c] = tints.empty() ? 1.0f : tints[3 * s + c];
+  }
+  return array;
+}
+
 void assemble(StrandArrays& arrays) {
   arrays.polyData = vtkSmartPointer<vtkPolyData>::New();
   arrays.polyData->SetPoints(arrays.points);
@@ -157,13 +228,15 @@ void assemble(StrandArrays& arrays) {
   arrays.polyData->GetPointData()->AddArray(arrays.tangents);
   arrays.polyData->GetPointData()->SetNormals(arrays.volumeNormals);
   arrays.polyData->GetPointData()->AddArray(arrays.params);
+  arrays.polyData->GetPointData()->AddArray(arrays.tints);
 }
 
 // Points, tangents (central differences) and volume normals (away from
 // `centroid`: which side of the hair volume a point is on) of strands first,
 // first + stride, ...; `lines` when the layout is known already.
 StrandArrays strandArrays(const Strands& strands, size_t first, size_t stride, const glm::vec3& centroid,
-                          vtkSmartPointer<vtkFloatArray> params, vtkSmartPointer<vtkCellArray> lines = nullptr) {
+                          vtkSmartPointer<vtkFloatArray> params, vtkSmartPointer<vtkFloatArray> tints,
+                          vtkSmartPointer<vtkCellArray> lines = nullptr) {
   const int n = std::max(strands.pointsPerStrand, 0);
   const size_t taken = takenCount(strands.strandCount(), first, stride);
   const size_t count = taken * size_t(n);
@@ -174,6 +247,7 @@ StrandArrays strandArrays(const Strands& strands, size_t first, size_t stride, c
   arrays.tangents = newPointArray("hairTangent", count);
   arrays.volumeNormals = newPointArray("hairVolumeNormal", count);  // set as the point normals
   arrays.params = std::move(params);
+  arrays.tints = std::move(tints);
   arrays.lines = lines ? lines : consecutiveLines(taken, n);
   float* p = static_cast<vtkFloatArray*>(arrays.points->GetData())->GetPointer(0);
   float* t = arrays.tangents->GetPointer(0);
@@ -202,17 +276,20 @@ StrandArrays strandArrays(const Strands& strands, size_t first, size_t stride, c
   return arrays;
 }
 
-// The chunks of `strands` (`layout`'s lines and parameters when given: the
-// same strands moved).
+// The chunks of `strands` (`layout`'s lines, parameters and tints when
+// given: the same strands moved).
 std::vector<StrandArrays> strandChunks(const Strands& strands, const std::vector<float>& shadow,
+                                       const std::vector<float>& tints,
                                        const std::vector<StrandArrays>* layout = nullptr) {
   const size_t chunkCount = chunkCountFor(strands.strandCount());
   const glm::vec3 centroid = centroidOf(strands);
   std::vector<StrandArrays> chunks(chunkCount);
   ThreadPool::shared().parallelFor(0, chunkCount, 1, [&](size_t begin, size_t end) {
     for (size_t c = begin; c < end; ++c)
-      chunks[c] = layout ? strandArrays(strands, c, chunkCount, centroid, (*layout)[c].params, (*layout)[c].lines)
-                         : strandArrays(strands, c, chunkCount, centroid, strandParams(strands, c, chunkCount, shadow));
+      chunks[c] = layout ? strandArrays(strands, c, chunkCount, centroid, (*layout)[c].params, (*layout)[c].tints,
+                                        (*layout)[c].lines)
+                         : strandArrays(strands, c, chunkCount, centroid, strandParams(strands, c, chunkCount, shadow),
+                                        strandTintArray(strands, c, chunkCount, tints));
   });
   return chunks;
 }
@@ -229,7 +306,7 @@ std::shared_ptr<const HairGeometry> HairActor::prepareGeometry(std::shared_ptr<c
     shadow = optics::hairSelfShadow(*strands, *towardLight, shading.shadowSettings());
     geometry->shadowLight = *towardLight;
   }
-  geometry->chunks = strandChunks(*strands, shadow);
+  geometry->chunks = strandChunks(*strands, shadow, strandTints(*strands, shading.fibre));
   geometry->strands = std::move(strands);
   return geometry;
 }
@@ -351,6 +428,7 @@ void HairActor::Impl::show(std::shared_ptr<const HairGeometry> shown) {
     m->ScalarVisibilityOff();
     m->MapDataArrayToVertexAttribute("hairTangentMC", "hairTangent", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
     m->MapDataArrayToVertexAttribute("hairParamsMC", "hairParams", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+    m->MapDataArrayToVertexAttribute("hairTintMC", "hairTint", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
     mapper->chunkMappers.push_back(m);
   }
   for (size_t c = 0; c < mapper->chunkMappers.size(); ++c)
@@ -468,7 +546,7 @@ void HairActor::updatePositions(const std::vector<float>& points) {
   strands->points = points;
   auto moved = std::make_shared<HairGeometry>(*old);
   moved->shadowStale = true;
-  moved->chunks = strandChunks(*strands, {}, &old->chunks);
+  moved->chunks = strandChunks(*strands, {}, {}, &old->chunks);
   moved->strands = std::move(strands);
   impl_->show(std::move(moved));
 }

@@ -6,7 +6,8 @@
 //    tangents): a white primary shifted toward the tip and a broader
 //    secondary tinted with the hair colour and shifted toward the root
 //    (optional);
-//  - colour blended from root to tip with a small per-strand variation;
+//  - colour blended from root to tip with a small per-strand variation,
+//    tinted where the strands' pigments are painted (below);
 //  - transparency at the tips (screen-door, so it needs no sorting);
 //  - self-shadowing: a per-vertex term computed on the CPU
 //    (core/optics/hair_self_shadow.h) for the view's key light.
@@ -23,6 +24,13 @@
 // light scattered between fibres (hairVolumeReflectance). Its colour comes from the pigments;
 // the root and tip colours are not used. The same self-shadowing and tip
 // transparency as Kajiya-Kay.
+//
+// Painted pigments (Strands::pigmentPaint, the groom's paint_melanin and
+// paint_pheomelanin maps) tint each strand by the ratio of its fibre's mean
+// albedo to the style's, per channel: all but the R lobe for the physical
+// fibre, the colours for Kajiya-Kay. The lobes keep the style's shapes (the
+// azimuthal table is the style's). The tints are computed with the fibre
+// the actor has when the arrays are built: set it (setFibre) first.
 //
 // The arrays it draws (HairGeometry) are built by static functions that touch
 // no VTK object already shown, so an editor can build them on a worker thread

@@ -12,6 +12,7 @@ std::string physicalHairFragmentDec() {
   return std::string(R"(//VTK::Normal::Dec
 in vec3 hairTangentVC;
 in vec3 hairParams;  // x: 0 root .. 1 tip, y: self-shadow, z: per-strand random
+in vec3 hairTint;    // the painted pigments' colour against the style's (1: unpainted)
 const int kHairPhi = )") +
          std::to_string(kTablePhi) + R"(;
 const int kHairTheta = )" +
@@ -56,7 +57,9 @@ const char* const kPhysicalHairLighting = R"(
     float cosO = sqrt(max(0.0, 1.0 - sinO * sinO));
     vec3 Vp = V - sinO * T;
     // Ambient: light from all around, times the share the fibre sends back.
-    vec3 color = hairAmbient * hairAlbedo;
+    // Painted pigments tint what the fibre absorbs from (all but R, the
+    // surface reflection).
+    vec3 color = hairAmbient * hairAlbedo * hairTint;
     for (int i = 0; i < mqLightCount; ++i) {
       vec3 L = mqLightDirVC[i];
       float sinI = clamp(dot(L, T), -1.0, 1.0);
@@ -69,16 +72,16 @@ const char* const kPhysicalHairLighting = R"(
         float sinOp = sinO * hairShiftCos[p] - cosO * hairShiftSin[p];
         float cosOp = abs(cosO * hairShiftCos[p] + sinO * hairShiftSin[p]);
         S += hairLobeWeight[p] * hairLongitudinal(sinI, cosI, sinOp, cosOp, hairVariance[p]) *
-             hairAzimuthalAt(p, phi, abs(sinO));
+             hairAzimuthalAt(p, phi, abs(sinO)) * (p == 0 ? vec3(1.0) : hairTint);
       }
       S += hairLobeWeight[3] * hairLongitudinal(sinI, cosI, sinO, cosO, hairVariance[3]) *
-           hairResidualAt(abs(sinO)) * 0.15915494;
+           hairResidualAt(abs(sinO)) * 0.15915494 * hairTint;
       // Light reaching this side of the hair volume, as for Kajiya-Kay.
       // VTK's lights give a white Lambertian surface the radiance E cos,
       // which is pi times the physical E cos / pi: S takes the same pi.
       // The volume term stands for light scattered between fibres.
       float facing = clamp(0.55 + 0.45 * dot(volumeNormal, L), 0.0, 1.0);
-      color += mqLightColour[i] * shadow * facing * (3.14159265 * S + hairLobeWeight4 * hairVolumeAlbedo);
+      color += mqLightColour[i] * shadow * facing * (3.14159265 * S + hairLobeWeight4 * hairVolumeAlbedo * hairTint);
     }
     color *= 1.0 + hairColorVariation * (2.0 * hairParams.z - 1.0);
 )";

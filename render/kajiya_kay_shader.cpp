@@ -5,18 +5,22 @@ namespace mq::render {
 const char* const kHairVertexDec = R"(//VTK::Normal::Dec
 in vec3 hairTangentMC;
 in vec3 hairParamsMC;
+in vec3 hairTintMC;
 out vec3 hairTangentVC;
 out vec3 hairParams;
+out vec3 hairTint;
 )";
 
 const char* const kHairVertexImpl = R"(//VTK::Light::Impl
   hairTangentVC = (MCVCMatrix * vec4(hairTangentMC, 0.0)).xyz;
   hairParams = hairParamsMC;
+  hairTint = hairTintMC;
 )";
 
 const char* const kKajiyaKayFragmentDec = R"(//VTK::Normal::Dec
 in vec3 hairTangentVC;
 in vec3 hairParams;  // x: 0 root .. 1 tip, y: self-shadow, z: per-strand random
+in vec3 hairTint;    // the painted pigments' colour against the style's (1: unpainted)
 )";
 
 // Both models' fragment code runs after VTK's own lighting and replaces its
@@ -48,7 +52,8 @@ const char* const kHairTipFade = R"(
 
 // Kajiya-Kay with two shifted highlights.
 const char* const kKajiyaKayLighting = R"(
-    vec3 base = mix(hairRootColor, hairTipColor, along) * (1.0 + hairColorVariation * (2.0 * hairParams.z - 1.0));
+    vec3 base = mix(hairRootColor, hairTipColor, along) * hairTint *
+                (1.0 + hairColorVariation * (2.0 * hairParams.z - 1.0));
     // Shifted tangents (Scheuermann 2004, after Marschner et al. 2003): the
     // part of the view direction across the fibre stands in for its normal.
     vec3 across = V - dot(V, T) * T;

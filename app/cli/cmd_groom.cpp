@@ -1,5 +1,6 @@
 // mannequin-cli groom SCENE|default: grows the scene's hairstyle headless
 // (rest pose) and reports timings; optionally writes the strands as PLY.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -93,7 +94,9 @@ GroomStroke strokeOption(const Args& args, const glm::vec3& headCenter) {
       throw Error("option --value expects " + std::to_string(range.min).substr(0, 4) + " to " +
                   std::to_string(range.max).substr(0, 4) + " for the " + groomBrushName(stroke.brush) + " brush");
   } else if (args.has("--value")) {
-    throw Error("--value is for the paint brushes (paint_density, paint_length, paint_clumping)");
+    throw Error(
+        "--value is for the paint brushes (paint_density, paint_length, paint_clumping, paint_melanin, "
+        "paint_pheomelanin)");
   }
   if (!args.has("--at")) throw Error("--brush needs --at X,Y,Z (where the stroke starts, world metres, rest pose)");
   const glm::vec3 at = pointOption(args, "--at") - headCenter;
@@ -101,6 +104,25 @@ GroomStroke strokeOption(const Args& args, const glm::vec3& headCenter) {
   if (stroke.brush == GroomBrush::Comb && at == to) throw Error("the comb needs --to X,Y,Z: where it drags the hair");
   stroke.dabs = dabsAlong(at, to, stroke.radius);
   return stroke;
+}
+
+// The strands' painted pigments: the range of each, and how many strands
+// the paint changed (by more than 0.01).
+nlohmann::json pigmentStats(const Strands& strands, const HairShadingParams& style) {
+  const float base[2] = {style.melanin, style.pheomelanin};
+  float lo[2] = {base[0], base[1]}, hi[2] = {base[0], base[1]};
+  size_t painted = 0;
+  for (size_t s = 0; 4 * s + 3 < strands.pigmentPaint.size(); ++s) {
+    bool changed = false;
+    for (int k = 0; k < 2; ++k) {
+      const float v = strands.pigmentPaint[4 * s + 2 * k] * base[k] + strands.pigmentPaint[4 * s + 2 * k + 1];
+      lo[k] = std::min(lo[k], v);
+      hi[k] = std::max(hi[k], v);
+      changed = changed || std::abs(v - base[k]) > 0.01f;
+    }
+    painted += changed;
+  }
+  return {{"melanin", {lo[0], hi[0]}}, {"pheomelanin", {lo[1], hi[1]}}, {"painted_strands", painted}};
 }
 
 int runGroom(const std::vector<std::string>& argv) {
@@ -166,7 +188,8 @@ int runGroom(const std::vector<std::string>& argv) {
       {"bbox_min", bounds(strands.points, false)},
       {"bbox_max", bounds(strands.points, true)},
       {"points_inside_body", inside},
-      {"strokes", section.style.strokes.size()}};
+      {"strokes", section.style.strokes.size()},
+      {"pigments", pigmentStats(strands, section.style.shading)}};
   const std::string saveAs = args.option("--save-as");
   if (!saveAs.empty()) {
     if (!isSceneDocumentPath(saveAs)) throw FileError(saveAs, "--save-as writes a scene document (.mqscene or .json)");
@@ -189,7 +212,8 @@ int runGroom(const std::vector<std::string>& argv) {
 static Registration reg(
     {"groom",
      "SCENE|default [--strands N] [--points P] [--style NAME] [--seed S] [--out strands.ply] [--stats-json OUT] "
-     "[--brush comb|cut|length|puff|smooth|clump|frizz|paint_density|paint_length|paint_clumping --at X,Y,Z "
+     "[--brush comb|cut|length|puff|smooth|clump|frizz|paint_density|paint_length|paint_clumping|paint_melanin|"
+     "paint_pheomelanin --at X,Y,Z "
      "[--to X,Y,Z] [--radius M] [--strength S] [--mirror] [--value V]] [--save-as OUT.mqscene]",
      "grows the hairstyle (flow-field styling, guides and children, the document's brush strokes); stats and PLY "
      "polylines",
@@ -200,8 +224,9 @@ static Registration reg(
      "    0.5; the length brush takes -1..1, negative shortens),\n"
      "    --mirror also brushes across the head's symmetry plane. The comb drags the hair from --at to --to.\n"
      "    The paint brushes paint a map over the scalp with --value: paint_density the share of the hair that\n"
-     "    grows there (0..1), paint_length a length factor (0.05..10), paint_clumping the clumping (0..1);\n"
-     "    --strength is then the paint's opacity.\n"
+     "    grows there (0..1), paint_length a length factor (0.05..10), paint_clumping the clumping (0..1),\n"
+     "    paint_melanin and paint_pheomelanin the colour as the fibre's pigment concentrations (0..8; blond\n"
+     "    about 0.3, brown 1.3, black 8; pheomelanin reddens); --strength is then the paint's opacity.\n"
      "  --save-as OUT: writes the scene with the hairstyle as grown (fitted to this head, with its strokes).\n"});
 
 }  // namespace

@@ -69,7 +69,6 @@ std::unique_ptr<render::HairActor> addSceneHair(render::SceneView& view, const L
   SceneHair hair(scene, sceneHairSection(scene));
   hair.setClip(clip);
   auto actor = std::make_unique<render::HairActor>();
-  actor->setStrands(hair.groom().strands());
   actor->setColors(hair.style().rootColor, hair.style().tipColor);
   const HairShadingParams fibre = options.shadingFor(hair.style().shading);
   actor->setFibre(fibre);
@@ -78,6 +77,7 @@ std::unique_ptr<render::HairActor> addSceneHair(render::SceneView& view, const L
     shading.shadowMethod = render::HairShadowMethod::OpacityMaps;
     actor->setShading(shading);
   }
+  actor->setStrands(hair.groom().strands());  // after the fibre: its painted pigments' tints
   const bool simulate = mode == HairRenderMode::Simulate;
   actor->updatePositions(simulate ? simulateTo(hair, hasClip ? scene.character.clips[clip].startTime() : time, time)
                                   : hair.rigidStrands(time));

@@ -216,6 +216,8 @@ void applyDab(const Dab& dab, StrandEdit& s, size_t guide, const glm::vec3& root
     case GroomBrush::PaintDensity:
     case GroomBrush::PaintLength:
     case GroomBrush::PaintClumping:
+    case GroomBrush::PaintMelanin:
+    case GroomBrush::PaintPheomelanin:
       break;
     case GroomBrush::Frizz:
       for (int k = 1; k < n; ++k) {
@@ -281,8 +283,9 @@ std::vector<size_t> strokeCandidates(const Strands& strands, size_t guides, cons
 }  // namespace
 
 const std::vector<std::string>& groomBrushNames() {
-  static const std::vector<std::string> names{"comb",  "cut",   "length",        "puff",         "smooth",
-                                              "clump", "frizz", "paint_density", "paint_length", "paint_clumping"};
+  static const std::vector<std::string> names{
+      "comb",  "cut",           "length",       "puff",           "smooth",        "clump",
+      "frizz", "paint_density", "paint_length", "paint_clumping", "paint_melanin", "paint_pheomelanin"};
   return names;
 }
 
@@ -294,6 +297,9 @@ PaintRange paintRange(GroomBrush brush) {
       return {0.05f, 10.0f, 1.0f};  // times the style's length
     case GroomBrush::PaintClumping:
       return {0.0f, 1.0f, -1.0f};  // -1: the style's clumping
+    case GroomBrush::PaintMelanin:
+    case GroomBrush::PaintPheomelanin:
+      return {0.0f, 8.0f, -1.0f};  // concentrations; -1: the style's
     default:
       return {0.0f, 0.0f, 0.0f};
   }
@@ -311,6 +317,15 @@ float paintedValue(const std::vector<GroomStroke>& strokes, GroomBrush brush, co
       }
   }
   return value;
+}
+
+PaintedShare paintedShare(const std::vector<GroomStroke>& strokes, GroomBrush brush, const glm::vec3& at) {
+  // paintedValue() of 0 is what the dabs add; the share of the unpainted
+  // value they keep is paintedValue() of 1 minus that.
+  PaintedShare share;
+  share.add = paintedValue(strokes, brush, at, 0.0f);
+  share.keep = paintedValue(strokes, brush, at, 1.0f) - share.add;
+  return share;
 }
 
 std::vector<GroomStroke> strokesOf(const std::vector<GroomStroke>& strokes, GroomBrush brush) {

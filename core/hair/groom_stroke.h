@@ -23,17 +23,32 @@ struct Strands;
 
 // The shaping brushes move the guides. The paint brushes paint a map over
 // the scalp instead, read where each strand grows: the share of the hair
-// kept (density), a length factor, and the clumping.
-enum class GroomBrush { Comb, Cut, Length, Puff, Smooth, Clump, Frizz, PaintDensity, PaintLength, PaintClumping };
+// kept (density), a length factor, the clumping, and the colour as the
+// fibre's pigments (eumelanin, pheomelanin: core/optics/hair_bsdf.h).
+enum class GroomBrush {
+  Comb,
+  Cut,
+  Length,
+  Puff,
+  Smooth,
+  Clump,
+  Frizz,
+  PaintDensity,
+  PaintLength,
+  PaintClumping,
+  PaintMelanin,
+  PaintPheomelanin
+};
 inline bool isPaintBrush(GroomBrush brush) { return brush >= GroomBrush::PaintDensity; }
-// The values a paint brush may paint, and the map's value where nothing is painted.
+// The values a paint brush may paint, and the map's value where nothing is
+// painted (-1: the style's own, its clumping or pigments).
 struct PaintRange {
   float min, max, unpainted;
 };
 PaintRange paintRange(GroomBrush brush);
 
 // "comb", "cut", "length", "puff", "smooth", "clump", "frizz", "paint_density",
-// "paint_length", "paint_clumping".
+// "paint_length", "paint_clumping", "paint_melanin", "paint_pheomelanin".
 const std::vector<std::string>& groomBrushNames();
 std::string groomBrushName(GroomBrush brush);
 // Throws mq::Error naming the brushes when `name` is not one of them.
@@ -70,6 +85,14 @@ std::vector<GroomDab> dabsAlong(const glm::vec3& from, const glm::vec3& to, floa
 // `unpainted`, each dab in order blends towards its stroke's value by its
 // strength times its falloff.
 float paintedValue(const std::vector<GroomStroke>& strokes, GroomBrush brush, const glm::vec3& at, float unpainted);
+// The same map as keep * unpainted + add (each dab's blend is affine in the
+// value), so a map over a value that changes later (the style's pigments)
+// is stored once: {1, 0} where nothing is painted.
+struct PaintedShare {
+  float keep = 1.0f, add = 0.0f;
+  float of(float unpainted) const { return keep * unpainted + add; }
+};
+PaintedShare paintedShare(const std::vector<GroomStroke>& strokes, GroomBrush brush, const glm::vec3& at);
 // The strokes that paint `brush`'s map.
 std::vector<GroomStroke> strokesOf(const std::vector<GroomStroke>& strokes, GroomBrush brush);
 

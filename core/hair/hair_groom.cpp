@@ -330,7 +330,37 @@ void HairGroom::regrowGuides(const HairStyle& style) {
     brushedStrokes_.assign(strokes.begin(), strokes.begin() + settled);
   }
   applyGroomStrokes(strokes, settled, strokes.size(), center, proxy_, kMargin, style.seed, strands_, guides);
+  paintPigments(style, 0, guides);
   timings_.guides = secondsSince(start);
+}
+
+void HairGroom::paintPigments(const HairStyle& style, size_t first, size_t end) {
+  const bool painted = std::any_of(style.strokes.begin(), style.strokes.end(), [](const GroomStroke& s) {
+    return s.brush == GroomBrush::PaintMelanin || s.brush == GroomBrush::PaintPheomelanin;
+  });
+  if (!painted) {
+    strands_.pigmentPaint.clear();
+    return;
+  }
+  const size_t guides = guideRoots_.size();
+  const size_t total = guides + childRoots_.size();
+  if (strands_.pigmentPaint.size() != 4 * total) {  // the style's until computed
+    strands_.pigmentPaint.resize(4 * total);
+    for (size_t s = 0; s < total; ++s)
+      std::copy_n(std::array<float, 4>{1.0f, 0.0f, 1.0f, 0.0f}.begin(), 4, &strands_.pigmentPaint[4 * s]);
+  }
+  const std::vector<GroomStroke> eumelanin = strokesOf(style.strokes, GroomBrush::PaintMelanin);
+  const std::vector<GroomStroke> pheomelanin = strokesOf(style.strokes, GroomBrush::PaintPheomelanin);
+  ThreadPool::shared().parallelFor(first, end, 256, [&](size_t begin, size_t stop) {
+    for (size_t s = begin; s < stop; ++s) {
+      const glm::vec3 at =
+          (s < guides ? guideRoots_.position(s) : childRoots_.position(s - guides)) - proxy_.headCenter();
+      const PaintedShare eu = paintedShare(eumelanin, GroomBrush::PaintMelanin, at);
+      const PaintedShare pheo = paintedShare(pheomelanin, GroomBrush::PaintPheomelanin, at);
+      float* out = &strands_.pigmentPaint[4 * s];
+      out[0] = eu.keep, out[1] = eu.add, out[2] = pheo.keep, out[3] = pheo.add;
+    }
+  });
 }
 
 void HairGroom::traceGuides(const HairStyle& style) {
@@ -416,6 +446,7 @@ void HairGroom::growChildren(const HairStyle& style) {
       strands_.guideOf[s] = near[0];
     }
   });
+  paintPigments(style, guides, guides + children);
   timings_.children = secondsSince(start);
 }
 

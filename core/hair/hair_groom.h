@@ -68,6 +68,8 @@ class HairGroom {
   // Traces the guides through the style's flow (no brushes).
   void traceGuides(const HairStyle& style);
   float strandLength(const HairStyle& style, const glm::vec3& root, uint64_t strandKey) const;
+  // Strands [first, end)'s painted pigments (Strands::pigmentPaint), read at their roots.
+  void paintPigments(const HairStyle& style, size_t first, size_t end);
 
   ScalpSurface scalp_;
   BodyProxy proxy_;

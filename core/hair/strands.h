@@ -14,6 +14,9 @@ struct Strands {
   std::vector<float> rootNormals;  // 3 per strand: scalp normal at the root
   std::vector<float> rootUvs;      // 2 per strand: scalp parameterisation, may be empty
   std::vector<int32_t> guideOf;    // per strand: its nearest guide (-1 for guides), may be empty
+  // 4 per strand, its painted pigments as shares of the style's (groom_stroke.h's
+  // PaintedShare): eumelanin keep, add, pheomelanin keep, add. Empty: none painted.
+  std::vector<float> pigmentPaint;
 
   size_t strandCount() const { return pointsPerStrand > 0 ? points.size() / (3 * size_t(pointsPerStrand)) : 0; }
   float* strand(size_t s) { return points.data() + 3 * s * pointsPerStrand; }

@@ -121,6 +121,7 @@ Strands leadingStrands(const Strands& all, size_t guideCount) {
   out.rootNormals = head(all.rootNormals, 3);
   out.rootUvs = head(all.rootUvs, 2);
   out.guideOf = head(all.guideOf, 1);
+  out.pigmentPaint = head(all.pigmentPaint, 4);
   return out;
 }
 

@@ -71,3 +71,19 @@ run(0 "${CLI}" simulate "${WORK}/mannequin_bob.mqscene" --frames 5 --stats-json 
 stat("${WORK}/simulated.json" "hair_bbox_min;1" simulated_low)
 stat("${WORK}/mannequin_bob.json" "bbox_min;1" bob_low)
 message("simulated cut hair: lowest point ${simulated_low} m (groomed ${bob_low} m)")
+# Painted colour: a blond streak along the parting (melanin 0.15 over the
+# style's 1.3), saved and grown again the same.
+run(0 "${CLI}" groom default --brush paint_melanin --at 0,1.75,0.04 --to 0,1.745,-0.06 --radius 0.025 --value 0.15
+    --strength 1 --save-as "${WORK}/streak.mqscene" --stats-json "${WORK}/streak.json")
+stat("${WORK}/streak.json" "pigments;painted_strands" painted)
+stat("${WORK}/streak.json" "pigments;melanin;0" lightest)
+stat("${WORK}/streak.json" "pigments;melanin;1" darkest)
+message("painted melanin: ${painted} strands, melanin ${lightest} to ${darkest}")
+if(painted LESS 1000 OR lightest GREATER 0.16 OR darkest LESS 1.29 OR darkest GREATER 1.31)
+  message(FATAL_ERROR "the streak should make over 1,000 strands blond (melanin down to 0.15) and leave the rest at 1.3")
+endif()
+run(0 "${CLI}" groom "${WORK}/streak.mqscene" --stats-json "${WORK}/streak_again.json")
+stat("${WORK}/streak_again.json" "pigments;painted_strands" again)
+if(NOT again EQUAL painted)
+  message(FATAL_ERROR "reopened, the streak colours ${again} strands, not ${painted}")
+endif()

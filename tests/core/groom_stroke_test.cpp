@@ -328,6 +328,55 @@ TEST(GroomStroke, PaintedClumpingGathersTheChildrenWherePainted) {
                                b.before.strands().points.begin() + 3 * kGuides * b.style.pointsPerStrand));
 }
 
+// A pigment map: strands growing under the brush take its melanin (guide
+// 0, at its centre, all of it); strands far from it keep the style's; the
+// map is stored as shares of the style's (PaintedShare), so it follows a
+// later change of the style's pigment.
+TEST(GroomStroke, PaintedMelaninColoursTheStrandsWherePainted) {
+  const Brushed b = painted(styleNamed("long_straight"), GroomBrush::PaintMelanin, 0.2f, 0.04f);
+  EXPECT_TRUE(b.before.strands().pigmentPaint.empty());  // nothing painted: nothing stored
+  const Strands& strands = b.after.strands();
+  ASSERT_EQ(strands.pigmentPaint.size(), 4 * strands.strandCount());
+  auto melanin = [&](size_t s, float style) {
+    return strands.pigmentPaint[4 * s] * style + strands.pigmentPaint[4 * s + 1];
+  };
+  EXPECT_NEAR(melanin(0, b.style.shading.melanin), 0.2f, 1e-4f);
+  EXPECT_NEAR(melanin(0, 5.0f), 0.2f, 1e-4f);  // fully painted: whatever the style's
+  const glm::vec3 center = point(strands, 0, 0);
+  size_t near = 0, far = 0;
+  for (size_t s = 0; s < strands.strandCount(); ++s) {
+    const float d = glm::length(point(strands, s, 0) - center);
+    if (d < 0.01f) {
+      EXPECT_LT(melanin(s, b.style.shading.melanin), 0.75f) << s;
+      ++near;
+    } else if (d > 0.04f) {
+      EXPECT_EQ(melanin(s, 3.0f), 3.0f) << s;            // unpainted: the style's, whichever it is
+      EXPECT_EQ(strands.pigmentPaint[4 * s + 2], 1.0f);  // pheomelanin untouched
+      ++far;
+    }
+  }
+  EXPECT_GT(near, 5u);
+  EXPECT_GT(far, 100u);
+  // The shapes are not the paint's: the strands are where they were.
+  EXPECT_EQ(strands.points, b.before.strands().points);
+}
+
+TEST(GroomStroke, PaintedShareIsThePaintedValueOfAnyUnpaintedValue) {
+  GroomStroke a, c;
+  a.brush = c.brush = GroomBrush::PaintPheomelanin;
+  a.radius = 0.05f, a.strength = 0.7f, a.value = 4.0f;
+  a.dabs = {{glm::vec3(0.01f, 0.0f, 0.0f), glm::vec3(0.0f)}, {glm::vec3(0.02f, 0.0f, 0.0f), glm::vec3(0.0f)}};
+  c.radius = 0.03f, c.strength = 0.4f, c.value = 0.5f, c.mirror = true;
+  c.dabs = {{glm::vec3(0.03f, 0.01f, 0.0f), glm::vec3(0.0f)}};
+  const std::vector<GroomStroke> strokes{a, c};
+  for (const glm::vec3 at : {glm::vec3(0.02f, 0.0f, 0.0f), glm::vec3(-0.03f, 0.01f, 0.0f), glm::vec3(1.0f)}) {
+    const PaintedShare share = paintedShare(strokes, GroomBrush::PaintPheomelanin, at);
+    for (float unpainted : {0.0f, 0.3f, 2.0f, 8.0f})
+      EXPECT_NEAR(share.of(unpainted), paintedValue(strokes, GroomBrush::PaintPheomelanin, at, unpainted), 1e-5f);
+  }
+  EXPECT_EQ(paintedShare(strokes, GroomBrush::PaintMelanin, glm::vec3(0.02f, 0.0f, 0.0f)).keep, 1.0f);
+}
+
 TEST(GroomStroke, JsonRoundTripAndClearErrors) {
   HairStyle style = builtinHairStyle("bob");
   GroomStroke stroke;

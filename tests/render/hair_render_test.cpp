@@ -197,6 +197,45 @@ TEST_F(HairRenderTest, PhysicalPigmentsOrderTheBrightness) {
   EXPECT_TRUE(why.empty()) << why;
 }
 
+// Painted pigments (a paint_melanin map over the scalp): brown hair painted
+// blond all over must look about as bright as blond hair (the tint is the
+// ratio of the fibres' mean albedos, the lobes stay the brown's), and
+// painting it darker must darken it, under either model.
+TEST_F(HairRenderTest, PaintedPigmentsTintTheStrands) {
+  const Strands plain = combedStrands(8000, 24, 0.3f);
+  auto paintedAs = [&](const optics::HairPigment& p) {
+    Strands painted = plain;
+    painted.pigmentPaint.clear();
+    for (size_t s = 0; s < painted.strandCount(); ++s)
+      painted.pigmentPaint.insert(painted.pigmentPaint.end(), {0.0f, float(p.eumelanin), 0.0f, float(p.pheomelanin)});
+    return painted;
+  };
+  render::OffscreenRenderer renderer(view, kWidth, kHeight);
+  const render::RgbImage bare = renderer.capture();
+  render::HairActor hair;
+  hair.setStrands(plain);
+  view.addProp(hair.actor());
+  const std::vector<bool> mask = hairMask(renderer.capture(), bare);
+  const double kajiyaKay = meanLuminance(renderer.capture(), mask);
+  hair.setStrands(paintedAs(optics::hairPigmentPreset("black")));
+  const double kajiyaKayBlack = meanLuminance(renderer.capture(), mask);
+  EXPECT_LT(kajiyaKayBlack, 0.8 * kajiyaKay);
+
+  const render::HairShading brown = physical(hair.shading(), "brown");
+  hair.setShading(physical(hair.shading(), "blond"));
+  hair.setStrands(plain);
+  const double blond = meanLuminance(renderer.capture(), mask);
+  hair.setShading(brown);
+  hair.setStrands(plain);
+  const double unpainted = meanLuminance(renderer.capture(), mask);
+  hair.setStrands(paintedAs(optics::hairPigmentPreset("blond")));
+  const double paintedBlond = meanLuminance(renderer.capture(), mask);
+  std::printf("brown %.1f, painted blond %.1f, blond %.1f; Kajiya-Kay %.1f, painted black %.1f\n", unpainted,
+              paintedBlond, blond, kajiyaKay, kajiyaKayBlack);
+  EXPECT_GT(paintedBlond, 1.3 * unpainted);
+  EXPECT_NEAR(paintedBlond, blond, 0.25 * blond);
+}
+
 // Marschner's two highlights: the white R reflected at the cuticle, shifted
 // toward the root (alpha_R = -3 degrees), and the TRT, tinted by the
 // pigment it crossed twice, shifted toward the tip (-3/2 alpha_R = +4.5

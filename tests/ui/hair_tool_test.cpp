@@ -749,6 +749,26 @@ class HairToolTest : public QObject {
     doc()->undoStack()->undo();
     waitForHair();
     QCOMPARE(tool_->groom()->strands().strandCount(), strandsBefore);
+    // Painted colour: a lighter streak (less melanin) where painted, one undo step; Ctrl paints the style's back.
+    panel()->groomBrushCombo()->setCurrentIndex(1 + int(GroomBrush::PaintMelanin));
+    QCOMPARE(panel()->groomValueBox()->maximum(), 8.0);
+    panel()->groomValueBox()->setValue(0.2);
+    QVERIFY(tool_->groom()->strands().pigmentPaint.empty());
+    QVERIFY(tool_->groomStroke(root, root + glm::vec3(0.05f, 0.0f, 0.0f)));
+    waitForHair();
+    QCOMPARE(doc()->undoStack()->undoText(), QString("Paint hair melanin"));
+    const std::vector<float>& paint = tool_->groom()->strands().pigmentPaint;
+    QCOMPARE(paint.size(), 4 * tool_->groom()->strands().strandCount());
+    const float melanin = tool_->style().shading.melanin;
+    QVERIFY2(paint[0] * melanin + paint[1] < 0.5f * melanin,
+             qPrintable(QString("guide 0's melanin %1 (style %2)").arg(paint[0] * melanin + paint[1]).arg(melanin)));
+    QVERIFY(tool_->groomStroke(root, root + glm::vec3(0.05f, 0.0f, 0.0f), true));
+    waitForHair();
+    QCOMPARE(tool_->style().strokes.back().value, melanin);
+    doc()->undoStack()->undo();
+    doc()->undoStack()->undo();
+    waitForHair();
+    QVERIFY(tool_->groom()->strands().pigmentPaint.empty());
     // No brush: the settings go, the dock is as it was.
     panel()->groomBrushCombo()->setCurrentIndex(0);
     QVERIFY(!tool_->groomBrush());

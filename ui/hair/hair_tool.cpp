@@ -628,18 +628,21 @@ GroomStroke HairTool::newStroke(bool invert) const {
   stroke.mirror = groomMirror_;
   if (isPaintBrush(stroke.brush)) {
     const PaintRange range = paintRange(stroke.brush);
-    const float unpainted = stroke.brush == GroomBrush::PaintClumping ? style_->clumping : range.unpainted;
+    const float unpainted = stroke.brush == GroomBrush::PaintClumping      ? style_->clumping
+                            : stroke.brush == GroomBrush::PaintMelanin     ? style_->shading.melanin
+                            : stroke.brush == GroomBrush::PaintPheomelanin ? style_->shading.pheomelanin
+                                                                           : range.unpainted;
     stroke.value = std::clamp(invert ? unpainted : groomValue_, range.min, range.max);
   }
   return stroke;
 }
 
 QString HairTool::groomText() const {
-  static const char* texts[] = {QT_TR_NOOP("Comb hair"),          QT_TR_NOOP("Cut hair"),
-                                QT_TR_NOOP("Change hair length"), QT_TR_NOOP("Puff hair"),
-                                QT_TR_NOOP("Smooth hair"),        QT_TR_NOOP("Clump hair"),
-                                QT_TR_NOOP("Frizz hair"),         QT_TR_NOOP("Paint hair density"),
-                                QT_TR_NOOP("Paint hair length"),  QT_TR_NOOP("Paint hair clumping")};
+  static const char* texts[] = {
+      QT_TR_NOOP("Comb hair"),           QT_TR_NOOP("Cut hair"),           QT_TR_NOOP("Change hair length"),
+      QT_TR_NOOP("Puff hair"),           QT_TR_NOOP("Smooth hair"),        QT_TR_NOOP("Clump hair"),
+      QT_TR_NOOP("Frizz hair"),          QT_TR_NOOP("Paint hair density"), QT_TR_NOOP("Paint hair length"),
+      QT_TR_NOOP("Paint hair clumping"), QT_TR_NOOP("Paint hair melanin"), QT_TR_NOOP("Paint hair pheomelanin")};
   return groomStroke_ ? tr(texts[size_t(groomStroke_->brush)]) : QString();
 }
 
