@@ -129,25 +129,31 @@ glm::vec3 centroidOf(const Strands& strands) {
   return count ? glm::vec3(sum / double(count)) : glm::vec3(0.0f);
 }
 
+// A point array `name` over strands first, first + stride, ...: point i of
+// strand s gets value(s, i, n).
+template <typename PointValue>
+vtkSmartPointer<vtkFloatArray> perPointArray(const char* name, const Strands& strands, size_t first, size_t stride,
+                                             PointValue value) {
+  const int n = std::max(strands.pointsPerStrand, 0);
+  const size_t taken = takenCount(strands.strandCount(), first, stride);
+  auto array = newPointArray(name, taken * n);
+  float* q = array->GetPointer(0);
+  for (size_t j = 0; j < taken; ++j)
+    for (int i = 0; i < n; ++i) {
+      const glm::vec3 v = value(first + j * stride, i, n);
+      for (int c = 0; c < 3; ++c) q[3 * (j * n + i) + c] = v[c];
+    }
+  return array;
+}
+
 // Parameters of strands first, first + stride, ...: x 0 at the root .. 1 at
 // the tip, y the shadow term (1 without `shadow`), z the strand's random.
 vtkSmartPointer<vtkFloatArray> strandParams(const Strands& strands, size_t first, size_t stride,
                                             const std::vector<float>& shadow) {
-  const int n = std::max(strands.pointsPerStrand, 0);
-  const size_t taken = takenCount(strands.strandCount(), first, stride);
-  auto params = newPointArray("hairParams", taken * n);
-  float* q = params->GetPointer(0);
-  for (size_t j = 0; j < taken; ++j) {
-    const size_t s = first + j * stride;
-    const float random = strandRandom(s);
-    for (int i = 0; i < n; ++i) {
-      const size_t k = j * n + i;
-      q[3 * k] = n > 1 ? float(i) / float(n - 1) : 0.0f;
-      q[3 * k + 1] = shadow.empty() ? 1.0f : shadow[s * n + i];
-      q[3 * k + 2] = random;
-    }
-  }
-  return params;
+  return perPointArray("hairParams", strands, first, stride, [&](size_t s, int i, int n) {
+    return glm::vec3(n > 1 ? float(i) / float(n - 1) : 0.0f, shadow.empty() ? 1.0f : shadow[s * n + i],
+                     strandRandom(s));
+  });
 }
 
 // Per strand, its painted pigments' colour against the style's, per
@@ -209,16 +215,9 @@ std::vector<float> strandTints(const Strands& strands, const HairShadingParams& 
 // Tints of strands first, first + stride, ... per point (1 without `tints`).
 vtkSmartPointer<vtkFloatArray> strandTintArray(const Strands& strands, size_t first, size_t stride,
                                                const std::vector<float>& tints) {
-  const int n = std::max(strands.pointsPerStrand, 0);
-  const size_t taken = takenCount(strands.strandCount(), first, stride);
-  auto array = newPointArray("hairTint", taken * n);
-  float* q = array->GetPointer(0);
-  for (size_t j = 0; j < taken; ++j) {
-    const size_t s = first + j * stride;
-    for (int i = 0; i < n; ++i)
-      for (int c = 0; c < 3; ++c) q[3 * (j * n + i) + c] = tints.empty() ? 1.0f : tints[3 * s + c];
-  }
-  return array;
+  return perPointArray("hairTint", strands, first, stride, [&](size_t s, int, int) {
+    return tints.empty() ? glm::vec3(1.0f) : glm::vec3(tints[3 * s], tints[3 * s + 1], tints[3 * s + 2]);
+  });
 }
 
 void assemble(StrandArrays& arrays) {

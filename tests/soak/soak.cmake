@@ -32,6 +32,18 @@ endif()
 file(MAKE_DIRECTORY "${WORK}")
 set(failures "")
 
+# In soak(): the stat KEY of `json`, when present, goes in the report as
+# LABEL and in the problems when above LIMIT.
+macro(at_most key label limit)
+  string(JSON value ERROR_VARIABLE none GET "${json}" ${key})
+  if(NOT value MATCHES "NOTFOUND" AND NOT value STREQUAL "")
+    string(APPEND report " ${label} ${value};")
+    if(value GREATER ${limit})
+      string(APPEND problems " ${label} ${value} above ${limit};")
+    endif()
+  endif()
+endmacro()
+
 # Runs one scene; checks the stats it wrote.
 # ARGN: more simulate options (--fps F).
 function(soak name scene frames)
@@ -68,21 +80,9 @@ function(soak name scene frames)
       endif()
     endif()
   endforeach()
-  string(JSON stretch ERROR_VARIABLE none GET "${json}" max_stretch)
-  if(NOT stretch MATCHES "NOTFOUND" AND NOT stretch STREQUAL "")
-    string(APPEND report " max stretch ${stretch};")
-    if(stretch GREATER 1.1005)
-      string(APPEND problems " max stretch ${stretch} above 1.10;")
-    endif()
-  endif()
-  # Hair: a guide segment's length may change by at most 10 % either way.
-  string(JSON hair_error ERROR_VARIABLE none GET "${json}" hair_max_length_error)
-  if(NOT hair_error MATCHES "NOTFOUND" AND NOT hair_error STREQUAL "")
-    string(APPEND report " hair max length error ${hair_error};")
-    if(hair_error GREATER 0.1005)
-      string(APPEND problems " hair segment length error ${hair_error} above 0.10;")
-    endif()
-  endif()
+  # Cloth: 110 % of the rest length; hair: a guide segment 10 % off its length.
+  at_most(max_stretch "max stretch" 1.1005)
+  at_most(hair_max_length_error "hair max length error" 0.1005)
   message(STATUS "${report}")
   if(NOT problems STREQUAL "")
     set(failures "${failures}\n${name}:${problems}" PARENT_SCOPE)
