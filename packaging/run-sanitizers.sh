@@ -30,6 +30,8 @@ elif [ "${1:-}" = --replay ]; then
   shift 2
 fi
 "$top/packaging/install-deps.sh"
+# The end-to-end tests check exported glTF with the Khronos validator.
+[ "$label" = unit ] || MANNEQUIN_BUILD_DIR="$build" "$top/packaging/install-test-tools.sh"
 flags="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g"
 cmake -S "$top" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DMANNEQUIN_WITH_GUI=$gui \
   -DMANNEQUIN_WITH_BENCH=OFF "-DCMAKE_CXX_FLAGS=$flags" "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined" >/dev/null
