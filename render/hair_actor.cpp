@@ -205,8 +205,8 @@ std::vector<float> strandTints(const Strands& strands, const HairShadingParams& 
   PigmentTints tints(style);
   std::vector<float> out(3 * count);
   for (size_t s = 0; s < count; ++s) {
-    const float* paint = &strands.pigmentPaint[4 * s];
-    const glm::vec3 t = tints.tint(paint[0] * style.melanin + paint[1], paint[2] * style.pheomelanin + paint[3]);
+    const auto [eumelanin, pheomelanin] = strands.pigments(s, style.melanin, style.pheomelanin);
+    const glm::vec3 t = tints.tint(eumelanin, pheomelanin);
     for (int c = 0; c < 3; ++c) out[3 * s + c] = t[c];
   }
   return out;

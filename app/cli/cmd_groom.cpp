@@ -112,13 +112,15 @@ nlohmann::json pigmentStats(const Strands& strands, const HairShadingParams& sty
   const float base[2] = {style.melanin, style.pheomelanin};
   float lo[2] = {base[0], base[1]}, hi[2] = {base[0], base[1]};
   size_t painted = 0;
-  for (size_t s = 0; 4 * s + 3 < strands.pigmentPaint.size(); ++s) {
+  const size_t count = strands.pigmentPaint.empty() ? 0 : strands.strandCount();
+  for (size_t s = 0; s < count; ++s) {
+    const auto [eumelanin, pheomelanin] = strands.pigments(s, base[0], base[1]);
+    const float v[2] = {eumelanin, pheomelanin};
     bool changed = false;
     for (int k = 0; k < 2; ++k) {
-      const float v = strands.pigmentPaint[4 * s + 2 * k] * base[k] + strands.pigmentPaint[4 * s + 2 * k + 1];
-      lo[k] = std::min(lo[k], v);
-      hi[k] = std::max(hi[k], v);
-      changed = changed || std::abs(v - base[k]) > 0.01f;
+      lo[k] = std::min(lo[k], v[k]);
+      hi[k] = std::max(hi[k], v[k]);
+      changed = changed || std::abs(v[k] - base[k]) > 0.01f;
     }
     painted += changed;
   }

@@ -345,9 +345,9 @@ void HairGroom::paintPigments(const HairStyle& style, size_t first, size_t end) 
   const size_t guides = guideRoots_.size();
   const size_t total = guides + childRoots_.size();
   if (strands_.pigmentPaint.size() != 4 * total) {  // the style's until computed
-    strands_.pigmentPaint.resize(4 * total);
+    strands_.pigmentPaint.clear();
     for (size_t s = 0; s < total; ++s)
-      std::copy_n(std::array<float, 4>{1.0f, 0.0f, 1.0f, 0.0f}.begin(), 4, &strands_.pigmentPaint[4 * s]);
+      strands_.pigmentPaint.insert(strands_.pigmentPaint.end(), {1.0f, 0.0f, 1.0f, 0.0f});
   }
   const std::vector<GroomStroke> eumelanin = strokesOf(style.strokes, GroomBrush::PaintMelanin);
   const std::vector<GroomStroke> pheomelanin = strokesOf(style.strokes, GroomBrush::PaintPheomelanin);
@@ -427,7 +427,8 @@ void HairGroom::growChildren(const HairStyle& style) {
       const float ratio = strandLength(style, root, key) / std::max(guideLength, 1e-6f);
       const float wanderStart = 256.0f * random01(style.seed, key, 5);
       const float clumping =
-          std::clamp(paintedValue(style.strokes, GroomBrush::PaintClumping, root - proxy_.headCenter(), style.clumping),
+          std::clamp(paintedValue(style.strokes, GroomBrush::PaintClumping, root - proxy_.headCenter(),
+                                  unpaintedValue(style, GroomBrush::PaintClumping)),
                      0.0f, 1.0f);
       const float wanderRate = style.frizzFrequency * guideLength * ratio / float(std::max(1, points - 1));
       float* out = strands_.strand(s);

@@ -68,6 +68,19 @@ HairStyle curly() {
 
 }  // namespace
 
+float unpaintedValue(const HairStyle& style, GroomBrush brush) {
+  switch (brush) {
+    case GroomBrush::PaintClumping:
+      return style.clumping;
+    case GroomBrush::PaintMelanin:
+      return style.shading.melanin;
+    case GroomBrush::PaintPheomelanin:
+      return style.shading.pheomelanin;
+    default:
+      return paintRange(brush).unpainted;
+  }
+}
+
 std::vector<std::string> builtinHairStyleNames() { return {"long_straight", "bob", "wavy", "curly"}; }
 
 HairStyle builtinHairStyle(const std::string& name) {

@@ -121,6 +121,10 @@ struct HairStyle {
   std::vector<GroomStroke> strokes;
 };
 
+// What `brush`'s map holds where nothing is painted: the style's own
+// clumping or pigments, else paintRange()'s unpainted value.
+float unpaintedValue(const HairStyle& style, GroomBrush brush);
+
 // The built-in hairstyles: "long_straight", "bob", "wavy", "curly".
 std::vector<std::string> builtinHairStyleNames();
 // Throws mq::Error naming the known styles when `name` is not one of them.

@@ -4,6 +4,7 @@
 // count so loops over strands vectorise and split across threads.
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace mq {
@@ -21,6 +22,13 @@ struct Strands {
   size_t strandCount() const { return pointsPerStrand > 0 ? points.size() / (3 * size_t(pointsPerStrand)) : 0; }
   float* strand(size_t s) { return points.data() + 3 * s * pointsPerStrand; }
   const float* strand(size_t s) const { return points.data() + 3 * s * pointsPerStrand; }
+  // Strand s's eumelanin and pheomelanin over the style's `melanin` and
+  // `pheomelanin` (the style's own where nothing is painted).
+  std::pair<float, float> pigments(size_t s, float melanin, float pheomelanin) const {
+    if (pigmentPaint.size() < 4 * (s + 1)) return {melanin, pheomelanin};
+    const float* p = &pigmentPaint[4 * s];
+    return {p[0] * melanin + p[1], p[2] * pheomelanin + p[3]};
+  }
 };
 
 }  // namespace mq

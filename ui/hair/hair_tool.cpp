@@ -628,10 +628,7 @@ GroomStroke HairTool::newStroke(bool invert) const {
   stroke.mirror = groomMirror_;
   if (isPaintBrush(stroke.brush)) {
     const PaintRange range = paintRange(stroke.brush);
-    const float unpainted = stroke.brush == GroomBrush::PaintClumping      ? style_->clumping
-                            : stroke.brush == GroomBrush::PaintMelanin     ? style_->shading.melanin
-                            : stroke.brush == GroomBrush::PaintPheomelanin ? style_->shading.pheomelanin
-                                                                           : range.unpainted;
+    const float unpainted = unpaintedValue(*style_, stroke.brush);
     stroke.value = std::clamp(invert ? unpainted : groomValue_, range.min, range.max);
   }
   return stroke;
