@@ -27,6 +27,20 @@ glm::vec3 alongStrand(const float* strand, int n, float t, int& index, float& bl
 
 namespace {
 
+// Per guide point: how far it is from the body (PosedHairColliders::
+// clearance). A child point whose rest offset from its anchor is shorter
+// than that is outside the body wherever the guide's frame turns it, so it
+// skips the body query: most child points are far from every proxy, and the
+// query over every proxy is most of a child's cost.
+std::vector<float> guideClearances(const std::vector<float>& guidePositions, const PosedHairColliders* body) {
+  if (!body) return {};
+  std::vector<float> clearances(guidePositions.size() / 3);
+  ThreadPool::shared().parallelFor(0, clearances.size(), 1024, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) clearances[i] = body->clearance(load(guidePositions.data(), i));
+  });
+  return clearances;
+}
+
 // Children [firstChild, strandCount) of restChildren into childPositions
 // (laid out like restChildren.points).
 void followFrom(const Strands& restChildren, size_t firstChild, const Strands& restGuides,
@@ -37,6 +51,7 @@ void followFrom(const Strands& restChildren, size_t firstChild, const Strands& r
   const size_t guides = restGuides.strandCount();
   if (children <= firstChild) return;
   const bool sameCount = nc == ng;
+  const std::vector<float> clearances = guideClearances(guidePositions, body);
   ThreadPool::shared().parallelFor(firstChild, children, 256, [&](size_t begin, size_t end) {
     for (size_t c = begin; c < end; ++c) {
       const float* rest = restChildren.strand(c);
@@ -49,13 +64,16 @@ void followFrom(const Strands& restChildren, size_t firstChild, const Strands& r
       const float* guideRest = restGuides.strand(g);
       const float* guideNow = guidePositions.data() + 3 * size_t(g) * ng;
       const glm::quat* frames = guideFrames.data() + size_t(g) * ng;
+      const float* guideClearance = body ? clearances.data() + size_t(g) * ng : nullptr;
       for (int i = 0; i < nc; ++i) {
         glm::vec3 anchorRest, anchorNow;
         glm::quat frame;
+        float clearance = 0.0f;
         if (sameCount) {
           anchorRest = load(guideRest, i);
           anchorNow = load(guideNow, i);
           frame = frames[i];
+          if (body) clearance = guideClearance[i];
         } else {
           const float t = nc > 1 ? float(i) / float(nc - 1) : 0.0f;
           int index;
@@ -63,10 +81,20 @@ void followFrom(const Strands& restChildren, size_t firstChild, const Strands& r
           anchorRest = alongStrand(guideRest, ng, t, index, blend);
           anchorNow = alongStrand(guideNow, ng, t, index, blend);
           frame = blend < 0.5f ? frames[index] : frames[index + 1];
+          if (body) {
+            // The anchor lies between two guide points: each one's clearance
+            // less the way from it.
+            const float segment = glm::length(load(guideNow, index + 1) - load(guideNow, index));
+            clearance =
+                std::max(guideClearance[index] - blend * segment, guideClearance[index + 1] - (1.0f - blend) * segment);
+          }
         }
-        glm::vec3 p = anchorNow + frame * (load(rest, i) - anchorRest);
-        glm::vec3 normal;
-        if (body && i > 0) body->pushOut(p, normal);
+        const glm::vec3 offset = load(rest, i) - anchorRest;
+        glm::vec3 p = anchorNow + frame * offset;
+        if (body && i > 0 && glm::dot(offset, offset) * 1.0001f + 1e-10f >= clearance * clearance) {
+          glm::vec3 normal;
+          body->pushOut(p, normal);
+        }
         out[3 * i] = p.x;
         out[3 * i + 1] = p.y;
         out[3 * i + 2] = p.z;

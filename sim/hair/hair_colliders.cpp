@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -81,6 +82,27 @@ bool PosedHairColliders::contains(const glm::vec3& p, float tolerance) const {
   return surface && surface->distance(p) < surfaceMargin - tolerance - 1e-5f;
 }
 
+float PosedHairColliders::clearance(const glm::vec3& p) const {
+  float nearest = std::numeric_limits<float>::max();
+  for (const Capsule& c : capsules) {
+    const float t = glm::clamp(glm::dot(p - c.a, c.ab) * c.invLengthSquared, 0.0f, 1.0f);
+    nearest = std::min(nearest, glm::length(p - (c.a + t * c.ab)) - c.radius);
+  }
+  for (const Ellipsoid& e : ellipsoids) {
+    const glm::vec3 fromCenter = p - e.boundCenter;
+    const float boundGap = std::sqrt(glm::dot(fromCenter, fromCenter)) - std::sqrt(e.boundRadiusSquared);
+    if (boundGap >= nearest) continue;
+    // A unit-space gap |q| - 1 is at least smallestRadius times as long in
+    // the world: the map from unit space stretches by no less than that.
+    const glm::vec3 q = glm::vec3(e.unitFromWorld * glm::vec4(p, 1.0f));
+    nearest = std::min(nearest, std::max(boundGap, (glm::length(q) - 1.0f) * e.smallestRadius));
+  }
+  // The field is interpolated between grid samples, so it may change up to
+  // sqrt(3) times faster than the distance it samples.
+  if (surface) nearest = std::min(nearest, (surface->distance(p) - surfaceMargin) / 1.75f);
+  return std::max(nearest, 0.0f);
+}
+
 PosedHairColliders HairColliders::posed(const std::vector<glm::mat4>& worldFromBone, float margin) const {
   auto transformOf = [&](int bone) {
     return bone >= 0 && bone < int(worldFromBone.size()) ? worldFromBone[bone] : glm::mat4(1.0f);
@@ -103,8 +125,9 @@ PosedHairColliders HairColliders::posed(const std::vector<glm::mat4>& worldFromB
     const glm::mat3 axes(worldFromUnit);
     const float reach2 =
         (glm::dot(axes[0], axes[0]) + glm::dot(axes[1], axes[1]) + glm::dot(axes[2], axes[2])) * 1.002f;
+    const float smallest = std::min({glm::length(axes[0]), glm::length(axes[1]), glm::length(axes[2])});
     out.ellipsoids.push_back(
-        {worldFromUnit, glm::inverse(worldFromUnit), glm::vec3(worldFromUnit[3]), reach2 + 1e-12f});
+        {worldFromUnit, glm::inverse(worldFromUnit), glm::vec3(worldFromUnit[3]), reach2 + 1e-12f, smallest});
   }
   out.surface = surface;
   out.surfaceMargin = margin;

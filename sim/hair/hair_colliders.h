@@ -48,6 +48,7 @@ class PosedHairColliders {
     // A ball holding the ellipsoid: points outside it skip the transform.
     glm::vec3 boundCenter{0.0f};
     float boundRadiusSquared = 1e30f;
+    float smallestRadius = 0.0f;  // the shortest semi-axis in world space
   };
 
   std::vector<Capsule> capsules;
@@ -59,6 +60,10 @@ class PosedHairColliders {
   // Moves p onto the nearest proxy surface when it is inside one; returns
   // true and the outward surface normal when it moved.
   bool pushOut(glm::vec3& p, glm::vec3& normal) const;
+  // A lower bound of the distance from p to the nearest proxy (0 inside
+  // one): anything closer to p than that is outside every proxy, so
+  // pushOut would leave it where it is.
+  float clearance(const glm::vec3& p) const;
   // True when p lies deeper than `tolerance` inside any proxy.
   bool contains(const glm::vec3& p, float tolerance = 0.0f) const;
 

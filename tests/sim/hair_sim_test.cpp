@@ -251,6 +251,88 @@ TEST(HairSim, GroomedStrandsPoseGuidesFirstThenChildren) {
     }
 }
 
+// A head ellipsoid (turned, not axis-aligned) and two capsules, posed with a
+// turn and a margin, as the children's body query sees them.
+PosedHairColliders turnedHeadAndShoulders() {
+  HairColliders colliders;
+  colliders.addEllipsoid(0, glm::vec3(0.0f, 0.02f, 0.0f), glm::vec3(0.08f, 0.11f, 0.095f),
+                         glm::angleAxis(0.3f, glm::normalize(glm::vec3(1.0f, 0.0f, 1.0f))));
+  colliders.addCapsule(0, glm::vec3(0.0f, -0.2f, -0.01f), glm::vec3(0.0f, -0.08f, 0.0f), 0.05f);
+  colliders.addCapsule(-1, glm::vec3(-0.18f, -0.25f, 0.0f), glm::vec3(0.18f, -0.25f, 0.0f), 0.07f);
+  const glm::mat4 head =
+      glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(0.01f, 0.0f, 0.02f)), 0.5f, glm::vec3(0.0f, 1.0f, 0.0f));
+  return colliders.posed({head}, 0.002f);
+}
+
+TEST(HairColliders, ClearanceNeverOverstatesTheDistanceToAProxy) {
+  const PosedHairColliders body = turnedHeadAndShoulders();
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> box(-0.3f, 0.3f), unit(-1.0f, 1.0f);
+  int outside = 0, inside = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const glm::vec3 p(box(rng), box(rng) - 0.05f, box(rng) * 0.5f);
+    const float clearance = body.clearance(p);
+    if (body.contains(p)) {
+      EXPECT_EQ(clearance, 0.0f);
+      ++inside;
+      continue;
+    }
+    if (clearance <= 0.0f) continue;
+    ++outside;
+    // Points just inside the clearance ball, in any direction, are outside
+    // every proxy: the body query would not move them.
+    for (int k = 0; k < 8; ++k) {
+      glm::vec3 direction(unit(rng), unit(rng), unit(rng));
+      if (glm::length(direction) < 1e-3f) continue;
+      glm::vec3 q = p + 0.999f * clearance * glm::normalize(direction);
+      const glm::vec3 before = q;
+      glm::vec3 normal;
+      EXPECT_FALSE(body.pushOut(q, normal)) << trial;
+      EXPECT_EQ(q, before);
+    }
+  }
+  EXPECT_GT(inside, 100);
+  EXPECT_GT(outside, 2000);
+  // Beside a capsule and nothing else, the bound is the exact distance.
+  const glm::vec3 besideShoulder(0.0f, -0.25f, 0.2f);
+  EXPECT_NEAR(body.clearance(besideShoulder), 0.2f - 0.072f, 1e-5f);
+}
+
+TEST(HairSim, ChildrenOutOfTheBodyAsIfEveryPointWereQueried) {
+  // Guides draped over the head; children up to 5 cm from them, so some of
+  // their points are inside the body and most are far from it.
+  const PosedHairColliders body = turnedHeadAndShoulders();
+  const Strands guides = strandsOnSphere(40, 16, 0.12f, 0.3f, 21);
+  Strands children;
+  children.pointsPerStrand = 16;
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  for (size_t c = 0; c < 800; ++c) {
+    const size_t g = c % guides.strandCount();
+    const glm::vec3 offset = 0.03f * glm::vec3(unit(rng), unit(rng), unit(rng));
+    for (int i = 0; i < 16; ++i) {
+      const glm::vec3 p = pointOf(guides.points, g * 16 + i) + (i == 0 ? glm::vec3(0.0f) : offset);
+      children.points.insert(children.points.end(), {p.x, p.y, p.z});
+    }
+    children.guideOf.push_back(int(g));
+  }
+  HairSimulator sim;
+  sim.setRest(guides);
+  for (int step = 0; step < 60; ++step) sim.step(kDt, glm::mat4(1.0f), &body);
+
+  std::vector<float> followed, reference;
+  followGuides(children, sim, followed, &body);
+  followGuides(children, sim, reference);
+  int moved = 0;
+  for (size_t k = 0; k < reference.size() / 3; ++k) {
+    if (k % 16 == 0) continue;  // roots stay on the scalp
+    glm::vec3 p = pointOf(reference, k), normal;
+    if (body.pushOut(p, normal)) ++moved;
+    ASSERT_EQ(pointOf(followed, k), p) << "child point " << k;
+  }
+  EXPECT_GT(moved, 50);
+}
+
 // A skinned character: a sphere weighted to "head" above a cylinder weighted
 // to "neck"; the colliders built from the fitted body proxy match them and
 // follow their bones.

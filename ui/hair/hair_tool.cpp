@@ -434,13 +434,17 @@ void HairTool::showPosedStrands() {
   const Strands& all = groom_->strands();
   const size_t guideFloats = 3 * groom_->guideCount() * size_t(all.pointsPerStrand);
   std::vector<float> points;
+  // Children are kept out of the body as in mannequin-cli's simulate/render.
+  const PosedHairColliders body =
+      rig_ ? rig_->body.posed(document->posed().worldFromBone(), characterHairParams().collisionMargin)
+           : PosedHairColliders{};
   if (!guidesOnly_ && bake_ && bake_->frameAt(document->time())) {
     const std::vector<float>& guides = *bake_->frameAt(document->time());
     const Strands restGuides = leadingStrands(all, groom_->guideCount());
-    followGuides(all, restGuides, guides, guideFrames(restGuides, guides, rotationOf(posedFromRest)), points);
+    followGuides(all, restGuides, guides, guideFrames(restGuides, guides, rotationOf(posedFromRest)), points, &body);
     std::copy(guides.begin(), guides.begin() + std::min(guideFloats, guides.size()), points.begin());
   } else if (!guidesOnly_ && simulating_ && simulator_) {
-    poseGroomedStrands(all, *simulator_, points);
+    poseGroomedStrands(all, *simulator_, points, &body);
   } else {
     if (posedFromRest == glm::mat4(1.0f) && !simulating_) {
       if (!bake_) return;  // setStrands already shows the rest shape
