@@ -130,7 +130,7 @@ int runSimulate(const std::vector<std::string>& argv) {
   const cli::Args args(argv);
   args.allowOnly({"--frames", "--fps", "--stats-json", "--export-dir", "--export-format", "--layers", "--skinning",
                   "--helper-bones", "--regenerate-weights", "--smooth-weights", "--scale", "--auto-rig", "--clip",
-                  "--hair-volume", "--hair-friction", "--hair-crossings"});
+                  "--hair-volume", "--hair-friction", "--hair-crossings", "--hair-wisps"});
   const cli::HairRunOptions hairOptions = cli::hairRunOptions(args);  // checked before anything runs
   const std::string format = args.option("--export-format", "obj");
   if (format != "obj" && format != "pc2") throw Error("--export-format expects obj or pc2");
@@ -239,12 +239,14 @@ const cli::Registration reg(
      "obj|pc2]]\n"
      "         [--layers on|off] [--skinning lbs|dqs|cones] [--helper-bones] [--regenerate-weights] [--smooth-weights] "
      "[--scale S] [--auto-rig]\n"
-     "         [--hair-volume V] [--hair-friction F] [--hair-crossings]",
+     "         [--hair-volume V] [--hair-friction F] [--hair-crossings] [--hair-wisps adaptive|all]",
      "run the scene's cloth (sheet and garments) and hair headless; stats as JSON, frames as OBJ/PLY\n"
      "(one file per frame), or with --export-format pc2 one Point Cache 2 file per cloth and its mesh",
      runSimulate,
      "--hair-volume V, --hair-friction F: hair against hair, 0 to 1 (the style's \"dynamics\"): how strongly\n"
      "the hair holds its volume, and its internal friction. --hair-crossings: count, every frame, the pairs of\n"
-     "guide segments closer than half the guides' root spacing into the stats, beside the groom's own count."});
+     "guide segments closer than half the guides' root spacing into the stats, beside the groom's own count.\n"
+     "--hair-wisps adaptive: simulate one guide per wisp where the hair moves together (all: every guide;\n"
+     "default: the style's \"adaptive_wisps\")."});
 
 }  // namespace

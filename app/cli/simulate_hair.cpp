@@ -65,6 +65,11 @@ HairRunOptions hairRunOptions(const Args& args) {
   options.volume = unitOption(args, "--hair-volume");
   options.friction = unitOption(args, "--hair-friction");
   options.countCrossings = args.has("--hair-crossings");
+  if (args.has("--hair-wisps")) {
+    const std::string wisps = args.option("--hair-wisps", "");
+    if (wisps != "adaptive" && wisps != "all") throw Error("--hair-wisps expects adaptive or all");
+    options.adaptiveWisps = wisps == "adaptive" ? 1 : 0;
+  }
   return options;
 }
 
@@ -73,6 +78,7 @@ void simulateSceneHair(const LoadedScene& scene, int frames, float fps, const st
   HairSection section = sceneHairSection(scene);
   if (options.volume >= 0.0f) section.style.dynamics.volume = options.volume;
   if (options.friction >= 0.0f) section.style.dynamics.friction = options.friction;
+  if (options.adaptiveWisps >= 0) section.style.dynamics.adaptiveWisps = options.adaptiveWisps == 1;
   SceneHair hair(scene, section);
   const HairSimulator& sim = hair.simulator();
   CrossingCount crossings;
@@ -88,6 +94,7 @@ void simulateSceneHair(const LoadedScene& scene, int frames, float fps, const st
   float maxLengthError = 0.0f;
   size_t maxInside = 0, maxRootsInside = 0;
   double rssAfterFirstFrame = 0.0;  // MB: memory must stay flat over long runs
+  size_t simulatedGuides = 0, fewestSimulatedGuides = sim.strandCount();
   for (int f = 0; f < frames; ++f) {
     const auto t0 = std::chrono::steady_clock::now();
     hair.step(start + float(f + 1) / fps, 1.0f / fps);
@@ -96,6 +103,8 @@ void simulateSceneHair(const LoadedScene& scene, int frames, float fps, const st
     guideSeconds += std::chrono::duration<double>(t1 - t0).count();
     childSeconds += secondsSince(t1);
     maxLengthError = std::max(maxLengthError, hair.maxGuideLengthError());
+    simulatedGuides += sim.simulatedStrands();
+    fewestSimulatedGuides = std::min(fewestSimulatedGuides, sim.simulatedStrands());
     if (f == 0) rssAfterFirstFrame = residentMegabytes();
     const SceneHair::InsideCount inside = hair.pointsInsideBody();
     maxInside = std::max(maxInside, inside.points);
@@ -127,6 +136,9 @@ void simulateSceneHair(const LoadedScene& scene, int frames, float fps, const st
   stats["hair_rss_mb_end"] = residentMegabytes();
   stats["hair_volume"] = hair.style().dynamics.volume;
   stats["hair_friction"] = hair.style().dynamics.friction;
+  stats["hair_adaptive_wisps"] = hair.style().dynamics.adaptiveWisps;
+  stats["hair_simulated_guides_mean"] = double(simulatedGuides) / double(std::max(1, frames));
+  stats["hair_simulated_guides_min"] = fewestSimulatedGuides;
   if (options.countCrossings) {
     stats["hair_close_guide_distance"] = crossings.distance;
     stats["hair_close_guide_pairs_groomed"] =

@@ -15,13 +15,15 @@
 namespace mq::cli {
 
 // simulate's hair options: --hair-volume V and --hair-friction F override the
-// style's dynamics (0 .. 1); --hair-crossings counts, every frame, the pairs
+// style's dynamics (0 .. 1), --hair-wisps adaptive|all its adaptive wisps;
+// --hair-crossings counts, every frame, the pairs
 // of guide segments of different strands closer than half the guides' root
 // spacing, into hair_close_guide_pairs_* (beside the groom's own count:
 // what the motion adds is hair pressed into hair).
 struct HairRunOptions {
   float volume = -1.0f, friction = -1.0f;  // < 0: the document's
   bool countCrossings = false;
+  int adaptiveWisps = -1;  // --hair-wisps adaptive (1) or all (0); -1: the document's
 };
 HairRunOptions hairRunOptions(const Args& args);
 

@@ -75,11 +75,16 @@ struct HairShadingParams {
 };
 
 // How the hair moves against itself (sim/hair/hair_interaction.h): how
-// strongly it holds its volume (0 off .. 1) and its internal friction (0 .. 1).
+// strongly it holds its volume (0 off .. 1) and its internal friction (0 .. 1);
+// and whether guides that move together are simulated as one wisp.
 struct HairDynamicsParams {
   float volume = 0.0f;
   float friction = 0.0f;
-  bool operator==(const HairDynamicsParams& o) const { return volume == o.volume && friction == o.friction; }
+  // Simulate merged wisps where the hair moves together (sim/hair/adaptive_wisps.h).
+  bool adaptiveWisps = false;
+  bool operator==(const HairDynamicsParams& o) const {
+    return volume == o.volume && friction == o.friction && adaptiveWisps == o.adaptiveWisps;
+  }
   bool operator!=(const HairDynamicsParams& o) const { return !(*this == o); }
 };
 

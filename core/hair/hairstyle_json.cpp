@@ -166,14 +166,19 @@ json toJson(const HairShadingParams& s) {
 
 HairDynamicsParams hairDynamicsFromJson(const json& j, const HairDynamicsParams& base, const std::string& path) {
   const JsonFields f(j, path);
-  f.allowOnly({"volume", "friction"});
+  f.allowOnly({"volume", "friction", "adaptive_wisps"});
   HairDynamicsParams d = base;
   d.volume = f.number("volume", d.volume, 0.0, 1.0);
   d.friction = f.number("friction", d.friction, 0.0, 1.0);
+  d.adaptiveWisps = f.boolean("adaptive_wisps", d.adaptiveWisps);
   return d;
 }
 
-json toJson(const HairDynamicsParams& d) { return {{"volume", tidy(d.volume)}, {"friction", tidy(d.friction)}}; }
+json toJson(const HairDynamicsParams& d) {
+  json out = {{"volume", tidy(d.volume)}, {"friction", tidy(d.friction)}};
+  if (d.adaptiveWisps) out["adaptive_wisps"] = true;
+  return out;
+}
 
 HairStyle hairStyleFromJson(const json& j, const std::string& path) {
   if (j.is_string()) {

@@ -43,6 +43,7 @@ HairSimParams characterHairParams(const HairDynamicsParams& dynamics) {
   params.globalRange = 1.0f;
   params.interaction.volume = dynamics.volume;
   params.interaction.friction = dynamics.friction;
+  params.adaptiveWisps = dynamics.adaptiveWisps;
   return params;
 }
 

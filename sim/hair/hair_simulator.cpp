@@ -74,6 +74,10 @@ void HairSimulator::setRest(const Strands& guides) {
 void HairSimulator::setParams(const HairSimParams& params) {
   // A new radius needs new rest densities, even while the interaction is off.
   if (params.interaction.radius != params_.interaction.radius) interactionReady_ = false;
+  if (!params.adaptiveWisps && params_.adaptiveWisps) {
+    active_.clear();
+    wisps_ = AdaptiveWisps{};
+  }
   params_ = params;
   if (!params_.interaction.enabled() || strandCount_ == 0) return;
   if (!interactionReady_) {
@@ -90,12 +94,24 @@ void HairSimulator::reset() {
   frames_.assign(strandCount_ * size_t(pointsPerStrand_), glm::quat(1.0f, 0.0f, 0.0f, 0.0f));
   previousRoots_.clear();
   hasPreviousRoots_ = false;
+  active_.clear();
+  wisps_ = AdaptiveWisps{};  // rebuilt at the next step, every guide simulated
 }
 
 Strands HairSimulator::current() const {
   Strands out = rest_;
   out.points = positions_;
   return out;
+}
+
+void HairSimulator::placeStrand(size_t s, const glm::vec3* points, const glm::vec3* velocities,
+                                const glm::quat* frames) {
+  const size_t base = s * size_t(pointsPerStrand_);
+  for (int i = 0; i < pointsPerStrand_; ++i) {
+    store(positions_.data(), base + i, points[i]);
+    store(velocities_.data(), base + i, velocities[i]);
+    frames_[base + i] = frames[i];
+  }
 }
 
 void HairSimulator::step(float dt, const glm::mat4& posedFromRest, const PosedHairColliders* body) {
@@ -151,13 +167,18 @@ void HairSimulator::step(float dt, const std::vector<glm::vec3>& rootPositions,
     substep(h, roots, body);
   }
   previousRoots_ = std::move(targets);
+  if (params_.adaptiveWisps) {
+    if (!wisps_.built()) wisps_.build(*this, params_.wisps);
+    wisps_.update(*this, dt, body && !body->empty() ? body : nullptr);
+  }
 }
 
 void HairSimulator::substep(float h, const std::vector<RootTarget>& roots, const PosedHairColliders* body) {
   if (body && body->empty()) body = nullptr;
   if (!(interactionReady_ && params_.interaction.enabled())) {
     ThreadPool::shared().parallelFor(0, strandCount_, 64, [&](size_t begin, size_t end) {
-      for (size_t s = begin; s < end; ++s) stepStrand(s, h, roots[s], body);
+      for (size_t s = begin; s < end; ++s)
+        if (isActive(s)) stepStrand(s, h, roots[s], body);
     });
     return;
   }
@@ -166,11 +187,18 @@ void HairSimulator::substep(float h, const std::vector<RootTarget>& roots, const
   const size_t n = size_t(pointsPerStrand_);
   predicted_.resize(strandCount_ * n);
   ThreadPool::shared().parallelFor(0, strandCount_, 64, [&](size_t begin, size_t end) {
-    for (size_t s = begin; s < end; ++s) predictStrand(s, h, roots[s], predicted_.data() + s * n);
+    for (size_t s = begin; s < end; ++s) {
+      if (isActive(s)) {
+        predictStrand(s, h, roots[s], predicted_.data() + s * n);
+      } else {  // where its owner placed it
+        for (size_t i = 0; i < n; ++i) predicted_[s * n + i] = load(positions_.data(), s * n + i);
+      }
+    }
   });
   interaction_.apply(predicted_, positions_, h);
   ThreadPool::shared().parallelFor(0, strandCount_, 64, [&](size_t begin, size_t end) {
-    for (size_t s = begin; s < end; ++s) solveStrand(s, h, roots[s], body, predicted_.data() + s * n);
+    for (size_t s = begin; s < end; ++s)
+      if (isActive(s)) solveStrand(s, h, roots[s], body, predicted_.data() + s * n);
   });
 }
 

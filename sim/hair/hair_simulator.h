@@ -18,12 +18,14 @@
 // Strands are independent, so the loop splits across ThreadPool::shared() and
 // the result does not depend on scheduling.
 
+#include <algorithm>
 #include <vector>
 
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
 #include "core/hair/strands.h"
+#include "sim/hair/adaptive_wisps.h"
 #include "sim/hair/hair_colliders.h"
 #include "sim/hair/hair_interaction.h"
 
@@ -40,6 +42,8 @@ struct HairSimParams {
   float collisionMargin = 0.002f;  // metres kept between hair and body proxies
   float maxSubstep = 1.0f / 60.0f;
   HairInteractionParams interaction;  // hair-hair pressure and friction (off by default)
+  bool adaptiveWisps = false;         // simulate merged wisps' guides only (adaptive_wisps.h)
+  AdaptiveWispParams wisps;
 };
 
 class HairSimulator {
@@ -82,6 +86,18 @@ class HairSimulator {
   // The current guides as Strands (rest arrays with current points).
   Strands current() const;
 
+  // Which strands the next steps move (1) and which they leave where they
+  // are (0); empty: all. A strand left out is placed by its owner instead
+  // (adaptive wisps: it follows its wisp's simulated strand).
+  void setActive(std::vector<uint8_t> active) { active_ = std::move(active); }
+  bool isActive(size_t s) const { return active_.empty() || active_[s]; }
+  // Guides the last step simulated (the rest followed their wisp's).
+  size_t simulatedStrands() const {
+    return active_.empty() ? strandCount_ : size_t(std::count(active_.begin(), active_.end(), uint8_t(1)));
+  }
+  // Sets strand s's points, velocities and frames (pointsPerStrand() each).
+  void placeStrand(size_t s, const glm::vec3* points, const glm::vec3* velocities, const glm::quat* frames);
+
  private:
   struct RootTarget {
     glm::vec3 position;
@@ -104,6 +120,8 @@ class HairSimulator {
   std::vector<float> positions_, velocities_;
   std::vector<glm::quat> frames_;
   std::vector<RootTarget> previousRoots_;
+  std::vector<uint8_t> active_;  // per strand; empty: all
+  AdaptiveWisps wisps_;          // while params_.adaptiveWisps
   bool hasPreviousRoots_ = false;
   // Per-substep constants derived from params_.
   float bendPerSubstep_ = 0.0f;

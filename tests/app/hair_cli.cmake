@@ -73,3 +73,17 @@ stat("${WORK}/imported.json" hair_max_length_error length_error)
 if(NOT inside EQUAL 0 OR length_error GREATER 0.02)
   message(FATAL_ERROR "imported character's hair: points inside ${inside}, length error ${length_error}")
 endif()
+
+# ... and the same as adaptive wisps: fewer guides simulated, none inside the
+# body, every guide (simulated or following) at its length.
+run(0 "${CLI}" simulate "${WORK}/imported.mqscene" --frames 60 --hair-wisps adaptive
+    --stats-json "${WORK}/imported_wisps.json")
+stat("${WORK}/imported_wisps.json" hair_points_inside_body inside)
+stat("${WORK}/imported_wisps.json" hair_max_length_error length_error)
+stat("${WORK}/imported_wisps.json" hair_guides guides)
+stat("${WORK}/imported_wisps.json" hair_simulated_guides_min fewest)
+stat("${WORK}/imported_wisps.json" hair_adaptive_wisps adaptive)
+if(NOT adaptive OR NOT inside EQUAL 0 OR length_error GREATER 0.02 OR NOT fewest LESS guides)
+  message(FATAL_ERROR "imported character's adaptive wisps: on ${adaptive}, points inside ${inside}, "
+                      "length error ${length_error}, fewest guides simulated ${fewest} of ${guides}")
+endif()

@@ -69,6 +69,14 @@ TEST(HairDynamicsJson, AbsentMeansOffReadWrittenAndBadValuesNamed) {
   EXPECT_THROW(hairStyleFromJson(json{{"dynamics", {{"friction", -0.1}}}}), Error);
   EXPECT_THROW(hairStyleFromJson(json{{"dynamics", 0.5}}), Error);
   EXPECT_THROW(hairStyleFromJson(json{{"dynamics", {{"frction", 0.2}}}}), Error);  // a typo is not ignored
+
+  // Adaptive wisps: off unless asked, written only when on, a boolean.
+  EXPECT_FALSE(style.dynamics.adaptiveWisps);
+  EXPECT_FALSE(written["dynamics"].contains("adaptive_wisps"));
+  const HairStyle wisps = hairStyleFromJson(json{{"preset", "bob"}, {"dynamics", {{"adaptive_wisps", true}}}});
+  EXPECT_TRUE(wisps.dynamics.adaptiveWisps);
+  EXPECT_EQ(hairStyleFromJson(toJson(wisps)).dynamics, wisps.dynamics);
+  EXPECT_THROW(hairStyleFromJson(json{{"dynamics", {{"adaptive_wisps", "yes"}}}}), Error);
 }
 
 }  // namespace

@@ -51,7 +51,8 @@ enum FieldKey {
   kRoughness,
   kPigmentPreset,
   kVolume,
-  kHairFriction
+  kHairFriction,
+  kAdaptiveWisps
 };
 
 // Scalp cone axes (world, rest pose; the character faces +Z).
@@ -325,6 +326,10 @@ QWidget* HairPanel::makeDynamicsGroup() {
       tr("Self-shadowing from a stack of opacity maps along the light (faster) "
          "instead of the exact count of the hair in front of each point"));
   simulate_ = new QCheckBox(tr("Simulate while playing"));
+  adaptiveWisps_ = new QCheckBox(tr("Adaptive wisps"));
+  adaptiveWisps_->setToolTip(
+      tr("Simulate one guide per wisp where the hair moves together; wisps split where it swings or meets "
+         "the body and merge back when it calms down"));
   bake_ = new QPushButton(tr("Bake clip"));
   // Hair against hair; on the bake's row, labels inside the boxes and no
   // taller than the button, so the dock keeps its size (the garments' live
@@ -344,8 +349,15 @@ QWidget* HairPanel::makeDynamicsGroup() {
   bakeRow->addWidget(hairFriction_);
   dynamicsLayout->addWidget(handles_);
   dynamicsLayout->addWidget(shadowMaps_);
-  dynamicsLayout->addWidget(simulate_);
+  // On the simulate row: the dock keeps its height.
+  auto* simulateRow = new QHBoxLayout;
+  simulateRow->addWidget(simulate_);
+  simulateRow->addWidget(adaptiveWisps_);
+  dynamicsLayout->addLayout(simulateRow);
   dynamicsLayout->addLayout(bakeRow);
+  connect(adaptiveWisps_, &QCheckBox::toggled, this, [this](bool on) {
+    editField(tr("Adaptive wisps"), kAdaptiveWisps, [&](HairStyle& s) { s.dynamics.adaptiveWisps = on; });
+  });
   connect(volume_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
     editField(tr("Hair volume"), kVolume, [&](HairStyle& s) { s.dynamics.volume = float(v); });
   });
@@ -717,7 +729,7 @@ void HairPanel::refresh() {
   }
   for (QWidget* w :
        std::initializer_list<QWidget*>{addStream_, addSource_, addVortex_, density_, length_, clumping_, frizz_,
-                                       rootColor_, tipColor_, simulate_, bake_, volume_, hairFriction_})
+                                       rootColor_, tipColor_, simulate_, bake_, volume_, hairFriction_, adaptiveWisps_})
     w->setEnabled(hair);
   delete_->setEnabled(hair && tool_->selectedPrimitive().valid());
   groomBrush_->setEnabled(hair);
@@ -733,6 +745,10 @@ void HairPanel::refresh() {
                                std::pair{volume_, s.dynamics.volume}, std::pair{hairFriction_, s.dynamics.friction}}) {
       QSignalBlocker block(spin);
       spin->setValue(value);
+    }
+    {
+      QSignalBlocker block(adaptiveWisps_);
+      adaptiveWisps_->setChecked(s.dynamics.adaptiveWisps);
     }
     paintSwatch(rootColor_, s.rootColor);
     paintSwatch(tipColor_, s.tipColor);

@@ -44,6 +44,7 @@ class HairPanel : public QWidget {
   QDoubleSpinBox* hairFrictionBox() const { return hairFriction_; }
   QDoubleSpinBox* positionBox(int axis) const { return position_[axis]; }
   QCheckBox* shadowMapsBox() const { return shadowMaps_; }
+  QCheckBox* adaptiveWispsBox() const { return adaptiveWisps_; }
   QSpinBox* displayLimitBox() const { return displayLimit_; }
   QLabel* displayCountLabel() const { return displayCount_; }
   // Scalp group: mode (ScalpMode order), bone, axis preset, axis, angle,
@@ -112,6 +113,7 @@ class HairPanel : public QWidget {
   QSpinBox* displayLimit_;
   QLabel* displayCount_;
   QCheckBox *handles_, *simulate_, *shadowMaps_;
+  QCheckBox* adaptiveWisps_;  // the style's dynamics
   QPushButton* bake_;
   QComboBox *scalpMode_, *scalpBone_, *scalpAxisPreset_;
   QDoubleSpinBox* scalpAxis_[3];
