@@ -185,7 +185,7 @@ void HairInteraction::setRest(const std::vector<float>& restPoints, size_t stran
   for (size_t i = 0; i < rest.size(); ++i) rest[i] = load(restPoints.data(), i);
   computeDensities(rest);
   restDensity_.resize(rest.size());
-  for (size_t e = 0; e < rest.size(); ++e) restDensity_[sorted_[e]] = sortedDensity_[e];
+  for (size_t e = 0; e < rest.size(); ++e) restDensity_[grid_.order()[e]] = sortedDensity_[e];
   const float floor = kernel(0.25f, 1.0f);  // W(R/2)
   for (float& rho : restDensity_) rho = std::max(rho, floor);
 }
@@ -198,41 +198,38 @@ void HairInteraction::setParams(const HairInteractionParams& params) {
 
 void HairInteraction::buildGrid(const std::vector<glm::vec3>& at) {
   const size_t count = at.size();
-  BucketGrid grid;
-  grid.build(at, radius_);
-  cellStart_ = std::move(grid.start);
-  sorted_ = std::move(grid.sorted);
-  // The particles in bucket order, so a bucket's particles sit side by side.
+  grid_.build(at, radius_);
+  // The particles in cell order, so a cell's particles sit side by side.
+  const std::vector<uint32_t>& order = grid_.order();
   sortedPositions_.resize(count);
   sortedStrands_.resize(count);
   for (size_t e = 0; e < count; ++e) {
-    sortedPositions_[e] = at[sorted_[e]];
-    sortedStrands_[e] = uint32_t(sorted_[e] / pointsPerStrand_);
+    sortedPositions_[e] = at[order[e]];
+    sortedStrands_[e] = uint32_t(order[e] / pointsPerStrand_);
   }
 }
 
-// Calls visit(e, d, r2) for every particle e (bucket order) of another strand
-// within the radius of each particle of bucket order [begin, end), with
-// each(e) before a particle's neighbours and done(e) after. The 27 buckets
-// are found once per cell.
+// Calls visit(e, d, r2) for every particle e (cell order) of another strand
+// within the radius of each particle of cell order [begin, end), with
+// each(e) before a particle's neighbours and done(e) after. The 9 rows'
+// ranges are found once per cell.
 template <class Each, class Visit, class Done>
 void HairInteraction::forNeighbourRange(size_t begin, size_t end, Each&& each, Visit&& visit, Done&& done) const {
-  const float invCell = 1.0f / radius_, radius2 = radius_ * radius_;
-  const uint32_t mask = uint32_t(cellStart_.size() - 2);
-  uint32_t buckets[27];
-  int bucketCount = 0;
-  glm::ivec3 lastCell(std::numeric_limits<int>::min());
+  const float radius2 = radius_ * radius_;
+  ParticleGrid::Range ranges[9];
+  int rangeCount = 0;
+  uint32_t lastCell = std::numeric_limits<uint32_t>::max();
   for (size_t e = begin; e < end; ++e) {
     const glm::vec3 xi = sortedPositions_[e];
     const uint32_t strand = sortedStrands_[e];
-    const glm::ivec3 cell = cellOf(xi, invCell);
+    const uint32_t cell = grid_.cellAt(e);
     if (cell != lastCell) {
-      bucketCount = neighbourBuckets(cell, mask, buckets);
+      rangeCount = grid_.neighbourRanges(cell, ranges);
       lastCell = cell;
     }
     each(e);
-    for (int c = 0; c < bucketCount; ++c)
-      for (uint32_t f = cellStart_[buckets[c]], last = cellStart_[buckets[c] + 1]; f < last; ++f) {
+    for (int c = 0; c < rangeCount; ++c)
+      for (uint32_t f = ranges[c].first; f < ranges[c].second; ++f) {
         if (sortedStrands_[f] == strand) continue;  // a strand's own particles hold by its constraints
         const glm::vec3 d = xi - sortedPositions_[f];
         const float r2 = glm::dot(d, d);
@@ -242,7 +239,7 @@ void HairInteraction::forNeighbourRange(size_t begin, size_t end, Each&& each, V
   }
 }
 
-// Densities in bucket order (sortedDensity_); each block of particles keeps
+// Densities in cell order (sortedDensity_); each block of particles keeps
 // its particles' neighbour lists for apply().
 void HairInteraction::computeDensities(const std::vector<glm::vec3>& positions) {
   buildGrid(positions);
@@ -278,12 +275,12 @@ void HairInteraction::apply(std::vector<glm::vec3>& predicted, const std::vector
   const size_t count = predicted.size();
   computeDensities(predicted);
   const float invH = 1.0f / h;
-  // Pressure and velocity in bucket order, beside the positions.
+  // Pressure and velocity in cell order, beside the positions.
   pressure_.resize(count);
   sortedVelocities_.resize(count);
   compressed_ = 0;
   for (size_t e = 0; e < count; ++e) {
-    const uint32_t i = sorted_[e];
+    const uint32_t i = grid_.order()[e];
     pressure_[e] = glm::clamp(sortedDensity_[e] / restDensity_[i] - 1.0f, 0.0f, 1.0f);
     if (pressure_[e] > 0.0f) ++compressed_;
     sortedVelocities_[e] = (predicted[i] - load(positions.data(), i)) * invH;
@@ -323,7 +320,7 @@ void HairInteraction::apply(std::vector<glm::vec3>& predicted, const std::vector
     }
   });
   for (size_t e = 0; e < count; ++e) {
-    const uint32_t i = sorted_[e];
+    const uint32_t i = grid_.order()[e];
     if (i % pointsPerStrand_ == 0) continue;  // roots follow the scalp
     predicted[i] += push_[e] + h * dv_[e];
   }

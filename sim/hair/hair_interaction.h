@@ -24,6 +24,8 @@
 
 #include <glm/glm.hpp>
 
+#include "sim/hair/particle_grid.h"
+
 namespace mq {
 
 struct HairInteractionParams {
@@ -62,20 +64,21 @@ class HairInteraction {
   int pointsPerStrand_ = 0;
   float radius_ = 0.01f;
   std::vector<float> restDensity_;
-  // The grid: particles sorted by cell hash (bucket order, sorted_[e] the
-  // particle); bucket h holds cellStart_[h] .. cellStart_[h + 1].
-  std::vector<uint32_t> sorted_, cellStart_, sortedStrands_;
+  // The particles in cell order (grid_.order()[e] the particle at place e),
+  // with their positions and strands in that order.
+  ParticleGrid grid_;
+  std::vector<uint32_t> sortedStrands_;
   std::vector<glm::vec3> sortedPositions_;
-  // Each block of kBlock particles (bucket order) lists their neighbours;
+  // Each block of kBlock particles (cell order) lists their neighbours;
   // neighbourEnd_[e] ends particle e's run in its block's list.
   struct Neighbour {
-    uint32_t particle;  // bucket order
+    uint32_t particle;  // cell order
     float distance2;
   };
   static constexpr size_t kBlock = 1024;
   std::vector<std::vector<Neighbour>> blockNeighbours_;
   std::vector<uint32_t> neighbourEnd_;
-  // Scratch of apply(), in bucket order.
+  // Scratch of apply(), in cell order.
   std::vector<float> sortedDensity_, pressure_;
   std::vector<glm::vec3> sortedVelocities_, push_, dv_;
   size_t compressed_ = 0;
