@@ -249,11 +249,34 @@ std::vector<glm::vec3> clumpCenters(const Strands& strands, const std::vector<si
   return sum;
 }
 
-// The guides a stroke may touch: those a dab can reach (see reaches()) at
-// the stroke's start. A guide changes only when a dab reaches it, so the
-// others stay out of reach for the whole stroke.
-std::vector<size_t> strokeCandidates(const Strands& strands, size_t guides, const GroomStroke& stroke,
-                                     const glm::vec3& headCenter) {
+// A strand's box grown by how far a dab of `radius` can reach it from: the
+// radius plus its longest segment (a segment may cross the sphere between
+// two points). A dab whose centre is outside it cannot touch the strand.
+struct ReachBox {
+  glm::vec3 lo, hi;
+  bool holds(const glm::vec3& c) const {
+    return glm::all(glm::lessThanEqual(lo, c)) && glm::all(glm::lessThanEqual(c, hi));
+  }
+};
+
+ReachBox reachBox(const float* p, int n, float radius) {
+  glm::vec3 a = load(p, 0), b = a;
+  float segment = 0.0f;
+  for (int k = 1; k < n; ++k) {
+    const glm::vec3 q = load(p, k);
+    a = glm::min(a, q);
+    b = glm::max(b, q);
+    segment = std::max(segment, glm::length(q - load(p, k - 1)));
+  }
+  const float reach = radius + segment;
+  return {a - reach, b + reach};
+}
+
+// The guides a stroke may touch: those a dab can reach at the stroke's
+// start, with their reach boxes. A guide changes only when a dab reaches
+// it, so the others stay out of reach for the whole stroke.
+void strokeCandidates(const Strands& strands, size_t guides, const GroomStroke& stroke, const glm::vec3& headCenter,
+                      std::vector<size_t>& candidates, std::vector<ReachBox>& boxes) {
   glm::vec3 lo(1e30f), hi(-1e30f);
   for (const GroomDab& d : stroke.dabs)
     for (int side = 0; side < (stroke.mirror ? 2 : 1); ++side) {
@@ -261,23 +284,15 @@ std::vector<size_t> strokeCandidates(const Strands& strands, size_t guides, cons
       lo = glm::min(lo, c);
       hi = glm::max(hi, c);
     }
-  const int n = strands.pointsPerStrand;
-  std::vector<size_t> candidates;
+  candidates.clear();
+  boxes.clear();
   for (size_t g = 0; g < guides; ++g) {
-    const float* p = strands.strand(g);
-    glm::vec3 a = load(p, 0), b = a;
-    float segment = 0.0f;
-    for (int k = 1; k < n; ++k) {
-      const glm::vec3 q = load(p, k);
-      a = glm::min(a, q);
-      b = glm::max(b, q);
-      segment = std::max(segment, glm::length(q - load(p, k - 1)));
-    }
-    const float reach = stroke.radius + segment;
-    if (glm::all(glm::lessThanEqual(a - reach, hi)) && glm::all(glm::greaterThanEqual(b + reach, lo)))
+    const ReachBox box = reachBox(strands.strand(g), strands.pointsPerStrand, stroke.radius);
+    if (glm::all(glm::lessThanEqual(box.lo, hi)) && glm::all(glm::greaterThanEqual(box.hi, lo))) {
       candidates.push_back(g);
+      boxes.push_back(box);
+    }
   }
-  return candidates;
 }
 
 }  // namespace
@@ -369,13 +384,15 @@ void applyGroomStrokes(const std::vector<GroomStroke>& strokes, size_t first, si
   uint64_t dabKey = seed;
   for (size_t i = 0; i < first && i < end; ++i) dabKey += dabCount(strokes[i]);
   std::vector<glm::vec3> centers;
+  std::vector<size_t> candidates;
+  std::vector<ReachBox> boxes;
   for (size_t i = first; i < end; ++i) {
     const GroomStroke& stroke = strokes[i];
     uint64_t key = dabKey;
     dabKey += dabCount(stroke);
     // Paint strokes are read where the strands grow, not here.
     if (!(stroke.radius > 0.0f) || isPaintBrush(stroke.brush)) continue;
-    const std::vector<size_t> candidates = strokeCandidates(strands, guides, stroke, headCenter);
+    strokeCandidates(strands, guides, stroke, headCenter, candidates, boxes);
     if (candidates.empty()) continue;
     for (const GroomDab& d : stroke.dabs)
       for (int side = 0; side < (stroke.mirror ? 2 : 1); ++side) {
@@ -391,13 +408,14 @@ void applyGroomStrokes(const std::vector<GroomStroke>& strokes, size_t first, si
         ThreadPool::shared().parallelFor(0, candidates.size(), 64, [&](size_t begin, size_t end) {
           for (size_t j = begin; j < end; ++j) {
             const size_t g = candidates[j];
-            if (!reaches(strands.strand(g), n, dab.center, dab.radius)) continue;
+            if (!boxes[j].holds(dab.center) || !reaches(strands.strand(g), n, dab.center, dab.radius)) continue;
             StrandEdit s(strands.strand(g), n, proxy, margin);
             const glm::vec3 normal = strands.rootNormals.size() >= 3 * (g + 1)
                                          ? glm::vec3(strands.rootNormals[3 * g], strands.rootNormals[3 * g + 1],
                                                      strands.rootNormals[3 * g + 2])
                                          : glm::normalize(s.at(1) - s.at(0) + glm::vec3(0.0f, 1e-9f, 0.0f));
             applyDab(dab, s, g, normal);
+            boxes[j] = reachBox(strands.strand(g), n, dab.radius);  // where the dab left it
           }
         });
       }
