@@ -116,9 +116,16 @@ void AdaptiveWisps::follow(HairSimulator& sim, const PosedHairColliders* body) {
   const int n = sim.pointsPerStrand();
   ThreadPool::shared().parallelFor(0, cut_.size(), 4, [&](size_t begin, size_t end) {
     std::vector<glm::vec3> points(static_cast<size_t>(n)), velocities(static_cast<size_t>(n));
+    std::vector<float> clearance(static_cast<size_t>(n));
     for (size_t c = begin; c < end; ++c) {
       const Node& node = nodes_[size_t(cut_[c])];
       float deepest = 0.0f;
+      pushed_[size_t(cut_[c])] = 0.0f;
+      if (node.end - node.begin < 2) continue;
+      // How far each leader point is from the body: a follower point closer
+      // to it than that is outside (as children skip the query).
+      const float* leader = sim.positions().data() + size_t(node.guide) * n * 3;
+      for (int i = 0; i < n; ++i) clearance[size_t(i)] = body ? body->clearance(load(leader, size_t(i))) : 0.0f;
       for (int k = node.begin; k < node.end; ++k) {
         const int g = order_[size_t(k)];
         if (g == node.guide) continue;
@@ -134,7 +141,9 @@ void AdaptiveWisps::follow(HairSimulator& sim, const PosedHairColliders* body) {
             p = withLength(previous, p, restLength(sim, g, i));
             const glm::vec3 unpushed = p;
             glm::vec3 normal;
-            if (body && body->pushOut(p, normal)) {
+            const glm::vec3 fromLeader = p - load(leader, size_t(i));
+            const bool clear = glm::dot(fromLeader, fromLeader) < clearance[size_t(i)] * clearance[size_t(i)];
+            if (body && !clear && body->pushOut(p, normal)) {
               deepest = std::max(deepest, glm::distance(p, unpushed));
               p = withLength(previous, p, restLength(sim, g, i));
               body->pushOut(p, normal);
