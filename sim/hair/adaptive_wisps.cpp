@@ -105,12 +105,6 @@ void AdaptiveWisps::update(HairSimulator& sim, float dt, const PosedHairCollider
   applyCut(sim);
 }
 
-void AdaptiveWisps::splitAll(HairSimulator& sim) {
-  std::fill(inCut_.begin(), inCut_.end(), 0);
-  for (int leaf : leafOf_) inCut_[size_t(leaf)] = 1;
-  applyCut(sim);
-}
-
 // Every guide of a wisp but its simulated one follows that one.
 void AdaptiveWisps::follow(HairSimulator& sim, const PosedHairColliders* body) {
   const int n = sim.pointsPerStrand();

@@ -48,8 +48,6 @@ class AdaptiveWisps {
   // and merges wisps and tells the simulator which guides the next step
   // moves.
   void update(HairSimulator& sim, float dt, const PosedHairColliders* body);
-  // Every guide simulated again (the cut back at the leaves).
-  void splitAll(HairSimulator& sim);
 
   size_t wispCount() const { return cut_.size(); }
   size_t guideCount() const { return leafOf_.size(); }
