@@ -109,8 +109,11 @@ void AdaptiveWisps::update(HairSimulator& sim, float dt, const PosedHairCollider
 void AdaptiveWisps::follow(HairSimulator& sim, const PosedHairColliders* body) {
   const int n = sim.pointsPerStrand();
   ThreadPool::shared().parallelFor(0, cut_.size(), 4, [&](size_t begin, size_t end) {
-    std::vector<glm::vec3> points(static_cast<size_t>(n)), velocities(static_cast<size_t>(n));
-    std::vector<float> clearance(static_cast<size_t>(n));
+    thread_local std::vector<glm::vec3> points, velocities;
+    thread_local std::vector<float> clearance;
+    points.resize(size_t(n));
+    velocities.resize(size_t(n));
+    clearance.resize(size_t(n));
     for (size_t c = begin; c < end; ++c) {
       const Node& node = nodes_[size_t(cut_[c])];
       float deepest = 0.0f;

@@ -49,9 +49,6 @@ class AdaptiveWisps {
   // moves.
   void update(HairSimulator& sim, float dt, const PosedHairColliders* body);
 
-  size_t wispCount() const { return cut_.size(); }
-  size_t guideCount() const { return leafOf_.size(); }
-
  private:
   struct Node {
     int first = -1, second = -1;  // halves; -1 for a single guide

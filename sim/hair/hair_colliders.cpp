@@ -73,10 +73,7 @@ bool PosedHairColliders::contains(const glm::vec3& p, float tolerance) const {
   for (const Ellipsoid& e : ellipsoids) {
     // Shrink by the tolerance along the smallest axis (conservative).
     const glm::vec3 q = glm::vec3(e.unitFromWorld * glm::vec4(p, 1.0f));
-    const float smallest =
-        std::min({glm::length(glm::vec3(e.worldFromUnit[0])), glm::length(glm::vec3(e.worldFromUnit[1])),
-                  glm::length(glm::vec3(e.worldFromUnit[2]))});
-    const float limit = std::max(0.0f, 1.0f - tolerance / smallest);
+    const float limit = std::max(0.0f, 1.0f - tolerance / e.smallestRadius);
     if (glm::length(q) < limit) return true;
   }
   return surface && surface->distance(p) < surfaceMargin - tolerance - 1e-5f;

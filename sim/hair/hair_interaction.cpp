@@ -25,28 +25,6 @@ float kernel(float r2, float invR2) {
   return t > 0.0f ? t * t * t : 0.0f;
 }
 
-// Coordinates far out (or not finite: a broken simulation) share the
-// outermost cells instead of overflowing.
-glm::ivec3 cellOf(const glm::vec3& p, float invCell) {
-  glm::vec3 c = glm::floor(p * invCell);
-  for (int k = 0; k < 3; ++k) c[k] = std::isfinite(c[k]) ? glm::clamp(c[k], -1.0e9f, 1.0e9f) : 0.0f;
-  return glm::ivec3(c);
-}
-
-uint32_t hashCell(const glm::ivec3& c, uint32_t mask) {
-  return (uint32_t(c.x) * 73856093u ^ uint32_t(c.y) * 19349663u ^ uint32_t(c.z) * 83492791u) & mask;
-}
-
-// The distinct hash buckets of a cell and its 26 neighbours, sorted.
-int neighbourBuckets(const glm::ivec3& c, uint32_t mask, uint32_t (&out)[27]) {
-  int count = 0;
-  for (int dz = -1; dz <= 1; ++dz)
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx) out[count++] = hashCell(c + glm::ivec3(dx, dy, dz), mask);
-  std::sort(out, out + count);
-  return int(std::unique(out, out + count) - out);
-}
-
 float meanSegmentLength(const std::vector<float>& points, size_t strandCount, int n) {
   double sum = 0.0;
   size_t count = 0;
@@ -66,30 +44,6 @@ float segmentDistance2(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3
   return glm::dot(gap, gap);
 }
 
-// Items sorted into hash buckets of cubic cells (counting sort).
-struct BucketGrid {
-  float invCell = 1.0f;
-  uint32_t mask = 0;
-  std::vector<uint32_t> bucket, start, sorted;
-
-  void build(const std::vector<glm::vec3>& at, float cell) {
-    invCell = 1.0f / cell;
-    uint32_t size = 1;
-    while (size < 2 * at.size() + 1) size <<= 1;
-    mask = size - 1;
-    bucket.resize(at.size());
-    start.assign(size_t(size) + 1, 0);
-    for (size_t i = 0; i < at.size(); ++i) {
-      bucket[i] = hashCell(cellOf(at[i], invCell), mask);
-      ++start[bucket[i] + 1];
-    }
-    for (size_t h = 0; h < size; ++h) start[h + 1] += start[h];
-    sorted.resize(at.size());
-    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
-    for (size_t i = 0; i < at.size(); ++i) sorted[fill[bucket[i]]++] = uint32_t(i);
-  }
-};
-
 }  // namespace
 
 float meanRootSpacing(const std::vector<float>& points, size_t strandCount, int pointsPerStrand) {
@@ -105,17 +59,20 @@ float meanRootSpacing(const std::vector<float>& points, size_t strandCount, int 
   // nearest neighbour is not within one cell is searched among all.
   const glm::vec3 extent = hi - lo;
   const float cell = std::max(2.0f * std::max({extent.x, extent.y, extent.z}) / std::sqrt(float(strandCount)), 1e-6f);
-  BucketGrid grid;
+  ParticleGrid grid;
   grid.build(roots, cell);
   std::vector<float> nearest(strandCount);
   ThreadPool::shared().parallelFor(0, strandCount, 256, [&](size_t begin, size_t end) {
-    uint32_t buckets[27];
-    for (size_t s = begin; s < end; ++s) {
+    ParticleGrid::Range ranges[9];
+    for (size_t e = begin; e < end; ++e) {
+      const uint32_t s = grid.order()[e];
       float best = INFINITY;
-      const int count = neighbourBuckets(cellOf(roots[s], grid.invCell), grid.mask, buckets);
-      for (int b = 0; b < count; ++b)
-        for (uint32_t e = grid.start[buckets[b]]; e < grid.start[buckets[b] + 1]; ++e)
-          if (grid.sorted[e] != s) best = std::min(best, glm::length(roots[grid.sorted[e]] - roots[s]));
+      const int count = grid.neighbourRanges(grid.cellAt(e), ranges);
+      for (int r = 0; r < count; ++r)
+        for (uint32_t f = ranges[r].first; f < ranges[r].second; ++f) {
+          const uint32_t o = grid.order()[f];
+          if (o != s) best = std::min(best, glm::length(roots[o] - roots[s]));
+        }
       if (!(best <= cell))
         for (size_t o = 0; o < strandCount; ++o)
           if (o != s) best = std::min(best, glm::length(roots[o] - roots[s]));
@@ -140,32 +97,33 @@ size_t closeSegmentPairs(const std::vector<float>& points, size_t strandCount, i
       longest = std::max(longest, glm::length(b - a));
     }
   const float reach = longest + distance;  // midpoints of segments closer than `distance`
-  BucketGrid grid;
+  ParticleGrid grid;
   grid.build(mid, std::max(reach, 1e-6f));
   const float distance2 = distance * distance;
-  std::vector<size_t> perChunk(strandCount, 0);
-  ThreadPool::shared().parallelFor(0, strandCount, 16, [&](size_t begin, size_t end) {
-    uint32_t buckets[27];
-    for (size_t s = begin; s < end; ++s)
-      for (int k = 0; k < perStrand; ++k) {
-        const size_t i = s * perStrand + k;
-        const glm::vec3 a = load(points.data(), s * n + k + 1), b = load(points.data(), s * n + k + 2);
-        const int count = neighbourBuckets(cellOf(mid[i], grid.invCell), grid.mask, buckets);
-        for (int c = 0; c < count; ++c)
-          for (uint32_t e = grid.start[buckets[c]]; e < grid.start[buckets[c] + 1]; ++e) {
-            const uint32_t j = grid.sorted[e];
-            const size_t other = j / perStrand;
-            if (other <= s) continue;  // each pair once, other strands only
-            const glm::vec3 gap = mid[j] - mid[i];
-            if (glm::dot(gap, gap) > reach * reach) continue;
-            const int l = int(j % perStrand);
-            const glm::vec3 c0 = load(points.data(), other * n + l + 1), c1 = load(points.data(), other * n + l + 2);
-            if (segmentDistance2(a, b, c0, c1) < distance2) ++perChunk[s];
-          }
-      }
+  std::vector<uint32_t> perSegment(mid.size(), 0);
+  ThreadPool::shared().parallelFor(0, mid.size(), 256, [&](size_t begin, size_t end) {
+    ParticleGrid::Range ranges[9];
+    for (size_t e = begin; e < end; ++e) {
+      const uint32_t i = grid.order()[e];
+      const size_t s = i / perStrand;
+      const int k = int(i % perStrand);
+      const glm::vec3 a = load(points.data(), s * n + k + 1), b = load(points.data(), s * n + k + 2);
+      const int count = grid.neighbourRanges(grid.cellAt(e), ranges);
+      for (int r = 0; r < count; ++r)
+        for (uint32_t f = ranges[r].first; f < ranges[r].second; ++f) {
+          const uint32_t j = grid.order()[f];
+          const size_t other = j / perStrand;
+          if (other <= s) continue;  // each pair once, other strands only
+          const glm::vec3 gap = mid[j] - mid[i];
+          if (glm::dot(gap, gap) > reach * reach) continue;
+          const int l = int(j % perStrand);
+          const glm::vec3 c0 = load(points.data(), other * n + l + 1), c1 = load(points.data(), other * n + l + 2);
+          if (segmentDistance2(a, b, c0, c1) < distance2) ++perSegment[i];
+        }
+    }
   });
   size_t total = 0;
-  for (size_t c : perChunk) total += c;
+  for (uint32_t c : perSegment) total += c;
   return total;
 }
 

@@ -43,9 +43,9 @@ void ParticleGrid::build(const std::vector<glm::vec3>& positions, float radius) 
   for (size_t c = 0; c < cells; ++c) cellStart_[c + 1] += cellStart_[c];
   order_.resize(count);
   cellOfPlace_.resize(count);
-  std::vector<uint32_t> fill(cellStart_.begin(), cellStart_.end() - 1);
+  fill_.assign(cellStart_.begin(), cellStart_.end() - 1);
   for (size_t i = 0; i < count; ++i) {
-    const uint32_t place = fill[cellOfParticle_[i]]++;
+    const uint32_t place = fill_[cellOfParticle_[i]]++;
     order_[place] = uint32_t(i);
     cellOfPlace_[place] = cellOfParticle_[i];
   }

@@ -38,8 +38,8 @@ class ParticleGrid {
   glm::vec3 origin_{0.0f}, invCell_{1.0f};
   glm::ivec3 dims_{1};
   std::vector<uint32_t> order_, cellOfPlace_;
-  std::vector<uint32_t> cellStart_;       // per cell (x fastest), plus the end: a prefix sum
-  std::vector<uint32_t> cellOfParticle_;  // scratch of build()
+  std::vector<uint32_t> cellStart_;              // per cell (x fastest), plus the end: a prefix sum
+  std::vector<uint32_t> cellOfParticle_, fill_;  // scratch of build()
 };
 
 }  // namespace mq
